@@ -1,0 +1,55 @@
+# ALBATROSS -- hard-real-time three-buffer communication on FPGA.
+# `make help` lists the targets.  Build outputs go to build/ only.
+
+.DEFAULT_GOAL := help
+SHELL         := /bin/bash
+BUILD         := build
+REPORTS       := $(BUILD)/reports
+PYTHON        ?= python3
+SUDO          := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+# Debian packages and PyPI packages that `make deps` installs.
+APT_PACKAGES  := make g++ python3 python3-pip verilator iverilog yosys \
+                 gcc-riscv64-unknown-elf
+PIP_PACKAGES  :=
+
+RTL           := $(sort $(wildcard rtl/*.v))
+TB_RTL        := $(sort $(wildcard tb/rtl/*.v))
+
+# Each fragment in mk/ adds its tests to TESTS (names) and rules test-<name>.
+TESTS         :=
+BENCHES       :=
+include $(sort $(wildcard mk/*.mk))
+
+.PHONY: help deps lint test bench sim clean
+
+help: ## list the targets
+	@echo "ALBATROSS -- make targets:"
+	@grep -hE '^[a-zA-Z0-9_-]+:.*## ' $(MAKEFILE_LIST) | \
+	    awk -F':.*## ' '{ printf "  %-14s %s\n", $$1, $$2 }'
+
+deps: ## install every tool (apt-get, pip)
+	$(SUDO) apt-get update
+	DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y --no-install-recommends $(APT_PACKAGES)
+	$(if $(strip $(PIP_PACKAGES)),$(PYTHON) -m pip install $(PIP_PACKAGES))
+
+lint: ## Verilator -Wall lint, Icarus and Yosys read of all RTL
+	@set -e; for f in $(RTL) $(TB_RTL); do \
+	    verilator --lint-only -Wall $$f; \
+	    iverilog -g2005 -o /dev/null $$f; \
+	    yosys -q -p "read_verilog $$f; hierarchy; proc" ; \
+	    echo "lint ok  $$f"; done
+
+TESTS += lint
+test-lint:
+	@tools/run_test.sh lint $(MAKE) -s lint
+
+test: ## build and run every test; ends with "N passed, N failed"
+	@rm -rf $(BUILD)/results
+	@$(MAKE) -k --no-print-directory $(addprefix test-,$(TESTS)) || true
+	@tools/summary.sh $(TESTS)
+
+bench: $(BENCHES) ## run the benchmarks, figures to build/reports/
+
+clean: ## remove build/
+	rm -rf $(BUILD)

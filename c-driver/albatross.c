@@ -1,0 +1,186 @@
+/*
+ * albatross.c -- Import and Export of the three-buffer channel (seed 3.1,
+ * figures 3 and 4), written to follow the paper line by line.
+ *
+ * Memory ordering.  The consumer stores ReadLocked and then loads Actual; the
+ * producer stores Actual and, in its next Export, loads ReadLocked.  That is
+ * the store-buffering pattern: on a CPU with a store buffer each side needs a
+ * store-load fence between the two, or both may read stale values and the
+ * producer could pick the buffer the consumer is about to read.  The producer
+ * also needs its data stores ordered before the store of Actual (release) and
+ * the consumer its load of Actual before the data loads (acquire).  Each is an
+ * alb_fence() below; on in-order cores without a store buffer they cost
+ * almost nothing.  None of them is a RAM access.
+ */
+#include "albatross.h"
+#include "alb_port.h"
+
+#ifdef __GNUC__
+typedef uint32_t alb_word __attribute__((__may_alias__, __aligned__(4)));
+#else
+typedef uint32_t alb_word;
+#endif
+
+static uintptr_t buffer_addr(const alb_channel_t *ch, uint8_t buffer)
+{
+    return ch->base + ALB_OFF_BUFFER((uint32_t)buffer, ch->size);
+}
+
+/* ReadFrom (seed figure 3): ceil(size/4) word loads from the RAM. */
+static void read_from(const alb_channel_t *ch, uint8_t buffer, void *dst)
+{
+    uintptr_t src = buffer_addr(ch, buffer);
+    uint8_t *d = (uint8_t *)dst;
+    uint32_t n = ch->size, w;
+
+    if (((uintptr_t)d & 3u) == 0u) {
+        for (; n >= 4u; n -= 4u, src += 4u, d += 4u)
+            *(alb_word *)d = alb_rd32(src);
+    } else {
+        for (; n >= 4u; n -= 4u, src += 4u, d += 4u) {
+            w = alb_rd32(src);
+            d[0] = (uint8_t)w;
+            d[1] = (uint8_t)(w >> 8);
+            d[2] = (uint8_t)(w >> 16);
+            d[3] = (uint8_t)(w >> 24);
+        }
+    }
+    if (n != 0u) { /* tail: one word load, the padding bytes are dropped */
+        w = alb_rd32(src);
+        for (; n != 0u; --n, ++d, w >>= 8)
+            *d = (uint8_t)w;
+    }
+}
+
+/* WriteTo (seed figure 4): ceil(size/4) word stores into the RAM. */
+static void write_to(const alb_channel_t *ch, uint8_t buffer, const void *src)
+{
+    uintptr_t dst = buffer_addr(ch, buffer);
+    const uint8_t *s = (const uint8_t *)src;
+    uint32_t n = ch->size, w, k;
+
+    if (((uintptr_t)s & 3u) == 0u) {
+        for (; n >= 4u; n -= 4u, dst += 4u, s += 4u)
+            alb_wr32(dst, *(const alb_word *)s);
+    } else {
+        for (; n >= 4u; n -= 4u, dst += 4u, s += 4u)
+            alb_wr32(dst, (uint32_t)s[0] | (uint32_t)s[1] << 8 |
+                              (uint32_t)s[2] << 16 | (uint32_t)s[3] << 24);
+    }
+    if (n != 0u) { /* tail: one word store, padding bytes written as 0 */
+        for (w = 0u, k = 0u; k < n; ++k)
+            w |= (uint32_t)s[k] << (8u * k);
+        alb_wr32(dst, w);
+    }
+}
+
+int alb_channel_setup(alb_channel_t *ch, uintptr_t base, uint32_t size)
+{
+    if (ch == 0 || (base & 3u) != 0u || size == 0u)
+        return ALB_ERR_ARG;
+    ch->base = base;
+    ch->size = size;
+    ch->actual = 0u;
+    ch->read_locked = 0u;
+    return ALB_OK;
+}
+
+int alb_producer_init(alb_channel_t *ch, const void *initial)
+{
+    if (ch == 0 || ch->size == 0u || initial == 0)
+        return ALB_ERR_ARG;
+    write_to(ch, ALB_BUFFER1, initial);
+    alb_fence();
+    alb_wr8(ch->base + ALB_OFF_ACTUAL, ALB_BUFFER1);
+    ch->actual = ALB_BUFFER1;
+    return ALB_OK;
+}
+
+int alb_producer_attach(alb_channel_t *ch)
+{
+    uint8_t actual;
+
+    if (ch == 0 || ch->size == 0u)
+        return ALB_ERR_ARG;
+    actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
+    if (!ALB_VALID_INDEX(actual))
+        return ALB_ERR_CORRUPT;
+    ch->actual = actual;
+    return ALB_OK;
+}
+
+int alb_consumer_init(alb_channel_t *ch)
+{
+    if (ch == 0 || ch->size == 0u)
+        return ALB_ERR_ARG;
+    alb_wr8(ch->base + ALB_OFF_READLOCKED, ALB_BUFFER1);
+    alb_fence();
+    ch->read_locked = ALB_BUFFER1;
+    return ALB_OK;
+}
+
+int alb_consumer_attach(alb_channel_t *ch)
+{
+    uint8_t read_locked;
+
+    if (ch == 0 || ch->size == 0u)
+        return ALB_ERR_ARG;
+    read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
+    if (!ALB_VALID_INDEX(read_locked))
+        return ALB_ERR_CORRUPT;
+    ch->read_locked = read_locked;
+    return ALB_OK;
+}
+
+int alb_import(alb_channel_t *ch, void *dst)
+{
+    int result = ALB_OLD;
+    uint8_t actual;
+
+    if (ch == 0 || dst == 0 || !ALB_VALID_INDEX(ch->read_locked))
+        return ALB_ERR_ARG;
+
+    /* --- Phase 1: select a buffer for read-access */
+    actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
+    while (actual != ch->read_locked) {
+        if (!ALB_VALID_INDEX(actual))
+            return ALB_ERR_CORRUPT;
+        ch->read_locked = actual;                           /* ReadLocked:= Actual */
+        alb_wr8(ch->base + ALB_OFF_READLOCKED, actual);
+        alb_fence();                  /* store ReadLocked before loading Actual */
+        actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
+        result = ALB_NEW;
+    }
+    alb_fence();                  /* acquire: load Actual before the data loads */
+
+    /* --- Phase 2: read-access to the selected buffer */
+    read_from(ch, ch->read_locked, dst);
+    return result;
+}
+
+int alb_export(alb_channel_t *ch, const void *src)
+{
+    uint8_t buffer, write_buffer = 0u, copy_of_read_locked;
+    int result = ALB_OK;
+
+    if (ch == 0 || src == 0 || !ALB_VALID_INDEX(ch->actual))
+        return ALB_ERR_ARG;
+
+    /* --- Phase 1: select a buffer for write-access */
+    alb_fence();         /* the last store of Actual before loading ReadLocked */
+    copy_of_read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
+    if (!ALB_VALID_INDEX(copy_of_read_locked))
+        result = ALB_ERR_CORRUPT;   /* it excludes no buffer: one stays free */
+    for (buffer = ALB_BUFFER1; buffer <= ALB_BUFFER3; ++buffer)
+        if (buffer != ch->actual && buffer != copy_of_read_locked)
+            write_buffer = buffer;
+
+    /* --- Phase 2: write-access to the selected buffer */
+    write_to(ch, write_buffer, src);
+    alb_fence();                 /* release: the data before the store of Actual */
+
+    /* --- Phase 3: assign completely written buffer as actual */
+    alb_wr8(ch->base + ALB_OFF_ACTUAL, write_buffer);
+    ch->actual = write_buffer;
+    return result;
+}

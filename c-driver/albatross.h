@@ -1,0 +1,102 @@
+/*
+ * albatross.h -- the ALBATROSS three-buffer channel (seed 3.1, figures 2-4).
+ *
+ * A channel carries one variable from one producer to one consumer through a
+ * dual-ported RAM, without locks, interrupts or waiting: alb_export() never
+ * blocks and alb_import() always returns a complete, published value.  The
+ * memory layout is in albatross_layout.h; all RAM accesses go through the
+ * port layer (alb_port.h).  C99, freestanding, no heap.
+ *
+ * Start-up: the control bytes start as Buffer1 (seed figure 2).  A RAM image
+ * can hold them (the schedule compiler emits one), or the producer calls
+ * alb_producer_init() (also writes the initial value into Buffer1) and the
+ * consumer alb_consumer_init().  A side that restarts while its partner runs
+ * calls alb_*_attach() instead, which recovers its private copy from the RAM.
+ *
+ * Each side keeps a private copy (shadow) of the control byte it owns, so in
+ * the uncontended case the RAM accesses beyond the payload are:
+ *   alb_export                 2  (load ReadLocked, store Actual)
+ *   alb_import, no new data    1  (load Actual)
+ *   alb_import, new data       3  (load Actual, store ReadLocked, load Actual)
+ * and the payload takes ceil(size / 4) word accesses.
+ */
+#ifndef ALBATROSS_H
+#define ALBATROSS_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include "albatross_layout.h"
+
+/* Results.  alb_import: ALB_OLD or ALB_NEW (seed figure 3: Old, New). */
+enum {
+    ALB_OK          = 0,   /* alb_export and set-up: done                      */
+    ALB_OLD         = 0,   /* alb_import: value already read before            */
+    ALB_NEW         = 1,   /* alb_import: value never read before              */
+    ALB_ERR_CORRUPT = -1,  /* the partner's control byte is out of range (a
+                              crashed or faulty partner); see the functions   */
+    ALB_ERR_ARG     = -2   /* bad argument: misaligned base, size 0, or the
+                              side was never initialised or attached           */
+};
+
+typedef struct alb_channel {
+    uintptr_t base;        /* channel address in this CPU's view of the RAM   */
+    uint32_t  size;        /* payload bytes                                    */
+    uint8_t   actual;      /* producer's private copy of Actual (0: none)      */
+    uint8_t   read_locked; /* consumer's private copy of ReadLocked (0: none)  */
+} alb_channel_t;
+
+/* Describe a channel; no RAM access.  ALB_ERR_ARG if base is not 4-aligned
+ * or size is 0. */
+int alb_channel_setup(alb_channel_t *ch, uintptr_t base, uint32_t size);
+
+/* Producer, cold start: Buffer1 := *initial, Actual := Buffer1. */
+int alb_producer_init(alb_channel_t *ch, const void *initial);
+/* Producer, restart while the consumer runs: private copy := Actual.
+ * ALB_ERR_CORRUPT if the RAM holds no valid index. */
+int alb_producer_attach(alb_channel_t *ch);
+/* Consumer, cold start: ReadLocked := Buffer1. */
+int alb_consumer_init(alb_channel_t *ch);
+/* Consumer, restart: private copy := ReadLocked (ALB_ERR_CORRUPT if invalid). */
+int alb_consumer_attach(alb_channel_t *ch);
+
+/* Import (seed figure 3): copy the newest published value into *dst.
+ * Returns ALB_NEW or ALB_OLD.  ALB_ERR_CORRUPT if Actual is out of range:
+ * then no buffer is read and *dst is unchanged.  Lock-free, not wait-free:
+ * the selection loop repeats only while the producer publishes again between
+ * two loads of Actual. */
+int alb_import(alb_channel_t *ch, void *dst);
+
+/* Export (seed figure 4): publish *src.  Never blocks; a fixed number of
+ * accesses.  Returns ALB_OK, or ALB_ERR_CORRUPT if ReadLocked was out of
+ * range: the value is published all the same (a faulty consumer must not stop
+ * the producer), into a buffer other than Actual. */
+int alb_export(alb_channel_t *ch, const void *src);
+
+/*
+ * The typed task interface (seed 3.1):
+ *
+ *   ALB_CHANNEL(RadarMap, RadarShot)
+ *
+ * declares the channel object alb_ch_RadarMap (define it once with
+ * ALB_CHANNEL_DEFINE(RadarMap) and set it up with alb_channel_setup) and
+ *
+ *   bool LookForNewRadarMap(RadarShot *v);          true: never read before
+ *   int  MakeRadarMapAvailable(const RadarShot *v); ALB_OK or ALB_ERR_CORRUPT
+ *
+ * LookForNew returns false on ALB_OLD and on errors (then *v is unchanged);
+ * call alb_import() directly to tell the two apart.
+ */
+#define ALB_CHANNEL(Name, Type)                                              \
+    extern alb_channel_t alb_ch_##Name;                                      \
+    static inline bool LookForNew##Name(Type *v)                             \
+    {                                                                        \
+        return alb_import(&alb_ch_##Name, v) == ALB_NEW;                     \
+    }                                                                        \
+    static inline int Make##Name##Available(const Type *v)                   \
+    {                                                                        \
+        return alb_export(&alb_ch_##Name, v);                                \
+    }
+
+#define ALB_CHANNEL_DEFINE(Name) alb_channel_t alb_ch_##Name
+
+#endif

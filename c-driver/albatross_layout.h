@@ -1,0 +1,39 @@
+/*
+ * albatross_layout.h -- memory layout of one ALBATROSS channel in a
+ * dual-ported RAM (seed 3.1, figure 2).  Shared by the C driver, the
+ * testbenches and the hardware controller; byte offsets from the channel base.
+ *
+ *   offset            size  contents                   written only by
+ *   0                 1     Actual       (1..3)         the producer
+ *   1                 1     ReadLocked   (1..3)         the consumer
+ *   2                 2     reserved, 0
+ *   4                 S     Buffer1
+ *   4 + S             S     Buffer2
+ *   4 + 2S            S     Buffer3
+ *
+ * S = payload size rounded up to a multiple of 4, so every buffer is
+ * word-aligned when the channel base is.  Buffer indices are stored as
+ * 1 = Buffer1, 2 = Buffer2, 3 = Buffer3; any other value (0 = never
+ * initialised) is invalid and reported by the driver.  Channel bases must be
+ * 4-byte aligned.  Multi-byte payload words are little-endian (byte lane 0 is
+ * the lowest address).
+ */
+#ifndef ALBATROSS_LAYOUT_H
+#define ALBATROSS_LAYOUT_H
+
+#define ALB_OFF_ACTUAL      0u
+#define ALB_OFF_READLOCKED  1u
+#define ALB_OFF_BUFFERS     4u
+#define ALB_BUFFER1         1u
+#define ALB_BUFFER3         3u
+
+/* Payload size rounded up to whole words: the stride between buffers. */
+#define ALB_STRIDE(size)          (((size) + 3u) & ~3u)
+/* Byte offset of buffer b (1..3) of a channel with the given payload size. */
+#define ALB_OFF_BUFFER(b, size)   (ALB_OFF_BUFFERS + ((b) - 1u) * ALB_STRIDE(size))
+/* Bytes one channel occupies in the dual-ported RAM. */
+#define ALB_CHANNEL_BYTES(size)   (ALB_OFF_BUFFERS + 3u * ALB_STRIDE(size))
+/* A control byte value names a buffer. */
+#define ALB_VALID_INDEX(v)        ((v) >= ALB_BUFFER1 && (v) <= ALB_BUFFER3)
+
+#endif
