@@ -1,0 +1,66 @@
+# mk/driver.mk -- the C driver (c-driver/): host unit tests against a
+# counting, trapping port (tb/unit/), the checker's negative test, the
+# warning-free rv32i cross build and host build, and the code-size figure.
+# Outputs under $(BUILD)/ only.
+
+DRV_SRC       := c-driver/albatross.c
+DRV_HDRS      := $(wildcard c-driver/*.h) c-driver/port/mmio/alb_port_impl.h
+DRV_CFLAGS    := -std=c99 -Wall -Wextra -Werror -pedantic
+DRV_HOST_CC   ?= gcc
+DRV_RV_PREFIX ?= riscv64-unknown-elf-
+DRV_RV_CC     := $(DRV_RV_PREFIX)gcc
+DRV_RV_FLAGS  := -march=rv32i -mabi=ilp32 -ffreestanding -nostdlib $(DRV_CFLAGS) \
+                 -Ic-driver -Ic-driver/port/mmio
+DRV_RV_LEVELS := Os O2
+DRV_RV_OBJS   := $(foreach O,$(DRV_RV_LEVELS),$(BUILD)/rv32i/albatross-$(O).o)
+DRV_HOST_OBJ  := $(BUILD)/host/albatross.o
+DRV_UNIT      := $(BUILD)/unit
+DRV_UNIT_DEPS := tb/unit/test_driver.c tb/unit/port/alb_port_impl.h $(DRV_SRC) \
+                 $(wildcard c-driver/*.h)
+DRV_BROKEN    := 1 2
+DRV_RV_NEED    = command -v $(DRV_RV_CC) >/dev/null 2>&1 || { echo "driver-rv32i: \
+$(DRV_RV_CC) not found: run make deps (installs gcc-riscv64-unknown-elf)"; exit 1; }
+
+TESTS   += driver-unit driver-unit-negative driver-rv32i
+BENCHES += driver-size
+
+.PHONY: test-driver-unit test-driver-unit-negative test-driver-rv32i driver-size
+
+# Host unit tests: the driver with tb/unit/port/alb_port_impl.h.
+$(DRV_UNIT)/test_driver: $(DRV_UNIT_DEPS)
+	@mkdir -p $(@D)
+	$(DRV_HOST_CC) $(DRV_CFLAGS) -O2 -Itb/unit/port -Ic-driver -o $@ \
+	    tb/unit/test_driver.c $(DRV_SRC)
+
+# The same tests against a deliberately broken port (UNIT_BROKEN_PORT=N).
+$(DRV_UNIT)/test_driver_broken%: $(DRV_UNIT_DEPS)
+	@mkdir -p $(@D)
+	$(DRV_HOST_CC) $(DRV_CFLAGS) -O2 -DUNIT_BROKEN_PORT=$* -Itb/unit/port -Ic-driver \
+	    -o $@ tb/unit/test_driver.c $(DRV_SRC)
+
+test-driver-unit: $(DRV_UNIT)/test_driver
+	@tools/run_test.sh driver-unit $<
+
+test-driver-unit-negative: $(foreach N,$(DRV_BROKEN),$(DRV_UNIT)/test_driver_broken$(N))
+	@tools/run_test.sh driver-unit-negative tb/unit/expect_fail.sh $^
+
+# Cross build for rv32i (one object per optimisation level) and host build,
+# both with the memory-mapped port and warnings as errors.
+$(BUILD)/rv32i/albatross-%.o: $(DRV_SRC) $(DRV_HDRS)
+	@$(DRV_RV_NEED)
+	@mkdir -p $(@D)
+	$(DRV_RV_CC) $(DRV_RV_FLAGS) -$* -c -o $@ $<
+
+$(DRV_HOST_OBJ): $(DRV_SRC) $(DRV_HDRS)
+	@mkdir -p $(@D)
+	$(DRV_HOST_CC) $(DRV_CFLAGS) -O2 -Ic-driver -Ic-driver/port/mmio -c -o $@ $<
+
+driver-size: $(DRV_RV_OBJS) ## rv32i code size of the driver -> build/reports/driver_size.json
+	@mkdir -p $(REPORTS)
+	@$(PYTHON) tools/code_size.py --prefix $(DRV_RV_PREFIX) --flags "$(DRV_RV_FLAGS)" \
+	    --out $(REPORTS)/driver_size.json \
+	    $(foreach O,$(DRV_RV_LEVELS),$(O)=$(BUILD)/rv32i/albatross-$(O).o)
+
+test-driver-rv32i:
+	@tools/run_test.sh driver-rv32i bash -c '$(DRV_RV_NEED); \
+	    $(MAKE) -s --no-print-directory $(DRV_HOST_OBJ) driver-size'
