@@ -1,0 +1,101 @@
+# mk/tb.mk -- the Verilator co-simulation testbench (tb/tb_dpram.cpp):
+# simulated CPUs run the real C driver against the RTL RAM.
+#
+# Variants: the real RAM and driver, a RAM without byte arbitration, and the
+# driver mutated by tb/mutants/*.sed (each must be caught: negative tests).
+
+TB_DIR      := $(BUILD)/tb
+VERILATOR_ROOT_DIR := $(shell verilator --getenv VERILATOR_ROOT 2>/dev/null)
+TB_CXXFLAGS := -std=c++17 -O2 -g0 -U_FORTIFY_SOURCE -Wall -Wextra -Werror -Itb -Ic-driver -Itb/port \
+               -isystem $(VERILATOR_ROOT_DIR)/include -isystem $(VERILATOR_ROOT_DIR)/include/vltstd
+TB_CFLAGS   := -std=c99 -O2 -Wall -Wextra -Werror -pedantic -U_FORTIFY_SOURCE -Ic-driver -Itb/port
+TB_SRC      := tb/tb_dpram.cpp tb/ram_bus.cpp tb/sim_cpu.cpp tb/protocol_checker.cpp
+TB_HDR      := $(wildcard tb/*.h) tb/port/alb_port_impl.h c-driver/albatross.h c-driver/albatross_layout.h
+MUTANTS     := $(patsubst tb/mutants/%.sed,%,$(wildcard tb/mutants/*.sed))
+TB_IMPORTS  ?= 1000000
+SOAK_IMPORTS ?= 100000000
+SEED        ?= 1
+
+# Verilated RAM models: $(TB_DIR)/model-<module>/Vdut__ALL.a, and the
+# Verilator run-time library once.
+$(TB_DIR)/model-%/Vdut__ALL.a: $(RTL) $(TB_RTL)
+	@mkdir -p $(@D)
+	verilator --cc -O3 --prefix Vdut --top-module $* -GADDR_WIDTH=10 -Mdir $(@D) \
+	    $(filter %/$*.v,$(RTL) $(TB_RTL))
+	$(MAKE) -s -C $(@D) -f Vdut.mk OPT_FAST=-O2 CXX="$(CXX)" >/dev/null
+
+$(TB_DIR)/verilated.o:
+	@mkdir -p $(@D)/vlrt
+	cd $(@D)/vlrt && for f in verilated verilated_threads; do \
+	    $(CXX) -std=c++17 -O2 -isystem $(VERILATOR_ROOT_DIR)/include -isystem $(VERILATOR_ROOT_DIR)/include/vltstd \
+	        -c $(VERILATOR_ROOT_DIR)/include/$$f.cpp -o $$f.o || exit 1; done
+	ld -r $(@D)/vlrt/verilated.o $(@D)/vlrt/verilated_threads.o -o $@
+
+# Driver sources: the real one, and each mutant made from it by sed.
+$(TB_DIR)/mutants/%.c: tb/mutants/%.sed c-driver/albatross.c
+	@mkdir -p $(@D)
+	sed -f $< c-driver/albatross.c > $@
+	@if cmp -s $@ c-driver/albatross.c; then \
+	    echo "mutant $* did not apply: c-driver/albatross.c no longer has the line tb/mutants/$*.sed edits"; \
+	    rm -f $@; exit 1; fi
+
+# tb_dpram linked against <model> and <driver source>.
+define tb_variant
+$(TB_DIR)/$(1)/tb_dpram: $(TB_SRC) $(TB_HDR) $(TB_DIR)/model-$(2)/Vdut__ALL.a $(TB_DIR)/verilated.o $(3)
+	@mkdir -p $$(@D)
+	$(CC) $(TB_CFLAGS) -c $(3) -o $$(@D)/driver.o
+	$(CXX) $(TB_CXXFLAGS) -I$(TB_DIR)/model-$(2) $(TB_SRC) $$(@D)/driver.o \
+	    $(TB_DIR)/model-$(2)/Vdut__ALL.a $(TB_DIR)/verilated.o -pthread -o $$@
+endef
+$(eval $(call tb_variant,albatross,albatross_dpram,c-driver/albatross.c))
+$(eval $(call tb_variant,no-arbitration,dpram_no_arbitration,c-driver/albatross.c))
+$(foreach m,$(MUTANTS),$(eval $(call tb_variant,$(m),albatross_dpram,$(TB_DIR)/mutants/$(m).c)))
+
+TB := $(TB_DIR)/albatross/tb_dpram
+
+$(eval $(call tb_variant,priority-a,dpram_priority_a,c-driver/albatross.c))
+
+TB := $(TB_DIR)/albatross/tb_dpram
+
+TESTS += tb-exhaustive tb-random tb-crash
+
+test-tb-exhaustive: $(TB)
+	@tools/run_test.sh tb-exhaustive $(TB) exhaustive --report $(REPORTS)/tb_exhaustive.json
+test-tb-random: $(TB)
+	@tools/run_test.sh tb-random $(TB) random --imports $(TB_IMPORTS) --seed $(SEED) \
+	    --report $(REPORTS)/tb_random.json
+test-tb-crash: $(TB)
+	@tools/run_test.sh tb-crash $(TB) crash --seed $(SEED) --report $(REPORTS)/tb_crash.json
+
+# Negative tests: each passes only if the named checker catches the broken
+# variant (NAME VARIANT MODE CHECKER [extra options]).  Together they cover
+# every checker of the harness.
+NEGATIVE := \
+  no-arbitration:no-arbitration:exhaustive:byte_atomicity \
+  no-arbitration-protocol:no-arbitration:exhaustive:driver_error:--ignore,byte_atomicity \
+  priority-a:priority-a:random:access_time \
+  while_as_if:while_as_if:random:mutual_exclusion \
+  ignore_readlocked:ignore_readlocked:random:definite_results \
+  fresh_readlocked:fresh_readlocked:random:termination \
+  fresh_readlocked-semantic:fresh_readlocked:random:in_channel:--ignore,termination \
+  never_new:never_new:random:actuality \
+  reader_writes_actual:reader_writes_actual:random:ownership
+neg_field = $(word $(2),$(subst :, ,$(1)))
+define negative_test
+TESTS += tb-negative-$(call neg_field,$(1),1)
+test-tb-negative-$(call neg_field,$(1),1): $(TB_DIR)/$(call neg_field,$(1),2)/tb_dpram
+	@tools/run_test.sh tb-negative-$(call neg_field,$(1),1) $$< $(call neg_field,$(1),3) \
+	    --imports 2000000 --seed $(SEED) --variant $(call neg_field,$(1),1) \
+	    --expect-caught-by $(call neg_field,$(1),4) $(subst $(comma), ,$(call neg_field,$(1),5)) \
+	    --report $(REPORTS)/tb_negative_$(call neg_field,$(1),1).json
+endef
+comma := ,
+$(foreach n,$(NEGATIVE),$(eval $(call negative_test,$(n))))
+
+.PHONY: soak bench-tb
+soak: $(TB) ## 100 million checked Imports (SOAK_IMPORTS=N to change)
+	$(TB) random --imports $(SOAK_IMPORTS) --seed $(SEED) --report $(REPORTS)/tb_soak.json
+
+BENCHES += bench-tb
+bench-tb: $(TB)
+	$(TB) bench --imports 300000 --seed $(SEED) --report $(REPORTS)/bench_tb.json

@@ -1,0 +1,2 @@
+# Mutant: Import never reports New (seed figure 3: Import:= New dropped).
+s/result = ALB_NEW;/result = ALB_OLD;/

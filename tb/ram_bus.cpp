@@ -1,0 +1,169 @@
+// ram_bus.cpp -- clocking the Verilated RAM and checking byte atomicity.
+//
+// Atomicity check: the reference memory is updated with every write at the
+// edge that performs it.  A read performed at edge e must return, for every
+// byte it selects, the byte's value before e or (if the other port writes
+// that byte at the same edge) the value written at e: anything else is a
+// torn or invented byte.
+#include "ram_bus.h"
+#include <cstdio>
+#include "Vdut.h"
+#include "verilated.h"
+
+RamBus::RamBus() : dut_(new Vdut), ref_(kBytes, 0), known_(kBytes, 0)
+{
+    cpu[0].id = 0;
+    cpu[1].id = 1;
+    dut_->clk_i = 0;
+    dut_->rst_i = 0;
+    dut_->eval();           // every clock low before the first edge
+    reset();
+}
+
+RamBus::~RamBus() { dut_->final(); }
+
+void RamBus::reset()
+{
+    drive(0, nullptr);
+    drive(1, nullptr);
+    busy_[0] = busy_[1] = false;
+    dut_->rst_i = 1;
+    tick();
+    tick();
+    dut_->rst_i = 0;
+    reset_cycle_ = cycle_;
+}
+
+void RamBus::drive(int port, const BusRequest *r)
+{
+    const uint32_t mask = (1u << kAddrWidth) - 1u;   // ports are not masked
+    uint8_t on = r != nullptr;
+    uint32_t adr = r ? (r->addr >> 2) & mask : 0u;
+    uint8_t sel = r ? (r->sel & 0xFu) : 0u;
+    uint8_t we = r ? r->we : 0u;
+    uint32_t dat = r ? r->wdata : 0u;
+    if (port == 0) {
+        dut_->a_cyc_i = on; dut_->a_stb_i = on; dut_->a_we_i = we;
+        dut_->a_adr_i = adr; dut_->a_sel_i = sel; dut_->a_dat_i = dat;
+    } else {
+        dut_->b_cyc_i = on; dut_->b_stb_i = on; dut_->b_we_i = we;
+        dut_->b_adr_i = adr; dut_->b_sel_i = sel; dut_->b_dat_i = dat;
+    }
+}
+
+void RamBus::issue(int port)
+{
+    if (busy_[port] || !cpu[port].has_request) return;
+    drive(port, &cpu[port].request);
+    busy_[port] = true;
+    issue_cycle_[port] = cycle_;
+}
+
+void RamBus::load(uint32_t addr, const uint8_t *bytes, uint32_t n)
+{
+    for (uint32_t i = 0; i < n;) {
+        uint32_t a = addr + i, lane = a & 3u, word = 0;
+        uint8_t sel = 0;
+        for (; lane < 4 && i < n; ++lane, ++i) {
+            word |= static_cast<uint32_t>(bytes[i]) << (8 * lane);
+            sel |= static_cast<uint8_t>(1u << lane);
+            ref_[(a & ~3u) + lane] = bytes[i];
+            known_[(a & ~3u) + lane] = 1;
+        }
+        BusRequest r{a & ~3u, word, sel, true};
+        drive(0, &r);
+        while (!(tick() & 1u)) {}
+        drive(0, nullptr);
+    }
+}
+
+unsigned RamBus::tick()
+{
+    dut_->clk_i = 1;
+    dut_->eval();
+    dut_->clk_i = 0;
+    dut_->eval();
+    ++cycle_;
+    Access done[2];
+    int n = 0;
+    unsigned mask = 0;
+    bool ack[2] = {dut_->a_ack_o != 0, dut_->b_ack_o != 0};
+    uint32_t dat[2] = {dut_->a_dat_o, dut_->b_dat_o};
+    for (int p = 0; p < 2; ++p) {
+        if (!ack[p]) continue;
+        mask |= 1u << p;
+        if (busy_[p]) {
+            uint64_t latency = cycle_ - issue_cycle_[p];
+            if (latency > worst_latency) worst_latency = latency;
+            if (latency > kMaxLatency && latency_violations++ == 0) {
+                char msg[120];
+                std::snprintf(msg, sizeof msg, "access time: port %c acknowledged after %llu cycles, expected at most %d",
+                              'A' + p, static_cast<unsigned long long>(latency), kMaxLatency);
+                first_latency_violation = msg;
+            }
+            done[n++] = Access{p, cpu[p].request, dat[p], issue_cycle_[p], cycle_};
+            busy_[p] = false;
+            drive(p, nullptr);
+        }
+    }
+    if (n) check_and_apply(done, n);
+    for (int i = 0; i < n; ++i) {
+        SimCpu &c = cpu[done[i].port];
+        c.rdata = done[i].rdata;
+        c.has_request = false;
+        ++c.accesses;
+        if (observer) observer->on_access(done[i]);
+    }
+    accesses += n;
+    return mask;
+}
+
+void RamBus::check_and_apply(const Access *done, int n)
+{
+    // Reads first, against the values before this edge and this edge's writes.
+    for (int i = 0; i < n; ++i) {
+        const Access &r = done[i];
+        if (r.req.we) continue;
+        for (uint32_t lane = 0; lane < 4; ++lane) {
+            if (!(r.req.sel & (1u << lane))) continue;
+            uint32_t a = (r.req.addr + lane) & (kBytes - 1u);
+            uint8_t got = static_cast<uint8_t>(r.rdata >> (8 * lane));
+            bool ok = !known_[a] || got == ref_[a];
+            for (int j = 0; j < n; ++j) {
+                const Access &w = done[j];
+                if (j == i || !w.req.we || !(w.req.sel & (1u << lane)) ||
+                    ((w.req.addr ^ r.req.addr) & (kBytes - 4u)) != 0)
+                    continue;
+                ++same_edge_collisions;
+                if (got == static_cast<uint8_t>(w.req.wdata >> (8 * lane))) ok = true;
+            }
+            if (!ok) {
+                if (atomicity_violations++ == 0) {
+                    char msg[200];
+                    std::snprintf(msg, sizeof msg,
+                                  "byte atomicity: port %c read byte 0x%x at cycle %llu: expected 0x%02x "
+                                  "(old) or a value written at that edge, got 0x%02x",
+                                  'A' + r.port, a, static_cast<unsigned long long>(r.serve_cycle),
+                                  ref_[a], got);
+                    first_atomicity_violation = msg;
+                }
+                ref_[a] = got;   // resynchronise
+            }
+        }
+    }
+    for (int i = 0; i < n; ++i) {
+        const Access &w = done[i];
+        if (!w.req.we) continue;
+        for (uint32_t lane = 0; lane < 4; ++lane) {
+            if (!(w.req.sel & (1u << lane))) continue;
+            uint32_t a = (w.req.addr + lane) & (kBytes - 1u);
+            bool both = false;
+            for (int j = 0; j < n; ++j)
+                if (j != i && done[j].req.we && (done[j].req.sel & (1u << lane)) &&
+                    ((done[j].req.addr ^ w.req.addr) & (kBytes - 4u)) == 0)
+                    both = true;
+            ref_[a] = static_cast<uint8_t>(w.req.wdata >> (8 * lane));
+            known_[a] = both ? 0 : 1;   // two writers at one edge: either value
+        }
+    }
+}

@@ -1,0 +1,81 @@
+// ram_bus.h -- the RTL dual-ported RAM under test, clocked from C++, with two
+// simulated CPUs on its ports and a byte-atomicity checker on every access.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+#include "sim_cpu.h"
+
+class Vdut;
+
+// One completed transaction, as seen at the port.
+struct Access {
+    int        port;         // 0 = A, 1 = B
+    BusRequest req;
+    uint32_t   rdata;
+    uint64_t   issue_cycle;  // cycle its request was first driven
+    uint64_t   serve_cycle;  // the edge that performed it (= ack seen)
+};
+
+class AccessObserver {
+public:
+    virtual ~AccessObserver() {}
+    virtual void on_access(const Access &a) = 0;
+};
+
+class RamBus {
+public:
+    static const int kAddrWidth = 10;             // matches the RTL build
+    static const uint32_t kBytes = 4u << kAddrWidth;
+
+    RamBus();
+    ~RamBus();
+
+    SimCpu cpu[2];                      // cpu[p] sits on port p
+    AccessObserver *observer = nullptr;
+
+    // Reset the RAM's control state (a few cycles, ports idle).
+    void reset();
+    // Write bytes through port A before the CPUs run (a RAM image).
+    void load(uint32_t addr, const uint8_t *bytes, uint32_t n);
+
+    // Drive cpu[p]'s pending request onto port p (if it has one).
+    void issue(int port);
+    bool busy(int port) const { return busy_[port]; }
+    // One clock cycle; completed accesses go to the observer and the CPU.
+    // Returns a bit mask of the ports that completed an access.
+    unsigned tick();
+    uint64_t cycle() const { return cycle_; }
+    // Slot phase: which port the RAM serves at the next edge (tracked from
+    // reset; the RTL alternates A, B, A, ...).
+    int next_slot() const { return static_cast<int>(cycle_ - reset_cycle_) & 1; }
+
+    // Byte-atomicity checker results.
+    uint64_t atomicity_violations = 0;
+    std::string first_atomicity_violation;
+    uint64_t accesses = 0;
+    uint64_t same_edge_collisions = 0;  // a read and a write of one byte at one edge
+    // Access-time checker: every access is acknowledged within kMaxLatency
+    // cycles of its request, whatever the other port does.
+    static const int kMaxLatency = 2;
+    uint64_t worst_latency = 0, latency_violations = 0;
+    std::string first_latency_violation;
+    // The RAM's content as the reference model knows it.
+    uint8_t ram_byte(uint32_t addr) const { return ref_[addr & (kBytes - 1u)]; }
+    // Stall detector for a RAM that never answers.
+    uint64_t issue_cycle(int port) const { return issue_cycle_[port]; }
+
+private:
+    void drive(int port, const BusRequest *r);
+    void check_and_apply(const Access *done, int n);
+
+    std::unique_ptr<Vdut> dut_;
+    uint64_t cycle_ = 0, reset_cycle_ = 0;
+    bool busy_[2] = {false, false};
+    uint64_t issue_cycle_[2] = {0, 0};
+    // Reference model: every byte's value, and for bytes written at the
+    // current edge by both ports, the other possible value.
+    std::vector<uint8_t> ref_;
+    std::vector<uint8_t> known_;        // 0: unknown (never written)
+};

@@ -1,0 +1,50 @@
+// sim_cpu.h -- a simulated CPU: real C code on a coroutine whose every RAM
+// access (tb_bus_access, called by the driver's port layer) becomes one
+// Wishbone transaction on the RTL.
+#pragma once
+#include <cstdint>
+#include <string>
+#include "coro.h"
+
+struct BusRequest {
+    uint32_t addr;   // byte address of the word (lane bits cleared)
+    uint32_t wdata;
+    uint8_t  sel;    // byte lanes
+    bool     we;
+};
+
+class SimCpu {
+public:
+    typedef void (*Program)(SimCpu &cpu);
+
+    int         id = 0;          // also the RAM port: 0 = A, 1 = B
+    uint32_t    window_lo = 0;   // the only bytes it may touch: [lo, hi)
+    uint32_t    window_hi = 0;
+    void       *context = nullptr;  // the program's own state
+    bool        warmup = false;     // set by the program: not yet under test
+
+    // Set by the CPU, consumed by the clock loop.
+    bool        has_request = false;
+    BusRequest  request{};
+    uint32_t    rdata = 0;
+    bool        faulted = false;    // it made an illegal access: stopped
+    std::string fault;
+    uint64_t    accesses = 0;
+
+    void start(Program p) {
+        program_ = p;
+        has_request = false;
+        coro_.start(&SimCpu::entry, this);
+    }
+    void resume();                  // run to its next access (or the end)
+    bool finished() const { return coro_.finished(); }
+    uint32_t access(uint32_t addr, uint32_t wdata, unsigned sel, bool we);
+
+private:
+    static void entry(void *self) {
+        SimCpu *c = static_cast<SimCpu *>(self);
+        c->program_(*c);
+    }
+    Coro    coro_;
+    Program program_ = nullptr;
+};
