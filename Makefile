@@ -34,11 +34,7 @@ deps: ## install every tool (apt-get, pip)
 	$(if $(strip $(PIP_PACKAGES)),$(PYTHON) -m pip install $(PIP_PACKAGES))
 
 lint: ## Verilator -Wall lint, Icarus and Yosys read of all RTL
-	@set -e; for f in $(RTL) $(TB_RTL); do \
-	    verilator --lint-only -Wall $$f; \
-	    iverilog -g2005 -o /dev/null $$f; \
-	    yosys -q -p "read_verilog $$f; hierarchy; proc" ; \
-	    echo "lint ok  $$f"; done
+	@tools/lint.sh $(RTL) $(TB_RTL)
 
 TESTS += lint
 test-lint:

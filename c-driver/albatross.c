@@ -21,9 +21,20 @@ typedef uint32_t alb_word __attribute__((__may_alias__, __aligned__(4)));
 typedef uint32_t alb_word;
 #endif
 
+/* Address of buffer 1..3: base + 4 + (buffer - 1) * stride, without a
+ * multiply (rv32i has none).  Only the low two bits of buffer - 1 count, so
+ * a buffer index of 0 (impossible with valid control bytes) lands just past
+ * Buffer3, never on a control byte. */
 static uintptr_t buffer_addr(const alb_channel_t *ch, uint8_t buffer)
 {
-    return ch->base + ALB_OFF_BUFFER((uint32_t)buffer, ch->size);
+    uint32_t stride = ALB_STRIDE(ch->size), k = (uint32_t)buffer - 1u;
+    uint32_t off = ALB_OFF_BUFFERS;
+
+    if (k & 1u)
+        off += stride;
+    if (k & 2u)
+        off += stride << 1;
+    return ch->base + off;
 }
 
 /* ReadFrom (seed figure 3): ceil(size/4) word loads from the RAM. */

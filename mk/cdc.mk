@@ -15,13 +15,12 @@ CDC_ADDR_WIDTH  := 8
 CDC_SRC         := tb/rtl/tb_dpram_async.v rtl/albatross_wb_cdc.v rtl/albatross_dpram.v \
                    tb/cdc/test_cdc.cpp
 
-# tb_dpram_async includes the RTL by its path from the repository root.
 $(CDC_BIN): $(CDC_SRC) mk/cdc.mk
 	@mkdir -p $(CDC_DIR)
 	verilator --cc --exe --build -j 2 -O3 -Wall --top-module tb_dpram_async \
 	    -GSYNC_STAGES=$(CDC_SYNC_STAGES) -GADDR_WIDTH=$(CDC_ADDR_WIDTH) \
 	    -CFLAGS "-O2 -DSYNC_STAGES=$(CDC_SYNC_STAGES) -DADDR_WIDTH=$(CDC_ADDR_WIDTH)" \
-	    --Mdir $(CDC_DIR)/obj tb/rtl/tb_dpram_async.v $(abspath tb/cdc/test_cdc.cpp) \
+	    --Mdir $(CDC_DIR)/obj -y rtl tb/rtl/tb_dpram_async.v $(abspath tb/cdc/test_cdc.cpp) \
 	    > $(CDC_DIR)/build.log 2>&1 || { cat $(CDC_DIR)/build.log; exit 1; }
 
 TESTS += cdc cdc-negative

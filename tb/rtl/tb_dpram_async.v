@@ -5,12 +5,6 @@
 // clocks are inputs: the C++ harness (tb/cdc/test_cdc.cpp) generates them.
 // The CPU-side Wishbone ports are exposed; the RAM-side bus of each bridge is
 // exposed read-only (mon_*) so the harness can follow every RAM access.
-// The root Makefile lints each file alone, so the RTL this top uses is
-// included here; define ALB_TB_RTL_LISTED when the RTL files are listed too.
-`ifndef ALB_TB_RTL_LISTED
-`include "rtl/albatross_dpram.v"
-`include "rtl/albatross_wb_cdc.v"
-`endif
 `default_nettype none
 
 module tb_dpram_async #(
