@@ -13,6 +13,10 @@ APT_PACKAGES  := make g++ python3 python3-pip verilator iverilog yosys \
                  gcc-riscv64-unknown-elf
 PIP_PACKAGES  :=
 
+SEED          ?= 1
+TB_DIR        := $(BUILD)/tb
+# The co-simulation testbench (mk/tb.mk), used by the tests, make sim, soak.
+TB            := $(TB_DIR)/albatross/tb_dpram
 RTL           := $(sort $(wildcard rtl/*.v))
 TB_RTL        := $(sort $(wildcard tb/rtl/*.v))
 

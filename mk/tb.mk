@@ -4,7 +4,6 @@
 # Variants: the real RAM and driver, a RAM without byte arbitration, and the
 # driver mutated by tb/mutants/*.sed (each must be caught: negative tests).
 
-TB_DIR      := $(BUILD)/tb
 VERILATOR_ROOT_DIR := $(shell verilator --getenv VERILATOR_ROOT 2>/dev/null)
 TB_CXXFLAGS := -std=c++17 -O2 -g0 -U_FORTIFY_SOURCE -Wall -Wextra -Werror -Itb -Ic-driver -Itb/port \
                -isystem $(VERILATOR_ROOT_DIR)/include -isystem $(VERILATOR_ROOT_DIR)/include/vltstd
@@ -14,7 +13,6 @@ TB_HDR      := $(wildcard tb/*.h) tb/port/alb_port_impl.h c-driver/albatross.h c
 MUTANTS     := $(patsubst tb/mutants/%.sed,%,$(wildcard tb/mutants/*.sed))
 TB_IMPORTS  ?= 1000000
 SOAK_IMPORTS ?= 100000000
-SEED        ?= 1
 
 # Verilated RAM models: $(TB_DIR)/model-<module>/Vdut__ALL.a, and the
 # Verilator run-time library once.
@@ -23,6 +21,18 @@ $(TB_DIR)/model-%/Vdut__ALL.a: $(RTL) $(TB_RTL)
 	verilator --cc -O3 --prefix Vdut --top-module $* -GADDR_WIDTH=10 -Mdir $(@D) \
 	    $(filter %/$*.v,$(RTL) $(TB_RTL))
 	$(MAKE) -s -C $(@D) -f Vdut.mk OPT_FAST=-O2 CXX="$(CXX)" >/dev/null
+
+# The same model with --trace (VCD waves), for make sim.
+$(TB_DIR)/model-%-trace/Vdut__ALL.a: $(RTL) $(TB_RTL)
+	@mkdir -p $(@D)
+	verilator --cc --trace -O3 --prefix Vdut --top-module $* -GADDR_WIDTH=10 -Mdir $(@D) \
+	    $(filter %/$*.v,$(RTL) $(TB_RTL))
+	$(MAKE) -s -C $(@D) -f Vdut.mk OPT_FAST=-O2 CXX="$(CXX)" >/dev/null
+
+$(TB_DIR)/verilated_vcd_c.o:
+	@mkdir -p $(@D)
+	$(CXX) -std=c++17 -O2 -DVM_TRACE=1 -isystem $(VERILATOR_ROOT_DIR)/include \
+	    -isystem $(VERILATOR_ROOT_DIR)/include/vltstd -c $(VERILATOR_ROOT_DIR)/include/verilated_vcd_c.cpp -o $@
 
 $(TB_DIR)/verilated.o:
 	@mkdir -p $(@D)/vlrt
@@ -51,11 +61,16 @@ $(eval $(call tb_variant,albatross,albatross_dpram,c-driver/albatross.c))
 $(eval $(call tb_variant,no-arbitration,dpram_no_arbitration,c-driver/albatross.c))
 $(foreach m,$(MUTANTS),$(eval $(call tb_variant,$(m),albatross_dpram,$(TB_DIR)/mutants/$(m).c)))
 
-TB := $(TB_DIR)/albatross/tb_dpram
-
 $(eval $(call tb_variant,priority-a,dpram_priority_a,c-driver/albatross.c))
 
-TB := $(TB_DIR)/albatross/tb_dpram
+# The real RAM and driver with VCD tracing.
+$(TB_DIR)/albatross-trace/tb_dpram: $(TB_SRC) $(TB_HDR) $(TB_DIR)/model-albatross_dpram-trace/Vdut__ALL.a \
+        $(TB_DIR)/verilated.o $(TB_DIR)/verilated_vcd_c.o c-driver/albatross.c
+	@mkdir -p $(@D)
+	$(CC) $(TB_CFLAGS) -c c-driver/albatross.c -o $(@D)/driver.o
+	$(CXX) $(TB_CXXFLAGS) -DVM_TRACE=1 -I$(TB_DIR)/model-albatross_dpram-trace $(TB_SRC) $(@D)/driver.o \
+	    $(TB_DIR)/model-albatross_dpram-trace/Vdut__ALL.a $(TB_DIR)/verilated.o $(TB_DIR)/verilated_vcd_c.o \
+	    -pthread -o $@
 
 TESTS += tb-exhaustive tb-random tb-crash
 

@@ -9,6 +9,49 @@
 #include <cstdio>
 #include "Vdut.h"
 #include "verilated.h"
+#if VM_TRACE
+#include "verilated_vcd_c.h"
+#endif
+
+struct RamBus::Tracer {
+#if VM_TRACE
+    VerilatedVcdC vcd;
+#endif
+    uint64_t max_cycles = 0;
+    uint64_t time = 0;
+};
+
+bool RamBus::trace(const char *path, uint64_t max_cycles)
+{
+#if VM_TRACE
+    Verilated::traceEverOn(true);
+    tracer_.reset(new Tracer);
+    tracer_->max_cycles = cycle_ + max_cycles;
+    dut_->trace(&tracer_->vcd, 99);
+    tracer_->vcd.open(path);
+    return tracer_->vcd.isOpen();
+#else
+    (void)path;
+    (void)max_cycles;
+    return false;
+#endif
+}
+
+// One eval, dumped to the wave while tracing (10 time units per half cycle).
+void RamBus::eval_traced()
+{
+    dut_->eval();
+#if VM_TRACE
+    if (tracer_) {
+        tracer_->vcd.dump(tracer_->time);
+        tracer_->time += 5;
+        if (cycle_ >= tracer_->max_cycles) {
+            tracer_->vcd.close();
+            tracer_.reset();
+        }
+    }
+#endif
+}
 
 RamBus::RamBus() : dut_(new Vdut), ref_(kBytes, 0), known_(kBytes, 0)
 {
@@ -20,7 +63,13 @@ RamBus::RamBus() : dut_(new Vdut), ref_(kBytes, 0), known_(kBytes, 0)
     reset();
 }
 
-RamBus::~RamBus() { dut_->final(); }
+RamBus::~RamBus()
+{
+#if VM_TRACE
+    if (tracer_) tracer_->vcd.close();
+#endif
+    dut_->final();
+}
 
 void RamBus::reset()
 {
@@ -80,9 +129,9 @@ void RamBus::load(uint32_t addr, const uint8_t *bytes, uint32_t n)
 unsigned RamBus::tick()
 {
     dut_->clk_i = 1;
-    dut_->eval();
+    eval_traced();
     dut_->clk_i = 0;
-    dut_->eval();
+    eval_traced();
     ++cycle_;
     Access done[2];
     int n = 0;

@@ -35,6 +35,10 @@ public:
     SimCpu cpu[2];                      // cpu[p] sits on port p
     AccessObserver *observer = nullptr;
 
+    // Write a VCD wave of the first max_cycles cycles to path (needs a model
+    // built with --trace; returns false otherwise).
+    bool trace(const char *path, uint64_t max_cycles);
+
     // Reset the RAM's control state (a few cycles, ports idle).
     void reset();
     // Write bytes through port A before the CPUs run (a RAM image).
@@ -70,7 +74,11 @@ private:
     void drive(int port, const BusRequest *r);
     void check_and_apply(const Access *done, int n);
 
+    void eval_traced();
+
     std::unique_ptr<Vdut> dut_;
+    struct Tracer;
+    std::unique_ptr<Tracer> tracer_;
     uint64_t cycle_ = 0, reset_cycle_ = 0;
     bool busy_[2] = {false, false};
     uint64_t issue_cycle_[2] = {0, 0};

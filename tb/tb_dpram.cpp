@@ -14,6 +14,8 @@
 //   tb_dpram bench [--imports N]
 //       simulated-CPU access rate and cycles per second of wall time
 //
+// --trace FILE.vcd writes a wave of the first --trace-cycles cycles (binary
+// built with Verilator --trace: build/tb/albatross-trace/).
 // --report FILE writes the figures as JSON.  Exit status 0 means: no
 // violation (or, with --expect-violation, at least one: a negative test).
 #include <algorithm>
@@ -43,6 +45,8 @@ struct Options {
     bool expect_violation = false;
     std::vector<std::string> expect_caught_by;   // checkers that must fire
     std::string variant = "albatross";
+    std::string trace;                 // VCD path (models built with --trace)
+    uint64_t trace_cycles = 20000;
 };
 
 struct Channel {
@@ -879,6 +883,7 @@ int usage()
     std::fprintf(stderr,
                  "usage: tb_dpram exhaustive|random|crash|bench [--imports N] [--seed S] [--payload N]\n"
                  "                [--expect-violation] [--expect-caught-by CHECKER]... [--ignore CHECKER]... [--report FILE] [--variant NAME]\n"
+                 "                [--trace FILE.vcd [--trace-cycles N]]\n"
                  "checkers: mutual_exclusion definite_results actuality termination ownership\n"
                  "          driver_error byte_atomicity access_time in_channel\n");
     return 2;
@@ -911,6 +916,8 @@ int main(int argc, char **argv)
         else if (a == "--seed") { if (!parse_u64(need("--seed"), v)) { std::fprintf(stderr, "--seed: expected an integer\n"); return 2; } o.seed = v; }
         else if (a == "--payload") { if (!parse_u64(need("--payload"), v)) { std::fprintf(stderr, "--payload: expected an integer\n"); return 2; } o.payload = static_cast<uint32_t>(v); }
         else if (a == "--report") o.report = need("--report");
+        else if (a == "--trace") o.trace = need("--trace");
+        else if (a == "--trace-cycles") { if (!parse_u64(need("--trace-cycles"), v) || v == 0) { std::fprintf(stderr, "--trace-cycles: expected a positive integer\n"); return 2; } o.trace_cycles = v; }
         else if (a == "--variant") o.variant = need("--variant");
         else if (a == "--expect-violation") o.expect_violation = true;
         else if (a == "--expect-caught-by") {
@@ -933,6 +940,13 @@ int main(int argc, char **argv)
     g_opts = &o;
     RamBus bus;
     g_bus = &bus;
+    if (!o.trace.empty()) {
+        if (!bus.trace(o.trace.c_str(), o.trace_cycles)) {
+            std::fprintf(stderr, "--trace: cannot write %s (is this binary built with --trace?)\n", o.trace.c_str());
+            return 2;
+        }
+        std::printf("wave: %s, the first %llu cycles\n", o.trace.c_str(), static_cast<unsigned long long>(o.trace_cycles));
+    }
     if (o.mode == "exhaustive") return mode_exhaustive(o);
     if (o.mode == "random") return mode_random(o);
     if (o.mode == "crash") return mode_crash(o);
