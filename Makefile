@@ -9,7 +9,7 @@ PYTHON        ?= python3
 SUDO          := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # Debian packages and PyPI packages that `make deps` installs.
-APT_PACKAGES  := make g++ python3 python3-pip verilator iverilog yosys \
+APT_PACKAGES  := make g++ python3 verilator iverilog yosys \
                  gcc-riscv64-unknown-elf
 PIP_PACKAGES  :=
 
@@ -25,7 +25,7 @@ TESTS         :=
 BENCHES       :=
 include $(sort $(wildcard mk/*.mk))
 
-.PHONY: help deps lint test bench sim clean
+.PHONY: help deps lint test bench figures sim clean
 
 help: ## list the targets
 	@echo "ALBATROSS -- make targets:"
@@ -50,6 +50,9 @@ test: ## build and run every test; ends with "N passed, N failed"
 	@tools/summary.sh $(TESTS)
 
 bench: $(BENCHES) ## run the benchmarks, figures to build/reports/
+
+figures: ## regenerate README.md's figure tables from build/reports/*.json
+	@$(PYTHON) tools/figures.py README.md
 
 clean: ## remove build/
 	rm -rf $(BUILD)

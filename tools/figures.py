@@ -1,0 +1,172 @@
+#!/usr/bin/env python3
+"""figures.py [README.md] -- regenerate the README's figure tables from
+build/reports/*.json (written by make test and make bench).
+
+Each table sits between the markers
+    <!-- figures:NAME -->   and   <!-- /figures:NAME -->
+and is replaced whole.  A table whose report is missing says which make
+target produces it.  No measured number is ever typed into the README by
+hand.  Standard library only.
+"""
+import json
+import os
+import sys
+
+REPORTS = "build/reports"
+
+
+def load(name):
+    path = os.path.join(REPORTS, name)
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return None
+
+
+def missing(name, target):
+    return f"_Not measured yet: `{target}` writes `{REPORTS}/{name}`._"
+
+
+def table(head, rows):
+    out = ["| " + " | ".join(head) + " |", "|" + "|".join("---" for _ in head) + "|"]
+    out += ["| " + " | ".join(str(c) for c in r) + " |" for r in rows]
+    return "\n".join(out)
+
+
+def n(v):
+    return f"{v:,.0f}"
+
+
+def viol(rep):
+    return n(rep.get("violations_total", 0))
+
+
+def tests():
+    rows = []
+    ex = load("tb_exhaustive.json")
+    if ex:
+        rows.append(["exhaustive interleavings", f"{n(ex['schedules'])} schedules, "
+                     f"{n(ex['collisions'])} same-cycle same-byte collisions",
+                     n(ex["imports_checked"]), viol(ex)])
+    rnd = load("tb_random.json")
+    if rnd:
+        rows.append(["random timing, ratios 1:100..100:1", f"{n(rnd['channels'])} channels, "
+                     f"{n(rnd['cycles'])} cycles", n(rnd["imports_checked"]), viol(rnd)])
+    cr = load("tb_crash.json")
+    if cr:
+        rows.append(["crash: frozen / reset at every access point",
+                     f"{n(cr['runs'])} runs, {n(cr['survivor_calls'])} survivor calls", "-", viol(cr)])
+    cdc = load("cdc.json")
+    if cdc:
+        chk = cdc.get("checkers", {})
+        fails = sum(c.get("failures", 0) for c in chk.values())
+        rows.append(["independent clocks through albatross_wb_cdc",
+                     f"{n(cdc['accesses'])} accesses, {n(cdc['reads_contended'])} contended reads",
+                     "-", n(fails)])
+    if not rows:
+        return missing("tb_*.json", "make test")
+    return table(["test", "explored", "Imports checked", "violations"], rows)
+
+
+def termination():
+    rnd = load("tb_random.json")
+    if not rnd:
+        return missing("tb_random.json", "make test")
+    rows = []
+    for b in rnd["termination_by_speed_ratio"]:
+        lo, hi = 10 ** b["log10_ratio_from"], 10 ** b["log10_ratio_to"]
+        rows.append([f"{lo:.3g} .. {hi:.3g}", n(b["imports"]), f"{b['mean_iterations']:.3f}",
+                     b["worst_iterations"], b["worst_control_accesses"]])
+    return table(["writer : reader speed", "Imports", "mean loop iterations", "worst iterations",
+                  "worst accesses beyond payload"], rows)
+
+
+def overhead():
+    rnd = load("tb_random.json")
+    if not rnd:
+        return missing("tb_random.json", "make test")
+    ov = rnd["accesses_beyond_payload"]
+    return table(["call (undisturbed)", "required", "measured"],
+                 [["Export", 2, ov["export"]], ["Import, no new data", 1, ov["import_old"]],
+                  ["Import, new data", 3, ov["import_new"]]])
+
+
+def negative():
+    rows = []
+    for f in sorted(os.listdir(REPORTS)) if os.path.isdir(REPORTS) else []:
+        if f.startswith("tb_negative_") and f.endswith(".json"):
+            rep = load(f)
+            if rep:
+                rows.append([f"`{rep['variant']}`", rep.get("caught_by", "") or "**not caught**"])
+    if not rows:
+        return missing("tb_negative_*.json", "make test")
+    return table(["broken variant", "caught by"], rows)
+
+
+def driver_size():
+    ds = load("driver_size.json")
+    if not ds:
+        return missing("driver_size.json", "make bench")
+    rows = []
+    for level, d in ds["levels"].items():
+        fn = d["functions"]
+        rows.append([level, fn["alb_import"]["with_libgcc"], fn["alb_export"]["with_libgcc"], d["text_bytes"]])
+    return table(["rv32i", "alb_import (bytes)", "alb_export (bytes)", "whole driver .text"], rows)
+
+
+def bench():
+    b = load("bench_tb.json")
+    if not b:
+        return missing("bench_tb.json", "make bench")
+    return table(["figure", "value"], [
+        ["RAM accesses by simulated CPUs per second of wall time", f"{b['accesses_per_second'] / 1e6:.2f} M"],
+        ["simulated cycles per second, with CPUs", f"{b['cycles_per_second'] / 1e6:.2f} M"],
+        ["simulated cycles per second, idle RTL alone", f"{b['idle_rtl_cycles_per_second'] / 1e6:.2f} M"],
+        ["with CPUs / idle RTL (same run)", f"{b['with_cpus_over_idle']:.2f}"]])
+
+
+def cdc():
+    c = load("cdc.json")
+    if not c:
+        return missing("cdc.json", "make test")
+    rows = []
+    for cpu, d in sorted(c["cpus"].items()):
+        for case, lat in d["latency"].items():
+            rows.append([cpu, case.replace("_", " "), f"`{lat['bound_formula']}`", n(lat["count"]),
+                         f"{lat['worst_ratio_to_bound']:.3f}"])
+    return table(["CPU", "access", "bound", "accesses", "worst / bound"], rows)
+
+
+def synth():
+    s = load("synth_albatross_dpram.json")
+    if not s:
+        return missing("synth_albatross_dpram.json", "make bench")
+    rows = []
+    for fam, d in s["families"].items():
+        rows.append([fam, d["luts"], d["ffs"], d["brams"], "yes" if d["bram_inferred"] else "**no**"])
+    return table([f"family (ADDR_WIDTH={s.get('addr_width', '?')})", "LUTs", "flip-flops", "block RAMs",
+                  "block RAM inferred"], rows)
+
+
+SECTIONS = {"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
+            "driver-size": driver_size, "bench": bench, "cdc": cdc, "synth": synth}
+
+
+def main():
+    path = sys.argv[1] if len(sys.argv) > 1 else "README.md"
+    with open(path) as f:
+        text = f.read()
+    for name, make in SECTIONS.items():
+        begin, end = f"<!-- figures:{name} -->", f"<!-- /figures:{name} -->"
+        i, j = text.find(begin), text.find(end)
+        if i < 0 or j < i:
+            sys.exit(f"figures.py: {path} has no {begin} ... {end} block")
+        text = text[:i + len(begin)] + "\n" + make() + "\n" + text[j:]
+    with open(path, "w") as f:
+        f.write(text)
+    print(f"figures: {len(SECTIONS)} tables regenerated in {path} from {REPORTS}/")
+
+
+if __name__ == "__main__":
+    main()
