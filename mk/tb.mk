@@ -5,7 +5,7 @@
 # driver mutated by tb/mutants/*.sed (each must be caught: negative tests).
 
 VERILATOR_ROOT_DIR := $(shell verilator --getenv VERILATOR_ROOT 2>/dev/null)
-TB_CXXFLAGS := -std=c++17 -O2 -g0 -U_FORTIFY_SOURCE -Wall -Wextra -Werror -Itb -Ic-driver -Itb/port \
+TB_CXXFLAGS := -std=c++17 -O3 -g0 -U_FORTIFY_SOURCE -Wall -Wextra -Werror -Itb -Ic-driver -Itb/port \
                -isystem $(VERILATOR_ROOT_DIR)/include -isystem $(VERILATOR_ROOT_DIR)/include/vltstd
 TB_CFLAGS   := -std=c99 -O2 -Wall -Wextra -Werror -pedantic -U_FORTIFY_SOURCE -Ic-driver -Itb/port
 TB_SRC      := tb/tb_dpram.cpp tb/ram_bus.cpp tb/sim_cpu.cpp tb/protocol_checker.cpp
@@ -20,14 +20,14 @@ $(TB_DIR)/model-%/Vdut__ALL.a: $(RTL) $(TB_RTL)
 	@mkdir -p $(@D)
 	verilator --cc -O3 --prefix Vdut --top-module $* -GADDR_WIDTH=10 -Mdir $(@D) \
 	    $(filter %/$*.v,$(RTL) $(TB_RTL))
-	$(MAKE) -s -C $(@D) -f Vdut.mk OPT_FAST=-O2 CXX="$(CXX)" >/dev/null
+	$(MAKE) -s -C $(@D) -f Vdut.mk OPT_FAST=-O3 CXX="$(CXX)" >/dev/null
 
 # The same model with --trace (VCD waves), for make sim.
 $(TB_DIR)/model-%-trace/Vdut__ALL.a: $(RTL) $(TB_RTL)
 	@mkdir -p $(@D)
 	verilator --cc --trace -O3 --prefix Vdut --top-module $* -GADDR_WIDTH=10 -Mdir $(@D) \
 	    $(filter %/$*.v,$(RTL) $(TB_RTL))
-	$(MAKE) -s -C $(@D) -f Vdut.mk OPT_FAST=-O2 CXX="$(CXX)" >/dev/null
+	$(MAKE) -s -C $(@D) -f Vdut.mk OPT_FAST=-O3 CXX="$(CXX)" >/dev/null
 
 $(TB_DIR)/verilated_vcd_c.o:
 	@mkdir -p $(@D)
