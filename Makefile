@@ -40,9 +40,14 @@ deps: ## install every tool (apt-get, pip)
 lint: ## Verilator -Wall lint, Icarus and Yosys read of all RTL
 	@tools/lint.sh $(RTL) $(TB_RTL)
 
-TESTS += lint
+TESTS += lint lint-negative
 test-lint:
 	@tools/run_test.sh lint $(MAKE) -s lint
+# The lint must fail on a file with a Verilator -Wall warning.
+test-lint-negative:
+	@tools/run_test.sh lint-negative bash -c 'if tools/lint.sh tb/lint/lint_width_truncation.v; then \
+	    echo "expected tools/lint.sh to reject tb/lint/lint_width_truncation.v (WIDTH), it passed"; exit 1; \
+	    else echo "lint rejected the bad file, as expected"; fi'
 
 test: ## build and run every test; ends with "N passed, N failed"
 	@rm -rf $(BUILD)/results
