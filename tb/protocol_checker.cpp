@@ -44,6 +44,19 @@ uint64_t ProtocolChecker::total_violations() const
 void ProtocolChecker::violation(Kind k, const std::string &msg)
 {
     if (violations[k]++ == 0) first_message[k] = msg;
+    if (!first_context.empty()) return;
+    uint64_t from = history_n_ > kHistory ? history_n_ - kHistory : 0;
+    for (uint64_t i = from; i < history_n_; ++i) {
+        const Access &a = history_[i % kHistory];
+        int b = buffer_of(a.req.addr);
+        char line[160];
+        std::snprintf(line, sizeof line, "    cycle %8llu  %s %s %-11s lanes %x  data %08x\n",
+                      static_cast<unsigned long long>(a.serve_cycle), a.port == prod_ ? "producer" : "consumer",
+                      a.req.we ? "write" : "read ",
+                      b == 0 ? (a.req.sel & 1 ? "Actual" : "ReadLocked") : b > 0 ? ("Buffer" + std::to_string(b)).c_str() : "outside",
+                      a.req.sel, a.req.we ? a.req.wdata : a.rdata);
+        first_context += line;
+    }
 }
 
 int ProtocolChecker::buffer_of(uint32_t addr) const
@@ -56,6 +69,7 @@ int ProtocolChecker::buffer_of(uint32_t addr) const
 
 void ProtocolChecker::on_access(const Access &a)
 {
+    history_[history_n_++ % kHistory] = a;
     int b = buffer_of(a.req.addr);
     bool ctrl_actual = b == 0 && (a.req.sel & (1u << ALB_OFF_ACTUAL));
     bool ctrl_rl = b == 0 && (a.req.sel & (1u << ALB_OFF_READLOCKED));
@@ -208,14 +222,26 @@ void ProtocolChecker::import_end(int rc, const uint8_t *value, uint64_t now)
             violation(MUTEX, msg);
         }
     }
-    // Which exported value is it?  Search from the newest started downwards.
+    // Which exported value is it?  A payload of fewer than 4 bytes names its
+    // export only modulo 2^(8*size), so first look among the exports a correct
+    // Import may return (published by its last load of Actual, not older than
+    // what was published when it began or than the last value read), newest
+    // first; only if none matches, search every recent export to tell an old,
+    // an unpublished and a torn value apart.
     uint64_t lo_seq = std::min(pub_at_start_, has_last_ ? last_seq_ : pub_at_start_);
     lo_seq = lo_seq > 8 ? lo_seq - 8 : 0;
+    uint64_t floor_seq = std::max(pub_at_start_, has_last_ ? last_seq_ : 0);
     bool found = false;
     uint64_t seq = 0;
-    for (uint64_t s = newest_started_ + 1; s-- > lo_seq;) {
-        make_value(s, expect_.data(), size_);
-        if (std::memcmp(expect_.data(), value, size_) == 0) { found = true; seq = s; break; }
+    for (int pass = 0; pass < 2 && !found; ++pass) {
+        for (uint64_t s = newest_started_ + 1; s-- > lo_seq;) {
+            if (pass == 0) {
+                auto p = publish_cycle_.find(s);
+                if (s < floor_seq || p == publish_cycle_.end() || p->second > imp_last_actual_) continue;
+            }
+            make_value(s, expect_.data(), size_);
+            if (std::memcmp(expect_.data(), value, size_) == 0) { found = true; seq = s; break; }
+        }
     }
     if (!found) {
         std::snprintf(msg, sizeof msg,

@@ -55,6 +55,8 @@ public:
     uint64_t violations[KINDS] = {};
     std::string first_message[KINDS];
     uint64_t total_violations() const;
+    // The last accesses of both sides before the first violation, one per line.
+    std::string first_context;
     uint64_t imports = 0, imports_new = 0, exports = 0, published = 0;
     uint64_t worst_import_accesses = 0, worst_import_iterations = 0;
     uint64_t export_accesses = 0;       // the fixed count, once seen
@@ -95,4 +97,7 @@ private:
     uint64_t last_seq_ = 0;
     void note_overhead(int kind, uint64_t accesses);
     std::vector<uint8_t> expect_;
+    static const int kHistory = 48;
+    Access history_[kHistory];
+    uint64_t history_n_ = 0;
 };

@@ -176,9 +176,11 @@ struct Verdict {
     uint64_t violations[ProtocolChecker::KINDS] = {};
     std::string first[ProtocolChecker::KINDS];
     uint64_t atomicity = 0, latency = 0, faults = 0, other = 0;
-    std::string first_atomicity, first_latency, first_fault, first_other;
+    std::string first_atomicity, first_latency, first_fault, first_other, context;
 
     void take(const Run &r) {
+        if (context.empty() && !r.chk.first_context.empty())
+            context = "  the last accesses before the first protocol violation:\n" + r.chk.first_context;
         for (int k = 0; k < ProtocolChecker::KINDS; ++k) {
             if (r.chk.violations[k] && !violations[k]) first[k] = r.chk.first_message[k];
             violations[k] += r.chk.violations[k];
@@ -217,6 +219,7 @@ struct Verdict {
                         ignored(k) ? " (ignored)" : "", n ? ": " : "", n ? m.c_str() : "");
         }
         if (other) std::printf("  %-18s %llu: %s\n", "harness", static_cast<unsigned long long>(other), first_other.c_str());
+        if (!context.empty()) std::printf("%s", context.c_str());
     }
     std::string json() const {
         std::string s = "{";
