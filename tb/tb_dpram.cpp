@@ -831,7 +831,7 @@ int mode_crash(const Options &o)
             for (int rs = 0; rs <= 1; ++rs) {
                 uint64_t before = cr.runs - cr.not_reached;
                 for (unsigned k = 0; k < points; ++k)
-                    for (uint64_t s = 0; s < 4; ++s)
+                    for (uint64_t s = 0; s < 8; ++s)
                         crash_run(size, vp != 0, rs != 0, k, o.seed * 1000 + k * 10 + s, cr);
                 std::printf("  %-8s %-6s at %2u access points of %s: %llu runs crashed as planned\n",
                             vp ? "producer" : "consumer", rs ? "reset" : "frozen", points,
