@@ -74,16 +74,19 @@ module albatross_dpram #(
         end
     end
 
-    // Memory array: one read/write port with byte enables, never reset.
+    // Memory array: one read/write port with byte enables, never reset.  It
+    // reads only when it does not write, so no RAM primitive ever sees a
+    // read and a write of one address at one edge (no read-first emulation).
     always @(posedge clk_i) begin
         if (wen[0]) mem[adr][7:0]   <= wdata[7:0];
         if (wen[1]) mem[adr][15:8]  <= wdata[15:8];
         if (wen[2]) mem[adr][23:16] <= wdata[23:16];
         if (wen[3]) mem[adr][31:24] <= wdata[31:24];
-        rdata_q <= mem[adr];
+        if (~|wen) rdata_q <= mem[adr];
     end
 
-    // Read data is valid while the port's ack is high.
+    // Read data is valid while the port's ack is high after a read (Wishbone
+    // leaves dat_o undefined on a write ack; here it holds the last read).
     assign a_dat_o = rdata_q;
     assign b_dat_o = rdata_q;
     assign a_ack_o = a_ack_q;
