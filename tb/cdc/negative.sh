@@ -10,7 +10,7 @@ for spec in torn:1:atomicity latency:2:latency write:4:visibility ram:8:ram; do
     IFS=: read -r mode bit checker <<< "$spec"
     out=$("$bin" --seed="$seed" --accesses="$accesses" --inject="$mode" 2>&1)
     rc=$?
-    echo "$out" | grep -E '^test_cdc: seed|^FAIL' | head -n 3
+    echo "$out" | grep -E '^FAIL' | head -n 2 | sed 's/^FAIL/  caught (injected fault):/'
     if (( rc >= 64 && rc < 128 && ((rc - 64) & bit) )); then
         echo "negative $mode: checker $checker failed as it must (exit $rc)"
     else
