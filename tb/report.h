@@ -8,9 +8,13 @@
 class JsonReport {
 public:
     JsonReport() : s_("{") {}
+    // Integers (counts) exactly, other numbers to 9 significant digits.
     JsonReport &num(const char *key, double v) {
         char b[64];
-        std::snprintf(b, sizeof b, "%.6g", v);
+        if (v == static_cast<double>(static_cast<long long>(v)) && v < 9.0e15 && v > -9.0e15)
+            std::snprintf(b, sizeof b, "%lld", static_cast<long long>(v));
+        else
+            std::snprintf(b, sizeof b, "%.9g", v);
         return raw(key, b);
     }
     JsonReport &str(const char *key, const std::string &v) {

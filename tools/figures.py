@@ -53,6 +53,10 @@ def tests():
     if rnd:
         rows.append(["random timing, ratios 1:100..100:1", f"{n(rnd['channels'])} channels, "
                      f"{n(rnd['cycles'])} cycles", n(rnd["imports_checked"]), viol(rnd)])
+    soak = load("tb_soak.json")
+    if soak:
+        rows.append(["soak (`make soak`), same harness", f"{n(soak['channels'])} channels, "
+                     f"{n(soak['cycles'])} cycles", n(soak["imports_checked"]), viol(soak)])
     cr = load("tb_crash.json")
     if cr:
         rows.append(["crash: frozen / reset at every access point",
