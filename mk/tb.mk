@@ -8,7 +8,7 @@ VERILATOR_ROOT_DIR := $(shell verilator --getenv VERILATOR_ROOT 2>/dev/null)
 TB_CXXFLAGS := -std=c++17 -O3 -g0 -U_FORTIFY_SOURCE -Wall -Wextra -Werror -Itb -Ic-driver -Itb/port \
                -isystem $(VERILATOR_ROOT_DIR)/include -isystem $(VERILATOR_ROOT_DIR)/include/vltstd
 TB_CFLAGS   := -std=c99 -O2 -Wall -Wextra -Werror -pedantic -U_FORTIFY_SOURCE -Ic-driver -Itb/port
-TB_SRC      := tb/tb_dpram.cpp tb/ram_bus.cpp tb/sim_cpu.cpp tb/protocol_checker.cpp
+TB_SRC      := tb/tb_dpram.cpp tb/ram_bus.cpp tb/ref_ram.cpp tb/sim_cpu.cpp tb/protocol_checker.cpp
 TB_HDR      := $(wildcard tb/*.h) tb/port/alb_port_impl.h c-driver/albatross.h c-driver/albatross_layout.h
 MUTANTS     := $(patsubst tb/mutants/%.sed,%,$(wildcard tb/mutants/*.sed))
 TB_IMPORTS  ?= 1000000

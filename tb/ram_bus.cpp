@@ -1,10 +1,5 @@
-// ram_bus.cpp -- clocking the Verilated RAM and checking byte atomicity.
-//
-// Atomicity check: the reference memory is updated with every write at the
-// edge that performs it.  A read performed at edge e must return, for every
-// byte it selects, the byte's value before e or (if the other port writes
-// that byte at the same edge) the value written at e: anything else is a
-// torn or invented byte.
+// ram_bus.cpp -- clocking the Verilated RAM; every completed access goes
+// through the byte-atomicity checker (ref_ram.h).
 #include "ram_bus.h"
 #include <cstdio>
 #include "Vdut.h"
@@ -53,7 +48,7 @@ void RamBus::eval_traced()
 #endif
 }
 
-RamBus::RamBus() : dut_(new Vdut), ref_(kBytes, 0), known_(kBytes, 0)
+RamBus::RamBus() : ref(kBytes), dut_(new Vdut)
 {
     cpu[0].id = 0;
     cpu[1].id = 1;
@@ -116,8 +111,7 @@ void RamBus::load(uint32_t addr, const uint8_t *bytes, uint32_t n)
         for (; lane < 4 && i < n; ++lane, ++i) {
             word |= static_cast<uint32_t>(bytes[i]) << (8 * lane);
             sel |= static_cast<uint8_t>(1u << lane);
-            ref_[(a & ~3u) + lane] = bytes[i];
-            known_[(a & ~3u) + lane] = 1;
+            ref.preload((a & ~3u) + lane, bytes[i]);
         }
         BusRequest r{a & ~3u, word, sel, true};
         drive(0, &r);
@@ -155,7 +149,7 @@ unsigned RamBus::tick()
             drive(p, nullptr);
         }
     }
-    if (n) check_and_apply(done, n);
+    if (n) ref.check_and_apply(done, n);
     for (int i = 0; i < n; ++i) {
         SimCpu &c = cpu[done[i].port];
         c.rdata = done[i].rdata;
@@ -165,54 +159,4 @@ unsigned RamBus::tick()
     }
     accesses += n;
     return mask;
-}
-
-void RamBus::check_and_apply(const Access *done, int n)
-{
-    // Reads first, against the values before this edge and this edge's writes.
-    for (int i = 0; i < n; ++i) {
-        const Access &r = done[i];
-        if (r.req.we) continue;
-        for (uint32_t lane = 0; lane < 4; ++lane) {
-            if (!(r.req.sel & (1u << lane))) continue;
-            uint32_t a = (r.req.addr + lane) & (kBytes - 1u);
-            uint8_t got = static_cast<uint8_t>(r.rdata >> (8 * lane));
-            bool ok = !known_[a] || got == ref_[a];
-            for (int j = 0; j < n; ++j) {
-                const Access &w = done[j];
-                if (j == i || !w.req.we || !(w.req.sel & (1u << lane)) ||
-                    ((w.req.addr ^ r.req.addr) & (kBytes - 4u)) != 0)
-                    continue;
-                ++same_edge_collisions;
-                if (got == static_cast<uint8_t>(w.req.wdata >> (8 * lane))) ok = true;
-            }
-            if (!ok) {
-                if (atomicity_violations++ == 0) {
-                    char msg[200];
-                    std::snprintf(msg, sizeof msg,
-                                  "byte atomicity: port %c read byte 0x%x at cycle %llu: expected 0x%02x "
-                                  "(old) or a value written at that edge, got 0x%02x",
-                                  'A' + r.port, a, static_cast<unsigned long long>(r.serve_cycle),
-                                  ref_[a], got);
-                    first_atomicity_violation = msg;
-                }
-                ref_[a] = got;   // resynchronise
-            }
-        }
-    }
-    for (int i = 0; i < n; ++i) {
-        const Access &w = done[i];
-        if (!w.req.we) continue;
-        for (uint32_t lane = 0; lane < 4; ++lane) {
-            if (!(w.req.sel & (1u << lane))) continue;
-            uint32_t a = (w.req.addr + lane) & (kBytes - 1u);
-            bool both = false;
-            for (int j = 0; j < n; ++j)
-                if (j != i && done[j].req.we && (done[j].req.sel & (1u << lane)) &&
-                    ((done[j].req.addr ^ w.req.addr) & (kBytes - 4u)) == 0)
-                    both = true;
-            ref_[a] = static_cast<uint8_t>(w.req.wdata >> (8 * lane));
-            known_[a] = both ? 0 : 1;   // two writers at one edge: either value
-        }
-    }
 }

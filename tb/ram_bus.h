@@ -5,18 +5,10 @@
 #include <memory>
 #include <string>
 #include <vector>
+#include "ref_ram.h"
 #include "sim_cpu.h"
 
 class Vdut;
-
-// One completed transaction, as seen at the port.
-struct Access {
-    int        port;         // 0 = A, 1 = B
-    BusRequest req;
-    uint32_t   rdata;
-    uint64_t   issue_cycle;  // cycle its request was first driven
-    uint64_t   serve_cycle;  // the edge that performed it (= ack seen)
-};
 
 class AccessObserver {
 public:
@@ -55,24 +47,20 @@ public:
     // reset; the RTL alternates A, B, A, ...).
     int next_slot() const { return static_cast<int>(cycle_ - reset_cycle_) & 1; }
 
-    // Byte-atomicity checker results.
-    uint64_t atomicity_violations = 0;
-    std::string first_atomicity_violation;
+    RefRam ref;                         // byte-atomicity checker of this RAM
     uint64_t accesses = 0;
-    uint64_t same_edge_collisions = 0;  // a read and a write of one byte at one edge
     // Access-time checker: every access is acknowledged within kMaxLatency
     // cycles of its request, whatever the other port does.
     static const int kMaxLatency = 2;
     uint64_t worst_latency = 0, latency_violations = 0;
     std::string first_latency_violation;
     // The RAM's content as the reference model knows it.
-    uint8_t ram_byte(uint32_t addr) const { return ref_[addr & (kBytes - 1u)]; }
+    uint8_t ram_byte(uint32_t addr) const { return ref.byte(addr); }
     // Stall detector for a RAM that never answers.
     uint64_t issue_cycle(int port) const { return issue_cycle_[port]; }
 
 private:
     void drive(int port, const BusRequest *r);
-    void check_and_apply(const Access *done, int n);
 
     void eval_traced();
 
@@ -82,8 +70,4 @@ private:
     uint64_t cycle_ = 0, reset_cycle_ = 0;
     bool busy_[2] = {false, false};
     uint64_t issue_cycle_[2] = {0, 0};
-    // Reference model: every byte's value, and for bytes written at the
-    // current edge by both ports, the other possible value.
-    std::vector<uint8_t> ref_;
-    std::vector<uint8_t> known_;        // 0: unknown (never written)
 };

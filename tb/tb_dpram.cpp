@@ -192,11 +192,11 @@ struct Verdict {
     }
     void take_bus() {
         RamBus &b = *g_bus;
-        if (b.atomicity_violations && !atomicity) first_atomicity = b.first_atomicity_violation;
-        atomicity += b.atomicity_violations;
+        if (b.ref.violations && !atomicity) first_atomicity = b.ref.first_violation;
+        atomicity += b.ref.violations;
         if (b.latency_violations && !latency) first_latency = b.first_latency_violation;
         latency += b.latency_violations;
-        b.atomicity_violations = b.latency_violations = 0;
+        b.ref.violations = b.latency_violations = 0;
     }
     void add_other(const std::string &m) { if (!other++) first_other = m; }
     // Violations that count (not --ignore'd).
