@@ -1,0 +1,27 @@
+# mk/compiler.mk -- the schedule compiler (compiler/albatross_schedule.py):
+# a system description (TOML) -> schedule ROM, board headers and sources, RAM
+# images, reports and a timeline picture.  Standard-library Python only.
+#   make schedule [SCHEDULE_DESC=file.toml]   -> build/schedule/<file name>/
+#   make build/schedule/<example>/rom.hex     any compiler/examples/<example>.toml
+#   make test-compiler                        compiler/tests (examples, bad
+#                                             descriptions, gcc, end-to-end)
+
+SCHEDULE_DESC ?= compiler/examples/mobot3.toml
+SCHEDULE_TOOL := compiler/albatross_schedule.py
+SCHEDULE_DIR  := $(BUILD)/schedule/$(basename $(notdir $(SCHEDULE_DESC)))
+
+TESTS += compiler
+.PHONY: test-compiler schedule
+
+test-compiler:
+	@tools/run_test.sh compiler $(PYTHON) -m unittest discover -s compiler/tests -v
+
+schedule: $(SCHEDULE_DIR)/rom.hex ## compile SCHEDULE_DESC (default: the MOBOT-III example) -> build/schedule/<name>/
+	@sed -n "1,/^(times/p" $(SCHEDULE_DIR)/report.txt
+	@echo "schedule: $(SCHEDULE_DIR)/ (rom.hex, <board>.h/.c, <board>_ram.hex, report.json, timeline.svg)"
+
+$(SCHEDULE_DIR)/rom.hex: $(SCHEDULE_DESC) $(SCHEDULE_TOOL)
+	$(PYTHON) $(SCHEDULE_TOOL) $(SCHEDULE_DESC) --out $(@D)
+
+$(BUILD)/schedule/%/rom.hex: compiler/examples/%.toml $(SCHEDULE_TOOL)
+	$(PYTHON) $(SCHEDULE_TOOL) $< --out $(@D)
