@@ -1,0 +1,66 @@
+// plan.cpp -- see plan.h.
+#include "plan.h"
+#include <fstream>
+#include <sstream>
+
+bool Plan::load(const std::string &path, std::string &error)
+{
+    std::ifstream in(path);
+    if (!in) {
+        error = "cannot read " + path + " (run the schedule compiler first)";
+        return false;
+    }
+    std::string line;
+    int n = 0;
+    bool have_system = false;
+    while (std::getline(in, line)) {
+        ++n;
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream s(line);
+        std::string what;
+        s >> what;
+        bool ok = true;
+        if (what == "system") {
+            std::string mode;
+            ok = static_cast<bool>(s >> boards >> cycle >> mode >> n_chan >> ram_bytes) &&
+                 (mode == "rigid" || mode == "sync");
+            sync_mode = mode == "sync";
+            have_system = ok;
+        } else if (what == "channel") {
+            PlanChannel c;
+            int sync = 0;
+            ok = static_cast<bool>(s >> c.id >> c.name >> c.kind >> c.size >> c.words >> c.src_board >>
+                                   c.src_base >> c.period >> c.latency >> c.latency_retry >> sync >> c.slots);
+            c.sync = sync != 0;
+            ok = ok && (c.kind == "copy" || c.kind == "time" || c.kind == "status");
+            if (ok) channels.push_back(c);
+        } else if (what == "dest") {
+            int id = 0, index = 0;
+            PlanDest d;
+            ok = static_cast<bool>(s >> id >> index >> d.board >> d.base);
+            PlanChannel *c = nullptr;
+            for (PlanChannel &x : channels)
+                if (x.id == id) c = &x;
+            ok = ok && c && index == static_cast<int>(c->dests.size());
+            if (ok) c->dests.push_back(d);
+        } else {
+            ok = false;
+        }
+        if (!ok) {
+            error = path + ":" + std::to_string(n) + ": cannot read \"" + line + "\"";
+            return false;
+        }
+    }
+    if (!have_system || channels.empty()) {
+        error = path + ": no system line or no channel";
+        return false;
+    }
+    return true;
+}
+
+const PlanChannel *Plan::by_name(const std::string &name) const
+{
+    for (const PlanChannel &c : channels)
+        if (c.name == name) return &c;
+    return nullptr;
+}

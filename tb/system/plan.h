@@ -1,0 +1,49 @@
+// plan.h -- what the testbench knows of a compiled schedule: boards,
+// channels, where each instance lives, and the compiler's bounds.  Read from
+// tb_plan.txt, which tools/plan_for_tb.py writes from the compiler's
+// report.json (one line per fact, so the C++ side needs no JSON parser):
+//
+//   system <boards> <cycle_clocks> <rigid|sync> <n_chan> <ram_bytes>
+//   channel <id> <name> <copy|time|status> <size> <words> <src_board> <src_base>
+//           <period> <latency> <latency_with_retries> <sync> <slots>
+//   dest <id> <index> <board> <base>
+//
+// Sizes and bases in bytes, times in controller clocks; src_board is -1 for
+// channels the controller produces.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+struct PlanDest {
+    int board = 0;
+    uint32_t base = 0;
+};
+
+struct PlanChannel {
+    int id = 0;
+    std::string name, kind;
+    uint32_t size = 0, words = 0;
+    int src_board = -1;
+    uint32_t src_base = 0;
+    uint64_t period = 0, latency = 0, latency_retry = 0;
+    bool sync = false;
+    int slots = 0;
+    std::vector<PlanDest> dests;
+
+    bool copy() const { return kind == "copy"; }
+    // Bytes of the destination payload: the value's words and taken_at.
+    uint32_t dest_size() const { return 4 * words + 4; }
+};
+
+struct Plan {
+    int boards = 0, n_chan = 0;
+    uint64_t cycle = 0;
+    bool sync_mode = false;
+    uint32_t ram_bytes = 0;
+    std::vector<PlanChannel> channels;
+
+    // Reads tb_plan.txt; on error returns false with a message naming the line.
+    bool load(const std::string &path, std::string &error);
+    const PlanChannel *by_name(const std::string &name) const;
+};

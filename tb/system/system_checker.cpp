@@ -1,0 +1,310 @@
+// system_checker.cpp -- see system_checker.h.
+#include "system_checker.h"
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include "protocol_checker.h"
+extern "C" {
+#include "albatross.h"
+}
+
+void channel_value(int channel_id, uint64_t seq, uint8_t *out, uint32_t size)
+{
+    make_value(seq ^ (static_cast<uint64_t>(channel_id + 1) << 44), out, size);
+}
+
+const char *SystemChecker::kind_name(int k)
+{
+    static const char *n[KINDS] = {"mutual_exclusion", "definite_results", "actuality", "duplicate_new",
+                                   "latency_bound", "ownership", "in_channel", "driver_error", "global_time"};
+    return n[k];
+}
+
+SystemChecker::SystemChecker(const Plan &plan, SystemSim &sim, uint64_t time_offset)
+    : plan_(plan), sim_(sim), time_offset_(time_offset)
+{
+    const size_t n = plan.channels.size();
+    stats.resize(n);
+    src_.resize(n);
+    dst_.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const PlanChannel &c = plan.channels[i];
+        stats[i].dests.resize(c.dests.size());
+        dst_[i].resize(c.dests.size());
+        if (c.copy()) {
+            Instance in;
+            in.chan = static_cast<int>(i);
+            in.board = c.src_board;
+            in.base = c.src_base;
+            in.size = c.size;
+            in.producer_port = 0;
+            inst_.push_back(in);
+            src_[i].publish_cycle.push_back(0);   // seq 0: the RAM image
+        }
+        for (size_t d = 0; d < c.dests.size(); ++d) {
+            Instance in;
+            in.chan = static_cast<int>(i);
+            in.dest = static_cast<int>(d);
+            in.board = c.dests[d].board;
+            in.base = c.dests[d].base;
+            in.size = c.dest_size();
+            in.producer_port = 1;
+            inst_.push_back(in);
+            // The RAM image: Buffer1 holds value 0 (zeros for TIME/STATUS), taken_at 0.
+            DestPub p{0, 0, 0, std::vector<uint8_t>(c.dest_size(), 0)};
+            if (c.copy()) channel_value(c.id, 0, p.bytes.data(), c.size);
+            dst_[i][d].pubs.push_back(p);
+            dst_[i][d].pending = 1;
+        }
+    }
+}
+
+uint64_t SystemChecker::total() const
+{
+    uint64_t t = 0;
+    for (int k = 0; k < KINDS; ++k) t += violations[k];
+    return t;
+}
+
+void SystemChecker::violation(Kind k, const std::string &msg)
+{
+    if (violations[k]++ == 0) first_message[k] = msg;
+}
+
+SystemChecker::Instance *SystemChecker::find(int board, uint32_t addr)
+{
+    for (Instance &in : inst_)
+        if (in.board == board && addr >= in.base && addr < in.base + ALB_CHANNEL_BYTES(in.size)) return &in;
+    return nullptr;
+}
+
+void SystemChecker::close_window(Instance &in)
+{
+    if (!in.win_buffer) return;
+    std::vector<uint64_t> &w = in.writes[in.win_buffer];
+    auto it = std::lower_bound(w.begin(), w.end(), in.win_first);
+    if (it != w.end() && *it <= in.win_last) {
+        char m[240];
+        std::snprintf(m, sizeof m, "board %d, %s %s: the %s wrote Buffer%d at cycle %llu while the %s read it (cycles %llu..%llu)",
+                      in.board, plan_.channels[in.chan].name.c_str(), in.dest < 0 ? "source" : "destination",
+                      in.producer_port ? "controller" : "CPU", in.win_buffer, static_cast<unsigned long long>(*it),
+                      in.producer_port ? "CPU" : "controller", static_cast<unsigned long long>(in.win_first),
+                      static_cast<unsigned long long>(in.win_last));
+        violation(MUTEX, m);
+    }
+    in.win_buffer = 0;
+    for (int b = 1; b <= 3; ++b)
+        if (in.writes[b].size() > 1024) in.writes[b].erase(in.writes[b].begin(), in.writes[b].end() - 64);
+}
+
+void SystemChecker::on_access(int board, const Access &a)
+{
+    char m[240];
+    Instance *in = find(board, a.req.addr);
+    if (!in) {
+        if (a.port == 1) ++controller_accesses_outside;
+        std::snprintf(m, sizeof m, "board %d: the %s %s address 0x%x, outside every channel", board,
+                      a.port ? "controller" : "CPU", a.req.we ? "wrote" : "read", a.req.addr);
+        violation(IN_CHANNEL, m);
+        return;
+    }
+    const uint32_t off = a.req.addr - in->base;
+    const bool control = off < ALB_OFF_BUFFERS;
+    const int buffer = control ? 0 : 1 + static_cast<int>((off - ALB_OFF_BUFFERS) / ALB_STRIDE(in->size));
+    const bool producer = a.port == in->producer_port;
+    const char *who = a.port ? "controller" : "CPU";
+    if (a.req.we) {
+        bool ok = control ? a.req.sel == (producer ? 1u << ALB_OFF_ACTUAL : 1u << ALB_OFF_READLOCKED) : producer;
+        if (!ok) {
+            std::snprintf(m, sizeof m, "board %d, %s: the %s (%s) wrote offset %u lanes 0x%x at cycle %llu, which it does not own",
+                          board, plan_.channels[in->chan].name.c_str(), who, producer ? "producer" : "consumer", off,
+                          a.req.sel, static_cast<unsigned long long>(a.serve_cycle));
+            violation(OWNERSHIP, m);
+        }
+    }
+    if (producer) {
+        if (a.req.we && buffer) in->writes[buffer].push_back(a.serve_cycle);
+        if (a.req.we && control && (a.req.sel & 1u)) {
+            uint8_t actual = static_cast<uint8_t>(a.req.wdata);
+            if (in->dest < 0) src_[in->chan].pending_publish = a.serve_cycle;
+            else dest_published(*in, a.serve_cycle, actual);
+        }
+    } else {
+        if (!a.req.we && buffer) {
+            if (in->win_buffer != buffer) {
+                close_window(*in);
+                in->win_buffer = buffer;
+                in->win_first = a.serve_cycle;
+            }
+            in->win_last = a.serve_cycle;
+        } else {
+            close_window(*in);
+        }
+    }
+}
+
+void SystemChecker::exported(int chan, uint64_t seq)
+{
+    SourceState &s = src_[chan];
+    if (seq != s.publish_cycle.size()) return;   // the harness numbers exports 1, 2, ...
+    s.publish_cycle.push_back(s.pending_publish);
+    ++stats[chan].exports;
+}
+
+void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
+{
+    const PlanChannel &c = plan_.channels[in.chan];
+    DestState &d = dst_[in.chan][in.dest];
+    DestStats &st = stats[in.chan].dests[in.dest];
+    char m[260];
+    if (!ALB_VALID_INDEX(buffer)) {
+        std::snprintf(m, sizeof m, "board %d, %s: the controller stored Actual = %u", in.board, c.name.c_str(), buffer);
+        violation(DEFINITE, m);
+        return;
+    }
+    DestPub p;
+    p.cycle = cycle;
+    p.bytes.resize(in.size);
+    const uint32_t at = in.base + ALB_OFF_BUFFER(static_cast<uint32_t>(buffer), in.size);
+    for (uint32_t i = 0; i < in.size; ++i) p.bytes[i] = sim_.ref[in.board].byte(at + i);
+    std::memcpy(&p.taken_at, &p.bytes[4 * c.words], 4);
+    const DestPub &last = d.pubs.back();
+    const uint64_t taken_cycle = p.taken_at + time_offset_;
+    ++st.publications;
+    if (c.copy()) {
+        const SourceState &s = src_[in.chan];
+        scratch_.resize(c.size);
+        bool found = false;
+        uint64_t newest = s.publish_cycle.size() - 1;
+        uint64_t lowest = newest > 4096 ? newest - 4096 : 0;
+        for (uint64_t q = newest + 1; q-- > lowest;) {
+            channel_value(c.id, q, scratch_.data(), c.size);
+            if (std::memcmp(scratch_.data(), p.bytes.data(), c.size) == 0) { found = true; p.seq = q; break; }
+        }
+        if (!found) {
+            std::snprintf(m, sizeof m, "board %d, %s: the controller published at cycle %llu a value its producer never exported (torn or invented)",
+                          in.board, c.name.c_str(), static_cast<unsigned long long>(cycle));
+            violation(DEFINITE, m);
+            return;
+        }
+        if (p.seq == last.seq && d.pubs.size() > 1) {
+            std::snprintf(m, sizeof m, "board %d, %s: the controller published value %llu again at cycle %llu: its consumer would see it New twice",
+                          in.board, c.name.c_str(), static_cast<unsigned long long>(p.seq), static_cast<unsigned long long>(cycle));
+            violation(DUPLICATE, m);
+        } else if (p.seq < last.seq) {
+            std::snprintf(m, sizeof m, "board %d, %s: the controller published value %llu after value %llu: back in time",
+                          in.board, c.name.c_str(), static_cast<unsigned long long>(p.seq), static_cast<unsigned long long>(last.seq));
+            violation(ACTUALITY, m);
+        }
+        if (taken_cycle < s.publish_cycle[p.seq] || taken_cycle > cycle) {
+            std::snprintf(m, sizeof m, "board %d, %s: value %llu published by its producer at cycle %llu carries taken_at = cycle %llu, "
+                          "published at the destination at cycle %llu: expected producer <= taken_at <= destination",
+                          in.board, c.name.c_str(), static_cast<unsigned long long>(p.seq),
+                          static_cast<unsigned long long>(s.publish_cycle[p.seq]), static_cast<unsigned long long>(taken_cycle),
+                          static_cast<unsigned long long>(cycle));
+            violation(DEFINITE, m);
+        }
+        st.max_taken_minus_publish = std::max(st.max_taken_minus_publish, taken_cycle - s.publish_cycle[p.seq]);
+        // Latency of every source value this publication reaches.
+        for (; d.pending <= p.seq && d.pending < s.publish_cycle.size(); ++d.pending) {
+            uint64_t lat = cycle - s.publish_cycle[d.pending];
+            st.latency_max = std::max(st.latency_max, lat);
+            st.latency_sum += lat;
+            ++st.latency_n;
+            if (lat > c.latency) {
+                ++st.latency_over;
+                if (latency_checked_) {
+                    std::snprintf(m, sizeof m, "%s to board %d: value %llu published at cycle %llu arrived at cycle %llu: "
+                                  "latency %llu, expected at most the compiler's bound %llu",
+                                  c.name.c_str(), in.board, static_cast<unsigned long long>(d.pending),
+                                  static_cast<unsigned long long>(s.publish_cycle[d.pending]),
+                                  static_cast<unsigned long long>(cycle), static_cast<unsigned long long>(lat),
+                                  static_cast<unsigned long long>(c.latency));
+                    violation(LATENCY, m);
+                }
+            }
+        }
+    } else {
+        // TIME and STATUS: the controller's own values, taken at the slot.
+        p.seq = last.seq + 1;
+        uint32_t value0 = 0;
+        std::memcpy(&value0, p.bytes.data(), 4);
+        bool bad_time = c.kind == "time" && value0 != p.taken_at;
+        if (bad_time || taken_cycle > cycle || (d.pubs.size() > 1 && p.taken_at <= last.taken_at)) {
+            std::snprintf(m, sizeof m, "board %d, %s: published at cycle %llu with value %u, taken_at %u (cycle %llu) after taken_at %u: "
+                          "expected value = taken_at, increasing, not in the future",
+                          in.board, c.name.c_str(), static_cast<unsigned long long>(cycle), value0, p.taken_at,
+                          static_cast<unsigned long long>(taken_cycle), last.taken_at);
+            violation(TIME, m);
+        }
+        uint64_t age = cycle - std::min(cycle, taken_cycle);
+        st.latency_max = std::max(st.latency_max, age);
+        st.latency_sum += age;
+        ++st.latency_n;
+        if (age > c.latency) {
+            ++st.latency_over;
+            if (latency_checked_) {
+                std::snprintf(m, sizeof m, "%s to board %d: published at cycle %llu aged %llu, expected at most %llu",
+                              c.name.c_str(), in.board, static_cast<unsigned long long>(cycle),
+                              static_cast<unsigned long long>(age), static_cast<unsigned long long>(c.latency));
+                violation(LATENCY, m);
+            }
+        }
+    }
+    d.pubs.push_back(std::move(p));
+}
+
+void SystemChecker::imported(int chan, int dest, int rc, const uint8_t *payload, uint64_t begin, uint64_t end,
+                             uint32_t consumer_time)
+{
+    const PlanChannel &c = plan_.channels[chan];
+    DestState &d = dst_[chan][dest];
+    DestStats &st = stats[chan].dests[dest];
+    char m[260];
+    ++st.imports;
+    if (rc < 0) {
+        std::snprintf(m, sizeof m, "%s on board %d: Import returned %d, expected ALB_NEW or ALB_OLD",
+                      c.name.c_str(), c.dests[dest].board, rc);
+        violation(DRIVER_ERROR, m);
+        return;
+    }
+    if (rc == ALB_NEW) ++st.imports_new;
+    const uint32_t n = c.dest_size();
+    int64_t found = -1, at_begin = 0;
+    for (int64_t i = static_cast<int64_t>(d.pubs.size()) - 1; i >= 0; --i) {
+        if (d.pubs[i].cycle <= begin && !at_begin) at_begin = i;
+        if (found < 0 && std::memcmp(d.pubs[i].bytes.data(), payload, n) == 0 && d.pubs[i].cycle <= end) found = i;
+        if (found >= 0 && (at_begin || i == 0)) break;
+    }
+    if (found < 0) {
+        std::snprintf(m, sizeof m, "%s on board %d: Import ending at cycle %llu returned a value never published there (torn or invented)",
+                      c.name.c_str(), c.dests[dest].board, static_cast<unsigned long long>(end));
+        violation(DEFINITE, m);
+        return;
+    }
+    if (found < at_begin || found < d.last_read) {
+        std::snprintf(m, sizeof m, "%s on board %d: Import begun at cycle %llu returned publication %lld, expected at least %lld",
+                      c.name.c_str(), c.dests[dest].board, static_cast<unsigned long long>(begin),
+                      static_cast<long long>(found), static_cast<long long>(std::max(at_begin, d.last_read)));
+        violation(ACTUALITY, m);
+    }
+    bool newer = found > d.last_read;
+    if (newer != (rc == ALB_NEW)) {
+        std::snprintf(m, sizeof m, "%s on board %d: Import returned %s for publication %lld after %lld, expected %s",
+                      c.name.c_str(), c.dests[dest].board, rc == ALB_NEW ? "New" : "Old", static_cast<long long>(found),
+                      static_cast<long long>(d.last_read), newer ? "New" : "Old");
+        violation(ACTUALITY, m);
+    }
+    d.last_read = std::max<int64_t>(d.last_read, found);
+    uint32_t taken_at = d.pubs[found].taken_at;
+    if (found > 0) {
+        uint64_t age = consumer_time >= taken_at ? consumer_time - taken_at : 0;
+        st.last_age_seen = age;
+        st.max_age_seen = std::max(st.max_age_seen, age);
+    }
+}
+
+void SystemChecker::end_of_run()
+{
+    for (Instance &in : inst_) close_window(in);
+}

@@ -1,0 +1,108 @@
+// system_checker.h -- the paper's proof points end to end, across boards.
+//
+// On every RAM, for every channel instance (a source, where the board's CPU
+// produces and the controller consumes, or a destination, where the
+// controller produces and the CPU consumes):
+//   mutual exclusion  the producer never writes a buffer while the consumer
+//                     reads it (first to last read of one buffer);
+//   ownership         the producer writes only Actual and buffers, the
+//                     consumer only ReadLocked; the controller touches
+//                     nothing outside a channel.
+// End to end, for every channel:
+//   definite results  every value the controller publishes is one complete
+//                     value its producer exported (or, for TIME, the time),
+//                     taken after the producer published it; every value a
+//                     consumer imports is one complete value the controller
+//                     published there;
+//   actuality         a destination never gets an older or the same value
+//                     again (so redundancy never makes one value New twice);
+//                     a consumer never goes back, and New exactly when newer;
+//   latency           producer's publication -> a value at least as new
+//                     published at each destination, against the compiler's
+//                     bound (a violation only where the run claims no fault);
+//   freshness         consumers age every value with taken_at.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+#include "plan.h"
+#include "system_sim.h"
+
+// The value a producer exports as its seq-th value of channel id.
+void channel_value(int channel_id, uint64_t seq, uint8_t *out, uint32_t size);
+
+class SystemChecker : public SystemObserver {
+public:
+    enum Kind { MUTEX, DEFINITE, ACTUALITY, DUPLICATE, LATENCY, OWNERSHIP, IN_CHANNEL, DRIVER_ERROR, TIME, KINDS };
+    static const char *kind_name(int k);
+
+    SystemChecker(const Plan &plan, SystemSim &sim, uint64_t time_offset);
+    void on_access(int board, const Access &a) override;
+
+    // From the CPU programs.
+    void exported(int channel, uint64_t seq);                 // after alb_export returned
+    // After alb_import returned on a destination: payload = value + taken_at.
+    void imported(int channel, int dest, int rc, const uint8_t *payload, uint64_t begin, uint64_t end,
+                  uint32_t consumer_time);
+    void set_latency_is_checked(bool on) { latency_checked_ = on; }
+    void end_of_run();                                         // close open read windows
+
+    uint64_t violations[KINDS] = {};
+    std::string first_message[KINDS];
+    uint64_t total() const;
+
+    struct DestStats {
+        uint64_t publications = 0, imports = 0, imports_new = 0;
+        uint64_t latency_max = 0, latency_sum = 0, latency_n = 0, latency_over = 0;
+        uint64_t max_age_seen = 0, last_age_seen = 0;       // by the consumer, via taken_at
+        uint64_t max_taken_minus_publish = 0;               // time/position correlation
+    };
+    struct ChannelStats {
+        uint64_t exports = 0;
+        std::vector<DestStats> dests;
+    };
+    std::vector<ChannelStats> stats;                          // by plan channel index
+    uint64_t controller_accesses_outside = 0;
+
+private:
+    struct Instance {
+        int chan = 0;          // index into plan.channels
+        int dest = -1;         // -1: the source instance
+        int board = 0;
+        uint32_t base = 0, size = 0;
+        int producer_port = 0; // 0: CPU, 1: controller
+        // Consumer's open read window.
+        int win_buffer = 0;
+        uint64_t win_first = 0, win_last = 0;
+        std::vector<uint64_t> writes[4];   // producer writes per buffer
+    };
+    struct DestPub {
+        uint64_t cycle, seq;
+        uint32_t taken_at;
+        std::vector<uint8_t> bytes;        // the published payload
+    };
+    struct DestState {
+        std::vector<DestPub> pubs;         // pubs[0]: the RAM image
+        uint64_t pending = 0;              // first source seq not yet reached at this dest
+        int64_t last_read = 0;             // consumer: index of the last pub read
+    };
+    struct SourceState {
+        std::vector<uint64_t> publish_cycle;   // by seq (0: the image)
+        uint64_t pending_publish = 0;          // edge of the CPU's last Actual store
+    };
+
+    void violation(Kind k, const std::string &msg);
+    Instance *find(int board, uint32_t addr);
+    void close_window(Instance &in);
+    void dest_published(Instance &in, uint64_t cycle, uint8_t buffer);
+
+    const Plan &plan_;
+    SystemSim &sim_;
+    uint64_t time_offset_;             // cycle = controller time + time_offset
+    bool latency_checked_ = true;
+    std::vector<Instance> inst_;
+    std::vector<SourceState> src_;
+    std::vector<std::vector<DestState>> dst_;
+    std::vector<uint8_t> scratch_;
+};

@@ -1,0 +1,150 @@
+// system_sim.cpp -- see system_sim.h.
+#include "system_sim.h"
+#include <cstdio>
+#include "Vsys.h"
+#include "verilated.h"
+
+namespace {
+
+// Flattened vector ports: board b's field of width w at bits [b*w +: w].
+template <typename T>
+void put(T &port, int lsb, int width, uint64_t v)
+{
+    const T mask = static_cast<T>(((width >= 64 ? ~0ull : (1ull << width) - 1ull)) << lsb);
+    port = static_cast<T>((port & ~mask) | ((static_cast<T>(v) << lsb) & mask));
+}
+
+template <typename T>
+uint64_t get(const T &port, int lsb, int width)
+{
+    return (static_cast<uint64_t>(port) >> lsb) & (width >= 64 ? ~0ull : (1ull << width) - 1ull);
+}
+
+}  // namespace
+
+SystemSim::SystemSim(const std::string &rom_file) : ref(kBoards, RefRam(kRamBytes)), dut_()
+{
+    static std::string plusarg;
+    plusarg = "+rom=" + rom_file;
+    const char *argv[2] = {"tb_system", plusarg.c_str()};
+    Verilated::commandArgs(2, argv);
+    dut_.reset(new Vsys);
+    for (int b = 0; b < kBoards; ++b) cpu[b].id = b;
+    dut_->clk_i = 0;
+    dut_->rst_i = 1;
+    dut_->eval();       // every clock low before the first edge
+    reset();
+}
+
+SystemSim::~SystemSim() { dut_->final(); }
+
+void SystemSim::reset()
+{
+    for (int b = 0; b < kBoards; ++b) { drive(b, nullptr); busy_[b] = false; }
+    dut_->fi_kind_i = 0;
+    dut_->rst_i = 1;
+    for (int i = 0; i < 4; ++i) tick();
+    dut_->rst_i = 0;
+}
+
+void SystemSim::drive(int b, const BusRequest *r)
+{
+    const uint32_t amask = (1u << kAddrWidth) - 1u;   // ports are not masked by Verilator
+    put(dut_->cpu_cyc_i, b, 1, r != nullptr);
+    put(dut_->cpu_stb_i, b, 1, r != nullptr);
+    put(dut_->cpu_we_i, b, 1, r ? r->we : 0);
+    put(dut_->cpu_adr_i, b * kAddrWidth, kAddrWidth, r ? (r->addr >> 2) & amask : 0);
+    put(dut_->cpu_sel_i, b * 4, 4, r ? r->sel & 0xFu : 0);
+    dut_->cpu_dat_i[b] = r ? r->wdata : 0;
+}
+
+void SystemSim::issue(int b)
+{
+    if (busy_[b] || !cpu[b].has_request) return;
+    drive(b, &cpu[b].request);
+    busy_[b] = true;
+    issue_cycle_[b] = cycle_;
+}
+
+void SystemSim::load(int b, uint32_t addr, const uint8_t *bytes, uint32_t n)
+{
+    for (uint32_t i = 0; i < n;) {
+        uint32_t a = addr + i, word = 0;
+        uint8_t sel = 0;
+        for (uint32_t lane = a & 3u; lane < 4 && i < n; ++lane, ++i) {
+            word |= static_cast<uint32_t>(bytes[i]) << (8 * lane);
+            sel |= static_cast<uint8_t>(1u << lane);
+            ref[b].preload((a & ~3u) + lane, bytes[i]);
+        }
+        BusRequest r{a & ~3u, word, sel, true};
+        loading_[b] = true;
+        load_req_[b] = r;
+        drive(b, &r);
+        busy_[b] = true;
+        issue_cycle_[b] = cycle_;
+        for (int guard = 0; busy_[b] && guard < 16; ++guard) tick();
+        loading_[b] = false;
+        drive(b, nullptr);
+        busy_[b] = false;
+    }
+}
+
+void SystemSim::set_fault(unsigned kind) { dut_->fi_kind_i = kind & 3u; }
+void SystemSim::set_dead(unsigned mask) { dut_->fi_dead_i = mask & ((1u << kBoards) - 1u); }
+uint32_t SystemSim::time() const { return dut_->time_o; }
+bool SystemSim::error() const { return dut_->error_o != 0; }
+unsigned SystemSim::rom_errors() const { return dut_->rom_errors_o; }
+
+unsigned SystemSim::tick()
+{
+    dut_->clk_i = 1;
+    dut_->eval();
+    dut_->clk_i = 0;
+    dut_->eval();
+    ++cycle_;
+    // The controller's bus, as it sees it.
+    if (dut_->bus_cyc_o) ++bus_busy_cycles;
+    if (dut_->bus_ack_o) ++bus_accesses;
+    if (dut_->bus_err_o) ++bus_failures;
+    unsigned mask = 0;
+    for (int b = 0; b < kBoards; ++b) {
+        Access done[2];
+        int n = 0;
+        if (get(dut_->cpu_ack_o, b, 1) && busy_[b]) {
+            uint64_t latency = cycle_ - issue_cycle_[b];
+            if (latency > worst_cpu_latency) worst_cpu_latency = latency;
+            if (latency > static_cast<uint64_t>(kMaxLatency) && cpu_latency_violations++ == 0) {
+                char m[120];
+                std::snprintf(m, sizeof m, "access time: CPU %d acknowledged after %llu cycles, expected at most %d",
+                              b, static_cast<unsigned long long>(latency), kMaxLatency);
+                first_cpu_latency_violation = m;
+            }
+            done[n++] = Access{0, loading_[b] ? load_req_[b] : cpu[b].request, dut_->cpu_dat_o[b],
+                               issue_cycle_[b], cycle_};
+            busy_[b] = false;
+            drive(b, nullptr);
+            mask |= 1u << b;
+        }
+        if (get(dut_->mon_ack_o, b, 1)) {
+            BusRequest r;
+            r.addr = static_cast<uint32_t>(get(dut_->mon_adr_o, b * kAddrWidth, kAddrWidth)) << 2;
+            r.sel = static_cast<uint8_t>(get(dut_->mon_sel_o, b * 4, 4));
+            r.we = get(dut_->mon_we_o, b, 1) != 0;
+            r.wdata = dut_->mon_wdat_o[b];
+            done[n++] = Access{1, r, dut_->mon_rdat_o[b], cycle_, cycle_};
+        }
+        if (!n) continue;
+        ref[b].check_and_apply(done, n);
+        if (loading_[b]) continue;   // a RAM image, not a CPU access
+        for (int i = 0; i < n; ++i) {
+            if (done[i].port == 0) {
+                SimCpu &c = cpu[b];
+                c.rdata = done[i].rdata;
+                c.has_request = false;
+                ++c.accesses;
+            }
+            if (observer) observer->on_access(b, done[i]);
+        }
+    }
+    return mask;
+}

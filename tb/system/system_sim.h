@@ -1,0 +1,73 @@
+// system_sim.h -- the Verilated multi-board system (tb/rtl/tb_system.v):
+// one simulated CPU per board on its RAM's port A, the communication
+// controller on every port B, the bus fault injector between them.
+//
+// Each clock: the CPUs' requests are driven, the system is clocked, and every
+// access performed on a RAM -- by its CPU (port A, seen at the CPU's ack) or
+// by the controller (port B, seen on the monitor outputs at that RAM's ack) --
+// goes through that board's byte-atomicity checker and then to the observer.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+#include "ref_ram.h"
+#include "sim_cpu.h"
+
+class Vsys;
+
+class SystemObserver {
+public:
+    virtual ~SystemObserver() {}
+    // port 0: the board's CPU, port 1: the controller.
+    virtual void on_access(int board, const Access &a) = 0;
+};
+
+class SystemSim {
+public:
+    static const int kBoards = 4;               // matches tb_system's NB
+    static const int kAddrWidth = 10;
+    static const uint32_t kRamBytes = 4u << kAddrWidth;
+    static const int kMaxLatency = 2;           // CPU port access time, as for the RAM alone
+
+    explicit SystemSim(const std::string &rom_file);
+    ~SystemSim();
+
+    SimCpu cpu[kBoards];
+    std::vector<RefRam> ref;
+    SystemObserver *observer = nullptr;
+
+    // Hold reset for a few clocks (CPU ports idle): the controller restarts.
+    void reset();
+    // Write bytes into board b's RAM through its CPU port (a RAM image).
+    void load(int board, uint32_t addr, const uint8_t *bytes, uint32_t n);
+
+    void issue(int board);                      // drive cpu[board]'s request
+    bool busy(int board) const { return busy_[board]; }
+    uint64_t issue_cycle(int board) const { return issue_cycle_[board]; }
+    unsigned tick();                            // one clock; mask of CPU acks
+    uint64_t cycle() const { return cycle_; }
+
+    // Fault injection for the controller's accesses.
+    void set_fault(unsigned kind);              // applied to the next access begun
+    void set_dead(unsigned mask);               // permanently failed board links
+
+    // The controller, as seen from outside.
+    uint32_t time() const;                      // global time (clocks since reset)
+    bool error() const;
+    unsigned rom_errors() const;
+    uint64_t bus_busy_cycles = 0, bus_accesses = 0, bus_failures = 0;
+
+    uint64_t cpu_latency_violations = 0, worst_cpu_latency = 0;
+    std::string first_cpu_latency_violation;
+
+private:
+    void drive(int board, const BusRequest *r);
+
+    std::unique_ptr<Vsys> dut_;
+    uint64_t cycle_ = 0;
+    bool busy_[kBoards] = {};
+    uint64_t issue_cycle_[kBoards] = {};
+    bool loading_[kBoards] = {};       // load() owns the CPU port
+    BusRequest load_req_[kBoards] = {};
+};

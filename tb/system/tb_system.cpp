@@ -1,0 +1,403 @@
+// tb_system.cpp -- the multi-board system under test: one simulated CPU per
+// board runs the real C driver (producing and consuming its channels through
+// port A of its dual-ported RAM), the RTL communication controller moves the
+// channels between the boards over the bus, and the bus fault injector
+// disturbs it.  Every access and value is checked (system_checker.h).
+//
+//   tb_system --plan DIR [--cycles N] [--seed S]
+//             [--fault-rate R] [--burst L]        faulted share of the controller's
+//                                                 accesses, mean burst length (clocks)
+//             [--dead-board B --dead-at C]        board B's link fails for good at cycle C
+//             [--corrupt-entry K]                 flip a bit of schedule ROM entry K
+//             [--rom FILE] [--report FILE] [--label NAME]
+//
+// DIR holds the compiler's output: rom.hex and tb_plan.txt.  Exit status 0:
+// no violation, and the scenario's own expectations held.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+#include "plan.h"
+#include "report.h"
+#include "system_checker.h"
+#include "system_sim.h"
+extern "C" {
+#include "albatross.h"
+}
+
+namespace {
+
+struct Options {
+    std::string plan_dir, rom, report, label = "system";
+    uint64_t cycles = 400000, seed = 1, dead_at = 0;
+    double fault_rate = 0, burst = 1;
+    int dead_board = -1, corrupt_entry = -1;
+};
+
+SystemSim *g_sim = nullptr;
+SystemChecker *g_chk = nullptr;
+const Plan *g_plan = nullptr;
+
+// One channel role of one board's CPU.
+struct Role {
+    int chan = 0;              // plan channel index
+    int dest = -1;             // -1: producer of the source instance
+    alb_channel_t ch{};
+    uint64_t seq = 0, next_due = 0, interval_lo = 1, interval_hi = 1;
+    bool time_channel = false;
+};
+
+struct BoardCtx {
+    int board = 0;
+    std::vector<Role> roles;
+    uint32_t global_time = 0;   // the newest GlobalTime this CPU has imported
+    std::mt19937_64 rng;
+    int attach_errors = 0;
+};
+
+uint64_t now() { return g_sim->cycle(); }
+
+void board_program(SimCpu &cpu)
+{
+    BoardCtx &b = *static_cast<BoardCtx *>(cpu.context);
+    alignas(8) uint8_t buf[1100];
+    for (Role &r : b.roles) {
+        const PlanChannel &c = g_plan->channels[r.chan];
+        if (r.dest < 0) {
+            alb_channel_setup(&r.ch, c.src_base, c.size);
+            if (alb_producer_attach(&r.ch) != ALB_OK) ++b.attach_errors;
+        } else {
+            alb_channel_setup(&r.ch, c.dests[r.dest].base, c.dest_size());
+            if (alb_consumer_attach(&r.ch) != ALB_OK) ++b.attach_errors;
+        }
+    }
+    for (;;) {
+        for (Role &r : b.roles) {
+            const PlanChannel &c = g_plan->channels[r.chan];
+            if (r.dest < 0) {
+                if (now() < r.next_due) continue;
+                ++r.seq;
+                channel_value(c.id, r.seq, buf, c.size);
+                int rc = alb_export(&r.ch, buf);
+                if (rc == ALB_OK) g_chk->exported(r.chan, r.seq);
+                r.next_due = now() + r.interval_lo + b.rng() % (r.interval_hi - r.interval_lo + 1);
+            } else {
+                uint64_t begin = now();
+                int rc = alb_import(&r.ch, buf);
+                if (r.time_channel && rc >= 0) {
+                    uint32_t t;
+                    std::memcpy(&t, buf, 4);
+                    b.global_time = std::max(b.global_time, t);
+                }
+                g_chk->imported(r.chan, r.dest, rc, buf, begin, now(), b.global_time);
+            }
+        }
+    }
+}
+
+// Gilbert-Elliott fault process over clocks: bursts of mean length `burst`
+// in which every access begun fails, with a long-run faulted share `rate`.
+struct FaultModel {
+    double rate, burst;
+    bool bad = false;
+    std::mt19937_64 rng;
+    FaultModel(double r, double b, uint64_t seed) : rate(r), burst(std::max(1.0, b)), rng(seed) {}
+    unsigned next() {
+        if (rate <= 0) return 0;
+        std::uniform_real_distribution<double> u(0, 1);
+        double enter = rate / (burst * (1 - std::min(rate, 0.999)));
+        if (bad) { if (u(rng) < 1 / burst) bad = false; }
+        else if (u(rng) < enter) bad = true;
+        return bad ? 1 + static_cast<unsigned>(rng() % 3) : 0;
+    }
+};
+
+// The RAM image of every channel instance: Actual = ReadLocked = Buffer1,
+// Buffer1 holds value 0 (sources) or zeros (destinations).
+void load_images(const Plan &plan)
+{
+    for (const PlanChannel &c : plan.channels) {
+        if (c.copy()) {
+            std::vector<uint8_t> img(ALB_CHANNEL_BYTES(c.size), 0);
+            img[0] = img[1] = ALB_BUFFER1;
+            channel_value(c.id, 0, &img[ALB_OFF_BUFFER(1u, c.size)], c.size);
+            g_sim->load(c.src_board, c.src_base, img.data(), static_cast<uint32_t>(img.size()));
+        }
+        for (const PlanDest &d : c.dests) {
+            std::vector<uint8_t> img(ALB_CHANNEL_BYTES(c.dest_size()), 0);
+            img[0] = img[1] = ALB_BUFFER1;
+            if (c.copy()) channel_value(c.id, 0, &img[ALB_OFF_BUFFER(1u, c.dest_size())], c.size);
+            g_sim->load(d.board, d.base, img.data(), static_cast<uint32_t>(img.size()));
+        }
+    }
+}
+
+// A copy of the ROM with one bit of entry k's first word flipped.
+std::string corrupt_rom(const std::string &rom, int k, const std::string &out)
+{
+    std::ifstream in(rom);
+    std::vector<std::string> lines;
+    for (std::string l; std::getline(in, l);) lines.push_back(l);
+    size_t word = 4 + 8 * static_cast<size_t>(k);
+    if (word >= lines.size()) return "";
+    uint32_t w = static_cast<uint32_t>(std::strtoul(lines[word].c_str(), nullptr, 16)) ^ 0x00010000u;
+    char hex[16];
+    std::snprintf(hex, sizeof hex, "%08x", w);
+    lines[word] = hex;
+    std::ofstream o(out);
+    for (const std::string &l : lines) o << l << "\n";
+    return o ? out : "";
+}
+
+bool parse_num(const char *s, double &out)
+{
+    char *end = nullptr;
+    out = std::strtod(s, &end);
+    return *s && !*end;
+}
+
+int usage(const char *why)
+{
+    std::fprintf(stderr, "tb_system: %s\n"
+                 "usage: tb_system --plan DIR [--cycles N] [--seed S] [--fault-rate R] [--burst L]\n"
+                 "                 [--dead-board B --dead-at C] [--corrupt-entry K] [--rom FILE]\n"
+                 "                 [--report FILE] [--label NAME]\n", why);
+    return 2;
+}
+
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    Options o;
+    for (int i = 1; i < argc; ++i) {
+        std::string a = argv[i];
+        if (i + 1 >= argc) return usage(("missing value for " + a).c_str());
+        const char *v = argv[++i];
+        double x = 0;
+        bool num = parse_num(v, x);
+        if (a == "--plan") o.plan_dir = v;
+        else if (a == "--rom") o.rom = v;
+        else if (a == "--report") o.report = v;
+        else if (a == "--label") o.label = v;
+        else if (a == "--cycles" && num && x >= 1000) o.cycles = static_cast<uint64_t>(x);
+        else if (a == "--seed" && num && x >= 0) o.seed = static_cast<uint64_t>(x);
+        else if (a == "--fault-rate" && num && x >= 0 && x < 1) o.fault_rate = x;
+        else if (a == "--burst" && num && x >= 1) o.burst = x;
+        else if (a == "--dead-board" && num && x >= 0 && x < SystemSim::kBoards) o.dead_board = static_cast<int>(x);
+        else if (a == "--dead-at" && num && x >= 0) o.dead_at = static_cast<uint64_t>(x);
+        else if (a == "--corrupt-entry" && num && x >= 0) o.corrupt_entry = static_cast<int>(x);
+        else return usage(("bad option or value: " + a + " " + v).c_str());
+    }
+    if (o.plan_dir.empty()) return usage("--plan is required");
+    Plan plan;
+    std::string err;
+    if (!plan.load(o.plan_dir + "/tb_plan.txt", err)) { std::fprintf(stderr, "tb_system: %s\n", err.c_str()); return 2; }
+    if (plan.boards > SystemSim::kBoards || plan.ram_bytes != SystemSim::kRamBytes) {
+        std::fprintf(stderr, "tb_system: the plan has %d boards of %u bytes; this build simulates %d boards of %u bytes\n",
+                     plan.boards, plan.ram_bytes, SystemSim::kBoards, SystemSim::kRamBytes);
+        return 2;
+    }
+    std::string rom = o.rom.empty() ? o.plan_dir + "/rom.hex" : o.rom;
+    if (o.corrupt_entry >= 0) {
+        std::string out = o.report.empty() ? "build/rom_corrupt.hex" : o.report + ".rom.hex";
+        rom = corrupt_rom(rom, o.corrupt_entry, out);
+        if (rom.empty()) { std::fprintf(stderr, "tb_system: cannot corrupt entry %d\n", o.corrupt_entry); return 2; }
+    }
+    std::printf("%s: %d boards, %zu channels, cycle %llu clocks (%s), %llu clocks, fault rate %.2f burst %.0f%s\n",
+                o.label.c_str(), plan.boards, plan.channels.size(), static_cast<unsigned long long>(plan.cycle),
+                plan.sync_mode ? "position-synchronised" : "time-rigid", static_cast<unsigned long long>(o.cycles),
+                o.fault_rate, o.burst, o.dead_board >= 0 ? ", one board dies" : "");
+    std::fflush(stdout);
+
+    SystemSim sim(rom);
+    g_sim = &sim;
+    g_plan = &plan;
+    load_images(plan);
+    sim.reset();                               // the controller starts on the image
+    const uint64_t time_offset = sim.cycle() - sim.time();
+    SystemChecker chk(plan, sim, time_offset);
+    g_chk = &chk;
+    sim.observer = &chk;
+    chk.set_latency_is_checked(o.fault_rate == 0 && o.dead_board < 0 && o.corrupt_entry < 0);
+
+    std::mt19937_64 rng(o.seed);
+    std::vector<BoardCtx> boards(SystemSim::kBoards);
+    for (int b = 0; b < SystemSim::kBoards; ++b) {
+        boards[b].board = b;
+        boards[b].rng.seed(o.seed * 31 + b);
+    }
+    for (size_t i = 0; i < plan.channels.size(); ++i) {
+        const PlanChannel &c = plan.channels[i];
+        uint64_t p = std::max<uint64_t>(c.period, 64);
+        if (c.copy()) {
+            Role r;
+            r.chan = static_cast<int>(i);
+            r.interval_lo = c.sync ? p / 2 : 1;     // positions come about once a cycle
+            r.interval_hi = c.sync ? p : p / 2;     // others many times, at random phases
+            boards[c.src_board].roles.push_back(r);
+        }
+        for (size_t d = 0; d < c.dests.size(); ++d) {
+            Role r;
+            r.chan = static_cast<int>(i);
+            r.dest = static_cast<int>(d);
+            r.time_channel = c.kind == "time";
+            boards[c.dests[d].board].roles.push_back(r);
+        }
+    }
+    double period[SystemSim::kBoards];
+    for (int b = 0; b < SystemSim::kBoards; ++b) {
+        period[b] = 1 + static_cast<double>(rng() % 4);   // RAM clocks per CPU clock
+        sim.cpu[b].window_lo = 0;
+        sim.cpu[b].window_hi = SystemSim::kRamBytes;
+        sim.cpu[b].context = &boards[b];
+        if (!boards[b].roles.empty()) sim.cpu[b].start(board_program);
+    }
+
+    FaultModel faults(o.fault_rate, o.burst, o.seed ^ 0xFA17ull);
+    uint64_t wait[SystemSim::kBoards] = {};
+    const uint64_t start = sim.cycle(), report_every = o.cycles / 10;
+    auto t0 = std::chrono::steady_clock::now();
+    bool time_monotonic = true;
+    uint32_t last_time = sim.time();
+    for (uint64_t n = 0; n < o.cycles; ++n) {
+        if (o.dead_board >= 0 && sim.cycle() - start == o.dead_at) sim.set_dead(1u << o.dead_board);
+        sim.set_fault(faults.next());
+        for (int b = 0; b < SystemSim::kBoards; ++b) {
+            SimCpu &c = sim.cpu[b];
+            if (boards[b].roles.empty() || sim.busy(b) || c.faulted) continue;
+            if (wait[b]) { --wait[b]; continue; }
+            if (!c.has_request) c.resume();
+            if (c.has_request) sim.issue(b);
+        }
+        unsigned done = sim.tick();
+        for (int b = 0; b < SystemSim::kBoards; ++b)
+            if (done & (1u << b)) wait[b] = static_cast<uint64_t>((rng() % 3) * period[b]);
+        if (sim.time() < last_time) time_monotonic = false;
+        last_time = sim.time();
+        if (report_every && (n + 1) % report_every == 0) {
+            std::printf("  %3.0f%%  cycle %llu, %llu violations\n", 100.0 * (n + 1) / o.cycles,
+                        static_cast<unsigned long long>(n + 1), static_cast<unsigned long long>(chk.total()));
+            std::fflush(stdout);
+        }
+    }
+    chk.end_of_run();
+    double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    // ---- scenario expectations beyond the checkers
+    std::vector<std::string> failures;
+    char m[300];
+    for (int b = 0; b < SystemSim::kBoards; ++b) {
+        if (sim.cpu[b].faulted) failures.push_back("CPU " + std::to_string(b) + ": " + sim.cpu[b].fault);
+        if (boards[b].attach_errors) failures.push_back("board " + std::to_string(b) + ": attach failed on a valid image");
+    }
+    if (sim.cpu_latency_violations) failures.push_back(sim.first_cpu_latency_violation);
+    for (int b = 0; b < SystemSim::kBoards; ++b)
+        if (sim.ref[b].violations) failures.push_back("board " + std::to_string(b) + ": " + sim.ref[b].first_violation);
+    if (!time_monotonic) failures.push_back("global time went backwards");
+    if (sim.error()) failures.push_back("the controller flagged its ROM header as invalid");
+    if (o.corrupt_entry >= 0 && sim.rom_errors() == 0)
+        failures.push_back("a corrupted ROM entry was not counted in rom_errors");
+    if (o.corrupt_entry < 0 && sim.rom_errors() != 0) {
+        std::snprintf(m, sizeof m, "rom_errors = %u with an intact ROM, expected 0", sim.rom_errors());
+        failures.push_back(m);
+    }
+
+    // ---- report
+    std::printf("%s: %llu clocks in %.1f s (%.2f M clocks/s), controller bus busy %.1f%%, %llu accesses, %llu failed\n",
+                o.label.c_str(), static_cast<unsigned long long>(o.cycles), sec, o.cycles / sec / 1e6,
+                100.0 * sim.bus_busy_cycles / (sim.cycle() - start + 1e-9),
+                static_cast<unsigned long long>(sim.bus_accesses), static_cast<unsigned long long>(sim.bus_failures));
+    std::printf("  %-12s %-7s %8s %8s %9s %9s %9s %7s %9s %9s\n", "channel", "to", "exports", "publ.", "imports",
+                "lat max", "bound", "ratio", "over", "age seen");
+    std::string chans = "[";
+    for (size_t i = 0; i < plan.channels.size(); ++i) {
+        const PlanChannel &c = plan.channels[i];
+        const SystemChecker::ChannelStats &cs = chk.stats[i];
+        for (size_t d = 0; d < c.dests.size(); ++d) {
+            const SystemChecker::DestStats &ds = cs.dests[d];
+            double ratio = c.latency ? static_cast<double>(ds.latency_max) / c.latency : 0;
+            std::printf("  %-12s board %d %8llu %8llu %9llu %9llu %9llu %7.3f %9llu %9llu\n", c.name.c_str(),
+                        c.dests[d].board, static_cast<unsigned long long>(cs.exports),
+                        static_cast<unsigned long long>(ds.publications), static_cast<unsigned long long>(ds.imports),
+                        static_cast<unsigned long long>(ds.latency_max), static_cast<unsigned long long>(c.latency), ratio,
+                        static_cast<unsigned long long>(ds.latency_over), static_cast<unsigned long long>(ds.last_age_seen));
+            char b[600];
+            std::snprintf(b, sizeof b,
+                          "%s{\"channel\": \"%s\", \"kind\": \"%s\", \"to_board\": %d, \"exports\": %llu, \"publications\": %llu, "
+                          "\"imports\": %llu, \"imports_new\": %llu, \"latency_max\": %llu, \"latency_mean\": %.1f, "
+                          "\"latency_bound\": %llu, \"max_over_bound\": %.4f, \"latency_samples\": %llu, \"over_bound\": %llu, "
+                          "\"delivered_within_bound\": %.5f, \"last_age_seen\": %llu, \"max_age_seen\": %llu, "
+                          "\"max_taken_minus_published\": %llu, \"period_bound\": %llu}",
+                          chans.size() > 1 ? ", " : "", c.name.c_str(), c.kind.c_str(), c.dests[d].board,
+                          static_cast<unsigned long long>(cs.exports), static_cast<unsigned long long>(ds.publications),
+                          static_cast<unsigned long long>(ds.imports), static_cast<unsigned long long>(ds.imports_new),
+                          static_cast<unsigned long long>(ds.latency_max),
+                          ds.latency_n ? static_cast<double>(ds.latency_sum) / ds.latency_n : 0.0,
+                          static_cast<unsigned long long>(c.latency), ratio, static_cast<unsigned long long>(ds.latency_n),
+                          static_cast<unsigned long long>(ds.latency_over),
+                          ds.latency_n ? 1.0 - static_cast<double>(ds.latency_over) / ds.latency_n : 0.0,
+                          static_cast<unsigned long long>(ds.last_age_seen), static_cast<unsigned long long>(ds.max_age_seen),
+                          static_cast<unsigned long long>(ds.max_taken_minus_publish), static_cast<unsigned long long>(c.period));
+            chans += b;
+            // A dead board: consumers of its channels must see the age grow,
+            // channels that do not touch it must still be delivered.
+            bool touches = o.dead_board >= 0 && (c.src_board == o.dead_board || c.dests[d].board == o.dead_board);
+            if (o.dead_board >= 0 && c.copy() && c.src_board == o.dead_board && c.dests[d].board != o.dead_board &&
+                ds.last_age_seen < 3 * std::max<uint64_t>(c.period, plan.cycle)) {
+                std::snprintf(m, sizeof m, "%s from the dead board %d: its consumer on board %d last saw age %llu, "
+                              "expected more than 3 periods (%llu): staleness not visible",
+                              c.name.c_str(), o.dead_board, c.dests[d].board, static_cast<unsigned long long>(ds.last_age_seen),
+                              static_cast<unsigned long long>(3 * std::max<uint64_t>(c.period, plan.cycle)));
+                failures.push_back(m);
+            }
+            if (o.dead_board >= 0 && !touches && ds.latency_over) {
+                std::snprintf(m, sizeof m, "%s to board %d does not touch the dead board, yet %llu values exceeded the latency bound",
+                              c.name.c_str(), c.dests[d].board, static_cast<unsigned long long>(ds.latency_over));
+                failures.push_back(m);
+            }
+            if (!touches && ds.publications == 0) {
+                std::snprintf(m, sizeof m, "%s to board %d: no value was ever published", c.name.c_str(), c.dests[d].board);
+                failures.push_back(m);
+            }
+        }
+    }
+    chans += "]";
+    for (int k = 0; k < SystemChecker::KINDS; ++k)
+        std::printf("  %-18s %llu violations%s%s\n", SystemChecker::kind_name(k),
+                    static_cast<unsigned long long>(chk.violations[k]), chk.violations[k] ? ": " : "",
+                    chk.first_message[k].c_str());
+    for (const std::string &f : failures) std::printf("  FAIL: %s\n", f.c_str());
+    std::string viol = "{";
+    for (int k = 0; k < SystemChecker::KINDS; ++k) {
+        char b[80];
+        std::snprintf(b, sizeof b, "%s\"%s\": %llu", k ? ", " : "", SystemChecker::kind_name(k),
+                      static_cast<unsigned long long>(chk.violations[k]));
+        viol += b;
+    }
+    viol += "}";
+    if (!o.report.empty()) {
+        JsonReport rep;
+        rep.str("label", o.label).str("mode", plan.sync_mode ? "position-synchronised" : "time-rigid")
+            .num("cycle_clocks", static_cast<double>(plan.cycle)).num("clocks", static_cast<double>(o.cycles))
+            .num("fault_rate", o.fault_rate).num("burst", o.burst).num("dead_board", o.dead_board)
+            .num("corrupt_entry", o.corrupt_entry).num("rom_errors", sim.rom_errors())
+            .num("bus_busy_cycles", static_cast<double>(sim.bus_busy_cycles))
+            .num("bus_accesses", static_cast<double>(sim.bus_accesses))
+            .num("bus_failures", static_cast<double>(sim.bus_failures))
+            .num("violations_total", static_cast<double>(chk.total())).raw("violations", viol)
+            .num("scenario_failures", static_cast<double>(failures.size())).raw("channels", chans)
+            .num("seconds", sec);
+        rep.write(o.report);
+    }
+    bool ok = chk.total() == 0 && failures.empty();
+    std::printf("%s: %s\n", o.label.c_str(), ok ? "PASSED" : "FAILED");
+    return ok ? 0 : 1;
+}
