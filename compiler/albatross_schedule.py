@@ -1667,8 +1667,11 @@ def write_outputs(files: dict, out_dir: str):
         raise ScheduleError(f"{out_dir}: cannot write the outputs: {e.strerror or e}")
 
 
-def compile_file(path: str, out_dir: Optional[str] = None):
+def compile_file(path: str, out_dir: Optional[str] = None, no_redundancy: bool = False):
     system = load_description(path)
+    if no_redundancy:   # one slot per channel and cycle: the spare capacity stays idle
+        for ch in system.channels:
+            ch.max_slots = 1
     plan, rom, rep = compile_system(system)
     files = generate(system, plan, rom, rep)
     if out_dir is not None:
@@ -1682,9 +1685,11 @@ def main(argv=None) -> int:
     ap.add_argument("description", help="system description (.toml)")
     ap.add_argument("--out", required=True, help="output directory")
     ap.add_argument("-q", "--quiet", action="store_true", help="print nothing on success")
+    ap.add_argument("--no-redundancy", action="store_true",
+                    help="one slot per channel and cycle (to measure what redundancy buys)")
     args = ap.parse_args(argv)
     try:
-        system, plan, rep, files = compile_file(args.description, args.out)
+        system, plan, rep, files = compile_file(args.description, args.out, args.no_redundancy)
     except ScheduleError as e:
         for m in e.messages:
             print(f"error: {m}", file=sys.stderr)
