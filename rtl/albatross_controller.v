@@ -1,55 +1,66 @@
 // albatross_controller -- the ALBATROSS communication controller (seed 3.2-3.4).
 //
 // The only master of the system bus (Wishbone B4 classic, address {board[3:0],
-// word}).  It runs the cyclic schedule of a ROM ($readmemh) as README.md
-// "Communication controller" specifies: COPY runs the source's Import (seed
-// figure 3) and each destination's Export (figure 4) in hardware, and streams
-// every source word once to all destinations that need it.  TIME and STATUS
-// publish the controller's time and counters.  Rules and timing:
+// word}).  It runs the cyclic schedule of a ROM ($readmemh ROM_FILE; in
+// simulation +rom=FILE overrides it) as README.md "Communication controller"
+// specifies.  COPY runs the source's Import (seed figure 3) and each
+// destination's Export (figure 4) in hardware, and streams every source word
+// once to all destinations that need it.  TIME and STATUS publish the
+// controller's time and counters.  Rules and timing (times are time_o values):
 //   * Start-up: INIT clears the per-channel memories (2*N_CHAN clocks).  HDR
-//     checks the header (K+2 clocks, K = TIMEOUT+3); if it is invalid, error_o
-//     goes high and the bus is never touched.  SCAN checks every entry once
-//     (SCAN_LAST+1 clocks each) and links the valid ones into a ring through a
-//     cycle node.  Cycle 0 starts 3 clocks later (rel 0).  At run time an invalid
-//     entry costs no clock: rom_errors + 1 for it, once per cycle.  Every fetched
-//     entry's checksum is checked again (ROM upset: flagged and skipped).
+//     checks the header (TIMEOUT+5 clocks); if it is invalid, error_o goes high
+//     and the bus is never touched.  SCAN checks every entry once
+//     (max(TIMEOUT+6, 10) clocks each) and links the valid ones into a ring.
+//     Cycle 0 starts (rel = 0) at
+//         T0 = 2*N_CHAN + TIMEOUT + 8 + NE * max(TIMEOUT+6, 10).
+//     At run time an invalid entry takes no clock; rom_errors goes up by 1 for
+//     it once per cycle.  Every fetched entry's checksum is checked again, so
+//     a ROM upset is flagged and the entry skipped.
 //   * Slot timing (S = cycle start + E1): the entry is fetched in clocks
-//     S..S+9 and its first access is on the bus in clock S+FETCH_CYCLES.  Every
-//     access holds cyc/stb until ack.  If no fault occurs, the next access is on
-//     the bus in the clock right after the ack clock.  With albatross_dpram
-//     (port B served every other clock), the ack of access k (1-based) of a
-//     slot is sampled at the edge that starts clock
-//         S + FETCH_CYCLES + 2k + phi,   phi = port-B phase, 0 or 1, fixed per slot.
-//     taken_at is time_o in the ack clock of the final source Actual load.  A
-//     TIME value is time_o in clock S.  A new COPY of W words to ND
-//     destinations with known Actual copies takes A = 3 + W + ND*(W+3)
-//     accesses, plus 1 per destination whose Actual copy is unknown (after
-//     reset, or after a failed Actual store).  It takes 1 access if nothing
-//     is new and nothing is needed.
-//   * Deadline D = cycle start + E1 + E2.  An access goes on the bus in clock p
-//     only if p <= D - TIMEOUT - 2, so a timed-out access and the wrap-up
-//     clock still end before D.  A fault-free slot therefore needs
-//     E2 >= FETCH_CYCLES + 2A + TIMEOUT + phi.  The SCAN rejects E2 <= FETCH_CYCLES.
-//   * A failed access (err, or no ack within TIMEOUT clocks of cyc) adds 1 to
-//     retries.  cyc/stb drop for one clock, and the same access is retried while
-//     the deadline allows.  A failed ReadLocked store forgets the ReadLocked
-//     copy.  A failed Actual store forgets the Actual copy and remembers the
-//     buffer it tried.  The read-back before the next Export shows whether that
-//     store landed; if it did, the value counts as delivered and is never
-//     published twice.
-//   * Cycle end: after the last entry, the controller waits for rel == H1
-//     (time-rigid mode).  In sync mode with a valid SYNC entry 0, it fetches
-//     entry 0 again and loads its source Actual every POLL clocks.  The next
-//     cycle starts in the clock after a poll sees a valid Actual that differs
-//     from the ReadLocked copy, or at rel == H1, whichever comes first.  A poll
-//     still on the bus at that point is abandoned; it is only a load.
-//   * Memories are block RAM with synchronous read, and read only in clocks
-//     without a write.  They hold the ROM, the entry ring, the per-channel
+//     S..S+9, and its first access is on the bus in clock S+FETCH_CYCLES.
+//     Every access holds cyc/stb until ack.  If no fault occurs, the next
+//     access is on the bus in the clock right after the ack clock.  With
+//     albatross_dpram, whose port B is served every other clock, the ack of
+//     access k (1-based) is sampled at the edge that starts clock
+//         S + FETCH_CYCLES + 2k + phi,  phi = 0 or 1: port-B phase, fixed in a slot.
+//     So the first source Actual load completes at S + FETCH_CYCLES + 2 + phi
+//     and the last of A accesses at S + FETCH_CYCLES + 2A + phi.  A new COPY of
+//     W words to ND destinations with known Actual copies takes A = 3 + W +
+//     ND*(W+3) accesses (TIME, STATUS: ND*(W+3)), plus 1 per destination whose
+//     Actual copy is unknown (cold start, or after a failed Actual store).  It
+//     takes 1 access if nothing is new and nothing is needed.  taken_at is
+//     time_o in the ack clock of the final source Actual load; a TIME value
+//     and the taken_at of TIME and STATUS are S.
+//   * Deadline D = cycle start + E1 + E2.  An access goes on the bus in clock
+//     p only if p <= D - TIMEOUT - 2, so a timed-out access and the wrap-up
+//     clock both end before D.  A fault-free slot needs
+//     E2 >= FETCH_CYCLES + 2A + TIMEOUT + phi.  SCAN rejects E2 <= FETCH_CYCLES.
+//   * A failed access (err, or no ack in TIMEOUT clocks of cyc) adds 1 to
+//     retries, drops cyc/stb for one clock, and is tried again while the
+//     deadline allows.  Exception: a destination whose accesses fail twice in
+//     one slot is dropped for the rest of that slot, so a dead board never
+//     blocks the others.  Source accesses are retried until the deadline.
+//     A failed ReadLocked store forgets the ReadLocked copy.  A failed Actual
+//     store forgets the Actual copy and remembers the buffer it tried; the
+//     read-back before the next Export then shows whether the store landed.
+//     If it did, the value counts as delivered and is not published again.
+//   * A destination that still needs the current value when its slot ends
+//     counts as abandoned, and a later slot of the channel delivers it.
+//   * Cycle end: after the last entry the controller waits until rel == H1.
+//     In sync mode with a valid SYNC entry 0, it first fetches entry 0 again;
+//     the first poll (a load of that source's Actual) is on the bus
+//     FETCH_CYCLES+1 clocks after the last wrap-up clock, and the next ones
+//     follow every POLL clocks, measured start to start.  The next cycle starts in the clock after a poll's ack
+//     that shows a valid Actual other than the ReadLocked copy, or at rel ==
+//     H1, whichever comes first.  A poll still on the bus then is abandoned
+//     (it is a load).
+//   * Memories: block RAM, synchronous read, read only in clocks without a
+//     write.  They hold the ROM, the ring of valid entries, the per-channel
 //     state (ReadLocked copy, Actual copies, need bits, buffer tried, taken_at)
-//     and the per-channel counters.  Counters are updated in place: at most one
-//     lane per clock, and the same lane at most every other clock.  A second
-//     copy of the counters is ordered as the STATUS words.  No multiplier: a
-//     buffer offset is 0, S or 2S (shift and add).
+//     and the per-channel counters.  Counters are updated in place, one lane
+//     per clock and a lane at most every other clock; a second copy of them is
+//     ordered as the STATUS words.  No multiplier: a buffer offset is 0, S or
+//     2S (shift and add).
 //   * Reset (synchronous, active high) clears control state only.
 `default_nettype none
 
@@ -58,7 +69,7 @@ module albatross_controller #(
     parameter ADDR_WIDTH = 10,    // word-address bits of a board RAM, 3..12
     parameter N_CHAN     = 32,    // channel ids with state and counters, 1..32
     parameter ROM_WORDS  = 1024,  // schedule ROM depth in 32-bit words, at least 12
-    parameter ROM_FILE   = "",    // $readmemh image of the ROM; "" leaves it zero (invalid header)
+    parameter ROM_FILE   = "",    // $readmemh image of the ROM; "" leaves it zero (invalid header); simulation: +rom=FILE overrides
     parameter TIMEOUT    = 8,     // clocks of cyc without ack/err before an access fails, 3..60
     parameter POLL       = 16     // sync mode: clocks from the start of one poll to the next, >= 1
 ) (
@@ -208,6 +219,8 @@ module albatross_controller #(
     reg [7:0]          tried_q;           // buffer of a failed Actual store (0: none)
     reg [31:0]         taken_q;           // taken_at of the current value; TIME/STATUS: slot time
     reg [7:0]          wbuf_q;            // buffer chosen for each destination
+    reg [3:0]          fl1_q;             // destination d had a failed access in this slot
+    reg [3:0]          out_q;             // destination d failed twice: dropped for this slot
     reg                newv_q;            // the Import stored ReadLocked: the value is new
     reg [1:0]          apend_q;           // value being stored into ReadLocked
     reg [1:0]          di_q;              // destination of the access
@@ -234,10 +247,18 @@ module albatross_controller #(
     reg [31:0]   ctrb [0:2*N_CHAN-1];     // STATUS words 1..2*N_CHAN
     reg [31:0]   ctrb_q;
 
+    // The ROM image: ROM_FILE, or in simulation the plusarg +rom=FILE (the
+    // harness picks a schedule at run time); neither: all zero.
     integer ri;
+`ifndef SYNTHESIS
+    reg [8*1024-1:0] rom_arg;
+`endif
     initial begin
         for (ri = 0; ri < ROM_WORDS; ri = ri + 1) rom[ri] = 32'd0;
         if (ROM_FILE != "") $readmemh(ROM_FILE, rom);
+`ifndef SYNTHESIS
+        if ($value$plusargs("rom=%s", rom_arg)) $readmemh(rom_arg, rom);
+`endif
     end
 
     // ------------------------------------------------------------ helpers
@@ -292,11 +313,13 @@ module albatross_controller #(
     wire [3:0]  active   = (nd_q == 3'd1) ? 4'b0001 : (nd_q == 3'd2) ? 4'b0011 :
                            (nd_q == 3'd3) ? 4'b0111 : 4'b1111;
     wire [3:0]  dsel     = 4'b0001 << di_q;
-    wire [3:0]  nm_q     = need_q & active;                   // destinations that need the value
+    wire [3:0]  ab_m     = need_q & active;                   // not published yet (abandoned at the end)
+    wire [3:0]  nm_q     = ab_m & ~out_q;                     // destinations served in this slot
     wire [3:0]  nm_next  = nm_q & above(di_q);                // ... after di_q
     wire [3:0]  nm_clr   = nm_q & ~dsel;                      // ... but di_q
-    wire [3:0]  nm_imp   = (newv_q ? 4'hF : need_q) & active; // ... once the Import is done
+    wire [3:0]  nm_imp   = (newv_q ? 4'hF : need_q) & active & ~out_q; // ... once the Import is done
     wire [1:0]  act_cur  = sel2(act_q, di_q);
+    wire        out_cur  = |(out_q & dsel);                   // di_q was dropped
     wire [1:0]  act_nxt  = sel2(act_q, first4(nm_next));      // Actual copy of the next one
     wire [1:0]  act_imp  = sel2(act_q, first4(nm_imp));
     wire        c1       = $signed(rel_q) >= $signed({2'b00, rom_q});   // slot start reached
@@ -333,6 +356,7 @@ module albatross_controller #(
     reg       cyc_inc;
     reg [1:0] rerr_op;
     reg       st_we;
+    reg       dfail;      // an access to destination di_q failed
 
     always @* begin
         state_d    = state_q;
@@ -369,6 +393,7 @@ module albatross_controller #(
         cyc_inc    = 1'b0;
         rerr_op    = RE_NONE;
         st_we      = 1'b0;
+        dfail      = 1'b0;
 
         case (state_q)
             S_INIT: begin
@@ -508,7 +533,10 @@ module albatross_controller #(
 
             // ---- Export (seed figure 4), streamed to every destination that needs it
             S_DA_LD: begin
-                if (!cyc_q) retry_or_end;
+                if (!cyc_q) begin
+                    if (out_cur) ctrl_next(1'b0);
+                    else         retry_or_end;
+                end
                 else if (acc_ack) begin
                     tried_op = TR_CLR;
                     if (!vidx(a_byte)) begin
@@ -524,16 +552,18 @@ module albatross_controller #(
                         act_op = A_BYTE;
                         access(S_DRL_LD);
                     end
-                end else if (acc_fail) event_inc(L_RETRY);
+                end else if (acc_fail) dest_failed;
             end
 
             S_DRL_LD: begin
-                if (!cyc_q) retry_or_end;
-                else if (acc_ack) begin
+                if (!cyc_q) begin
+                    if (out_cur) ctrl_next(1'b0);
+                    else         retry_or_end;
+                end else if (acc_ack) begin
                     if (!vidx(r_byte)) event_inc(L_CORRUPT);
                     wbuf_we = 1'b1;
                     ctrl_next(1'b0);
-                end else if (acc_fail) event_inc(L_RETRY);
+                end else if (acc_fail) dest_failed;
             end
 
             S_SW_LD: begin
@@ -546,55 +576,33 @@ module albatross_controller #(
             end
 
             S_DW_ST: begin
-                if (!cyc_q) retry_or_end;
-                else if (acc_ack) begin
-                    if (nm_next != 4'd0) begin          // same word, next destination
-                        di_op = D_NEXT;
-                        access(S_DW_ST);
-                    end else if (!wi_is_w) begin        // next word
-                        wi_op = W_INC;
-                        di_op = D_FIRST;
-                        if (wi1_is_w) begin
-                            dat_sel = DS_TAKEN;         // taken_at
-                            access(S_DW_ST);
-                        end else if (kind_q == K_COPY) begin
-                            access(S_SW_LD);
-                        end else begin
-                            dat_sel = (kind_q == K_TIME) ? DS_TAKEN : DS_CTRB;
-                            access(S_DW_ST);
-                        end
-                    end else begin                      // publish
-                        di_op   = D_FIRST;
-                        dat_sel = DS_CTRL_W;
-                        access(S_DA_ST);
-                    end
-                end else if (acc_fail) event_inc(L_RETRY);
+                if (!cyc_q) begin
+                    if (out_cur) word_next;
+                    else         retry_or_end;
+                end else if (acc_ack) word_next;
+                else if (acc_fail)    dest_failed;
             end
 
             S_DA_ST: begin
-                if (!cyc_q) retry_or_end;
-                else if (acc_ack) begin
+                if (!cyc_q) begin
+                    if (out_cur) publish_next;
+                    else         retry_or_end;
+                end else if (acc_ack) begin
                     act_op   = A_WBUF;
                     tried_op = TR_CLR;
                     need_op  = N_CLR;
                     event_inc(L_XFER);
-                    if (nm_clr != 4'd0) begin
-                        di_op   = D_FIRST_CLR;
-                        dat_sel = DS_CTRL_W;
-                        access(S_DA_ST);
-                    end else begin
-                        end_transfer;
-                    end
+                    publish_next;
                 end else if (acc_fail) begin
                     act_op   = A_ZERO;                  // may or may not have landed
                     tried_op = TR_SET;
-                    event_inc(L_RETRY);
+                    dest_failed;
                 end
             end
 
             S_WRAP: begin
                 st_we = 1'b1;
-                if (nm_q != 4'd0) begin
+                if (ab_m != 4'd0) begin
                     event_inc(L_ABANDON);
                     ev_pop = 1'b1;
                 end
@@ -685,6 +693,57 @@ module albatross_controller #(
                     dat_sel = (kind_q == K_TIME) ? DS_TAKEN : DS_ST0;
                     access(S_DW_ST);
                 end
+            end
+        end
+    endtask
+
+    // A failed access to destination di_q: retried once in the slot; at its
+    // second failure the destination is dropped for the rest of the slot.
+    task dest_failed;
+        begin
+            event_inc(L_RETRY);
+            dfail = 1'b1;
+        end
+    endtask
+
+    // After a word store to di_q (or di_q dropped): the next destination, the
+    // next word, the taken_at word, or the Actual stores.
+    task word_next;
+        begin
+            if (nm_next != 4'd0) begin              // same word, next destination
+                di_op = D_NEXT;
+                access(S_DW_ST);
+            end else if (nm_q == 4'd0) begin        // every destination dropped
+                end_transfer;
+            end else if (!wi_is_w) begin            // next word
+                wi_op = W_INC;
+                di_op = D_FIRST;
+                if (wi1_is_w) begin
+                    dat_sel = DS_TAKEN;             // taken_at
+                    access(S_DW_ST);
+                end else if (kind_q == K_COPY) begin
+                    access(S_SW_LD);
+                end else begin
+                    dat_sel = (kind_q == K_TIME) ? DS_TAKEN : DS_CTRB;
+                    access(S_DW_ST);
+                end
+            end else begin                          // publish
+                di_op   = D_FIRST;
+                dat_sel = DS_CTRL_W;
+                access(S_DA_ST);
+            end
+        end
+    endtask
+
+    // After the Actual store of di_q (or di_q dropped): the next one, or done.
+    task publish_next;
+        begin
+            if (nm_clr != 4'd0) begin
+                di_op   = D_FIRST_CLR;
+                dat_sel = DS_CTRL_W;
+                access(S_DA_ST);
+            end else begin
+                end_transfer;
             end
         end
     endtask
@@ -786,11 +845,10 @@ module albatross_controller #(
     // ------------------------------------------------------------ ROM and memory addresses
     // Word j of entry e is at 4 + 8e + j.  Memories are read with next-state
     // values, so rom_q (and dlm_*_q, st_q, ctra_q) in a state hold its words.
-    function [ROM_AW-1:0] ewa;
+    function [ROM_AW-1:0] ewa;            // 4 + 8e + j = {e + j[2], ~j[2], j[1:0]}
         input [LB-1:0] e;
         input [2:0]    j;
-        ewa = {{(ROM_AW-LB-3){1'b0}}, e, 3'b000} + {{(ROM_AW-3){1'b0}}, j} +
-              {{(ROM_AW-3){1'b0}}, 3'd4};
+        ewa = {{(ROM_AW-LB-3){1'b0}}, e + {{(LB-1){1'b0}}, j[2]}, ~j[2], j[1:0]};
     endfunction
 
     wire [FC_BITS-1:0] fc_d = (fc_op == FC_0) ? {FC_BITS{1'b0}} :
@@ -835,10 +893,10 @@ module albatross_controller #(
     // Per-channel state: written back in WRAP, cleared in INIT.
     wire               init  = state_q == S_INIT;
     wire [CH_BITS-1:0] ii_ch = ii_q[CB_BITS-1:1];
+    // INIT writes the working copy, which it holds at zero.
     always @(posedge clk_i) begin
-        if (init)       st_mem[ii_ch]  <= 54'd0;
-        else if (st_we) st_mem[chan_q] <= {tried_q, act_q, need_q, rl_q, taken_q};
-        else            st_q           <= st_mem[chan_d];
+        if (init || st_we) st_mem[init ? ii_ch : chan_q] <= {tried_q, act_q, need_q, rl_q, taken_q};
+        else               st_q <= st_mem[chan_d];
     end
 
     // Counters: lane ev_lane of channel chan_q := saturate(old + 1, or + abandoned).
@@ -851,7 +909,7 @@ module albatross_controller #(
             default:   ev_old = ctra_q[63:48];
         endcase
     end
-    wire [2:0]  ev_amt = ev_pop ? {2'd0, nm_q[0]} + {2'd0, nm_q[1]} + {2'd0, nm_q[2]} + {2'd0, nm_q[3]}
+    wire [2:0]  ev_amt = ev_pop ? {2'd0, ab_m[0]} + {2'd0, ab_m[1]} + {2'd0, ab_m[2]} + {2'd0, ab_m[3]}
                                 : 3'd1;
     wire [16:0] ev_sum = {1'b0, ev_old} + {14'd0, ev_amt};
     wire [15:0] ev_new = ev_sum[16] ? 16'hFFFF : ev_sum[15:0];
@@ -1000,24 +1058,36 @@ module albatross_controller #(
             dbrd_q[15:8]         <= {rom_q[31:28], rom_q[15:12]};
             dbase_q[4*AW-1:2*AW] <= {rom_q[16 +: AW], rom_q[AW-1:0]};
         end
-        // working state
-        if (st_ld)                    rl_q <= st_q[33:32];
+        // working state (held at zero in INIT, which writes it to every channel)
+        if (init)                     rl_q <= 2'd0;
+        else if (st_ld)               rl_q <= st_q[33:32];
         else if (rl_op == RL_APEND)   rl_q <= apend_q;
         else if (rl_op == RL_ZERO)    rl_q <= 2'd0;
-        if (st_ld)                    need_q <= st_q[37:34];
+        if (init)                     need_q <= 4'd0;
+        else if (st_ld)               need_q <= st_q[37:34];
         else if (need_op == N_ALL)    need_q <= 4'hF;
         else if (need_op == N_CLR)    need_q <= need_q & ~dsel;
-        if (st_ld)                    act_q <= st_q[45:38];
+        if (init)                     act_q <= 8'd0;
+        else if (st_ld)               act_q <= st_q[45:38];
         else if (act_op == A_BYTE)    act_q <= put2(act_q, di_q, a_byte[1:0]);
         else if (act_op == A_ZERO)    act_q <= put2(act_q, di_q, 2'd0);
         else if (act_op == A_WBUF)    act_q <= put2(act_q, di_q, sel2(wbuf_q, di_q));
-        if (st_ld)                    tried_q <= st_q[53:46];
+        if (init)                     tried_q <= 8'd0;
+        else if (st_ld)               tried_q <= st_q[53:46];
         else if (tried_op == TR_ALL0) tried_q <= 8'd0;
         else if (tried_op == TR_CLR)  tried_q <= put2(tried_q, di_q, 2'd0);
         else if (tried_op == TR_SET)  tried_q <= put2(tried_q, di_q, sel2(wbuf_q, di_q));
-        if (taken_time)               taken_q <= time_q;
+        if (init)                     taken_q <= 32'd0;
+        else if (taken_time)          taken_q <= time_q;
         else if (st_ld && kind_q == K_COPY) taken_q <= st_q[31:0];
         wbuf_q <= wbuf_d;
+        if (st_ld) begin
+            fl1_q <= 4'd0;
+            out_q <= 4'd0;
+        end else if (dfail) begin
+            fl1_q <= fl1_q | dsel;
+            out_q <= out_q | (fl1_q & dsel);
+        end
         if (newv_set)      newv_q <= 1'b1;
         else if (newv_clr) newv_q <= 1'b0;
         if (apend_ld)      apend_q <= a_byte[1:0];

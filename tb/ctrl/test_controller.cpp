@@ -1,24 +1,28 @@
 // test_controller -- smoke test of albatross_controller on tb/rtl/tb_system.v.
 //
 // A small, self-checking test, not the system harness (tb/system/).  Each
-// scenario writes its own schedule ROM (with checksums) to ROM_PATH, the file
-// the model was built to $readmemh, then builds a fresh model.  The schedule
-// runs on boards 0 and 1:
+// scenario writes its own schedule ROM (with checksums) to ctrl_rom.hex, the
+// file the model was built to $readmemh, then builds a fresh model.  The
+// schedule runs on boards 0 and 1:
 //   entry 0  COPY   channel 0: board 0 @0x010 (W = 3) -> board 1 @0x020
 //   entry 1  TIME   channel 1: -> board 0 @0x040, board 1 @0x040
 //   entry 2  STATUS channel 2: -> board 1 @0x080 (W = 1 + 2*N_CHAN)
 // The CPU ports initialise the control bytes to 1.  A C++ producer on CPU port
 // 0 writes values with the three-buffer protocol, and a C++ consumer on CPU
 // port 1 imports them.  Scenarios:
-//   basic    values, taken_at, Actual arrive; exact fault-free timing of a COPY
-//            (every access of the slot against the formula in the controller's
-//            header); TIME value and STATUS counters
+//   basic    values, taken_at, Actual arrive; exact fault-free timing of COPY,
+//            TIME and STATUS slots (every access against the formula in the
+//            controller's header, start-up time T0 included); the access
+//            sequence of a COPY; TIME value and STATUS counters
 //   corrupt  a bit flipped in entry 1: rom_errors counts it each cycle, the other
 //            entries still run on time; a broken header: error_o, bus idle
 //   faults   fault kinds 1, 2, 3 on single accesses are retried; an Actual store
 //            that landed but timed out is not published twice
-//   dead     board 1's link is down for a whole cycle: the slots still start on
-//            time, no access starts after its deadline, nothing hangs
+//   sync     position-synchronised mode: polls every POLL clocks after the last
+//            entry; a new position starts the cycle, else H1 ends it
+//   dead     a board's link is down for a whole cycle: the slots still start on
+//            time, no access starts after its deadline, a dead destination is
+//            dropped after two failed accesses and the others are still served
 // Each check prints what it expected and what it got.  Exit status 0 if all
 // pass, else 64 + a bit mask of the failed groups (1 timing, 2 data, 4 rom,
 // 8 faults, 16 dead).  --inject=timing makes the timing checker expect one
@@ -62,6 +66,8 @@ enum { G_TIMING = 1, G_DATA = 2, G_ROM = 4, G_FAULT = 8, G_DEAD = 16 };
 static unsigned g_failed_groups;
 static unsigned g_checks, g_fails;
 static bool g_inject_timing;
+static int g_argc;                // the command line, for each model's +plusargs
+static char **g_argv;
 
 static void check(unsigned group, bool ok, const char *fmt, ...) {
     ++g_checks;
@@ -178,6 +184,7 @@ struct Sim {
 
     Sim() {
         ctx.reset(new VerilatedContext);
+        ctx->commandArgs(g_argc, g_argv);   // no +rom=: the model reads ROM_FILE
         top.reset(new Vtb_system(ctx.get()));
         top->clk_i = 0;
         top->rst_i = 1;
@@ -637,9 +644,10 @@ static void scenario_faults() {
     CHECK_EQ(G_FAULT, "STATUS: channel 0 abandoned (the slot of the landed store)", 1, got[2] >> 16);
 }
 
-// Board 1's link is down for a whole cycle.
+// A board's link is down for a whole cycle: first board 1 (COPY's and STATUS's
+// destination, TIME's second), then board 0 (COPY's source, TIME's first).
 static void scenario_dead() {
-    std::printf("== dead: a board link down for a cycle; slots stay on time, nothing hangs\n");
+    std::printf("== dead: a board link down for a cycle; slots stay on time, the others are served\n");
     std::vector<Entry> es = schedule();
     write_rom(build_rom(H1, 0, es));
     Sim s;
@@ -649,50 +657,150 @@ static void scenario_dead() {
     s.run_until(T0 + TAIL);
     std::vector<uint32_t> got;
     u.cons.import(s, got);
-    const uint64_t C1 = T0 + H1;
+    u.time0.import(s, got);
+    u.time1.import(s, got);
     u.prod.publish(s, value(1));
-    s.run_until(C1);
-    s.top->fi_dead_i = 1u << 1;
-    s.run_until(C1 + H1);
-    s.top->fi_dead_i = 0;
     const uint32_t starts[3] = {S_COPY, S_TIME, S_STAT}, lens[3] = {L_COPY, L_TIME, L_STAT};
     const char *names[3] = {"COPY", "TIME", "STATUS"};
-    for (int e = 0; e < 3; ++e) {
-        uint64_t S = C1 + starts[e], D = S + lens[e];
-        std::vector<Attempt> v = s.attempts(S, D);
-        char m[160];
-        std::snprintf(m, sizeof m, "dead cycle %s: first access at slot start + FETCH_CYCLES", names[e]);
-        CHECK_EQ(G_DEAD, m, S + F, v.empty() ? 0 : v[0].start);
-        uint64_t last_start = 0, last_end = 0;
-        size_t timeouts = 0;
-        for (const Attempt &a : v) {
-            last_start = std::max(last_start, a.start);
-            last_end = std::max(last_end, a.end);
-            timeouts += a.result == 3;
+    for (int dead = 1; dead >= 0; --dead) {
+        const uint64_t C = T0 + (dead ? 1 : 3) * H1;
+        s.run_until(C);
+        s.top->fi_dead_i = 1u << dead;
+        s.run_until(C + H1);
+        s.top->fi_dead_i = 0;
+        for (int e = 0; e < 3; ++e) {
+            uint64_t S = C + starts[e], D = S + lens[e];
+            std::vector<Attempt> v = s.attempts(S, D);
+            char m[160];
+            std::snprintf(m, sizeof m, "board %d dead, %s: first access at slot start + FETCH_CYCLES", dead, names[e]);
+            CHECK_EQ(G_DEAD, m, S + F, v.empty() ? 0 : v[0].start);
+            uint64_t last_start = 0, last_end = 0;
+            size_t to_dead = 0, failed = 0;
+            for (const Attempt &a : v) {
+                last_start = std::max(last_start, a.start);
+                last_end = std::max(last_end, a.end);
+                to_dead += (a.adr >> AW) == (unsigned)dead;
+                failed += a.result == 3;
+            }
+            std::snprintf(m, sizeof m, "board %d dead, %s: no access starts after D-TIMEOUT-2 (D = %" PRIu64 ")",
+                          dead, names[e], D);
+            check(G_DEAD, last_start <= D - TMO - 2, "%s: expected last start <= %" PRIu64 ", got %" PRIu64, m,
+                  D - TMO - 2, last_start);
+            std::snprintf(m, sizeof m, "board %d dead, %s: every access ends before the deadline", dead, names[e]);
+            check(G_DEAD, last_end < D, "%s: expected last end < %" PRIu64 ", got %" PRIu64, m, D, last_end);
+            bool source = dead == 0 && e == 0;   // COPY from the dead board: retried until the deadline
+            if (source) {
+                std::snprintf(m, sizeof m, "board %d dead, %s: only the source is tried, every try times out", dead,
+                              names[e]);
+                check(G_DEAD, to_dead == v.size() && failed == v.size() && v.size() > 2,
+                      "%s: expected > 2 attempts, all to board %d and all timed out, got %zu attempts, %zu to it, "
+                      "%zu timed out", m, dead, v.size(), to_dead, failed);
+            } else if (!(dead == 0 && e == 2)) {   // STATUS does not touch board 0
+                std::snprintf(m, sizeof m, "board %d dead, %s: the dead destination is tried twice, then dropped",
+                              dead, names[e]);
+                check(G_DEAD, to_dead == 2 && failed == 2, "%s: expected 2 attempts to it, both timed out, got %zu, "
+                      "%zu timed out", m, to_dead, failed);
+            }
         }
-        std::snprintf(m, sizeof m, "dead cycle %s: no access starts after D-TIMEOUT-2 (D = %" PRIu64 ")", names[e], D);
-        check(G_DEAD, last_start <= D - TMO - 2, "%s: expected last start <= %" PRIu64 ", got %" PRIu64, m,
-              D - TMO - 2, last_start);
-        std::snprintf(m, sizeof m, "dead cycle %s: every access ends before the deadline", names[e]);
-        check(G_DEAD, last_end < D, "%s: expected last end < %" PRIu64 ", got %" PRIu64, m, D, last_end);
-        std::snprintf(m, sizeof m, "dead cycle %s: accesses to board 1 time out", names[e]);
-        check(G_DEAD, timeouts > 0, "%s: expected > 0 timeouts, got %zu", m, timeouts);
+        // TIME still reaches the healthy board, whether the dead one comes first or second
+        int live = 1 - dead;
+        bool isnew = (live ? u.time1 : u.time0).import(s, got);
+        char m[128];
+        std::snprintf(m, sizeof m, "board %d dead: TIME still published to board %d (New, value = slot start)", dead,
+                      live);
+        check(G_DEAD, isnew && got[0] == C + S_TIME, "%s: expected New %" PRIu64 ", got %s %u", m, C + S_TIME,
+              isnew ? "New" : "Old", got[0]);
+        (dead ? u.time0 : u.time1).import(s, got);   // catch up with the other one
+        if (dead == 1) {
+            const uint64_t C2 = C + H1;
+            s.run_until(C2 + TAIL);
+            std::vector<Attempt> v2 = s.attempts(C2, C2 + L_COPY);
+            CHECK_EQ(G_DEAD, "link back: COPY starts on time", C2 + F, v2.empty() ? 0 : v2[0].start);
+            isnew = u.cons.import(s, got);
+            check(G_DEAD, isnew && got[0] == value(1)[0],
+                  "link back: the abandoned value is delivered: expected New 0x%08x, got %s 0x%08x", value(1)[0],
+                  isnew ? "New" : "Old", got[0]);
+            isnew = u.stat.import(s, got);
+            CHECK_HEX(G_DEAD, "STATUS: channel 0 {abandoned, corrupt}", 1u << 16 | 0u, got[2]);
+            CHECK_HEX(G_DEAD, "STATUS: channel 1 (TIME) {abandoned, corrupt}: only the dead destination", 1u << 16,
+                      got[4]);
+            CHECK_HEX(G_DEAD, "STATUS: channel 1 (TIME) {transfers, retries}: 2 + 1 + 2, 2 retries", 5u << 16 | 2u,
+                      got[3]);
+            u.time0.import(s, got);
+            u.time1.import(s, got);
+        }
     }
-    const uint64_t C2 = C1 + H1;
-    s.run_until(C2 + TAIL);
-    std::vector<Attempt> v2 = s.attempts(C2, C2 + L_COPY);
-    CHECK_EQ(G_DEAD, "next cycle: COPY starts on time", C2 + F, v2.empty() ? 0 : v2[0].start);
+}
+
+// Position-synchronised mode: entry 0 is the SYNC COPY.  After the last entry the
+// controller polls the SYNC source's Actual every POLL clocks; a new value starts
+// the next cycle in the clock after the poll's ack, else the cycle ends at H1.
+static void scenario_sync() {
+    std::printf("== sync: polls every POLL clocks, a new position starts the cycle, else H1 does\n");
+    const int POLL = 16;
+    std::vector<Entry> es = schedule();
+    es[0].flags = 1;                 // SYNC
+    es.pop_back();                   // COPY, TIME
+    write_rom(build_rom(H1, 1, es));
+    Sim s;
+    Setup u(s);
+    const uint64_t T0 = t0_of((int)es.size());
+    u.prod.publish(s, value(0));
+    s.run_until(T0 + TAIL);
+    std::vector<uint32_t> got;
     bool isnew = u.cons.import(s, got);
-    check(G_DEAD, isnew && got[0] == value(1)[0],
-          "link back: the abandoned value is delivered: expected New 0x%08x, got %s 0x%08x", value(1)[0],
-          isnew ? "New" : "Old", got[0]);
-    isnew = u.stat.import(s, got);
-    CHECK_HEX(G_DEAD, "STATUS: channel 0 {abandoned, corrupt}", 1u << 16 | 0u, got[2]);
-    CHECK_HEX(G_DEAD, "STATUS: channel 1 (TIME, 2 destinations) {abandoned, corrupt}", 2u << 16 | 0u, got[4]);
+    check(G_DATA, isnew && got[0] == value(0)[0], "sync cycle 0: the position arrives: expected New 0x%08x, got %s 0x%08x",
+          value(0)[0], isnew ? "New" : "Old", got[0]);
+    // polls: loads of the source's control word after the last slot
+    auto polls = [&](uint64_t t0, uint64_t t1) {
+        std::vector<Attempt> v;
+        for (const Attempt &a : s.attempts(t0, t1))
+            if (!a.we && a.adr == ba(0, SRC_BASE)) v.push_back(a);
+        return v;
+    };
+    std::vector<Attempt> p0 = polls(T0 + S_TIME + L_TIME, T0 + TAIL);
+    check(G_DATA, p0.size() >= 5, "sync cycle 0: the source is polled after the last slot: expected >= 5 polls, got %zu",
+          p0.size());
+    for (size_t i = 1; i < p0.size() && i < 4; ++i) {
+        char m[96];
+        std::snprintf(m, sizeof m, "sync cycle 0: poll %zu starts POLL clocks after poll %zu", i + 1, i);
+        CHECK_EQ(G_TIMING, m, p0[i - 1].start + POLL, p0[i].start);
+    }
+    // a new position: the next cycle starts in the clock after the poll that sees it
+    u.prod.publish(s, value(1));
+    const uint64_t t_pub = s.now;
+    s.run_until(T0 + H1 + TAIL);
+    std::vector<Attempt> p1 = polls(t_pub, T0 + H1);
+    uint64_t c1 = 0;
+    for (const Attempt &a : p1)
+        if (a.start > t_pub) { c1 = a.end + 1; break; }    // the first poll after the Actual store
+    std::vector<Attempt> v1 = s.attempts(c1, c1 + L_COPY);
+    check(G_TIMING, c1 && !v1.empty() && v1[0].start == c1 + S_COPY + F,
+          "sync: a new position starts the cycle in the clock after the poll's ack (%" PRIu64
+          "): SYNC COPY first access: expected %" PRIu64 ", got %" PRIu64, c1, c1 + S_COPY + F,
+          v1.empty() ? 0 : v1[0].start);
+    check(G_TIMING, c1 && c1 < T0 + H1, "sync: the cycle started early: expected before the H1 end %" PRIu64
+          ", got %" PRIu64, T0 + H1, c1);
+    if (c1) check_slot_timing("sync cycle 1 SYNC COPY (new)", v1, c1 + S_COPY, 3 + W_COPY + 1 * (W_COPY + 3));
+    isnew = u.cons.import(s, got);
+    check(G_DATA, isnew && got[0] == value(1)[0], "sync cycle 1: the new position arrives: expected New 0x%08x, got %s 0x%08x",
+          value(1)[0], isnew ? "New" : "Old", got[0]);
+    // no new position: the cycle ends at H1
+    s.run_until(c1 + H1 + TAIL);
+    std::vector<Attempt> v2 = s.attempts(c1 + H1, c1 + H1 + L_COPY);
+    CHECK_EQ(G_TIMING, "sync: without a new position the next cycle starts at H1: first access", c1 + H1 + S_COPY + F,
+             v2.empty() ? 0 : v2[0].start);
+    std::vector<Attempt> p2 = polls(c1 + S_TIME + L_TIME, c1 + H1);
+    uint64_t last_end = 0;
+    for (const Attempt &a : p2) last_end = std::max(last_end, a.end);
+    check(G_TIMING, !p2.empty() && last_end <= c1 + H1, "sync: polls until the cycle end: expected polls ending by %"
+          PRIu64 ", got %zu polls, last end %" PRIu64, c1 + H1, p2.size(), last_end);
 }
 
 // ------------------------------------------------------------------ main
 int main(int argc, char **argv) {
+    g_argc = argc;
+    g_argv = argv;
     std::string only;
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
@@ -706,14 +814,15 @@ int main(int argc, char **argv) {
             }
         }
         else {
-            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead]\n",
+            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|sync]\n",
                          argv[0]);
             return 2;
         }
     }
     if (g_inject_timing) std::printf("injected: the timing checker expects every completion one clock late\n");
     struct { const char *name; void (*fn)(); } sc[] = {
-        {"basic", scenario_basic}, {"corrupt", scenario_corrupt}, {"faults", scenario_faults}, {"dead", scenario_dead}};
+        {"basic", scenario_basic}, {"corrupt", scenario_corrupt}, {"faults", scenario_faults}, {"dead", scenario_dead},
+        {"sync", scenario_sync}};
     for (auto &x : sc)
         if (only.empty() || only == x.name) x.fn();
     std::printf("test_controller: %u checks, %u failed%s\n", g_checks, g_fails,
