@@ -20,6 +20,10 @@ TB            := $(TB_DIR)/albatross/tb_dpram
 RTL           := $(sort $(wildcard rtl/*.v))
 TB_RTL        := $(sort $(wildcard tb/rtl/*.v))
 
+# Helpers for the fragments: field N of a colon-separated list entry.
+comma         := ,
+neg_field      = $(word $(2),$(subst :, ,$(1)))
+
 # Each fragment in mk/ adds its tests to TESTS (names) and rules test-<name>.
 TESTS         :=
 BENCHES       :=

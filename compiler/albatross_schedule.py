@@ -27,7 +27,8 @@ Description (TOML)
   fetch_cycles        10  the controller's per-slot entry fetch
   timeout_cycles      8   clocks until an unanswered access fails
   retries_per_slot    2   failed accesses every slot must absorb
-  guard_cycles        2   idle clocks at the end of every slot
+  guard_cycles        6   idle clocks at the end of every slot (the controller starts
+                          no access later than deadline - timeout - 2: >= timeout - retries)
   n_chan              16  the controller's N_CHAN (channel ids 0..n_chan-1)
   poll_cycles         16  position poll interval (position-synchronised)
 
@@ -99,7 +100,7 @@ BUS_DEFAULTS = {
     "fetch_cycles": 10,
     "timeout_cycles": 8,
     "retries_per_slot": 2,
-    "guard_cycles": 2,
+    "guard_cycles": 6,
     "n_chan": 16,
     "poll_cycles": 16,
 }
@@ -157,7 +158,7 @@ class Bus:
     fetch_cycles: int = 10
     timeout_cycles: int = 8
     retries_per_slot: int = 2
-    guard_cycles: int = 2
+    guard_cycles: int = 6
     n_chan: int = 16
     poll_cycles: int = 16
 

@@ -20,7 +20,7 @@ $(CTRL_BIN): $(CTRL_SRC) mk/controller.mk
 	    > $(CTRL_DIR)/build.log 2>&1 || { cat $(CTRL_DIR)/build.log; exit 1; }
 
 TESTS += controller-smoke controller-smoke-negative
-.PHONY: test-controller-smoke test-controller-smoke-negative lint-tb-system
+.PHONY: test-controller-smoke test-controller-smoke-negative
 
 test-controller-smoke: $(CTRL_BIN)
 	@tools/run_test.sh controller-smoke $(CTRL_BIN) --dir=$(CTRL_DIR)/smoke
@@ -31,16 +31,3 @@ test-controller-smoke-negative: $(CTRL_BIN)
 	    grep -m 3 "^FAIL" $(CTRL_DIR)/negative.log | sed "s/^FAIL/  caught (injected):/"; \
 	    if [ $$rc -eq 65 ]; then echo "timing checker failed on the wrong formula, as it must (exit 65)"; \
 	    else echo "expected exit 65 (timing checker only), came exit $$rc"; tail -n 5 $(CTRL_DIR)/negative.log; exit 1; fi'
-
-# tools/lint.sh gives each file rtl/ as its only library, but tb_system.v also
-# instantiates bus_fault_injector from tb/rtl/.  Until the script takes tb/rtl/
-# as well, `make lint` lints tb_system.v here with the same three tools and
-# both libraries.
-TB_RTL := $(filter-out tb/rtl/tb_system.v,$(TB_RTL))
-lint: lint-tb-system
-lint-tb-system:
-	@verilator --lint-only -Wall -y rtl -y tb/rtl --top-module tb_system tb/rtl/tb_system.v
-	@iverilog -g2005 -y rtl -y tb/rtl -s tb_system -o /dev/null tb/rtl/tb_system.v
-	@yosys -q -p "read_verilog $(RTL) tb/rtl/bus_fault_injector.v tb/rtl/tb_system.v; \
-	    hierarchy -check -top tb_system; proc"
-	@echo "lint ok  tb/rtl/tb_system.v (libraries rtl/ and tb/rtl/)"

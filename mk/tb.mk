@@ -95,7 +95,6 @@ NEGATIVE := \
   fresh_readlocked-semantic:fresh_readlocked:random:in_channel:--ignore,termination \
   never_new:never_new:random:actuality \
   reader_writes_actual:reader_writes_actual:random:ownership
-neg_field = $(word $(2),$(subst :, ,$(1)))
 define negative_test
 TESTS += tb-negative-$(call neg_field,$(1),1)
 test-tb-negative-$(call neg_field,$(1),1): $(TB_DIR)/$(call neg_field,$(1),2)/tb_dpram
@@ -104,7 +103,6 @@ test-tb-negative-$(call neg_field,$(1),1): $(TB_DIR)/$(call neg_field,$(1),2)/tb
 	    --expect-caught-by $(call neg_field,$(1),4) $(subst $(comma), ,$(call neg_field,$(1),5)) \
 	    --report $(REPORTS)/tb_negative_$(call neg_field,$(1),1).json
 endef
-comma := ,
 $(foreach n,$(NEGATIVE),$(eval $(call negative_test,$(n))))
 
 .PHONY: soak bench-tb

@@ -214,6 +214,7 @@ module albatross_controller #(
     reg [4*AW-1:0]     dbase_q;           // destination d: [AW*d +: AW]
     // working copy of the channel state
     reg [1:0]          rl_q;              // source ReadLocked copy (0: unknown)
+    reg                imp_open_q;        // ReadLocked stored, not yet confirmed by a load of Actual
     reg [3:0]          need_q;            // destination d has not got the current value
     reg [7:0]          act_q;             // destination Actual copies (0: unknown)
     reg [7:0]          tried_q;           // buffer of a failed Actual store (0: none)
@@ -895,7 +896,11 @@ module albatross_controller #(
     wire [CH_BITS-1:0] ii_ch = ii_q[CB_BITS-1:1];
     // INIT writes the working copy, which it holds at zero.
     always @(posedge clk_i) begin
-        if (init || st_we) st_mem[init ? ii_ch : chan_q] <= {tried_q, act_q, need_q, rl_q, taken_q};
+        // An Import cut off by the deadline between its store of ReadLocked and
+        // the load of Actual that confirms it leaves its copy unknown: the
+        // next slot must take that buffer as a new value, with a new taken_at.
+        if (init || st_we) st_mem[init ? ii_ch : chan_q] <= {tried_q, act_q, need_q,
+                                                               imp_open_q ? 2'd0 : rl_q, taken_q};
         else               st_q <= st_mem[chan_d];
     end
 
@@ -1059,6 +1064,9 @@ module albatross_controller #(
             dbase_q[4*AW-1:2*AW] <= {rom_q[16 +: AW], rom_q[AW-1:0]};
         end
         // working state (held at zero in INIT, which writes it to every channel)
+        if (init || rst_i || state_q == S_FETCH)                                     imp_open_q <= 1'b0;
+        else if (state_q == S_SRL_ST && acc_ack)                                     imp_open_q <= 1'b1;
+        else if (state_q == S_SA_LD && acc_ack && vidx(a_byte) && a_byte[1:0] == rl_q) imp_open_q <= 1'b0;
         if (init)                     rl_q <= 2'd0;
         else if (st_ld)               rl_q <= st_q[33:32];
         else if (rl_op == RL_APEND)   rl_q <= apend_q;

@@ -771,7 +771,7 @@ class CheckerNegativeTests(unittest.TestCase):
 
     def test_overlapping_slot(self):
         rom = list(self.rom)
-        rom[4 + 8 * 5 + 1] -= 3           # entry 5 starts before entry 4 ends
+        rom[4 + 8 * 5 + 1] = rom[4 + 8 * 4 + 1]   # entry 5 starts where entry 4 starts
         self.reseal(rom, 5)
         self.assertIn("entry 5: overlaps or precedes the previous slot", self.problems(rom))
         self.assertTrue(any("before the previous slot" in p for p in S.verify_rom(rom, 16, 4, self.ram_words)[0]))

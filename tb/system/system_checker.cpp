@@ -50,11 +50,20 @@ SystemChecker::SystemChecker(const Plan &plan, SystemSim &sim, uint64_t time_off
             in.size = c.dest_size();
             in.producer_port = 1;
             inst_.push_back(in);
-            // The RAM image: Buffer1 holds value 0 (zeros for TIME/STATUS), taken_at 0.
+            // What the destination holds when checking begins (the RAM image,
+            // or what the controller published while the images were being
+            // loaded): publication 0, unread if Actual != ReadLocked.
+            const RefRam &ram = sim.ref[in.board];
+            uint8_t actual = ram.byte(in.base + ALB_OFF_ACTUAL), rl = ram.byte(in.base + ALB_OFF_READLOCKED);
+            if (!ALB_VALID_INDEX(actual)) actual = ALB_BUFFER1;
             DestPub p{0, 0, 0, std::vector<uint8_t>(c.dest_size(), 0)};
-            if (c.copy()) channel_value(c.id, 0, p.bytes.data(), c.size);
+            const uint32_t at = in.base + ALB_OFF_BUFFER(static_cast<uint32_t>(actual), in.size);
+            for (uint32_t k = 0; k < in.size; ++k) p.bytes[k] = ram.byte(at + k);
+            std::memcpy(&p.taken_at, &p.bytes[4 * c.words], 4);
             dst_[i][d].pubs.push_back(p);
             dst_[i][d].pending = 1;
+            dst_[i][d].last_read = actual == rl ? 0 : -1;
+            dst_[i][d].actual = actual;
         }
     }
 }
@@ -162,6 +171,10 @@ void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
         violation(DEFINITE, m);
         return;
     }
+    // Storing the index Actual already holds (a retry after a store that
+    // landed but whose answer was lost) publishes nothing new.
+    if (buffer == d.actual) return;
+    d.actual = buffer;
     DestPub p;
     p.cycle = cycle;
     p.bytes.resize(in.size);
@@ -207,10 +220,12 @@ void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
         st.max_taken_minus_publish = std::max(st.max_taken_minus_publish, taken_cycle - s.publish_cycle[p.seq]);
         // Latency of every source value this publication reaches.
         for (; d.pending <= p.seq && d.pending < s.publish_cycle.size(); ++d.pending) {
+            if (s.publish_cycle[d.pending] < latency_from_) continue;
             uint64_t lat = cycle - s.publish_cycle[d.pending];
             st.latency_max = std::max(st.latency_max, lat);
             st.latency_sum += lat;
             ++st.latency_n;
+            if (lat > c.latency_retry) ++st.over_retry_bound;
             if (lat > c.latency) {
                 ++st.latency_over;
                 if (latency_checked_) {
@@ -237,10 +252,14 @@ void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
                           static_cast<unsigned long long>(taken_cycle), last.taken_at);
             violation(TIME, m);
         }
-        uint64_t age = cycle - std::min(cycle, taken_cycle);
+        // Age bound: how old the value the destination held had grown when
+        // this one replaced it.
+        const uint64_t last_taken = last.taken_at + time_offset_;
+        uint64_t age = d.pubs.size() > 1 && last_taken >= latency_from_ ? cycle - last_taken : 0;
         st.latency_max = std::max(st.latency_max, age);
         st.latency_sum += age;
         ++st.latency_n;
+        if (age > c.latency_retry) ++st.over_retry_bound;
         if (age > c.latency) {
             ++st.latency_over;
             if (latency_checked_) {
@@ -271,6 +290,10 @@ void SystemChecker::imported(int chan, int dest, int rc, const uint8_t *payload,
     if (rc == ALB_NEW) ++st.imports_new;
     const uint32_t n = c.dest_size();
     int64_t found = -1, at_begin = 0;
+    // Two publications can hold equal bytes (a time value published before
+    // and after a reset): an Old result is first matched with the last read.
+    if (rc == ALB_OLD && d.last_read >= 0 && std::memcmp(d.pubs[d.last_read].bytes.data(), payload, n) == 0)
+        found = d.last_read;
     for (int64_t i = static_cast<int64_t>(d.pubs.size()) - 1; i >= 0; --i) {
         if (d.pubs[i].cycle <= begin && !at_begin) at_begin = i;
         if (found < 0 && std::memcmp(d.pubs[i].bytes.data(), payload, n) == 0 && d.pubs[i].cycle <= end) found = i;

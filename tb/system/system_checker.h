@@ -46,6 +46,9 @@ public:
     void imported(int channel, int dest, int rc, const uint8_t *payload, uint64_t begin, uint64_t end,
                   uint32_t consumer_time);
     void set_latency_is_checked(bool on) { latency_checked_ = on; }
+    // Values published before this cycle are not measured (the controller's
+    // first cycle after reset follows its scan of the ROM).
+    void set_latency_from(uint64_t cycle) { latency_from_ = cycle; }
     void end_of_run();                                         // close open read windows
 
     uint64_t violations[KINDS] = {};
@@ -55,6 +58,7 @@ public:
     struct DestStats {
         uint64_t publications = 0, imports = 0, imports_new = 0;
         uint64_t latency_max = 0, latency_sum = 0, latency_n = 0, latency_over = 0;
+        uint64_t over_retry_bound = 0;                      // beyond the with-retries bound too
         uint64_t max_age_seen = 0, last_age_seen = 0;       // by the consumer, via taken_at
         uint64_t max_taken_minus_publish = 0;               // time/position correlation
     };
@@ -86,6 +90,7 @@ private:
         std::vector<DestPub> pubs;         // pubs[0]: the RAM image
         uint64_t pending = 0;              // first source seq not yet reached at this dest
         int64_t last_read = 0;             // consumer: index of the last pub read
+        uint8_t actual = 0;                // the destination's Actual, as last stored
     };
     struct SourceState {
         std::vector<uint64_t> publish_cycle;   // by seq (0: the image)
@@ -101,6 +106,7 @@ private:
     SystemSim &sim_;
     uint64_t time_offset_;             // cycle = controller time + time_offset
     bool latency_checked_ = true;
+    uint64_t latency_from_ = ~0ull;
     std::vector<Instance> inst_;
     std::vector<SourceState> src_;
     std::vector<std::vector<DestState>> dst_;

@@ -92,6 +92,7 @@ void SystemSim::load(int b, uint32_t addr, const uint8_t *bytes, uint32_t n)
 void SystemSim::set_fault(unsigned kind) { dut_->fi_kind_i = kind & 3u; }
 void SystemSim::set_dead(unsigned mask) { dut_->fi_dead_i = mask & ((1u << kBoards) - 1u); }
 uint32_t SystemSim::time() const { return dut_->time_o; }
+bool SystemSim::bus_stb() const { return dut_->bus_stb_o != 0; }
 bool SystemSim::error() const { return dut_->error_o != 0; }
 unsigned SystemSim::rom_errors() const { return dut_->rom_errors_o; }
 
@@ -102,10 +103,25 @@ unsigned SystemSim::tick()
     dut_->clk_i = 0;
     dut_->eval();
     ++cycle_;
-    // The controller's bus, as it sees it.
+    // The controller's bus, as it sees it: an access begins when stb rises
+    // or stays high after the previous access ended; it ends at ack or err
+    // (or when the controller gives up and drops stb).
+    bus_event.done = false;
+    bool stb = dut_->bus_stb_o != 0;
+    if (stb && !bus_prev_stb_) bus_start_ = cycle_;   // raised at this edge
     if (dut_->bus_cyc_o) ++bus_busy_cycles;
-    if (dut_->bus_ack_o) ++bus_accesses;
-    if (dut_->bus_err_o) ++bus_failures;
+    if (stb && (dut_->bus_ack_o || dut_->bus_err_o)) {
+        bus_event.done = true;
+        bus_event.ok = dut_->bus_ack_o != 0;
+        bus_event.we = dut_->bus_we_o != 0;
+        bus_event.board = static_cast<int>(dut_->bus_adr_o >> kAddrWidth) & 0xF;
+        bus_event.addr = static_cast<uint32_t>(dut_->bus_adr_o & ((1u << kAddrWidth) - 1u)) << 2;
+        bus_event.start = bus_start_;
+        bus_event.end = cycle_ + 1;    // the controller samples the answer at the next edge
+        if (dut_->bus_ack_o) ++bus_accesses; else ++bus_failures;
+        bus_start_ = cycle_ + 1;       // a request held on begins there
+    }
+    bus_prev_stb_ = stb && !(dut_->bus_ack_o || dut_->bus_err_o);
     unsigned mask = 0;
     for (int b = 0; b < kBoards; ++b) {
         Access done[2];

@@ -57,6 +57,14 @@ public:
     bool error() const;
     unsigned rom_errors() const;
     uint64_t bus_busy_cycles = 0, bus_accesses = 0, bus_failures = 0;
+    // The controller's access completed at the last tick, if any.
+    struct BusEvent {
+        bool done = false, ok = false, we = false;
+        int board = 0;
+        uint32_t addr = 0;          // byte address in that board's RAM
+        uint64_t start = 0, end = 0;  // edges: request presented .. answer sampled
+    } bus_event;
+    bool bus_stb() const;
 
     uint64_t cpu_latency_violations = 0, worst_cpu_latency = 0;
     std::string first_cpu_latency_violation;
@@ -68,6 +76,8 @@ private:
     uint64_t cycle_ = 0;
     bool busy_[kBoards] = {};
     uint64_t issue_cycle_[kBoards] = {};
+    bool bus_prev_stb_ = false;
+    uint64_t bus_start_ = 0;
     bool loading_[kBoards] = {};       // load() owns the CPU port
     BusRequest load_req_[kBoards] = {};
 };

@@ -10,6 +10,8 @@
 //             [--dead-board B --dead-at C]        board B's link fails for good at cycle C
 //             [--corrupt-entry K]                 flip a bit of schedule ROM entry K
 //             [--rom FILE] [--report FILE] [--label NAME]
+//             [--latency-scale F] [--expect-caught-by CHECKER]...   negative tests
+//             [--trace-bus FROM:TO]      print the controller's accesses in that window
 //
 // DIR holds the compiler's output: rom.hex and tb_plan.txt.  Exit status 0:
 // no violation, and the scenario's own expectations held.
@@ -37,7 +39,9 @@ namespace {
 struct Options {
     std::string plan_dir, rom, report, label = "system";
     uint64_t cycles = 400000, seed = 1, dead_at = 0;
-    double fault_rate = 0, burst = 1;
+    double fault_rate = 0, burst = 1, latency_scale = 1;
+    std::vector<std::string> expect_caught_by;   // a negative test: these checkers must fire
+    uint64_t trace_from = 1, trace_to = 0;       // print the controller's accesses in this window
     int dead_board = -1, corrupt_entry = -1;
 };
 
@@ -57,7 +61,9 @@ struct Role {
 struct BoardCtx {
     int board = 0;
     std::vector<Role> roles;
-    uint32_t global_time = 0;   // the newest GlobalTime this CPU has imported
+    uint32_t global_time = 0;   // the newest GlobalTime this CPU has imported ...
+    uint64_t global_at = 0;     // ... and its local clock then: a local timer
+                                // synchronised to the global time (seed 3.4.1)
     std::mt19937_64 rng;
     int attach_errors = 0;
 };
@@ -91,12 +97,12 @@ void board_program(SimCpu &cpu)
             } else {
                 uint64_t begin = now();
                 int rc = alb_import(&r.ch, buf);
-                if (r.time_channel && rc >= 0) {
-                    uint32_t t;
-                    std::memcpy(&t, buf, 4);
-                    b.global_time = std::max(b.global_time, t);
+                if (r.time_channel && rc == ALB_NEW) {
+                    std::memcpy(&b.global_time, buf, 4);
+                    b.global_at = now();
                 }
-                g_chk->imported(r.chan, r.dest, rc, buf, begin, now(), b.global_time);
+                uint32_t local_time = b.global_time + static_cast<uint32_t>(now() - b.global_at);
+                g_chk->imported(r.chan, r.dest, rc, buf, begin, now(), local_time);
             }
         }
     }
@@ -116,6 +122,49 @@ struct FaultModel {
         if (bad) { if (u(rng) < 1 / burst) bad = false; }
         else if (u(rng) < enter) bad = true;
         return bad ? 1 + static_cast<unsigned>(rng() % 3) : 0;
+    }
+};
+
+// Bus cycles of every COPY transfer that publishes a new value to a channel
+// with one destination: from the start of its first access (the load of the
+// source Actual) to the end of its last (the store of the destination
+// Actual), against the protocol's minimum: W loads, W + 1 stores and 5
+// control accesses, each access_cycles long.
+struct TransferMeter {
+    const PlanChannel *c = nullptr;
+    bool active = false, published = false;
+    uint64_t start = 0, accesses = 0, busy = 0;
+    uint64_t n = 0, sum = 0, min = ~0ull, max = 0, idle_sum = 0, accesses_last = 0;
+
+    bool in(int board, uint32_t base, uint32_t size, const SystemSim::BusEvent &e) const {
+        return e.board == board && e.addr >= base && e.addr < base + ALB_CHANNEL_BYTES(size);
+    }
+    void on(const SystemSim::BusEvent &e) {
+        const bool src = in(c->src_board, c->src_base, c->size, e);
+        const bool dst = in(c->dests[0].board, c->dests[0].base, c->dest_size(), e);
+        if (!src && !dst) { active = false; return; }       // another entry: an Old transfer ends
+        const bool src_actual = src && !e.we && e.addr == c->src_base;
+        if (src_actual && (!active || published)) {
+            active = true;
+            published = false;
+            start = e.start;
+            accesses = busy = 0;
+        }
+        if (!active) return;
+        if (!e.ok) { active = false; return; }               // only fault-free transfers
+        ++accesses;
+        busy += e.end - e.start;
+        if (dst && e.we && e.addr == c->dests[0].base) {      // the store of Actual: published
+            uint64_t cycles = e.end - start;
+            ++n;
+            sum += cycles;
+            min = std::min(min, cycles);
+            max = std::max(max, cycles);
+            idle_sum += cycles - busy;
+            accesses_last = accesses;
+            published = true;
+            active = false;
+        }
     }
 };
 
@@ -168,7 +217,8 @@ int usage(const char *why)
     std::fprintf(stderr, "tb_system: %s\n"
                  "usage: tb_system --plan DIR [--cycles N] [--seed S] [--fault-rate R] [--burst L]\n"
                  "                 [--dead-board B --dead-at C] [--corrupt-entry K] [--rom FILE]\n"
-                 "                 [--report FILE] [--label NAME]\n", why);
+                 "                 [--report FILE] [--label NAME] [--latency-scale F]\n"
+                 "                 [--expect-caught-by CHECKER]...\n", why);
     return 2;
 }
 
@@ -194,12 +244,23 @@ int main(int argc, char **argv)
         else if (a == "--dead-board" && num && x >= 0 && x < SystemSim::kBoards) o.dead_board = static_cast<int>(x);
         else if (a == "--dead-at" && num && x >= 0) o.dead_at = static_cast<uint64_t>(x);
         else if (a == "--corrupt-entry" && num && x >= 0) o.corrupt_entry = static_cast<int>(x);
+        else if (a == "--latency-scale" && num && x > 0) o.latency_scale = x;
+        else if (a == "--trace-bus" && std::sscanf(v, "%llu:%llu", reinterpret_cast<unsigned long long *>(&o.trace_from),
+                                                   reinterpret_cast<unsigned long long *>(&o.trace_to)) == 2) {}
+        else if (a == "--expect-caught-by") {
+            int k = 0;
+            while (k < SystemChecker::KINDS && std::string(v) != SystemChecker::kind_name(k)) ++k;
+            if (k == SystemChecker::KINDS) return usage(("unknown checker " + std::string(v)).c_str());
+            o.expect_caught_by.push_back(v);
+        }
         else return usage(("bad option or value: " + a + " " + v).c_str());
     }
     if (o.plan_dir.empty()) return usage("--plan is required");
     Plan plan;
     std::string err;
     if (!plan.load(o.plan_dir + "/tb_plan.txt", err)) { std::fprintf(stderr, "tb_system: %s\n", err.c_str()); return 2; }
+    for (PlanChannel &c : plan.channels)   // a negative test's deliberately wrong bounds
+        c.latency = static_cast<uint64_t>(static_cast<double>(c.latency) * o.latency_scale);
     if (plan.boards > SystemSim::kBoards || plan.ram_bytes != SystemSim::kRamBytes) {
         std::fprintf(stderr, "tb_system: the plan has %d boards of %u bytes; this build simulates %d boards of %u bytes\n",
                      plan.boards, plan.ram_bytes, SystemSim::kBoards, SystemSim::kRamBytes);
@@ -261,11 +322,14 @@ int main(int argc, char **argv)
         if (!boards[b].roles.empty()) sim.cpu[b].start(board_program);
     }
 
+    std::vector<TransferMeter> meters;
+    for (const PlanChannel &c : plan.channels)
+        if (c.copy() && c.dests.size() == 1) { TransferMeter t; t.c = &c; meters.push_back(t); }
     FaultModel faults(o.fault_rate, o.burst, o.seed ^ 0xFA17ull);
     uint64_t wait[SystemSim::kBoards] = {};
     const uint64_t start = sim.cycle(), report_every = o.cycles / 10;
     auto t0 = std::chrono::steady_clock::now();
-    bool time_monotonic = true;
+    bool time_monotonic = true, controller_started = false;
     uint32_t last_time = sim.time();
     for (uint64_t n = 0; n < o.cycles; ++n) {
         if (o.dead_board >= 0 && sim.cycle() - start == o.dead_at) sim.set_dead(1u << o.dead_board);
@@ -278,6 +342,19 @@ int main(int argc, char **argv)
             if (c.has_request) sim.issue(b);
         }
         unsigned done = sim.tick();
+        if (sim.bus_event.done && sim.cycle() >= o.trace_from && sim.cycle() <= o.trace_to) {
+            const SystemSim::BusEvent &e = sim.bus_event;
+            std::printf("  bus %8llu..%-8llu %s %-5s board %d addr 0x%03x  time %u\n",
+                        static_cast<unsigned long long>(e.start), static_cast<unsigned long long>(e.end),
+                        e.ok ? "ok  " : "FAIL", e.we ? "write" : "read", e.board, e.addr, sim.time());
+        }
+        if (sim.bus_event.done) {
+            if (!controller_started) {          // its first cycle has begun
+                controller_started = true;
+                chk.set_latency_from(sim.bus_event.start + plan.cycle);
+            }
+            for (TransferMeter &t : meters) t.on(sim.bus_event);
+        }
         for (int b = 0; b < SystemSim::kBoards; ++b)
             if (done & (1u << b)) wait[b] = static_cast<uint64_t>((rng() % 3) * period[b]);
         if (sim.time() < last_time) time_monotonic = false;
@@ -347,8 +424,13 @@ int main(int argc, char **argv)
                           static_cast<unsigned long long>(ds.last_age_seen), static_cast<unsigned long long>(ds.max_age_seen),
                           static_cast<unsigned long long>(ds.max_taken_minus_publish), static_cast<unsigned long long>(c.period));
             chans += b;
-            // A dead board: consumers of its channels must see the age grow,
-            // channels that do not touch it must still be delivered.
+            // A dead board: consumers of its channels must see the age grow;
+            // channels that do not involve it keep their fault-free bound, live
+            // destinations of an entry that does involve it the with-retries
+            // bound (the dead board's accesses fail before it is dropped).
+            bool involves = false;
+            for (const PlanDest &x : c.dests) involves = involves || x.board == o.dead_board;
+            involves = o.dead_board >= 0 && (involves || c.src_board == o.dead_board);
             bool touches = o.dead_board >= 0 && (c.src_board == o.dead_board || c.dests[d].board == o.dead_board);
             if (o.dead_board >= 0 && c.copy() && c.src_board == o.dead_board && c.dests[d].board != o.dead_board &&
                 ds.last_age_seen < 3 * std::max<uint64_t>(c.period, plan.cycle)) {
@@ -358,9 +440,15 @@ int main(int argc, char **argv)
                               static_cast<unsigned long long>(3 * std::max<uint64_t>(c.period, plan.cycle)));
                 failures.push_back(m);
             }
-            if (o.dead_board >= 0 && !touches && ds.latency_over) {
-                std::snprintf(m, sizeof m, "%s to board %d does not touch the dead board, yet %llu values exceeded the latency bound",
+            if (o.dead_board >= 0 && !involves && ds.latency_over) {
+                std::snprintf(m, sizeof m, "%s to board %d does not involve the dead board, yet %llu values exceeded the fault-free bound",
                               c.name.c_str(), c.dests[d].board, static_cast<unsigned long long>(ds.latency_over));
+                failures.push_back(m);
+            }
+            if (o.dead_board >= 0 && involves && !touches && ds.over_retry_bound) {
+                std::snprintf(m, sizeof m, "%s to the live board %d: %llu values exceeded the with-retries bound %llu",
+                              c.name.c_str(), c.dests[d].board, static_cast<unsigned long long>(ds.over_retry_bound),
+                              static_cast<unsigned long long>(c.latency_retry));
                 failures.push_back(m);
             }
             if (!touches && ds.publications == 0) {
@@ -370,6 +458,31 @@ int main(int argc, char **argv)
         }
     }
     chans += "]";
+    std::string transfers = "[";
+    if (!meters.empty())
+        std::printf("  %-12s %6s %9s %9s %9s %9s %9s %10s %9s\n", "transfer", "words", "measured", "mean clk",
+                    "min clk", "max clk", "minimum", "efficiency", "idle clk");
+    for (const TransferMeter &t : meters) {
+        const uint64_t w = t.c->words, minimum = 2 * (w + (w + 1) + 5);
+        const double mean = t.n ? static_cast<double>(t.sum) / t.n : 0;
+        const double eff = mean > 0 ? 2.0 * (2 * w + 1) / mean : 0;
+        std::printf("  %-12s %6llu %9llu %9.1f %9llu %9llu %9llu %10.3f %9.2f\n", t.c->name.c_str(),
+                    static_cast<unsigned long long>(w), static_cast<unsigned long long>(t.n), mean,
+                    static_cast<unsigned long long>(t.n ? t.min : 0), static_cast<unsigned long long>(t.max),
+                    static_cast<unsigned long long>(minimum), eff, t.n ? static_cast<double>(t.idle_sum) / t.n : 0.0);
+        char b[400];
+        std::snprintf(b, sizeof b,
+                      "%s{\"channel\": \"%s\", \"bytes\": %u, \"words\": %llu, \"transfers\": %llu, \"mean_cycles\": %.2f, "
+                      "\"min_cycles\": %llu, \"max_cycles\": %llu, \"minimum_cycles\": %llu, \"accesses\": %llu, "
+                      "\"efficiency\": %.4f, \"mean_idle_cycles\": %.3f}",
+                      transfers.size() > 1 ? ", " : "", t.c->name.c_str(), t.c->size, static_cast<unsigned long long>(w),
+                      static_cast<unsigned long long>(t.n), mean, static_cast<unsigned long long>(t.n ? t.min : 0),
+                      static_cast<unsigned long long>(t.max), static_cast<unsigned long long>(minimum),
+                      static_cast<unsigned long long>(t.accesses_last), eff,
+                      t.n ? static_cast<double>(t.idle_sum) / t.n : 0.0);
+        transfers += b;
+    }
+    transfers += "]";
     for (int k = 0; k < SystemChecker::KINDS; ++k)
         std::printf("  %-18s %llu violations%s%s\n", SystemChecker::kind_name(k),
                     static_cast<unsigned long long>(chk.violations[k]), chk.violations[k] ? ": " : "",
@@ -394,8 +507,24 @@ int main(int argc, char **argv)
             .num("bus_failures", static_cast<double>(sim.bus_failures))
             .num("violations_total", static_cast<double>(chk.total())).raw("violations", viol)
             .num("scenario_failures", static_cast<double>(failures.size())).raw("channels", chans)
+            .raw("transfers", transfers)
             .num("seconds", sec);
         rep.write(o.report);
+    }
+    if (!o.expect_caught_by.empty()) {
+        std::string missing;
+        for (const std::string &k : o.expect_caught_by) {
+            int i = 0;
+            while (std::string(SystemChecker::kind_name(i)) != k) ++i;
+            if (!chk.violations[i]) missing += " " + k;
+        }
+        if (missing.empty()) {
+            std::printf("%s: negative test: the fault was caught, as expected\n", o.label.c_str());
+            return 0;
+        }
+        std::printf("%s: negative test FAILED: expected the fault to be caught by%s, it was not\n",
+                    o.label.c_str(), missing.c_str());
+        return 1;
     }
     bool ok = chk.total() == 0 && failures.empty();
     std::printf("%s: %s\n", o.label.c_str(), ok ? "PASSED" : "FAILED");

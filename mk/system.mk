@@ -1,0 +1,105 @@
+# mk/system.mk -- the multi-board system (tb/rtl/tb_system.v, tb/system/):
+# simulated CPUs run the C driver on every board, the RTL controller executes
+# a schedule compiled from compiler/examples/, faults are injected on its bus.
+
+SYS_DIR     := $(BUILD)/system
+SYS_BIN     := $(SYS_DIR)/real/tb_system
+SYS_HDR     := $(wildcard tb/system/*.h) $(wildcard tb/*.h) tb/port/alb_port_impl.h $(wildcard c-driver/*.h)
+SYS_CYCLES  ?= 400000
+
+# The harness is compiled once; only system_sim.cpp sees the Verilated model.
+SYS_COMMON  := tb/system/tb_system.cpp tb/system/system_checker.cpp tb/system/plan.cpp \
+               tb/sim_cpu.cpp tb/ref_ram.cpp tb/protocol_checker.cpp
+SYS_OBJS    := $(patsubst %.cpp,$(SYS_DIR)/obj/%.o,$(notdir $(SYS_COMMON))) $(SYS_DIR)/obj/driver.o
+$(SYS_DIR)/obj/%.o: tb/system/%.cpp $(SYS_HDR)
+	@mkdir -p $(@D)
+	$(CXX) $(TB_CXXFLAGS) -Itb/system -c $< -o $@
+$(SYS_DIR)/obj/%.o: tb/%.cpp $(SYS_HDR)
+	@mkdir -p $(@D)
+	$(CXX) $(TB_CXXFLAGS) -Itb/system -c $< -o $@
+$(SYS_DIR)/obj/driver.o: c-driver/albatross.c $(SYS_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(TB_CFLAGS) -c $< -o $@
+
+# A model and its tb_system binary: $(1) = name, $(2) = extra -y library first.
+define sys_model
+$(SYS_DIR)/$(1)/model/Vsys__ALL.a: $(RTL) $(TB_RTL) $(2)
+	@mkdir -p $$(@D)
+	verilator --cc -O3 --prefix Vsys --top-module tb_system $(if $(2),-y $(dir $(2))) -y rtl -y tb/rtl \
+	    -Mdir $$(@D) tb/rtl/tb_system.v
+	$$(MAKE) -s -C $$(@D) -f Vsys.mk OPT_FAST=-O3 CXX="$$(CXX)" >/dev/null
+$(SYS_DIR)/$(1)/tb_system: tb/system/system_sim.cpp $(SYS_HDR) $(SYS_OBJS) $(SYS_DIR)/$(1)/model/Vsys__ALL.a \
+        $(TB_DIR)/verilated.o
+	$$(CXX) $$(TB_CXXFLAGS) -Itb/system -I$(SYS_DIR)/$(1)/model tb/system/system_sim.cpp $(SYS_OBJS) \
+	    $(SYS_DIR)/$(1)/model/Vsys__ALL.a $(TB_DIR)/verilated.o -pthread -o $$@
+endef
+$(eval $(call sys_model,real,))
+
+# Controller mutants (tb/mutants/controller/*.sed applied to the real RTL):
+# each system checker has a negative test that must catch one.
+CTRL_MUTANTS := $(patsubst tb/mutants/controller/%.sed,%,$(wildcard tb/mutants/controller/*.sed))
+$(SYS_DIR)/mutant-src/%/albatross_controller.v: tb/mutants/controller/%.sed rtl/albatross_controller.v
+	@mkdir -p $(@D)
+	sed -f $< rtl/albatross_controller.v > $@
+	@if cmp -s $@ rtl/albatross_controller.v; then \
+	    echo "controller mutant $* did not apply: rtl/albatross_controller.v no longer has the line tb/mutants/controller/$*.sed edits"; \
+	    rm -f $@; exit 1; fi
+$(foreach m,$(CTRL_MUTANTS),$(eval $(call sys_model,mutant-$(m),$(SYS_DIR)/mutant-src/$(m)/albatross_controller.v)))
+
+# The testbench's view of a compiled schedule; a plan without redundancy.  The
+# compiler outputs are kept (make would delete them as intermediate files).
+.SECONDARY:
+$(BUILD)/schedule/%/tb_plan.txt: $(BUILD)/schedule/%/rom.hex tb/system/plan_for_tb.py
+	$(PYTHON) tb/system/plan_for_tb.py $(@D)/report.json $@
+$(BUILD)/schedule/%-noredundancy/rom.hex: compiler/examples/%.toml $(SCHEDULE_TOOL)
+	$(PYTHON) $(SCHEDULE_TOOL) $< --out $(@D) --no-redundancy -q
+
+SYS_RIGID   := $(BUILD)/schedule/mobot3
+SYS_SYNC    := $(BUILD)/schedule/mobot3_possync
+SYS_NORED   := $(BUILD)/schedule/mobot3-noredundancy
+sys_run      = tools/run_test.sh system-$(1) $(SYS_BIN) --label system-$(1) --seed $(SEED) \
+               --cycles $(SYS_CYCLES) --report $(REPORTS)/system_$(1).json
+
+TESTS += system-rigid system-possync system-faults-50 system-faults-50-noredundancy \
+         system-burst system-burst-noredundancy system-dead-board system-corrupt-rom
+
+test-system-rigid: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,rigid) --plan $(SYS_RIGID)
+test-system-possync: $(SYS_BIN) $(SYS_SYNC)/tb_plan.txt
+	@$(call sys_run,possync) --plan $(SYS_SYNC)
+test-system-faults-50: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,faults-50) --plan $(SYS_RIGID) --fault-rate 0.5
+test-system-faults-50-noredundancy: $(SYS_BIN) $(SYS_NORED)/tb_plan.txt
+	@$(call sys_run,faults-50-noredundancy) --plan $(SYS_NORED) --fault-rate 0.5
+test-system-burst: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,burst) --plan $(SYS_RIGID) --fault-rate 0.2 --burst 60
+test-system-burst-noredundancy: $(SYS_BIN) $(SYS_NORED)/tb_plan.txt
+	@$(call sys_run,burst-noredundancy) --plan $(SYS_NORED) --fault-rate 0.2 --burst 60
+test-system-dead-board: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,dead-board) --plan $(SYS_RIGID) --dead-board 0 --dead-at 100000
+test-system-corrupt-rom: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,corrupt-rom) --plan $(SYS_RIGID) --corrupt-entry 3
+
+# Figures: bus cycles per transfer against the protocol's minimum (4, 16, 64,
+# 256-byte channels), and latency against the compiler's bound.
+BENCHES += bench-system
+bench-system: $(SYS_BIN) $(BUILD)/schedule/bus_bench/tb_plan.txt
+	$(SYS_BIN) --plan $(BUILD)/schedule/bus_bench --label bus-bench --seed $(SEED) --cycles 200000 \
+	    --report $(REPORTS)/system_bus_bench.json
+
+# Negative tests of the system checkers: NAME:MUTANT:CHECKER[:extra options].
+SYS_NEGATIVE := \
+  latency:real:latency_bound:--latency-scale,0.9 \
+  ignore_readlocked:mutant-ignore_readlocked:actuality \
+  never_delivered:mutant-never_delivered:duplicate_new \
+  bad_index:mutant-bad_index:driver_error \
+  wrong_lane:mutant-wrong_lane:ownership \
+  time_wraps:mutant-time_wraps:global_time
+define sys_negative
+TESTS += system-negative-$(call neg_field,$(1),1)
+test-system-negative-$(call neg_field,$(1),1): $(SYS_DIR)/$(call neg_field,$(1),2)/tb_system $(SYS_RIGID)/tb_plan.txt
+	@tools/run_test.sh system-negative-$(call neg_field,$(1),1) $$< --plan $(SYS_RIGID) --seed $(SEED) \
+	    --cycles 300000 --label system-negative-$(call neg_field,$(1),1) \
+	    --expect-caught-by $(call neg_field,$(1),3) $(subst $(comma), ,$(call neg_field,$(1),4))
+endef
+$(foreach n,$(SYS_NEGATIVE),$(eval $(call sys_negative,$(n))))
