@@ -153,7 +153,54 @@ def synth():
                   "block RAM inferred"], rows)
 
 
-SECTIONS = {"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
+def system_latency():
+    rows = []
+    for name, label in (("system_rigid.json", "time-rigid"), ("system_possync.json", "position-synchronised")):
+        r = load(name)
+        if not r:
+            continue
+        for c in r["channels"]:
+            rows.append([label, c["channel"], c["to_board"], n(c["latency_samples"]), f"{c['latency_mean']:.0f}",
+                         c["latency_max"], c["latency_bound"], f"{c['max_over_bound']:.3f}"])
+    if not rows:
+        return missing("system_rigid.json", "make test")
+    return table(["mode", "channel", "to board", "values", "mean (clk)", "worst (clk)", "compiler bound",
+                  "worst / bound"], rows)
+
+
+def system_delivery():
+    runs = [("system_faults-50.json", "system_faults-50-noredundancy.json", "50 % faults"),
+            ("system_burst.json", "system_burst-noredundancy.json", "20 % faults, bursts of 60 clocks")]
+    rows = []
+    for red, nored, label in runs:
+        a, b = load(red), load(nored)
+        if not a or not b:
+            continue
+        other = {(c["channel"], c["to_board"]): c for c in b["channels"]}
+        for c in a["channels"]:
+            o = other.get((c["channel"], c["to_board"]))
+            if not o or c["kind"] != "copy":
+                continue
+            rows.append([label, c["channel"], c["to_board"], f"{100 * c['delivered_within_bound']:.1f} %",
+                         f"{100 * o['delivered_within_bound']:.1f} %", c["latency_max"], o["latency_max"]])
+    if not rows:
+        return missing("system_faults-50*.json", "make test")
+    return table(["faults", "channel", "to board", "within bound, redundant plan", "within bound, one slot a cycle",
+                  "worst latency (clk), redundant", "worst latency (clk), one slot"], rows)
+
+
+def system_bus():
+    r = load("system_bus_bench.json")
+    if not r:
+        return missing("system_bus_bench.json", "make bench")
+    rows = [[t["bytes"], n(t["transfers"]), f"{t['mean_cycles']:.1f}", t["minimum_cycles"],
+             f"{t['mean_cycles'] / t['minimum_cycles']:.3f}", f"{t['efficiency']:.3f}", f"{t['mean_idle_cycles']:.2f}"]
+            for t in r["transfers"]]
+    return table(["channel bytes", "transfers", "bus clocks (mean)", "protocol minimum", "measured / minimum",
+                  "efficiency (payload / all)", "idle clocks inside"], rows)
+
+
+SECTIONS = {"system-latency": system_latency, "system-delivery": system_delivery, "system-bus": system_bus,"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
             "driver-size": driver_size, "bench": bench, "cdc": cdc, "synth": synth}
 
 

@@ -55,8 +55,16 @@ struct Role {
     int dest = -1;             // -1: producer of the source instance
     alb_channel_t ch{};
     uint64_t seq = 0, next_due = 0, interval_lo = 1, interval_hi = 1;
-    bool time_channel = false;
+    bool time_channel = false, status_channel = false;
 };
+
+// The controller's counters as a CPU reads them from the STATUS channel:
+// word 0 = {rom_errors, cycles}, then per channel {transfers, retries},
+// {abandoned, corrupt}.  The largest totals seen.
+struct StatusSeen {
+    uint64_t imports = 0, transfers = 0, retries = 0, abandoned = 0, corrupt = 0, rom_errors = 0;
+};
+StatusSeen g_status;
 
 struct BoardCtx {
     int board = 0;
@@ -97,6 +105,23 @@ void board_program(SimCpu &cpu)
             } else {
                 uint64_t begin = now();
                 int rc = alb_import(&r.ch, buf);
+                if (r.status_channel && rc == ALB_NEW) {
+                    uint32_t w[1 + 2 * 32] = {};
+                    std::memcpy(w, buf, std::min<size_t>(sizeof w, 4 * c.words));
+                    uint64_t t = 0, re = 0, ab = 0, co = 0;
+                    for (uint32_t k = 0; 1 + 2 * k + 1 < c.words; ++k) {
+                        t += w[1 + 2 * k] >> 16;
+                        re += w[1 + 2 * k] & 0xFFFFu;
+                        ab += w[2 + 2 * k] >> 16;
+                        co += w[2 + 2 * k] & 0xFFFFu;
+                    }
+                    ++g_status.imports;
+                    g_status.transfers = std::max(g_status.transfers, t);
+                    g_status.retries = std::max(g_status.retries, re);
+                    g_status.abandoned = std::max(g_status.abandoned, ab);
+                    g_status.corrupt = std::max(g_status.corrupt, co);
+                    g_status.rom_errors = std::max<uint64_t>(g_status.rom_errors, w[0] >> 16);
+                }
                 if (r.time_channel && rc == ALB_NEW) {
                     std::memcpy(&b.global_time, buf, 4);
                     b.global_at = now();
@@ -310,6 +335,7 @@ int main(int argc, char **argv)
             r.chan = static_cast<int>(i);
             r.dest = static_cast<int>(d);
             r.time_channel = c.kind == "time";
+            r.status_channel = c.kind == "status";
             boards[c.dests[d].board].roles.push_back(r);
         }
     }
@@ -380,6 +406,24 @@ int main(int argc, char **argv)
         if (sim.ref[b].violations) failures.push_back("board " + std::to_string(b) + ": " + sim.ref[b].first_violation);
     if (!time_monotonic) failures.push_back("global time went backwards");
     if (sim.error()) failures.push_back("the controller flagged its ROM header as invalid");
+    // The counters, as a CPU read them from the STATUS channel.
+    bool has_status = false;
+    for (const PlanChannel &c : plan.channels) has_status = has_status || c.kind == "status";
+    if (has_status) {
+        std::printf("%s: STATUS as read by a CPU: %llu imports, transfers %llu, retries %llu, abandoned %llu, "
+                    "corrupt %llu, rom_errors %llu\n", o.label.c_str(), static_cast<unsigned long long>(g_status.imports),
+                    static_cast<unsigned long long>(g_status.transfers), static_cast<unsigned long long>(g_status.retries),
+                    static_cast<unsigned long long>(g_status.abandoned), static_cast<unsigned long long>(g_status.corrupt),
+                    static_cast<unsigned long long>(g_status.rom_errors));
+        bool faulty = o.fault_rate > 0 || o.dead_board >= 0;
+        if (g_status.transfers == 0) failures.push_back("STATUS: no transfer counted");
+        if (faulty && g_status.retries == 0) failures.push_back("STATUS: faults were injected, yet no retry was counted");
+        if (!faulty && (g_status.retries || g_status.abandoned))
+            failures.push_back("STATUS: retries or abandoned transfers counted without any fault");
+        if (o.dead_board >= 0 && g_status.abandoned == 0) failures.push_back("STATUS: a board is dead, yet nothing was abandoned");
+        if (o.corrupt_entry >= 0 && g_status.rom_errors == 0)
+            failures.push_back("STATUS: the corrupted ROM entry was not counted in rom_errors");
+    }
     if (o.corrupt_entry >= 0 && sim.rom_errors() == 0)
         failures.push_back("a corrupted ROM entry was not counted in rom_errors");
     if (o.corrupt_entry < 0 && sim.rom_errors() != 0) {
