@@ -61,7 +61,8 @@ sys_run      = tools/run_test.sh system-$(1) $(SYS_BIN) --label system-$(1) --se
                --cycles $(SYS_CYCLES) --report $(REPORTS)/system_$(1).json
 
 TESTS += system-rigid system-possync system-faults-50 system-faults-50-noredundancy \
-         system-burst system-burst-noredundancy system-dead-board system-corrupt-rom
+         system-burst system-burst-noredundancy system-dead-board system-corrupt-rom \
+         system-corrupt-control
 
 test-system-rigid: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,rigid) --plan $(SYS_RIGID)
@@ -79,6 +80,9 @@ test-system-dead-board: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,dead-board) --plan $(SYS_RIGID) --dead-board 0 --dead-at 100000
 test-system-corrupt-rom: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,corrupt-rom) --plan $(SYS_RIGID) --corrupt-entry 3
+# A faulty producer leaves Actual = 7 in MotorCmd's source for two cycles.
+test-system-corrupt-control: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,corrupt-control) --plan $(SYS_RIGID) --corrupt-actual 2:100000
 
 # Figures: bus cycles per transfer against the protocol's minimum (4, 16, 64,
 # 256-byte channels), and latency against the compiler's bound.

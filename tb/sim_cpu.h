@@ -39,6 +39,9 @@ public:
     void resume();                  // run to its next access (or the end)
     bool finished() const { return coro_.finished(); }
     uint32_t access(uint32_t addr, uint32_t wdata, unsigned sel, bool we);
+    // Called by the program: spend a clock without a RAM access (a CPU
+    // that has nothing to do yet must still let time pass).
+    void idle() { has_request = false; coro_.yield(); }
 
 private:
     static void entry(void *self) {

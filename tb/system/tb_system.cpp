@@ -9,6 +9,7 @@
 //                                                 accesses, mean burst length (clocks)
 //             [--dead-board B --dead-at C]        board B's link fails for good at cycle C
 //             [--corrupt-entry K]                 flip a bit of schedule ROM entry K
+//             [--corrupt-actual CH:C]             channel CH's producer stores Actual = 7 at cycle C
 //             [--rom FILE] [--report FILE] [--label NAME]
 //             [--latency-scale F] [--expect-caught-by CHECKER]...   negative tests
 //             [--trace-bus FROM:TO]      print the controller's accesses in that window
@@ -33,6 +34,7 @@
 extern "C" {
 #include "albatross.h"
 }
+#include "alb_port.h"   // the faulty producer writes a control byte itself
 
 namespace {
 
@@ -43,9 +45,13 @@ struct Options {
     std::vector<std::string> expect_caught_by;   // a negative test: these checkers must fire
     uint64_t trace_from = 1, trace_to = 0;       // print the controller's accesses in this window
     int dead_board = -1, corrupt_entry = -1;
+    int corrupt_channel = -1;                    // a faulty producer stores Actual = 7 ...
+    uint64_t corrupt_at = 0;                     // ... once, at this cycle
 };
 
 SystemSim *g_sim = nullptr;
+const Options *g_opts = nullptr;
+bool g_corrupted = false;
 SystemChecker *g_chk = nullptr;
 const Plan *g_plan = nullptr;
 
@@ -93,9 +99,16 @@ void board_program(SimCpu &cpu)
         }
     }
     for (;;) {
+        bool called = false;
         for (Role &r : b.roles) {
             const PlanChannel &c = g_plan->channels[r.chan];
+            called = called || r.dest >= 0 || now() >= r.next_due;
             if (r.dest < 0) {
+                if (!g_corrupted && r.chan == g_opts->corrupt_channel && now() >= g_opts->corrupt_at) {
+                    g_corrupted = true;   // a faulty producer: an out-of-range Actual,
+                    alb_wr8(c.src_base + ALB_OFF_ACTUAL, 7);   // left there for two cycles
+                    r.next_due = now() + 2 * g_plan->cycle;
+                }
                 if (now() < r.next_due) continue;
                 ++r.seq;
                 channel_value(c.id, r.seq, buf, c.size);
@@ -130,6 +143,7 @@ void board_program(SimCpu &cpu)
                 g_chk->imported(r.chan, r.dest, rc, buf, begin, now(), local_time);
             }
         }
+        if (!called) cpu.idle();   // nothing due: let a clock pass
     }
 }
 
@@ -269,6 +283,12 @@ int main(int argc, char **argv)
         else if (a == "--dead-board" && num && x >= 0 && x < SystemSim::kBoards) o.dead_board = static_cast<int>(x);
         else if (a == "--dead-at" && num && x >= 0) o.dead_at = static_cast<uint64_t>(x);
         else if (a == "--corrupt-entry" && num && x >= 0) o.corrupt_entry = static_cast<int>(x);
+        else if (a == "--corrupt-actual") {
+            unsigned long long ch = 0, at = 0;
+            if (std::sscanf(v, "%llu:%llu", &ch, &at) != 2) return usage("--corrupt-actual needs CHANNEL:CYCLE");
+            o.corrupt_channel = static_cast<int>(ch);
+            o.corrupt_at = at;
+        }
         else if (a == "--latency-scale" && num && x > 0) o.latency_scale = x;
         else if (a == "--trace-bus" && std::sscanf(v, "%llu:%llu", reinterpret_cast<unsigned long long *>(&o.trace_from),
                                                    reinterpret_cast<unsigned long long *>(&o.trace_to)) == 2) {}
@@ -305,6 +325,7 @@ int main(int argc, char **argv)
 
     SystemSim sim(rom);
     g_sim = &sim;
+    g_opts = &o;
     g_plan = &plan;
     load_images(plan);
     sim.reset();                               // the controller starts on the image
@@ -312,7 +333,7 @@ int main(int argc, char **argv)
     SystemChecker chk(plan, sim, time_offset);
     g_chk = &chk;
     sim.observer = &chk;
-    chk.set_latency_is_checked(o.fault_rate == 0 && o.dead_board < 0 && o.corrupt_entry < 0);
+    chk.set_latency_is_checked(o.fault_rate == 0 && o.dead_board < 0 && o.corrupt_entry < 0 && o.corrupt_channel < 0);
 
     std::mt19937_64 rng(o.seed);
     std::vector<BoardCtx> boards(SystemSim::kBoards);
@@ -423,7 +444,12 @@ int main(int argc, char **argv)
         if (o.dead_board >= 0 && g_status.abandoned == 0) failures.push_back("STATUS: a board is dead, yet nothing was abandoned");
         if (o.corrupt_entry >= 0 && g_status.rom_errors == 0)
             failures.push_back("STATUS: the corrupted ROM entry was not counted in rom_errors");
+        if (o.corrupt_channel >= 0 && g_status.corrupt == 0)
+            failures.push_back("STATUS: the out-of-range Actual was not counted as corrupt");
+        if (o.corrupt_channel < 0 && g_status.corrupt)
+            failures.push_back("STATUS: corrupt control bytes counted where none were written");
     }
+    if (o.corrupt_channel >= 0 && !g_corrupted) failures.push_back("the faulty producer never ran");
     if (o.corrupt_entry >= 0 && sim.rom_errors() == 0)
         failures.push_back("a corrupted ROM entry was not counted in rom_errors");
     if (o.corrupt_entry < 0 && sim.rom_errors() != 0) {
