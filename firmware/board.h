@@ -1,0 +1,86 @@
+/*
+ * board.h -- memory map of the PicoRV32 test boards (tb/rtl/pico_pair.v).
+ * Each core has its own program RAM and board registers; the DPRAM window is
+ * one port of the shared albatross_dpram.  Plain numbers (no C suffixes), so
+ * crt0.S can include this file too.
+ *
+ *   0x0000_0000  16 KiB   local program RAM (code, data, stack)
+ *   0x1000_0000   4 KiB   DPRAM window (albatross_dpram, ADDR_WIDTH 10)
+ *   0x2000_0000   word    TOHOST: a store ends the program, the value is the
+ *                         exit code (0 = pass)
+ *   0x2000_0010  4 words  STAT(0..3): figures the harness reads at the end
+ */
+#ifndef BOARD_H
+#define BOARD_H
+
+#define BOARD_RAM_BYTES    0x4000
+#define BOARD_DPRAM_BASE   0x10000000
+#define BOARD_DPRAM_BYTES  0x1000
+#define BOARD_TOHOST       0x20000000
+#define BOARD_STAT0        0x20000010
+
+#ifndef __ASSEMBLER__
+#include <stdint.h>
+
+/* Channel of the pair test: DPRAM offset 0; a start flag word after it. */
+#define BOARD_CHANNEL      ((uintptr_t)BOARD_DPRAM_BASE)
+#define BOARD_START_FLAG   ((uintptr_t)BOARD_DPRAM_BASE + 0x100u)
+#define BOARD_START_MAGIC  0x5354u
+
+static inline void board_stat(unsigned k, uint32_t v)
+{
+    *(volatile uint32_t *)((uintptr_t)BOARD_STAT0 + 4u * k) = v;
+}
+
+/* Cycle and retired-instruction counters (PicoRV32 ENABLE_COUNTERS).  Encoded
+ * with .insn: csrrs rd, cycle/instret, x0 needs Zicsr, not in -march=rv32i. */
+static inline uint32_t board_cycles(void)
+{
+    uint32_t v;
+    __asm__ volatile(".insn i 0x73, 2, %0, x0, -1024" : "=r"(v)); /* 0xC00 */
+    return v;
+}
+
+static inline uint32_t board_instret(void)
+{
+    uint32_t v;
+    __asm__ volatile(".insn i 0x73, 2, %0, x0, -1022" : "=r"(v)); /* 0xC02 */
+    return v;
+}
+
+/* The payload of the pair test: 16 bytes, a sequence number and check words
+ * derived from it, so a value mixed from two exports (torn) is detected. */
+typedef struct {
+    uint32_t seq;
+    uint32_t h1;   /* mix(seq)              */
+    uint32_t h2;   /* mix(h1)               */
+    uint32_t sum;  /* seq ^ h1 ^ h2 ^ SALT  */
+} pair_value_t;
+
+#define PAIR_SALT   0x5A5A5A5Au
+#define PAIR_VALUES 2000u
+
+static inline uint32_t pair_mix(uint32_t x)
+{
+    x ^= x << 13;
+    x ^= x >> 17;
+    x ^= x << 5;
+    return x + 0x9E3779B9u;
+}
+
+static inline void pair_make(pair_value_t *v, uint32_t seq)
+{
+    v->seq = seq;
+    v->h1 = pair_mix(seq);
+    v->h2 = pair_mix(v->h1);
+    v->sum = seq ^ v->h1 ^ v->h2 ^ PAIR_SALT;
+}
+
+static inline int pair_ok(const pair_value_t *v)
+{
+    return v->h1 == pair_mix(v->seq) && v->h2 == pair_mix(v->h1) &&
+           v->sum == (v->seq ^ v->h1 ^ v->h2 ^ PAIR_SALT);
+}
+#endif
+
+#endif

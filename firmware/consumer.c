@@ -1,0 +1,59 @@
+/*
+ * consumer.c -- PicoRV32 consumer of the pair test (tb/pico/).  Waits for the
+ * producer's start flag, attaches with the real driver and imports until it
+ * has seen value PAIR_VALUES, checking every import:
+ *   0x20 + e  alb_import returned error e (or attach failed: 0x30 + e)
+ *   0x3       torn value (check words do not match the sequence number)
+ *   0x4       the sequence number went back
+ *   0x5       ALB_NEW with a sequence number that is not newer
+ *   0x6       ALB_OLD with a newer sequence number
+ * The exit code is that code | sequence number << 8 (0 = pass).  STAT:
+ * 0 imports that returned New, 1 imports, 2 cycles in alb_import, 3 retired
+ * instructions.
+ */
+#include "albatross.h"
+#include "alb_port.h"
+#include "board.h"
+
+static alb_channel_t ch;
+
+int main(void)
+{
+    pair_value_t v;
+    uint32_t last = 0u, news = 0u, calls = 0u, t0, cycles = 0u;
+    int r;
+
+    if (alb_channel_setup(&ch, BOARD_CHANNEL, sizeof v) != ALB_OK)
+        return 0x31;
+    while (alb_rd32(BOARD_START_FLAG) != BOARD_START_MAGIC)
+        ;
+    alb_fence();
+    r = alb_consumer_attach(&ch);
+    if (r != ALB_OK)
+        return 0x30 - r;
+
+    while (last != PAIR_VALUES) {
+        t0 = board_cycles();
+        r = alb_import(&ch, &v);
+        cycles += board_cycles() - t0;
+        ++calls;
+        if (r != ALB_NEW && r != ALB_OLD)
+            return (0x20 - r) | (int)(last << 8);
+        if (!pair_ok(&v))
+            return 0x3 | (int)(last << 8);
+        if (v.seq < last)
+            return 0x4 | (int)(v.seq << 8);
+        if (r == ALB_NEW && v.seq == last)
+            return 0x5 | (int)(v.seq << 8);
+        if (r == ALB_OLD && v.seq != last)
+            return 0x6 | (int)(v.seq << 8);
+        if (r == ALB_NEW)
+            ++news;
+        last = v.seq;
+    }
+    board_stat(0u, news);
+    board_stat(1u, calls);
+    board_stat(2u, cycles);
+    board_stat(3u, board_instret());
+    return 0;
+}
