@@ -18,8 +18,8 @@ TB_DIR        := $(BUILD)/tb
 # The co-simulation testbench (mk/tb.mk), used by the tests, make sim, soak.
 TB            := $(TB_DIR)/albatross/tb_dpram
 RTL           := $(sort $(wildcard rtl/*.v))
-# pico_pair.v needs picorv32.v from PyPI: linted by test-pico-lint (mk/pico.mk).
-TB_RTL        := $(filter-out tb/rtl/pico_pair.v,$(sort $(wildcard tb/rtl/*.v)))
+# pico_pair.v and pico_core.v need picorv32.v from PyPI: linted by test-pico-lint (mk/pico.mk).
+TB_RTL        := $(filter-out tb/rtl/pico_pair.v tb/rtl/pico_core.v,$(sort $(wildcard tb/rtl/*.v)))
 
 # Helpers for the fragments: field N of a colon-separated list entry.
 comma         := ,

@@ -20,7 +20,7 @@ PICO_RV32_V   := $(if $(PICO_RV32_DIR),$(firstword $(shell find $(PICO_RV32_DIR)
 PICO_NEED      = @test -n "$(PICO_RV32_V)" || { echo "picorv32.v not found: the PyPI package \
 pythondata-cpu-picorv32 is missing; run make deps"; exit 1; }
 PICO_MAX_CYCLES ?= 20000000
-PICO_RTL      := tb/rtl/pico_pair.v tb/rtl/pico_wb_adapter.v rtl/albatross_dpram.v
+PICO_RTL      := tb/rtl/pico_pair.v tb/rtl/pico_core.v tb/rtl/pico_wb_adapter.v rtl/albatross_dpram.v
 PICO_VFLAGS   := -Wall --timescale 1ns/1ps -y rtl -y tb/rtl --top-module pico_pair tb/pico/picorv32.vlt
 
 # Firmware: rv32i, the real driver with the mmio port (TOOLCHAIN.md flags).
@@ -78,7 +78,7 @@ bench-pico-pair: $(PICO_BIN) $(PICO_DIR)/fw/producer.hex $(PICO_DIR)/fw/consumer
 	    --max-cycles $(PICO_MAX_CYCLES) --stall-core -1 --label pico-pair-bench \
 	    --report $(REPORTS)/pico_pair_bench.json
 
-# pico_pair.v is kept out of make lint (root Makefile, TB_RTL): tools/lint.sh
+# pico_pair.v (and pico_core.v, which it instantiates) is kept out of make lint (root Makefile, TB_RTL): tools/lint.sh
 # finds modules in rtl/ and tb/rtl/ only, and picorv32.v lives in the package.
 test-pico-lint:
 	@tools/run_test.sh pico-lint bash -c '$(PICO_NEED:@%=%) && \

@@ -31,8 +31,6 @@ module pico_pair #(
     output wire [1:0]   bus_err_o   // core c accessed an unmapped address
 );
 
-    localparam RAM_BITS = $clog2(RAM_WORDS);  // word-address bits, local RAM
-
     // Each core's port of the shared RAM.
     wire [1:0]            wb_cyc, wb_stb, wb_we, wb_ack;
     wire [2*ADDR_WIDTH-1:0] wb_adr;
@@ -53,143 +51,24 @@ module pico_pair #(
     genvar c;
     generate
         for (c = 0; c < 2; c = c + 1) begin : g_core
-            wire        mem_valid, mem_instr, mem_ready, trap;
-            wire [31:0] mem_addr, mem_wdata, mem_rdata;
-            wire [3:0]  mem_wstrb;
-            // PicoRV32 outputs this top does not use.
-            wire        la_read, la_write, pcpi_valid;
-            wire [31:0] la_addr, la_wdata, pcpi_insn, pcpi_rs1, pcpi_rs2, eoi;
-            wire [3:0]  la_wstrb;
-            wire [35:0] trace_data;
-            wire        trace_valid;
-
-            picorv32 #(
-                .ENABLE_COUNTERS  (1),
-                .ENABLE_COUNTERS64(0),
-                .ENABLE_MUL       (0),
-                .ENABLE_FAST_MUL  (0),
-                .ENABLE_DIV       (0),
-                .ENABLE_IRQ       (0),
-                .COMPRESSED_ISA   (0),
-                .ENABLE_PCPI      (0),
-                .PROGADDR_RESET   (32'h0000_0000)
-            ) u_cpu (
-                .clk         (clk_i),
-                .resetn      (~rst_i),
-                .trap        (trap),
-                .mem_valid   (mem_valid),
-                .mem_instr   (mem_instr),
-                .mem_ready   (mem_ready),
-                .mem_addr    (mem_addr),
-                .mem_wdata   (mem_wdata),
-                .mem_wstrb   (mem_wstrb),
-                .mem_rdata   (mem_rdata),
-                .mem_la_read (la_read),
-                .mem_la_write(la_write),
-                .mem_la_addr (la_addr),
-                .mem_la_wdata(la_wdata),
-                .mem_la_wstrb(la_wstrb),
-                .pcpi_valid  (pcpi_valid),
-                .pcpi_insn   (pcpi_insn),
-                .pcpi_rs1    (pcpi_rs1),
-                .pcpi_rs2    (pcpi_rs2),
-                .pcpi_wr     (1'b0),
-                .pcpi_rd     (32'd0),
-                .pcpi_wait   (1'b0),
-                .pcpi_ready  (1'b0),
-                .irq         (32'd0),
-                .eoi         (eoi),
-                .trace_valid (trace_valid),
-                .trace_data  (trace_data)
+            pico_core #(.CORE(c), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_core (
+                .clk_i    (clk_i),
+                .rst_i    (rst_i),
+                .stall_i  (stall_i[c]),
+                .wb_cyc_o (wb_cyc[c]),
+                .wb_stb_o (wb_stb[c]),
+                .wb_we_o  (wb_we[c]),
+                .wb_adr_o (wb_adr[c*ADDR_WIDTH +: ADDR_WIDTH]),
+                .wb_sel_o (wb_sel[c*4 +: 4]),
+                .wb_dat_o (wb_wdat[c*32 +: 32]),
+                .wb_dat_i (wb_rdat[c*32 +: 32]),
+                .wb_ack_i (wb_ack[c]),
+                .done_o   (done_o[c]),
+                .code_o   (code_o[c*32 +: 32]),
+                .stat_o   (stat_o[c*128 +: 128]),
+                .trap_o   (trap_o[c]),
+                .bus_err_o(bus_err_o[c])
             );
-            wire unused_core = &{1'b0, mem_instr, la_read, la_write, la_addr, la_wdata,
-                                 la_wstrb, pcpi_valid, pcpi_insn, pcpi_rs1, pcpi_rs2, eoi,
-                                 trace_valid, trace_data, mem_addr[27:ADDR_WIDTH+2]};
-
-            // Address decode: bits 31:28 pick the region.
-            wire sel_ram  = mem_valid && mem_addr[31:28] == 4'h0;
-            wire sel_dp   = mem_valid && mem_addr[31:28] == 4'h1;
-            wire sel_regs = mem_valid && mem_addr[31:28] == 4'h2;
-            wire sel_none = mem_valid && mem_addr[31:28] >  4'h2;
-
-            // Local RAM: performed at the edge after the request, ready then.
-            reg [31:0] ram [0:RAM_WORDS-1];
-            reg [31:0] ram_rdata_q;
-            reg        ram_ready_q;
-            wire [RAM_BITS-1:0] ram_idx = mem_addr[RAM_BITS+1:2];
-`ifndef SYNTHESIS  // simulation only: Yosys has no $value$plusargs
-            reg [8*256-1:0] fw_file;
-            initial begin
-                if (c == 0 ? $value$plusargs("fw0=%s", fw_file)
-                           : $value$plusargs("fw1=%s", fw_file))
-                    $readmemh(fw_file, ram);
-                else
-                    $display("pico_pair: no +fw%0d=FILE given, core %0d has an empty RAM", c, c);
-            end
-`endif
-            always @(posedge clk_i) begin
-                ram_ready_q <= sel_ram & ~ram_ready_q & ~stall_i[c] & ~rst_i;
-                if (sel_ram & ~ram_ready_q & ~stall_i[c]) begin
-                    ram_rdata_q <= ram[ram_idx];
-                    if (mem_wstrb[0]) ram[ram_idx][7:0]   <= mem_wdata[7:0];
-                    if (mem_wstrb[1]) ram[ram_idx][15:8]  <= mem_wdata[15:8];
-                    if (mem_wstrb[2]) ram[ram_idx][23:16] <= mem_wdata[23:16];
-                    if (mem_wstrb[3]) ram[ram_idx][31:24] <= mem_wdata[31:24];
-                end
-            end
-            wire unused_ram_addr = &{1'b0, mem_addr[27:RAM_BITS+2]};
-
-            // Board registers and unmapped addresses: one-cycle access.
-            reg        regs_ready_q, done_q, err_q;
-            reg [31:0] code_q;
-            reg [31:0] stat_q [0:3];
-            always @(posedge clk_i) begin
-                if (rst_i) begin
-                    regs_ready_q <= 1'b0;
-                    done_q       <= 1'b0;
-                    err_q        <= 1'b0;
-                    code_q       <= 32'd0;
-                end else begin
-                    regs_ready_q <= (sel_regs | sel_none) & ~regs_ready_q;
-                    if (sel_none) err_q <= 1'b1;
-                    if (sel_regs & ~regs_ready_q & (|mem_wstrb)) begin
-                        if (mem_addr[7:0] == 8'h00) begin
-                            done_q <= 1'b1;
-                            code_q <= mem_wdata;
-                        end
-                        if (mem_addr[7:4] == 4'h1) stat_q[mem_addr[3:2]] <= mem_wdata;
-                    end
-                end
-            end
-
-            // DPRAM window through the adapter.
-            wire        dp_ready;
-            wire [31:0] dp_rdata;
-            pico_wb_adapter #(.ADDR_WIDTH(ADDR_WIDTH)) u_adapter (
-                .valid_i (sel_dp),
-                .addr_i  (mem_addr[ADDR_WIDTH+1:0]),
-                .wdata_i (mem_wdata),
-                .wstrb_i (mem_wstrb),
-                .ready_o (dp_ready),
-                .rdata_o (dp_rdata),
-                .wb_cyc_o(wb_cyc[c]),
-                .wb_stb_o(wb_stb[c]),
-                .wb_we_o (wb_we[c]),
-                .wb_adr_o(wb_adr[c*ADDR_WIDTH +: ADDR_WIDTH]),
-                .wb_sel_o(wb_sel[c*4 +: 4]),
-                .wb_dat_o(wb_wdat[c*32 +: 32]),
-                .wb_dat_i(wb_rdat[c*32 +: 32]),
-                .wb_ack_i(wb_ack[c])
-            );
-
-            assign mem_ready = ram_ready_q | regs_ready_q | dp_ready;
-            assign mem_rdata = ram_ready_q ? ram_rdata_q : dp_ready ? dp_rdata : 32'd0;
-
-            assign done_o[c]              = done_q;
-            assign code_o[c*32 +: 32]     = code_q;
-            assign stat_o[c*128 +: 128]   = {stat_q[3], stat_q[2], stat_q[1], stat_q[0]};
-            assign trap_o[c]              = trap;
-            assign bus_err_o[c]           = err_q;
         end
     endgenerate
 
