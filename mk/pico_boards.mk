@@ -17,7 +17,7 @@ PB_DIR      := $(BUILD)/pico_boards
 PB_SCHED    := $(BUILD)/schedule/mobot3
 PB_BOARDS   := radar odometry navigation motor
 PB_MAX_CYCLES ?= 5000000
-PB_RTL      := tb/rtl/pico_boards.v tb/rtl/pico_core.v tb/rtl/pico_wb_adapter.v rtl/albatross_dpram.v \
+PB_RTL      := tb/rtl/pico_boards.v tb/rtl/pico_core.v tb/rtl/board_memmap.v tb/rtl/pico_wb_adapter.v rtl/albatross_dpram.v \
                rtl/albatross_bus.v rtl/albatross_controller.v
 PB_VFLAGS   := -Wall --timescale 1ns/1ps -y rtl -y tb/rtl --top-module pico_boards tb/pico/picorv32.vlt
 

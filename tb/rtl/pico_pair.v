@@ -8,7 +8,8 @@
 //   0x0xxx_xxxx  local RAM, RAM_WORDS words, one-cycle access
 //   0x1xxx_xxxx  DPRAM window: the core's port of the shared RAM
 //   0x2xxx_xxxx  board registers: +0 TOHOST (a store sets done_o[c] and
-//                code_o[c]), +0x10..0x1c STAT 0..3 (stat_o); reads give 0
+//                code_o[c]), +0x10..0x1c STAT 0..3 (stat_o), +0x20 EVENT and
+//                +0x24 ARG (unused here); reads give 0 (tb/rtl/board_memmap.v)
 //   other        bus_err_o[c] is set (sticky); the access completes, reads 0
 // Core c uses the flattened outputs' bits [c*w +: w].  The cores run on clk_i
 // with the RAM and share rst_i (synchronous, active high).  stall_i[c] holds
@@ -36,6 +37,10 @@ module pico_pair #(
     wire [2*ADDR_WIDTH-1:0] wb_adr;
     wire [7:0]            wb_sel;
     wire [63:0]           wb_wdat, wb_rdat;
+    // Board events: this top does not use them.
+    wire [1:0]            ev_valid;
+    wire [63:0]           ev_data, ev_arg;
+    wire unused_ev = &{1'b0, ev_valid, ev_data, ev_arg};
 
     albatross_dpram #(.ADDR_WIDTH(ADDR_WIDTH)) u_dpram (
         .clk_i  (clk_i),
@@ -66,6 +71,9 @@ module pico_pair #(
                 .done_o   (done_o[c]),
                 .code_o   (code_o[c*32 +: 32]),
                 .stat_o   (stat_o[c*128 +: 128]),
+                .ev_valid_o(ev_valid[c]),
+                .ev_data_o(ev_data[c*32 +: 32]),
+                .ev_arg_o (ev_arg[c*32 +: 32]),
                 .trap_o   (trap_o[c]),
                 .bus_err_o(bus_err_o[c])
             );
