@@ -21,11 +21,21 @@ typedef uint32_t alb_word __attribute__((__may_alias__, __aligned__(4)));
 typedef uint32_t alb_word;
 #endif
 
+/* The helpers below sit on the path of every Import and Export: force them
+ * inline (at -Os GCC keeps them out of line, and on a small in-order core the
+ * calls, spills and re-loads of ch cost more than the copy of a short
+ * payload). */
+#ifdef __GNUC__
+#define ALB_INLINE static inline __attribute__((__always_inline__))
+#else
+#define ALB_INLINE static inline
+#endif
+
 /* Address of buffer 1..3: base + 4 + (buffer - 1) * stride, without a
  * multiply (rv32i has none).  Only the low two bits of buffer - 1 count, so
  * a buffer index of 0 (impossible with valid control bytes) lands just past
  * Buffer3, never on a control byte. */
-static uintptr_t buffer_addr(const alb_channel_t *ch, uint8_t buffer)
+ALB_INLINE uintptr_t buffer_addr(const alb_channel_t *ch, uint8_t buffer)
 {
     uint32_t stride = ALB_STRIDE(ch->size), k = (uint32_t)buffer - 1u;
     uint32_t off = ALB_OFF_BUFFERS;
@@ -37,18 +47,25 @@ static uintptr_t buffer_addr(const alb_channel_t *ch, uint8_t buffer)
     return ch->base + off;
 }
 
-/* ReadFrom (seed figure 3): ceil(size/4) word loads from the RAM. */
-static void read_from(const alb_channel_t *ch, uint8_t buffer, void *dst)
+/* ReadFrom (seed figure 3): ceil(size/4) word loads from the RAM, in address
+ * order.  An aligned destination takes four words per loop pass. */
+ALB_INLINE void read_from(const alb_channel_t *ch, uint8_t buffer, void *dst)
 {
-    uintptr_t src = buffer_addr(ch, buffer);
+    uintptr_t src = buffer_addr(ch, buffer), end;
     uint8_t *d = (uint8_t *)dst;
     uint32_t n = ch->size, w;
 
     if (((uintptr_t)d & 3u) == 0u) {
-        for (; n >= 4u; n -= 4u, src += 4u, d += 4u)
+        for (end = src + (n & ~15u); src != end; src += 16u, d += 16u) {
+            ((alb_word *)d)[0] = alb_rd32(src);
+            ((alb_word *)d)[1] = alb_rd32(src + 4u);
+            ((alb_word *)d)[2] = alb_rd32(src + 8u);
+            ((alb_word *)d)[3] = alb_rd32(src + 12u);
+        }
+        for (end = src + (n & 12u); src != end; src += 4u, d += 4u)
             *(alb_word *)d = alb_rd32(src);
     } else {
-        for (; n >= 4u; n -= 4u, src += 4u, d += 4u) {
+        for (end = src + (n & ~3u); src != end; src += 4u, d += 4u) {
             w = alb_rd32(src);
             d[0] = (uint8_t)w;
             d[1] = (uint8_t)(w >> 8);
@@ -56,6 +73,7 @@ static void read_from(const alb_channel_t *ch, uint8_t buffer, void *dst)
             d[3] = (uint8_t)(w >> 24);
         }
     }
+    n &= 3u;
     if (n != 0u) { /* tail: one word load, the padding bytes are dropped */
         w = alb_rd32(src);
         for (; n != 0u; --n, ++d, w >>= 8)
@@ -63,21 +81,29 @@ static void read_from(const alb_channel_t *ch, uint8_t buffer, void *dst)
     }
 }
 
-/* WriteTo (seed figure 4): ceil(size/4) word stores into the RAM. */
-static void write_to(const alb_channel_t *ch, uint8_t buffer, const void *src)
+/* WriteTo (seed figure 4): ceil(size/4) word stores into the RAM, in address
+ * order.  An aligned source takes four words per loop pass. */
+ALB_INLINE void write_to(const alb_channel_t *ch, uint8_t buffer, const void *src)
 {
-    uintptr_t dst = buffer_addr(ch, buffer);
+    uintptr_t dst = buffer_addr(ch, buffer), end;
     const uint8_t *s = (const uint8_t *)src;
     uint32_t n = ch->size, w, k;
 
     if (((uintptr_t)s & 3u) == 0u) {
-        for (; n >= 4u; n -= 4u, dst += 4u, s += 4u)
+        for (end = dst + (n & ~15u); dst != end; dst += 16u, s += 16u) {
+            alb_wr32(dst, ((const alb_word *)s)[0]);
+            alb_wr32(dst + 4u, ((const alb_word *)s)[1]);
+            alb_wr32(dst + 8u, ((const alb_word *)s)[2]);
+            alb_wr32(dst + 12u, ((const alb_word *)s)[3]);
+        }
+        for (end = dst + (n & 12u); dst != end; dst += 4u, s += 4u)
             alb_wr32(dst, *(const alb_word *)s);
     } else {
-        for (; n >= 4u; n -= 4u, dst += 4u, s += 4u)
+        for (end = dst + (n & ~3u); dst != end; dst += 4u, s += 4u)
             alb_wr32(dst, (uint32_t)s[0] | (uint32_t)s[1] << 8 |
                               (uint32_t)s[2] << 16 | (uint32_t)s[3] << 24);
     }
+    n &= 3u;
     if (n != 0u) { /* tail: one word store, padding bytes written as 0 */
         for (w = 0u, k = 0u; k < n; ++k)
             w |= (uint32_t)s[k] << (8u * k);
