@@ -201,8 +201,41 @@ def system_bus():
                   "efficiency (payload / all)", "idle clocks inside"], rows)
 
 
+def pico_cost():
+    b = load("bench_pico.json")
+    if not b:
+        return missing("bench_pico.json", "make bench-pico")
+    rows = []
+    for e in b["sizes"]:
+        ex, new, old = e["export"]["mean"], e["import_new"]["mean"], e["import_old"]["mean"]
+        ct, cf = e["copy_to_dpram"]["mean"], e["copy_from_dpram"]["mean"]
+        rows.append([e["bytes"], f"{ex:.0f}", f"{new:.0f}", f"{old:.0f}", f"{ct:.0f}", f"{cf:.0f}",
+                     f"{ex / ct:.2f}", f"{new / cf:.2f}", f"{ex - ct:+.0f}", f"{new - cf:+.0f}"])
+    out = table(["bytes", "Export", "Import, new", "Import, old", "plain copy to DPRAM",
+                 "plain copy from DPRAM", "Export / copy", "Import new / copy", "Export − copy",
+                 "Import new − copy"], rows)
+    pw = b["per_word"]
+    out += "\n\n" + table(["cycles", "Export", "Import, new", "Import, old", "plain copy to DPRAM",
+                            "plain copy from DPRAM"],
+                           [["per payload word (4 → 256 B)"] + [f"{pw[k]['cycles_per_word']:.1f}" for k in
+                             ("export", "import_new", "import_old", "copy_to_dpram", "copy_from_dpram")],
+                            ["fixed part of a call"] + [f"{pw[k]['fixed_cycles']:.0f}" for k in
+                             ("export", "import_new", "import_old", "copy_to_dpram", "copy_from_dpram")]])
+    ds = load("driver_size.json")
+    lv = ds and ds["levels"].get("-Os")
+    if lv:
+        fn = lv["functions"]
+        out += (f"\n\nCode size, rv32i `-Os` (`{REPORTS}/driver_size.json`): `alb_import` "
+                f"{fn['alb_import']['with_helpers']} bytes, `alb_export` {fn['alb_export']['with_helpers']} bytes "
+                f"of .text.")
+    else:
+        out += "\n\n" + missing("driver_size.json", "make driver-size")
+    return out
+
+
 SECTIONS = {"system-latency": system_latency, "system-delivery": system_delivery, "system-bus": system_bus,"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
-            "driver-size": driver_size, "bench": bench, "cdc": cdc, "synth": synth}
+            "driver-size": driver_size, "bench": bench, "cdc": cdc, "synth": synth,
+            "pico-cost": pico_cost}
 
 
 def main():
