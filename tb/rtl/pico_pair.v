@@ -1,4 +1,6 @@
-// pico_pair -- test top: two PicoRV32 cores share one albatross_dpram.
+// pico_pair -- test top: two soft cores share one albatross_dpram.  Each is
+// a PicoRV32 (pico_core) or, where SERV_MASK selects it, a SERV (serv_core,
+// the same ports); SERV_MASK = 0 is the PicoRV32 pair.
 //
 // Core 0 (the producer) reaches the RAM through port A, core 1 (the consumer)
 // through port B, each through a pico_wb_adapter.  Every core has its own
@@ -20,7 +22,8 @@
 
 module pico_pair #(
     parameter ADDR_WIDTH = 10,   // word-address bits of the shared DPRAM
-    parameter RAM_WORDS  = 4096  // words of each core's local RAM (16 KiB)
+    parameter RAM_WORDS  = 4096, // words of each core's local RAM (16 KiB)
+    parameter SERV_MASK  = 0     // 2 bits: core c is SERV when bit c is set, else PicoRV32
 ) (
     input  wire         clk_i,
     input  wire         rst_i,      // synchronous, active high
@@ -28,7 +31,7 @@ module pico_pair #(
     output wire [1:0]   done_o,     // core c stored to TOHOST
     output wire [63:0]  code_o,     // the value it stored (exit code)
     output wire [255:0] stat_o,     // core c: STAT k at [c*128 + k*32 +: 32]
-    output wire [1:0]   trap_o,     // core c trapped (PicoRV32 trap)
+    output wire [1:0]   trap_o,     // core c trapped (PicoRV32 trap; 0 on SERV)
     output wire [1:0]   bus_err_o   // core c accessed an unmapped address
 );
 
@@ -56,28 +59,54 @@ module pico_pair #(
     genvar c;
     generate
         for (c = 0; c < 2; c = c + 1) begin : g_core
-            pico_core #(.CORE(c), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_core (
-                .clk_i    (clk_i),
-                .rst_i    (rst_i),
-                .stall_i  (stall_i[c]),
-                .wb_cyc_o (wb_cyc[c]),
-                .wb_stb_o (wb_stb[c]),
-                .wb_we_o  (wb_we[c]),
-                .wb_adr_o (wb_adr[c*ADDR_WIDTH +: ADDR_WIDTH]),
-                .wb_sel_o (wb_sel[c*4 +: 4]),
-                .wb_dat_o (wb_wdat[c*32 +: 32]),
-                .wb_dat_i (wb_rdat[c*32 +: 32]),
-                .wb_ack_i (wb_ack[c]),
-                .done_o   (done_o[c]),
-                .code_o   (code_o[c*32 +: 32]),
-                .stat_o   (stat_o[c*128 +: 128]),
-                .ev_valid_o(ev_valid[c]),
-                .ev_data_o(ev_data[c*32 +: 32]),
-                .ev_arg_o (ev_arg[c*32 +: 32]),
-                .trap_o   (trap_o[c]),
-                .bus_err_o(bus_err_o[c])
-            );
+            if (((SERV_MASK >> c) & 1) == 0) begin : g_pico
+                pico_core #(.CORE(c), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_core (
+                    .clk_i    (clk_i),
+                    .rst_i    (rst_i),
+                    .stall_i  (stall_i[c]),
+                    .wb_cyc_o (wb_cyc[c]),
+                    .wb_stb_o (wb_stb[c]),
+                    .wb_we_o  (wb_we[c]),
+                    .wb_adr_o (wb_adr[c*ADDR_WIDTH +: ADDR_WIDTH]),
+                    .wb_sel_o (wb_sel[c*4 +: 4]),
+                    .wb_dat_o (wb_wdat[c*32 +: 32]),
+                    .wb_dat_i (wb_rdat[c*32 +: 32]),
+                    .wb_ack_i (wb_ack[c]),
+                    .done_o   (done_o[c]),
+                    .code_o   (code_o[c*32 +: 32]),
+                    .stat_o   (stat_o[c*128 +: 128]),
+                    .ev_valid_o(ev_valid[c]),
+                    .ev_data_o(ev_data[c*32 +: 32]),
+                    .ev_arg_o (ev_arg[c*32 +: 32]),
+                    .trap_o   (trap_o[c]),
+                    .bus_err_o(bus_err_o[c])
+                );
+            end else begin : g_serv
+                serv_core #(.CORE(c), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_core (
+                    .clk_i    (clk_i),
+                    .rst_i    (rst_i),
+                    .stall_i  (stall_i[c]),
+                    .wb_cyc_o (wb_cyc[c]),
+                    .wb_stb_o (wb_stb[c]),
+                    .wb_we_o  (wb_we[c]),
+                    .wb_adr_o (wb_adr[c*ADDR_WIDTH +: ADDR_WIDTH]),
+                    .wb_sel_o (wb_sel[c*4 +: 4]),
+                    .wb_dat_o (wb_wdat[c*32 +: 32]),
+                    .wb_dat_i (wb_rdat[c*32 +: 32]),
+                    .wb_ack_i (wb_ack[c]),
+                    .done_o   (done_o[c]),
+                    .code_o   (code_o[c*32 +: 32]),
+                    .stat_o   (stat_o[c*128 +: 128]),
+                    .ev_valid_o(ev_valid[c]),
+                    .ev_data_o(ev_data[c*32 +: 32]),
+                    .ev_arg_o (ev_arg[c*32 +: 32]),
+                    .trap_o   (trap_o[c]),
+                    .bus_err_o(bus_err_o[c])
+                );
+            end
         end
     endgenerate
 
 endmodule
+
+`default_nettype wire
