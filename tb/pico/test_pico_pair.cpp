@@ -6,9 +6,10 @@
 //                  [--report FILE] [--label NAME] [--expect-consumer-failure]
 //                  [--seed S] [--stall-core C]
 //
-// Stalls: core C (default 1, the consumer; -1: none) has its local-RAM
-// accesses held (stall_i) in bursts: each free cycle starts one with
-// probability 1/2048, lasting 1..4096 cycles (xorshift, seed S).  That varies
+// Stalls: core C (default 1, the consumer; -1: none; 2: both, each with its
+// own bursts) has its local-RAM accesses held (stall_i) in bursts: each free
+// cycle starts one with probability 1/2048, lasting 1..4096 cycles
+// (xorshift, seed S).  That varies
 // the cores' relative speed and phase, so a consumer can be overtaken by
 // several Exports inside one Import, as an interrupt would do.
 //
@@ -75,12 +76,19 @@ int main(int argc, char **argv)
     for (int i = 0; i < 8; ++i) tick();
     m.rst_i = 0;
     cycle = 0;
-    uint64_t done_at[2] = {0, 0};
+    uint64_t done_at[2] = {0, 0}, both_left[2] = {0, 0};
     while ((m.done_o & 3u) != 3u && cycle < max_cycles && !(m.trap_o & 3u) && !(m.bus_err_o & 3u)) {
         if (stall_core == 0 || stall_core == 1) {
             if (stall_left == 0 && (next() & 2047u) == 0) stall_left = 1 + next() % 4096u;
             m.stall_i = stall_left ? static_cast<uint8_t>(1u << stall_core) : 0u;
             if (stall_left) { --stall_left; ++stalled; }
+        } else if (stall_core == 2) {  // both cores, independent bursts
+            uint8_t s = 0;
+            for (int c = 0; c < 2; ++c) {
+                if (both_left[c] == 0 && (next() & 2047u) == 0) both_left[c] = 1 + next() % 4096u;
+                if (both_left[c]) { --both_left[c]; ++stalled; s |= static_cast<uint8_t>(1u << c); }
+            }
+            m.stall_i = s;
         }
         tick();
         for (int c = 0; c < 2; ++c)
