@@ -1200,7 +1200,7 @@ def _route(system, ch):
     return f"{src} -> {', '.join(system.boards[c] for c in ch.consumers)}"
 
 
-def render_board_header(system: System, b: int, desc_name: str) -> str:
+def render_board_header(system: System, b: int, desc_name: str, plan: Plan) -> str:
     board = system.boards[b]
     B = board.upper()
     insts = board_instances(system, b)
@@ -1255,6 +1255,16 @@ def render_board_header(system: System, b: int, desc_name: str) -> str:
         L.append(f"#define ALB_{N}_SIZE   {payload}u  /* payload bytes of this instance"
                  + (" (value + taken_at) */" if role == "destination" else " */"))
         L.append(f"#define ALB_{N}_WORDS  {ch.words}u  /* W, the value's words */")
+        if role == "destination":
+            bnd = channel_bounds(system, plan, ch)
+            L.append(f"#define ALB_{N}_PERIOD_CLOCKS  {bnd['guaranteed_period_clocks']}u"
+                     "  /* guaranteed: a transfer slot at least this often */")
+            if ch.kind == "copy":
+                L.append(f"#define ALB_{N}_LATENCY_CLOCKS  {bnd['latency_clocks']['with_retries']}u"
+                         "  /* guaranteed: producer's Export -> published here (with retries) */")
+            else:
+                L.append(f"#define ALB_{N}_AGE_CLOCKS  {bnd['age_bound_clocks']['with_retries']}u"
+                         "  /* guaranteed: now - taken_at of the newest value here (with retries) */")
         L.append(f"typedef char alb_check_{ch.name}_size[(sizeof({T}) == {ch.size}u) ? 1 : -1];")
         if role == "source":
             L.append(f"ALB_CHANNEL({ch.name}, {T})")
@@ -1647,7 +1657,7 @@ def generate(system: System, plan: Plan, rom: list, rep: dict) -> dict:
              "report.txt": render_report_txt(rep),
              "timeline.svg": render_svg(system, plan, rep)}
     for b, name in enumerate(system.boards):
-        files[f"{name}.h"] = render_board_header(system, b, desc)
+        files[f"{name}.h"] = render_board_header(system, b, desc, plan)
         files[f"{name}.c"] = render_board_c(system, b, desc)
         files[f"{name}_ram.hex"] = render_ram_hex(system, b)
     return files

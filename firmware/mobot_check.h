@@ -3,7 +3,7 @@
  * system (tb/rtl/pico_boards.v, firmware/mobot_<board>.c).  Every value of
  * the MOBOT-III channels carries a sequence number and a checksum derived
  * from it, in the channel's own type (compiler/examples/mobot3_types.h):
- *   RadarShot      range_mm[0..1] = seq, [2..30] = mix words, [31] = sum
+ *   RadarShot      range_mm[0..1] = seq, [2..30] = mix words, [31] = rotate-xor sum
  *   RobotPosition  x = seq, y = mix(seq), heading = x ^ y ^ SALT
  *   MotorCommand   left/right = seq low/high half, flags = mix(seq) ^ SALT
  * The all-zero start value of the RAM images counts as sequence 0 and is
@@ -11,6 +11,10 @@
  * delivers it).  Exit code (TOHOST) = check | channel id << 4 | seq << 12:
  *   1 alb_import error, 2 attach error, 3 checksum, 4 sequence went back,
  *   5 New without a newer value, 6 Old with a newer value, 7 export error.
+ * Every Import and Export is also reported to the harness as a board event
+ * (board_event, firmware/board.h): EVENT = kind | channel id << 4 |
+ * cycles << 8, where cycles (24 bits, saturating) is the rdcycle count of the
+ * call, and ARG as listed at MOBOT_EV_*.
  */
 #ifndef MOBOT_CHECK_H
 #define MOBOT_CHECK_H
@@ -24,11 +28,58 @@
 #define MOBOT_NEWS     40u   /* New values every consumer must see per channel */
 #define MOBOT_EXPORTS  40u   /* exports before a producer reports */
 
+/* Time budgets of the application, in controller clocks (50 MHz). */
+#define MOBOT_RADAR_SCAN_CLOCKS 20000u  /* the radar publishes a scan at least this often (400 us) */
+
+/* Board event kinds (ARG). */
+#define MOBOT_EV_NEW     1u  /* alb_import returned New (taken_at)            */
+#define MOBOT_EV_OLD     2u  /* alb_import returned Old (taken_at)            */
+#define MOBOT_EV_ERROR   3u  /* alb_import returned an error (the error)      */
+#define MOBOT_EV_BEGIN   4u  /* an Export begins (its sequence number)        */
+#define MOBOT_EV_EXPORT  5u  /* an Export returned (its sequence number)      */
+#define MOBOT_EV_STALE   6u  /* a consumer found its channel stale (the age)  */
+#define MOBOT_EV_FRESH   7u  /* ... and fresh again (the age)                 */
+#define MOBOT_EV_STATUS  8u  /* a new STATUS (retries summed over channels;
+                                the cycles field: abandoned summed)           */
+
 #define MOBOT_CODE(chk, id, seq) ((uint32_t)(chk) | ((uint32_t)(id) << 4) | ((uint32_t)(seq) << 12))
 
 static inline void mobot_tohost(uint32_t code)
 {
     *(volatile uint32_t *)(uintptr_t)BOARD_TOHOST = code;
+}
+
+static inline void mobot_event(uint32_t kind, uint32_t id, uint32_t cycles, uint32_t arg)
+{
+    if (cycles > 0xFFFFFFu)
+        cycles = 0xFFFFFFu;
+    board_event(kind | id << 4 | cycles << 8, arg);
+}
+
+/* alb_import with its event; taken_at is the message's taken_at field. */
+static inline int mobot_import(alb_channel_t *ch, uint32_t id, void *msg, const uint32_t *taken_at)
+{
+    uint32_t c0 = board_cycles(), c1;
+    int r = alb_import(ch, msg);
+    c1 = board_cycles();
+    if (r == ALB_NEW || r == ALB_OLD)
+        mobot_event(r == ALB_NEW ? MOBOT_EV_NEW : MOBOT_EV_OLD, id, c1 - c0, *taken_at);
+    else
+        mobot_event(MOBOT_EV_ERROR, id, c1 - c0, (uint32_t)r);
+    return r;
+}
+
+/* alb_export with its two events (begin, end). */
+static inline int mobot_export(alb_channel_t *ch, uint32_t id, const void *v, uint32_t seq)
+{
+    uint32_t c0, c1;
+    int r;
+    mobot_event(MOBOT_EV_BEGIN, id, 0u, seq);
+    c0 = board_cycles();
+    r = alb_export(ch, v);
+    c1 = board_cycles();
+    mobot_event(MOBOT_EV_EXPORT, id, c1 - c0, seq);
+    return r;
 }
 
 static inline uint32_t mobot_mix(uint32_t x)
@@ -49,7 +100,7 @@ static inline void radar_make(RadarShot *v, uint32_t seq)
         v->range_mm[k] = (uint16_t)h;
     }
     for (k = 0u; k < 31u; ++k)
-        sum += v->range_mm[k] * (k + 1u);
+        sum = ((sum << 5) | (sum >> 27)) ^ v->range_mm[k];   /* order-sensitive, no multiply */
     v->range_mm[31] = (uint16_t)(sum ^ MOBOT_SALT);
 }
 

@@ -3,7 +3,7 @@
  * (tb/rtl/pico_boards.v): imports MotorCmd and GlobalTime through the
  * compiler-generated motor.c.  Reports 0 after MOBOT_NEWS New values of
  * each, then keeps checking.  STAT: 0 MotorCmd New, 1 GlobalTime New.
- * Checks: firmware/mobot_check.h.
+ * Checks and events: firmware/mobot_check.h.
  */
 #include "albatross.h"
 #include "motor.h"
@@ -21,11 +21,11 @@ int main(void)
     if (r != ALB_OK)
         return (int)MOBOT_CODE(2, 0xfu, (uint32_t)-r);
     for (;;) {
-        r = alb_import(&alb_ch_MotorCmd, &cmd);
+        r = mobot_import(&alb_ch_MotorCmd, ALB_MOTORCMD_ID, &cmd, &cmd.taken_at);
         code = mobot_check(&tm, ALB_MOTORCMD_ID, r, motor_ok0(&cmd.value), motor_seq(&cmd.value));
         if (code)
             return (int)code;
-        r = alb_import(&alb_ch_GlobalTime, &gt);
+        r = mobot_import(&alb_ch_GlobalTime, ALB_GLOBALTIME_ID, &gt, &gt.taken_at);
         code = mobot_check(&tt, ALB_GLOBALTIME_ID, r, 1, gt.value);
         if (code)
             return (int)code;

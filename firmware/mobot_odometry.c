@@ -3,7 +3,7 @@
  * (tb/rtl/pico_boards.v): exports Position, imports GlobalTime through the
  * compiler-generated odometry.c.  Reports 0 after MOBOT_EXPORTS exports and
  * MOBOT_NEWS New times, then keeps exporting.  STAT: 1 GlobalTime New,
- * 3 exports.  Checks: firmware/mobot_check.h.
+ * 3 exports.  Checks and events: firmware/mobot_check.h.
  */
 #include "albatross.h"
 #include "odometry.h"
@@ -22,9 +22,9 @@ int main(void)
         return (int)MOBOT_CODE(2, 0xfu, (uint32_t)-r);
     for (;;) {
         position_make(&p, ++seq);
-        if (MakePositionAvailable(&p) != ALB_OK)
+        if (mobot_export(&alb_ch_Position, ALB_POSITION_ID, &p, seq) != ALB_OK)
             return (int)MOBOT_CODE(7, ALB_POSITION_ID, seq);
-        r = alb_import(&alb_ch_GlobalTime, &gt);
+        r = mobot_import(&alb_ch_GlobalTime, ALB_GLOBALTIME_ID, &gt, &gt.taken_at);
         code = mobot_check(&tt, ALB_GLOBALTIME_ID, r, 1, gt.value);
         if (code)
             return (int)code;

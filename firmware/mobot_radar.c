@@ -4,7 +4,8 @@
  * through the compiler-generated radar.c (build/schedule/mobot3/).  Reports 0
  * after MOBOT_EXPORTS exports and MOBOT_NEWS New values per import, then
  * keeps going (a later failed check overwrites TOHOST).  STAT: 0 Position
- * New, 1 GlobalTime New, 2 -, 3 exports.  Checks: firmware/mobot_check.h.
+ * New, 1 GlobalTime New, 2 -, 3 exports.  Checks and events:
+ * firmware/mobot_check.h.
  */
 #include "albatross.h"
 #include "radar.h"
@@ -24,13 +25,13 @@ int main(void)
         return (int)MOBOT_CODE(2, 0xfu, (uint32_t)-r);
     for (;;) {
         radar_make(&shot, ++seq);
-        if (MakeRadarMapAvailable(&shot) != ALB_OK)
+        if (mobot_export(&alb_ch_RadarMap, ALB_RADARMAP_ID, &shot, seq) != ALB_OK)
             return (int)MOBOT_CODE(7, ALB_RADARMAP_ID, seq);
-        r = alb_import(&alb_ch_Position, &pos);
+        r = mobot_import(&alb_ch_Position, ALB_POSITION_ID, &pos, &pos.taken_at);
         code = mobot_check(&tp, ALB_POSITION_ID, r, position_ok0(&pos.value), (uint32_t)pos.value.x_mm);
         if (code)
             return (int)code;
-        r = alb_import(&alb_ch_GlobalTime, &gt);
+        r = mobot_import(&alb_ch_GlobalTime, ALB_GLOBALTIME_ID, &gt, &gt.taken_at);
         code = mobot_check(&tt, ALB_GLOBALTIME_ID, r, 1, gt.value);
         if (code)
             return (int)code;

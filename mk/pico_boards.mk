@@ -1,25 +1,33 @@
-# mk/pico_boards.mk -- the first multi-board system with real CPUs: four
-# PicoRV32 boards (radar, odometry, navigation, motor of the MOBOT-III
-# example), each with its own albatross_dpram, joined by albatross_bus and
-# albatross_controller (tb/rtl/pico_boards.v, harness tb/pico/test_pico_boards.cpp).
-#   make test-pico-boards   firmware firmware/mobot_<board>.c linked with the
-#                           compiler-generated <board>.c and the real driver;
-#                           the DPRAMs start from the compiler's RAM images,
-#                           the controller runs the compiler's rom.hex; every
-#                           Import is checked on the cores; build/reports/pico_boards.json
+# mk/pico_boards.mk -- the multi-board system with real CPUs: four PicoRV32
+# boards (radar, odometry, navigation, motor of the MOBOT-III example), each
+# with its own albatross_dpram, joined by albatross_bus and
+# albatross_controller behind a bus fault injector (tb/rtl/pico_boards.v);
+# harness sim/mobot_sim.cpp (make sim runs the same model, mk/sim.mk).
+# Each board's firmware is firmware/mobot_<board>.c linked with the
+# compiler-generated <board>.c and the real driver; the DPRAMs start from the
+# compiler's RAM images, the controller runs the compiler's rom.hex; every
+# Import is checked on the cores and reported to the harness as an event.
+#   make test-pico-boards           fault-free, cores stalled in random bursts
+#   make test-pico-boards-faults    5 % of the controller's requests faulted
+#   make test-pico-boards-crash     the radar crashes inside an Export
+#   make test-pico-boards-negative-*  one per check of the harness, each
+#                                   with a firmware/driver mutant
+#                                   (tb/mutants/firmware/) or an option
 # Reuses PICO_RV32_V, PICO_NEED, FW_CFLAGS, FW_LDFLAGS, FW_DEPS of mk/pico.mk
 # (included before this file: mk/*.mk are read in sorted order).
-# pico_boards.v needs picorv32.v from PyPI: it is kept out of make lint here
-# and linted (Verilator -Wall, Icarus, Yosys) at the end of test-pico-boards.
+# pico_boards.v needs picorv32.v from PyPI: it is kept out of make lint and
+# linted (Verilator -Wall, Icarus, Yosys) by test-pico-boards-lint.
 TB_RTL := $(filter-out tb/rtl/pico_boards.v,$(TB_RTL))
 
 PB_DIR      := $(BUILD)/pico_boards
 PB_SCHED    := $(BUILD)/schedule/mobot3
 PB_BOARDS   := radar odometry navigation motor
-PB_MAX_CYCLES ?= 5000000
-PB_RTL      := tb/rtl/pico_boards.v tb/rtl/pico_core.v tb/rtl/board_memmap.v tb/rtl/pico_wb_adapter.v rtl/albatross_dpram.v \
-               rtl/albatross_bus.v rtl/albatross_controller.v
+PB_CYCLES   ?= 1500000
+PB_RTL      := tb/rtl/pico_boards.v tb/rtl/pico_core.v tb/rtl/board_memmap.v tb/rtl/bus_fault_injector.v \
+               tb/rtl/pico_wb_adapter.v rtl/albatross_dpram.v rtl/albatross_bus.v rtl/albatross_controller.v
 PB_VFLAGS   := -Wall --timescale 1ns/1ps -y rtl -y tb/rtl --top-module pico_boards tb/pico/picorv32.vlt
+PB_SRC      := sim/mobot_sim.cpp tb/system/plan.cpp
+PB_HDR      := tb/report.h tb/system/plan.h
 
 # $(1) = board: firmware/mobot_<board>.c + generated <board>.c + the driver.
 define pb_fw
@@ -31,29 +39,100 @@ $(PB_DIR)/fw/$(1).elf: firmware/mobot_$(1).c firmware/mobot_check.h $(PB_SCHED)/
 endef
 $(foreach b,$(PB_BOARDS),$(eval $(call pb_fw,$(b))))
 
-$(PB_DIR)/fw/%.hex: $(PB_DIR)/fw/%.elf
+$(PB_DIR)/%.hex: $(PB_DIR)/%.elf
 	$(DRV_RV_PREFIX)objcopy -O verilog --verilog-data-width=4 $< $@
 
+# The model, without and with waves (--trace, for make sim TRACE=1).
+# $(1) = variant dir, $(2) = extra Verilator flags.
+define pb_model
+$(PB_DIR)/$(1)/Vpico_boards: $(PB_RTL) $(PICO_RV32_V) $(PB_SRC) $(PB_HDR) tb/pico/picorv32.vlt mk/pico_boards.mk
+	$$(PICO_NEED)
+	@mkdir -p $$(@D)
+	verilator --cc --exe --build -j 2 -O3 $(2) $(PB_VFLAGS) -CFLAGS "-O2 -std=c++17" \
+	    --Mdir $$(@D) $(PICO_RV32_V) tb/rtl/pico_boards.v $(abspath $(PB_SRC)) \
+	    > $$(@D)/build.log 2>&1 || { cat $$(@D)/build.log; exit 1; }
+endef
+$(eval $(call pb_model,obj,))
+$(eval $(call pb_model,obj-trace,--trace))
 PB_BIN := $(PB_DIR)/obj/Vpico_boards
-$(PB_BIN): $(PB_RTL) $(PICO_RV32_V) tb/pico/test_pico_boards.cpp tb/pico/picorv32.vlt tb/report.h mk/pico_boards.mk
+
+# Firmware of every board; $(1) = radar image, $(2) = navigation image.
+pb_fw_args = +fw0=$(1) +fw1=$(PB_DIR)/fw/odometry.hex +fw2=$(2) +fw3=$(PB_DIR)/fw/motor.hex \
+             +ram0=$(PB_SCHED)/radar_ram.hex +ram1=$(PB_SCHED)/odometry_ram.hex \
+             +ram2=$(PB_SCHED)/navigation_ram.hex +ram3=$(PB_SCHED)/motor_ram.hex \
+             +rom=$(PB_SCHED)/rom.hex --plan $(PB_SCHED)/tb_plan.txt
+PB_FW     := $(foreach b,$(PB_BOARDS),$(PB_DIR)/fw/$(b).hex)
+PB_FW_ARGS = $(call pb_fw_args,$(PB_DIR)/fw/radar.hex,$(PB_DIR)/fw/navigation.hex)
+
+# Scenario tests: NAME:OPTIONS (commas for spaces).
+PB_SCENARIOS := \
+  pico-boards:--stall,2048 \
+  pico-boards-faults:--stall,2048,--fault-rate,0.05 \
+  pico-boards-crash:--stall,2048,--crash,radar@200000
+define pb_scenario
+TESTS += $(call neg_field,$(1),1)
+.PHONY: test-$(call neg_field,$(1),1)
+test-$(call neg_field,$(1),1): $(PB_BIN) $(PB_FW) $(PB_SCHED)/tb_plan.txt
+	@tools/run_test.sh $(call neg_field,$(1),1) $(PB_BIN) $(PB_FW_ARGS) --cycles $(PB_CYCLES) --seed $(SEED) \
+	    --label $(call neg_field,$(1),1) $(subst $(comma), ,$(call neg_field,$(1),2)) \
+	    --report $(REPORTS)/$(subst -,_,$(call neg_field,$(1),1)).json
+endef
+$(foreach s,$(PB_SCENARIOS),$(eval $(call pb_scenario,$(s))))
+
+# Firmware mutants (tb/mutants/firmware/NAME.sed): NAME:BOARD:FILE, where
+# FILE (firmware/mobot_<board>.c, firmware/mobot_check.h or
+# c-driver/albatross.c) is the file the script edits; the board's program is
+# built from copies of the three in $(PB_DIR)/mutant/NAME/, one of them
+# mutated (its #include "..." finds the copied header first).
+PB_MUTANTS := \
+  radar_bad_checksum:radar:firmware/mobot_check.h \
+  nav_never_stale:navigation:firmware/mobot_navigation.c \
+  nav_stale_early:navigation:firmware/mobot_navigation.c \
+  nav_wrong_status:navigation:firmware/mobot_navigation.c
+define pb_mutant
+$(PB_DIR)/mutant/$(1)/$(2).elf: tb/mutants/firmware/$(1).sed firmware/mobot_$(2).c firmware/mobot_check.h \
+        c-driver/albatross.c $(PB_SCHED)/rom.hex $(FW_DEPS)
+	@$$(DRV_RV_NEED)
+	@mkdir -p $$(@D)
+	cp firmware/mobot_$(2).c firmware/mobot_check.h c-driver/albatross.c $$(@D)/
+	sed -f $$< $(3) > $$(@D)/$(notdir $(3))
+	@if cmp -s $$(@D)/$(notdir $(3)) $(3); then \
+	    echo "firmware mutant $(1) did not apply: $(3) no longer has the line tb/mutants/firmware/$(1).sed edits"; \
+	    exit 1; fi
+	$(DRV_RV_CC) $(FW_CFLAGS) -I$(PB_SCHED) -Icompiler/examples -o $$@ firmware/crt0.S \
+	    $$(@D)/mobot_$(2).c $(PB_SCHED)/$(2).c $$(@D)/albatross.c $(FW_LDFLAGS)
+endef
+$(foreach m,$(PB_MUTANTS),$(eval $(call pb_mutant,$(call neg_field,$(m),1),$(call neg_field,$(m),2),$(call neg_field,$(m),3))))
+
+# Negative tests: NAME:CHECK:RADAR:NAVIGATION:OPTIONS -- the run passes only
+# if CHECK (a comma list: every one of them, no other) fails.  RADAR and
+# NAVIGATION name the firmware images (fw = the real one, else a mutant).
+PB_NEGATIVE := \
+  radar_bad_checksum:cpu:radar_bad_checksum:fw: \
+  nav_never_stale:staleness:fw:nav_never_stale:--crash,radar@200000 \
+  nav_stale_early:staleness:fw:nav_stale_early: \
+  nav_wrong_status:faults:fw:nav_wrong_status:--fault-rate,0.05 \
+  age:age:fw:fw:--age-scale,0.5 \
+  hang:liveness:fw:fw:--hang,motor@200000
+pb_img = $(if $(filter fw,$(1)),$(PB_DIR)/fw/$(2).hex,$(PB_DIR)/mutant/$(1)/$(2).hex)
+define pb_negative
+TESTS += pico-boards-negative-$(call neg_field,$(1),1)
+.PHONY: test-pico-boards-negative-$(call neg_field,$(1),1)
+test-pico-boards-negative-$(call neg_field,$(1),1): $(PB_BIN) $(PB_FW) $(PB_SCHED)/tb_plan.txt \
+        $(call pb_img,$(call neg_field,$(1),3),radar) $(call pb_img,$(call neg_field,$(1),4),navigation)
+	@tools/run_test.sh pico-boards-negative-$(call neg_field,$(1),1) $(PB_BIN) \
+	    $(call pb_fw_args,$(call pb_img,$(call neg_field,$(1),3),radar),$(call pb_img,$(call neg_field,$(1),4),navigation)) \
+	    --cycles $(PB_CYCLES) --seed $(SEED) --stall 2048 --label pico-boards-negative-$(call neg_field,$(1),1) \
+	    --expect-caught-by $(call neg_field,$(1),2) $(subst $(comma), ,$(call neg_field,$(1),5)) \
+	    --report $(REPORTS)/pico_boards_negative_$(call neg_field,$(1),1).json
+endef
+$(foreach n,$(PB_NEGATIVE),$(eval $(call pb_negative,$(n))))
+
+TESTS += pico-boards-lint
+.PHONY: test-pico-boards-lint
+test-pico-boards-lint:
 	$(PICO_NEED)
-	@mkdir -p $(PB_DIR)
-	verilator --cc --exe --build -j 2 -O3 $(PB_VFLAGS) -CFLAGS "-O2 -std=c++17" \
-	    --Mdir $(PB_DIR)/obj $(PICO_RV32_V) tb/rtl/pico_boards.v $(abspath tb/pico/test_pico_boards.cpp) \
-	    > $(PB_DIR)/build.log 2>&1 || { cat $(PB_DIR)/build.log; exit 1; }
-
-PB_FW_ARGS := +fw0=$(PB_DIR)/fw/radar.hex +fw1=$(PB_DIR)/fw/odometry.hex \
-              +fw2=$(PB_DIR)/fw/navigation.hex +fw3=$(PB_DIR)/fw/motor.hex \
-              +ram0=$(PB_SCHED)/radar_ram.hex +ram1=$(PB_SCHED)/odometry_ram.hex \
-              +ram2=$(PB_SCHED)/navigation_ram.hex +ram3=$(PB_SCHED)/motor_ram.hex \
-              +rom=$(PB_SCHED)/rom.hex
-
-TESTS += pico-boards
-.PHONY: test-pico-boards
-test-pico-boards: $(PB_BIN) $(foreach b,$(PB_BOARDS),$(PB_DIR)/fw/$(b).hex)
-	@tools/run_test.sh pico-boards bash -c '$(PB_BIN) $(PB_FW_ARGS) --max-cycles $(PB_MAX_CYCLES) \
-	    --seed $(SEED) --report $(REPORTS)/pico_boards.json && \
-	    verilator --lint-only $(PB_VFLAGS) $(PICO_RV32_V) tb/rtl/pico_boards.v && \
+	@tools/run_test.sh pico-boards-lint bash -c 'verilator --lint-only $(PB_VFLAGS) $(PICO_RV32_V) tb/rtl/pico_boards.v && \
 	    iverilog -g2005 -y rtl -y tb/rtl -s pico_boards -o /dev/null $(PICO_RV32_V) tb/rtl/pico_boards.v && \
 	    yosys -q -p "read_verilog $(PICO_RV32_V) $(PB_RTL); hierarchy -check -top pico_boards; proc" && \
 	    echo "lint ok  tb/rtl/pico_boards.v"'

@@ -1,12 +1,18 @@
 // pico_boards -- test top: NB boards, each a PicoRV32 core with its own
-// albatross_dpram, joined by albatross_bus and albatross_controller.
+// albatross_dpram, joined by albatross_bus and albatross_controller; the
+// controller reaches the bus through a bus_fault_injector.
 //
 // Board c: core c (the memory map of tb/rtl/pico_pair.v and firmware/board.h:
 // local RAM at 0, DPRAM window at 0x1000_0000, board registers at
 // 0x2000_0000 with TOHOST and STAT 0..3) reaches port A of its own
 // albatross_dpram through a pico_wb_adapter; port B hangs on albatross_bus,
-// whose master is albatross_controller (no fault injector: the bus's slave
-// err inputs are tied low).  Plusargs (simulation only): +fwC=FILE the
+// whose master is albatross_controller behind a bus_fault_injector
+// (fi_kind_i / fi_dead_i as in tb/rtl/bus_fault_injector.v; 0 forwards every
+// request unchanged; the bus's slave err inputs are tied low).  The harness
+// sees each core's board events (ev_*: a store to EVENT, board_memmap.v),
+// each core's completed DPRAM accesses (dp_*: port A, one clock per acked
+// access), and the controller side of the injector (m_*), where a new request
+// is m_stb_o in a clock after one without m_stb_o or with an answer.  Plusargs (simulation only): +fwC=FILE the
 // program of core C, +ramC=FILE the start image of board C's DPRAM (the
 // compiler's <board>_ram.hex), +rom=FILE the schedule ROM (read by the
 // controller itself).  Board index c is the compiler's board index; NB is at
@@ -26,24 +32,41 @@ module pico_boards #(
     input  wire              clk_i,
     input  wire              rst_i,      // synchronous, active high
     input  wire [NB-1:0]     stall_i,    // core c: hold its local-RAM access this cycle
+    input  wire [1:0]        fi_kind_i,  // fault kind for the controller's next new request
+    input  wire [NB-1:0]     fi_dead_i,  // board links that are down
     output wire [NB-1:0]     done_o,     // core c stored to TOHOST
     output wire [NB*32-1:0]  code_o,     // the last value it stored (exit code)
     output wire [NB*128-1:0] stat_o,     // core c: STAT k at [c*128 + k*32 +: 32]
+    output wire [NB-1:0]     ev_valid_o, // core c stored to EVENT (one clock)
+    output wire [NB*32-1:0]  ev_data_o,  // that value
+    output wire [NB*32-1:0]  ev_arg_o,   // ARG at that time
+    output wire [NB-1:0]     dp_ack_o,   // core c's DPRAM access acked this clock
+    output wire [NB-1:0]     dp_we_o,    // ... and it is a write
+    output wire [NB*ADDR_WIDTH-1:0] dp_adr_o, // its word address
+    output wire [NB*4-1:0]   dp_sel_o,   // its byte lanes
     output wire [NB-1:0]     trap_o,     // core c trapped (PicoRV32 trap)
     output wire [NB-1:0]     bus_err_o,  // core c accessed an unmapped address
     output wire [31:0]       time_o,     // controller global time
     output wire              error_o,    // controller error
     output wire [15:0]       rom_errors_o,
-    output wire              m_cyc_o     // the controller's bus cycle (bus load figure)
+    output wire              m_cyc_o,    // the controller's bus cycle (bus load figure)
+    output wire              m_stb_o,    // its strobe (controller side of the injector)
+    output wire              m_ack_o,    // the answer it gets: ack
+    output wire              m_err_o     //                     err
 );
 
     localparam BA       = 4 + ADDR_WIDTH;     // bus address {board[3:0], word}
 
-    // controller <-> bus
+    // controller <-> fault injector
     wire          m_cyc, m_stb, m_we, m_ack, m_err;
     wire [BA-1:0] m_adr;
     wire [3:0]    m_sel;
     wire [31:0]   m_wdat, m_rdat;
+    // fault injector <-> bus
+    wire          i_cyc, i_stb, i_we, i_ack, i_err;
+    wire [BA-1:0] i_adr;
+    wire [3:0]    i_sel;
+    wire [31:0]   i_wdat, i_rdat;
     // bus <-> port B of each RAM
     wire [NB-1:0]            s_cyc, s_stb, s_we, s_ack;
     wire [NB*ADDR_WIDTH-1:0] s_adr;
@@ -60,13 +83,24 @@ module pico_boards #(
         .time_o(time_o), .error_o(error_o), .rom_errors_o(rom_errors_o)
     );
 
+    bus_fault_injector #(.NB(NB), .ADDR_WIDTH(ADDR_WIDTH)) u_faults (
+        .clk_i(clk_i), .rst_i(rst_i), .fi_kind_i(fi_kind_i), .fi_dead_i(fi_dead_i),
+        .c_cyc_i(m_cyc), .c_stb_i(m_stb), .c_we_i(m_we), .c_adr_i(m_adr), .c_sel_i(m_sel),
+        .c_dat_i(m_wdat), .c_dat_o(m_rdat), .c_ack_o(m_ack), .c_err_o(m_err),
+        .b_cyc_o(i_cyc), .b_stb_o(i_stb), .b_we_o(i_we), .b_adr_o(i_adr), .b_sel_o(i_sel),
+        .b_dat_o(i_wdat), .b_dat_i(i_rdat), .b_ack_i(i_ack), .b_err_i(i_err)
+    );
+
     albatross_bus #(.NB(NB), .ADDR_WIDTH(ADDR_WIDTH)) u_bus (
-        .m_cyc_i(m_cyc), .m_stb_i(m_stb), .m_we_i(m_we), .m_adr_i(m_adr), .m_sel_i(m_sel),
-        .m_dat_i(m_wdat), .m_dat_o(m_rdat), .m_ack_o(m_ack), .m_err_o(m_err),
+        .m_cyc_i(i_cyc), .m_stb_i(i_stb), .m_we_i(i_we), .m_adr_i(i_adr), .m_sel_i(i_sel),
+        .m_dat_i(i_wdat), .m_dat_o(i_rdat), .m_ack_o(i_ack), .m_err_o(i_err),
         .s_cyc_o(s_cyc), .s_stb_o(s_stb), .s_we_o(s_we), .s_adr_o(s_adr), .s_sel_o(s_sel),
         .s_dat_o(s_wdat), .s_dat_i(s_rdat), .s_ack_i(s_ack), .s_err_i({NB{1'b0}})
     );
     assign m_cyc_o = m_cyc;
+    assign m_stb_o = m_stb;
+    assign m_ack_o = m_ack;
+    assign m_err_o = m_err;
 
     genvar c;
     generate
@@ -84,6 +118,10 @@ module pico_boards #(
                 .b_adr_i(s_adr[c*ADDR_WIDTH +: ADDR_WIDTH]), .b_sel_i(s_sel[c*4 +: 4]),
                 .b_dat_i(s_wdat[c*32 +: 32]), .b_dat_o(s_rdat[c*32 +: 32]), .b_ack_o(s_ack[c])
             );
+            assign dp_ack_o[c]                           = a_cyc & a_stb & a_ack;
+            assign dp_we_o[c]                            = a_we;
+            assign dp_adr_o[c*ADDR_WIDTH +: ADDR_WIDTH]  = a_adr;
+            assign dp_sel_o[c*4 +: 4]                    = a_sel;
 
             pico_core #(.CORE(c), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_core (
                 .clk_i    (clk_i),
@@ -100,6 +138,9 @@ module pico_boards #(
                 .done_o   (done_o[c]),
                 .code_o   (code_o[c*32 +: 32]),
                 .stat_o   (stat_o[c*128 +: 128]),
+                .ev_valid_o(ev_valid_o[c]),
+                .ev_data_o(ev_data_o[c*32 +: 32]),
+                .ev_arg_o (ev_arg_o[c*32 +: 32]),
                 .trap_o   (trap_o[c]),
                 .bus_err_o(bus_err_o[c])
             );

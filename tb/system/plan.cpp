@@ -26,6 +26,11 @@ bool Plan::load(const std::string &path, std::string &error)
                  (mode == "rigid" || mode == "sync");
             sync_mode = mode == "sync";
             have_system = ok;
+        } else if (what == "board") {
+            int index = -1;
+            std::string name;
+            ok = static_cast<bool>(s >> index >> name) && index == static_cast<int>(board_names.size());
+            if (ok) board_names.push_back(name);
         } else if (what == "channel") {
             PlanChannel c;
             int sync = 0;

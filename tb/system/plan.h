@@ -4,6 +4,7 @@
 // report.json (one line per fact, so the C++ side needs no JSON parser):
 //
 //   system <boards> <cycle_clocks> <rigid|sync> <n_chan> <ram_bytes>
+//   board <index> <name>                      (in index order)
 //   channel <id> <name> <copy|time|status> <size> <words> <src_board> <src_base>
 //           <period> <latency> <latency_with_retries> <sync> <slots>
 //   dest <id> <index> <board> <base>
@@ -41,6 +42,7 @@ struct Plan {
     uint64_t cycle = 0;
     bool sync_mode = false;
     uint32_t ram_bytes = 0;
+    std::vector<std::string> board_names;  // by index
     std::vector<PlanChannel> channels;
 
     // Reads tb_plan.txt; on error returns false with a message naming the line.

@@ -1,0 +1,617 @@
+// mobot_sim.cpp -- the whole-system simulation (make sim) and its scenario
+// tests: tb/rtl/pico_boards.v, four PicoRV32 boards of the MOBOT-III example
+// (radar, odometry, navigation, motor) running firmware/mobot_<board>.c with
+// the compiler-generated channel code and the real C driver, each with its
+// own albatross_dpram, joined over the bus by albatross_controller running the
+// compiler's schedule ROM, with a bus fault injector in between.
+//
+//   mobot_sim --plan tb_plan.txt +fw0..3=FILE +ram0..3=FILE +rom=FILE
+//             [--cycles N] [--seed S] [--stall P] [--fault-rate R]
+//             [--crash BOARD@CYCLE] [--hang BOARD@CYCLE]
+//             [--trace FILE.vcd [--trace-from N] [--trace-cycles N]]
+//             [--report FILE] [--ages FILE.csv] [--label NAME] [--progress K]
+//             [--age-scale X] [--expect-caught-by CHECK]
+//
+// The cores report every Import and Export as board events (EVENT/ARG,
+// firmware/mobot_check.h).  The harness watches every core's DPRAM port: it
+// ages each imported value as (controller time of the Import's last load of
+// the control word, that is of Actual) - taken_at, and times each producer's
+// stores of Actual; it takes the cycles per call from the events, and it injects
+// faults: each new controller request is faulted with probability R, its
+// kind (error, timeout, timeout after performing) drawn evenly.
+//   --stall P       every core's local RAM is held in random bursts (each
+//                   free cycle starts one with probability 1/P, 1..1024
+//                   cycles; 0 = none, the default), so cores drift
+//   --crash B@C     board B crashes in the middle of its first Export that
+//                   begins at or after cycle C: once half the value's words
+//                   are stored, the core is frozen for good (its Actual is
+//                   never stored).  The checks expect it.
+//   --hang B@C      board B freezes at cycle C without telling the checks
+//                   (the negative test of the liveness check)
+//   --age-scale X   check ages against X times the bound (negative test)
+//
+// A crashed producer's half-written buffer is never published: its
+// consumers' checks (cpu) would see the torn value or a New without a newer
+// sequence number.  The report counts the New values after the crash (those
+// completed before it and not yet imported).
+// Checks (each named; --expect-caught-by CHECK[,CHECK] inverts the verdict:
+// the run passes only if those checks, and no other, fail):
+//   cpu        every core's own verdict (TOHOST exit code, mobot_check.h):
+//              checksums, sequence order, New exactly once
+//   liveness   no trap, no unmapped access, no controller error; every
+//              board reported done (all quotas met), or, in a crash run,
+//              every live board kept calling the driver until the end
+//              (not judged once a core failed its own check: that board
+//              stopped and starves its consumers; cpu reports it)
+//   age        runs without faults (and no core failed its check): every age <= bound, where the bound of a copy
+//              channel is the compiler's latency (with retries) plus the
+//              producer's longest measured gap between two Actual stores,
+//              and of a time/status channel the compiler's age bound
+//   staleness  navigation reports RadarMap stale (MOBOT_EV_STALE) after a
+//              radar crash (unless a core failed its own check), and, on a
+//              fault-free bus, never before it and never without one
+//   faults     with faults injected, the controller's STATUS (read by the
+//              navigation core) counts retries
+// Exit status 0 = verdict pass, 1 = fail, 2 = bad arguments.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+#include "Vpico_boards.h"
+#include "verilated.h"
+#if VM_TRACE
+#include "verilated_vcd_c.h"
+#endif
+#include "../tb/report.h"
+#include "../tb/system/plan.h"
+
+namespace {
+
+const int NB = 4;
+enum : uint32_t { EV_NEW = 1, EV_OLD, EV_ERROR, EV_BEGIN, EV_EXPORT, EV_STALE, EV_FRESH, EV_STATUS };
+const char *const kChecks[] = {"cpu", "liveness", "age", "staleness", "faults"};
+
+struct Options {
+    std::string plan, report, ages, trace, label = "mobot-sim", expect;
+    uint64_t cycles = 2000000, seed = 1, stall = 0, trace_from = 0, trace_cycles = 20000, progress = 10;
+    double fault_rate = 0, age_scale = 1;
+    int crash_board = -1, hang_board = -1;
+    uint64_t crash_at = 0, hang_at = 0;
+};
+
+struct Stat {  // min / mean / max of a series of integers
+    uint64_t n = 0, min = 0, max = 0;
+    double sum = 0;
+    void add(uint64_t v) {
+        min = n ? std::min(min, v) : v;
+        max = n ? std::max(max, v) : v;
+        sum += double(v);
+        ++n;
+    }
+    double mean() const { return n ? sum / double(n) : 0; }
+    std::string json() const {
+        JsonReport r;
+        r.num("n", double(n)).num("min", double(min)).num("mean", mean()).num("max", double(max));
+        std::string t = r.text();
+        return t.substr(0, t.size() - 1);
+    }
+};
+
+struct Series {  // one channel at one consumer
+    const PlanChannel *ch = nullptr;
+    int board = 0;
+    uint32_t base = 0;  // byte offset of the instance in the consumer's RAM
+    Stat age, import_cycles;
+    uint64_t news = 0, olds = 0, news_after_crash = 0, over_bound = 0, bound = 0;
+    std::vector<uint64_t> bucket_max;  // worst age per time bucket (picture)
+};
+
+struct Producer {  // a copy channel's producer
+    const PlanChannel *ch = nullptr;
+    Stat export_cycles;
+    uint64_t exports = 0, stores = 0, last_store = 0, max_gap = 0;
+};
+
+bool parse_u64(const char *s, uint64_t &v)
+{
+    char *end = nullptr;
+    if (!s || !*s) return false;
+    v = std::strtoull(s, &end, 0);
+    return *end == '\0';
+}
+
+bool parse_board_at(const std::string &s, const Plan &plan, int &board, uint64_t &at)
+{
+    const size_t p = s.find('@');
+    if (p == std::string::npos) return false;
+    const std::string name = s.substr(0, p);
+    board = -1;
+    for (size_t b = 0; b < plan.board_names.size(); ++b)
+        if (plan.board_names[b] == name) board = int(b);
+    return board >= 0 && parse_u64(s.substr(p + 1).c_str(), at);
+}
+
+int usage(const char *msg)
+{
+    std::fprintf(stderr, "mobot_sim: %s\n"
+                 "usage: mobot_sim --plan tb_plan.txt +fw0..3=FILE +ram0..3=FILE +rom=FILE [--cycles N]\n"
+                 "                 [--seed S] [--stall P] [--fault-rate R] [--crash BOARD@CYCLE] [--hang BOARD@CYCLE]\n"
+                 "                 [--trace FILE.vcd [--trace-from N] [--trace-cycles N]] [--report FILE]\n"
+                 "                 [--ages FILE.csv] [--label NAME] [--progress K] [--age-scale X]\n"
+                 "                 [--expect-caught-by cpu|liveness|age|staleness|faults]\n", msg);
+    return 2;
+}
+
+std::string code_text(uint32_t code, const Plan &plan)
+{
+    static const char *what[8] = {"pass", "alb_import error", "attach error", "checksum wrong",
+                                  "sequence number went back", "New without a newer value",
+                                  "Old with a newer value", "export error"};
+    if (code == 0) return "pass";
+    const uint32_t chk = code & 0xfu, id = (code >> 4) & 0xfu, seq = code >> 12;
+    const PlanChannel *ch = nullptr;
+    for (const PlanChannel &c : plan.channels)
+        if (uint32_t(c.id) == id) ch = &c;
+    char b[160];
+    std::snprintf(b, sizeof b, "%s, channel %s, sequence %u", chk < 8 ? what[chk] : "unknown code",
+                  ch ? ch->name.c_str() : "-", seq);
+    return b;
+}
+
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    Options o;
+    std::string crash_arg, hang_arg;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a[0] == '+') continue;  // plusargs: the RTL reads them
+        if (i + 1 >= argc) return usage((a + " needs a value").c_str());
+        const char *v = argv[++i];
+        uint64_t n = 0;
+        if (a == "--plan") o.plan = v;
+        else if (a == "--report") o.report = v;
+        else if (a == "--ages") o.ages = v;
+        else if (a == "--trace") o.trace = v;
+        else if (a == "--label") o.label = v;
+        else if (a == "--expect-caught-by") o.expect = v;
+        else if (a == "--crash") crash_arg = v;
+        else if (a == "--hang") hang_arg = v;
+        else if (a == "--fault-rate" || a == "--age-scale") {
+            char *end = nullptr;
+            const double x = std::strtod(v, &end);
+            if (*end || !(x >= 0) || (a == "--fault-rate" && x >= 1))
+                return usage((a + ": expected a number" + (a == "--fault-rate" ? " in [0, 1)" : " >= 0")).c_str());
+            (a == "--fault-rate" ? o.fault_rate : o.age_scale) = x;
+        } else if (parse_u64(v, n)) {
+            if (a == "--cycles" && n > 0) o.cycles = n;
+            else if (a == "--seed") o.seed = n;
+            else if (a == "--stall") o.stall = n;
+            else if (a == "--trace-from") o.trace_from = n;
+            else if (a == "--trace-cycles" && n > 0) o.trace_cycles = n;
+            else if (a == "--progress" && n <= 100) o.progress = n;
+            else return usage(("unknown option or bad value: " + a + " " + v).c_str());
+        } else {
+            return usage(("unknown option or bad value: " + a + " " + v).c_str());
+        }
+    }
+    if (o.plan.empty()) return usage("--plan is required");
+    std::vector<std::string> expect;  // --expect-caught-by a,b: every one of them fails, no other
+    for (size_t p = 0; !o.expect.empty() && p <= o.expect.size();) {
+        const size_t q = std::min(o.expect.find(',', p), o.expect.size());
+        expect.push_back(o.expect.substr(p, q - p));
+        if (std::find(std::begin(kChecks), std::end(kChecks), expect.back()) == std::end(kChecks))
+            return usage(("--expect-caught-by: no check named " + expect.back()).c_str());
+        p = q + 1;
+    }
+    Plan plan;
+    std::string err;
+    if (!plan.load(o.plan, err)) return usage(err.c_str());
+    if (plan.boards != NB || int(plan.board_names.size()) != NB)
+        return usage("the plan must have 4 boards (tb/rtl/pico_boards.v has NB = 4)");
+    if (!crash_arg.empty() && !parse_board_at(crash_arg, plan, o.crash_board, o.crash_at))
+        return usage(("--crash: expected BOARD@CYCLE with a board of the plan, got " + crash_arg).c_str());
+    if (!hang_arg.empty() && !parse_board_at(hang_arg, plan, o.hang_board, o.hang_at))
+        return usage(("--hang: expected BOARD@CYCLE with a board of the plan, got " + hang_arg).c_str());
+#if !VM_TRACE
+    if (!o.trace.empty()) return usage("--trace needs the model built with Verilator --trace (make sim TRACE=1)");
+#endif
+
+    // What the plan says: one series per channel and consumer, one producer per copy channel.
+    std::vector<Series> series;
+    std::map<int, Producer> producers;  // by channel id
+    for (const PlanChannel &c : plan.channels) {
+        for (const PlanDest &d : c.dests) {
+            Series s;
+            s.ch = &c;
+            s.board = d.board;
+            s.base = d.base;
+            series.push_back(s);
+        }
+        if (c.copy()) producers[c.id].ch = &c;
+    }
+    auto find_series = [&](int board, uint32_t id) -> Series * {
+        for (Series &s : series)
+            if (s.board == board && uint32_t(s.ch->id) == id) return &s;
+        return nullptr;
+    };
+    const uint64_t n_buckets = std::min<uint64_t>(800, o.cycles);
+    const uint64_t bucket_len = (o.cycles + n_buckets - 1) / n_buckets;
+    for (Series &s : series) s.bucket_max.assign(n_buckets, 0);
+
+    Verilated::commandArgs(argc, argv);
+    auto m = std::make_unique<Vpico_boards>();
+#if VM_TRACE
+    std::unique_ptr<VerilatedVcdC> vcd;
+    if (!o.trace.empty()) {
+        Verilated::traceEverOn(true);
+        vcd = std::make_unique<VerilatedVcdC>();
+        m->trace(vcd.get(), 99);
+    }
+#endif
+    uint64_t rng = o.seed * 0x9E3779B97F4A7C15ull + 1;
+    auto next = [&]() { rng ^= rng << 13; rng ^= rng >> 7; rng ^= rng << 17; return rng; };
+    const uint64_t fault_threshold = uint64_t(o.fault_rate * 18446744073709551615.0);
+
+    uint64_t cycle = 0, stall_left[NB] = {0, 0, 0, 0}, busy = 0, faults = 0, requests = 0;
+    uint32_t frozen = 0;
+    bool prev_stb = false, prev_answer = false;
+    auto tick = [&]() {
+        uint32_t st = frozen;
+        for (int c = 0; c < NB; ++c) {
+            if (o.stall && stall_left[c] == 0 && next() % o.stall == 0) stall_left[c] = 1 + next() % 1024u;
+            if (stall_left[c]) { --stall_left[c]; st |= 1u << c; }
+        }
+        m->stall_i = st;
+        // The injector samples fi_kind in the first clock of a new request.
+        const bool stb = m->m_stb_o;
+        if (stb && (!prev_stb || prev_answer)) {
+            ++requests;
+            if (m->fi_kind_i) ++faults;
+        }
+        prev_stb = stb;
+        prev_answer = m->m_ack_o || m->m_err_o;
+        busy += m->m_cyc_o;
+        m->clk_i = 1; m->eval();
+#if VM_TRACE
+        if (vcd && cycle >= o.trace_from && cycle < o.trace_from + o.trace_cycles) {
+            if (!vcd->isOpen()) vcd->open(o.trace.c_str());
+            vcd->dump(2 * cycle);
+        }
+#endif
+        m->clk_i = 0; m->eval();
+#if VM_TRACE
+        if (vcd && vcd->isOpen()) vcd->dump(2 * cycle + 1);
+#endif
+        ++cycle;
+        // next clock's fault kind
+        m->fi_kind_i = (fault_threshold && next() < fault_threshold) ? 1 + next() % 3u : 0;
+    };
+
+    m->clk_i = 0;
+    m->rst_i = 1;
+    m->stall_i = 0;
+    m->fi_kind_i = 0;
+    m->fi_dead_i = 0;
+    m->eval();
+    for (int i = 0; i < 8; ++i) tick();
+    m->rst_i = 0;
+    cycle = 0; busy = 0; faults = 0; requests = 0;
+
+    const uint32_t all = (1u << NB) - 1u;
+    static uint64_t last_load[NB][1024];  // per core and DPRAM word: controller time of its last load
+    uint64_t done_at[NB] = {0, 0, 0, 0}, last_event[NB] = {0, 0, 0, 0}, events[NB] = {0, 0, 0, 0};
+    // crash state: armed at crash_at, begins with the next Export, fires after half its words
+    int crash_phase = o.crash_board >= 0 ? 1 : 0;  // 1 armed, 2 in the Export, 3 crashed
+    uint32_t crash_words = 0, crash_need = 0, crash_seq = 0;
+    uint64_t crash_cycle = 0;
+    const Producer *crash_prod = nullptr;
+    for (auto &p : producers)
+        if (p.second.ch->src_board == o.crash_board) crash_prod = &p.second;
+    if (o.crash_board >= 0 && !crash_prod)
+        return usage(("--crash: board " + plan.board_names[o.crash_board] + " produces no copy channel").c_str());
+    uint64_t stale_events = 0, stale_before_crash = 0, fresh_events = 0, first_stale = 0, status_reads = 0;
+    uint32_t status_retries = 0, status_abandoned = 0;
+
+    std::printf("%s: %d boards (%s, %s, %s, %s), %llu cycles, seed %llu, fault rate %.2f%s%s\n", o.label.c_str(), NB,
+                plan.board_names[0].c_str(), plan.board_names[1].c_str(), plan.board_names[2].c_str(),
+                plan.board_names[3].c_str(), (unsigned long long)o.cycles, (unsigned long long)o.seed, o.fault_rate,
+                o.crash_board >= 0 ? (", crash " + crash_arg).c_str() : "",
+                o.hang_board >= 0 ? (", hang " + hang_arg).c_str() : "");
+    std::fflush(stdout);
+    auto bad = [&]() { return (m->trap_o & all) || (m->bus_err_o & all) || m->error_o; };
+    uint64_t next_progress = o.progress ? o.cycles / o.progress : ~0ull;
+    while (cycle < o.cycles && !bad()) {
+        if (o.hang_board >= 0 && cycle >= o.hang_at) frozen |= 1u << o.hang_board;
+        tick();
+        const uint64_t now = m->time_o;
+        for (int c = 0; c < NB; ++c) {
+            if (((m->done_o >> c) & 1u) && !done_at[c]) done_at[c] = cycle;
+            const uint32_t adr = (m->dp_adr_o >> (10 * c)) & 0x3ffu, sel = (m->dp_sel_o >> (4 * c)) & 0xfu;
+            // a load: when a consumer read a control word (its Actual) last
+            if (((m->dp_ack_o >> c) & 1u) && !((m->dp_we_o >> c) & 1u)) last_load[c][adr] = now;
+            // a producer's store of Actual (byte 0 of its channel): port A write, lane 0
+            if (((m->dp_ack_o >> c) & 1u) && ((m->dp_we_o >> c) & 1u)) {
+                for (auto &pp : producers) {
+                    Producer &p = pp.second;
+                    if (p.ch->src_board != c) continue;
+                    const uint32_t first = p.ch->src_base / 4, buf_first = first + 1;
+                    if (adr == first && (sel & 1u)) {
+                        if (p.stores) p.max_gap = std::max(p.max_gap, cycle - p.last_store);
+                        p.last_store = cycle;
+                        ++p.stores;
+                    } else if (crash_phase == 2 && &p == crash_prod && adr >= buf_first &&
+                               adr < buf_first + 3 * ((p.ch->size + 3) / 4)) {
+                        if (++crash_words >= crash_need) {
+                            frozen |= 1u << c;
+                            crash_phase = 3;
+                            crash_cycle = cycle;
+                            std::printf("%s: cycle %llu: %s crashes inside Export %u of %s, after %u of %u words\n",
+                                        o.label.c_str(), (unsigned long long)cycle, plan.board_names[c].c_str(),
+                                        crash_seq, p.ch->name.c_str(), crash_words, p.ch->words);
+                        }
+                    }
+                }
+            }
+            if (!((m->ev_valid_o >> c) & 1u)) continue;
+            const uint32_t ev = m->ev_data_o[c], arg = m->ev_arg_o[c];
+            const uint32_t kind = ev & 0xfu, id = (ev >> 4) & 0xfu, cyc = ev >> 8;
+            ++events[c];
+            last_event[c] = cycle;
+            if (kind == EV_NEW || kind == EV_OLD) {
+                Series *s = find_series(c, id);
+                if (!s) continue;
+                const uint64_t t_load = last_load[c][s->base / 4];
+                const uint64_t age = t_load > arg ? t_load - arg : 0;
+                s->age.add(age);
+                s->import_cycles.add(cyc);
+                const uint64_t k = std::min<uint64_t>(cycle / bucket_len, n_buckets - 1);
+                s->bucket_max[k] = std::max(s->bucket_max[k], age);
+                if (kind == EV_NEW) {
+                    ++s->news;
+                    if (crash_phase == 3 && crash_prod && s->ch == crash_prod->ch) ++s->news_after_crash;
+                } else {
+                    ++s->olds;
+                }
+            } else if (kind == EV_BEGIN && crash_phase == 1 && c == o.crash_board && cycle >= o.crash_at &&
+                       id == uint32_t(crash_prod->ch->id)) {
+                crash_phase = 2;
+                crash_words = 0;
+                crash_need = std::max<uint32_t>(1, crash_prod->ch->words / 2);
+                crash_seq = arg;
+            } else if (kind == EV_EXPORT) {
+                auto it = producers.find(int(id));
+                if (it != producers.end() && it->second.ch->src_board == c) {
+                    ++it->second.exports;
+                    it->second.export_cycles.add(cyc);
+                }
+            } else if (kind == EV_STALE) {
+                if (!stale_events++) first_stale = cycle;
+                if (crash_phase != 3) ++stale_before_crash;
+            } else if (kind == EV_FRESH) {
+                ++fresh_events;
+            } else if (kind == EV_STATUS) {
+                ++status_reads;
+                status_retries = arg;
+                status_abandoned = cyc;
+            }
+        }
+        if (cycle >= next_progress) {
+            uint64_t worst_pm = 0;  // worst age / bound so far, per mille (copy channels: latency only)
+            for (const Series &s : series)
+                if (s.age.n) {
+                    const uint64_t b = s.ch->copy() ? s.ch->latency_retry + producers[s.ch->id].max_gap : s.ch->latency_retry;
+                    worst_pm = std::max(worst_pm, b ? 1000 * s.age.max / b : 0);
+                }
+            std::printf("  [%3llu%%] cycle %9llu  exports", (unsigned long long)(100 * cycle / o.cycles),
+                        (unsigned long long)cycle);
+            for (auto &p : producers) std::printf(" %s %llu", p.second.ch->name.c_str(), (unsigned long long)p.second.exports);
+            std::printf("  faults %llu  worst age/bound %.2f\n", (unsigned long long)faults, worst_pm / 1000.0);
+            std::fflush(stdout);
+            next_progress += o.cycles / o.progress;
+        }
+    }
+#if VM_TRACE
+    if (vcd && vcd->isOpen()) vcd->close();
+#endif
+
+    // ---- bounds and checks ----
+    for (Series &s : series) {
+        const PlanChannel &c = *s.ch;
+        s.bound = c.copy() ? c.latency_retry + producers[c.id].max_gap : c.latency_retry;
+        const double limit = o.age_scale * double(s.bound);
+        // ages of a crashed producer's channel grow without bound: not checked
+        if (!(crash_prod && crash_prod->ch == &c))
+            for (uint64_t v : s.bucket_max) if (double(v) > limit) ++s.over_bound;
+    }
+    std::map<std::string, std::string> failed;  // check -> first failure
+    auto fail = [&](const char *check, const std::string &msg) { if (!failed.count(check)) failed[check] = msg; };
+    char b[512];
+    const uint32_t done = m->done_o & all;
+    uint32_t code[NB];
+    for (int c = 0; c < NB; ++c) code[c] = m->code_o[c];
+    for (int c = 0; c < NB; ++c)
+        if (((done >> c) & 1u) && code[c] != 0) {
+            std::snprintf(b, sizeof b, "expected %s exit code 0, got 0x%x (%s)", plan.board_names[c].c_str(), code[c],
+                          code_text(code[c], plan).c_str());
+            fail("cpu", b);
+        }
+    for (int c = 0; c < NB; ++c) {
+        if ((m->trap_o >> c) & 1u) fail("liveness", "expected no trap, got a trap on " + plan.board_names[c]);
+        if ((m->bus_err_o >> c) & 1u) fail("liveness", "expected no unmapped access, got one from " + plan.board_names[c]);
+    }
+    if (m->error_o) {
+        std::snprintf(b, sizeof b, "expected no controller error, got error_o with %u rom errors", m->rom_errors_o);
+        fail("liveness", b);
+    }
+    const bool crash_run = o.crash_board >= 0;
+    bool cpu_failed = false;  // a board stopped by its own check starves its consumers: left to cpu
+    for (int c = 0; c < NB; ++c) cpu_failed = cpu_failed || (((done >> c) & 1u) && code[c] != 0);
+    for (int c = 0; c < NB && !cpu_failed; ++c) {
+        if (crash_run && c == o.crash_board) continue;
+        if (!crash_run && !((done >> c) & 1u)) {
+            std::snprintf(b, sizeof b, "expected %s to report done (its quotas met) within %llu cycles, it did not",
+                          plan.board_names[c].c_str(), (unsigned long long)o.cycles);
+            fail("liveness", b);
+        }
+        if (crash_run && last_event[c] + o.cycles / 4 < cycle) {
+            std::snprintf(b, sizeof b, "expected %s to keep calling the driver after the crash, its last event was "
+                          "at cycle %llu of %llu", plan.board_names[c].c_str(), (unsigned long long)last_event[c],
+                          (unsigned long long)cycle);
+            fail("liveness", b);
+        }
+    }
+    // A crashed producer's channel is skipped; a stopped core's channels age too (left to cpu).
+    const bool fault_free = o.fault_rate == 0 && o.hang_board < 0 && !cpu_failed;
+    if (fault_free)
+        for (const Series &s : series)
+            if (s.over_bound) {
+                std::snprintf(b, sizeof b, "expected every age of %s at %s <= %.0f clocks, got %llu over it (worst %llu)",
+                              s.ch->name.c_str(), plan.board_names[s.board].c_str(), o.age_scale * double(s.bound),
+                              (unsigned long long)s.over_bound, (unsigned long long)s.age.max);
+                fail("age", b);
+            }
+    if (crash_run) {
+        if (crash_phase != 3) {
+            std::snprintf(b, sizeof b, "expected %s to crash inside an Export after cycle %llu, it never did "
+                          "(no Export began)", plan.board_names[o.crash_board].c_str(), (unsigned long long)o.crash_at);
+            fail("liveness", b);
+        }
+
+    }
+    const bool radar_crash = crash_run && crash_phase == 3 && crash_prod->ch->name == "RadarMap";
+    if (radar_crash && stale_events == 0 && !cpu_failed)
+        fail("staleness", "expected navigation to report RadarMap stale after the radar crashed, it never did");
+    if (stale_before_crash && faults == 0) {
+        std::snprintf(b, sizeof b, "expected no stale RadarMap %s, navigation reported it %llu times",
+                      crash_run ? "before the crash" : "without a crash", (unsigned long long)stale_before_crash);
+        fail("staleness", b);
+    }
+    if (faults && status_retries == 0) {
+        std::snprintf(b, sizeof b, "expected STATUS to count retries after %llu injected faults, navigation read "
+                      "%llu STATUS values with 0 retries", (unsigned long long)faults, (unsigned long long)status_reads);
+        fail("faults", b);
+    }
+
+    // ---- report ----
+    std::printf("\n%s: %llu cycles (%.2f ms at 50 MHz), controller time %u, bus busy %.1f %%, "
+                "%llu requests, %llu faults injected, STATUS: %u retries, %u abandoned\n",
+                o.label.c_str(), (unsigned long long)cycle, double(cycle) / 50000.0, m->time_o,
+                cycle ? 100.0 * double(busy) / double(cycle) : 0.0, (unsigned long long)requests,
+                (unsigned long long)faults, status_retries, status_abandoned);
+    std::printf("  %-11s %-11s %7s %7s %9s %9s %9s %9s %6s %11s\n", "channel", "consumer", "New", "Old",
+                "age min", "age mean", "age max", "bound", "ratio", "cyc/Import");
+    JsonReport r;
+    r.str("label", o.label).num("seed", double(o.seed)).num("cycles", double(cycle))
+     .num("fault_rate", o.fault_rate).num("faults_injected", double(faults)).num("requests", double(requests))
+     .num("status_retries", status_retries).num("status_abandoned", status_abandoned)
+     .num("bus_busy_fraction", cycle ? double(busy) / double(cycle) : 0.0)
+     .str("crash_board", crash_run ? plan.board_names[o.crash_board] : "").num("crash_cycle", double(crash_cycle))
+     .num("stale_events", double(stale_events)).num("first_stale_cycle", double(first_stale))
+     .num("fresh_events", double(fresh_events));
+    std::string js = "[";
+    for (const Series &s : series) {
+        std::printf("  %-11s %-11s %7llu %7llu %9llu %9.0f %9llu %9llu %6.3f %11.0f\n", s.ch->name.c_str(),
+                    plan.board_names[s.board].c_str(), (unsigned long long)s.news, (unsigned long long)s.olds,
+                    (unsigned long long)s.age.min, s.age.mean(), (unsigned long long)s.age.max,
+                    (unsigned long long)s.bound, s.bound ? double(s.age.max) / double(s.bound) : 0.0,
+                    s.import_cycles.mean());
+        JsonReport e;
+        e.str("channel", s.ch->name).str("kind", s.ch->kind).str("consumer", plan.board_names[s.board])
+         .num("new", double(s.news)).num("old", double(s.olds)).num("bound", double(s.bound))
+         .num("latency_bound", double(s.ch->latency_retry)).num("period", double(s.ch->period))
+         .num("over_bound_buckets", double(s.over_bound)).num("new_after_crash", double(s.news_after_crash)).raw("age", s.age.json())
+         .raw("import_cycles", s.import_cycles.json());
+        std::string t = e.text();
+        js += (js.size() > 1 ? ",\n  " : "\n  ") + t.substr(0, t.size() - 1);
+    }
+    r.raw("series", js + "]");
+    js = "[";
+    std::printf("  %-11s %-11s %7s %9s %9s %13s\n", "channel", "producer", "Exports", "cyc mean", "cyc max",
+                "max gap (clk)");
+    for (auto &pp : producers) {
+        const Producer &p = pp.second;
+        std::printf("  %-11s %-11s %7llu %9.0f %9llu %13llu\n", p.ch->name.c_str(),
+                    plan.board_names[p.ch->src_board].c_str(), (unsigned long long)p.exports, p.export_cycles.mean(),
+                    (unsigned long long)p.export_cycles.max, (unsigned long long)p.max_gap);
+        JsonReport e;
+        e.str("channel", p.ch->name).str("producer", plan.board_names[p.ch->src_board])
+         .num("exports", double(p.exports)).num("actual_stores", double(p.stores)).num("max_gap", double(p.max_gap))
+         .raw("export_cycles", p.export_cycles.json());
+        std::string t = e.text();
+        js += (js.size() > 1 ? ",\n  " : "\n  ") + t.substr(0, t.size() - 1);
+    }
+    r.raw("producers", js + "]");
+    for (int c = 0; c < NB; ++c) {
+        std::printf("  board %d %-10s %s%s, exit code 0x%x (%s), %llu events\n", c, plan.board_names[c].c_str(),
+                    (done >> c & 1u) ? "done at cycle " : "not done", (done >> c & 1u) ? std::to_string(done_at[c]).c_str() : "",
+                    code[c], code_text(code[c], plan).c_str(), (unsigned long long)events[c]);
+        r.num((plan.board_names[c] + "_done_cycle").c_str(), double(done_at[c]))
+         .num((plan.board_names[c] + "_code").c_str(), code[c]);
+    }
+    if (crash_run) {
+        uint64_t after = 0;
+        for (const Series &s : series) after += s.news_after_crash;
+        std::printf("  crash: %s at cycle %llu; its consumers imported %llu New values after it (completed before "
+                    "it); navigation reported RadarMap stale %llu times, first at cycle %llu (%lld clocks after the "
+                    "crash)\n", plan.board_names[o.crash_board].c_str(), (unsigned long long)crash_cycle,
+                    (unsigned long long)after, (unsigned long long)stale_events, (unsigned long long)first_stale,
+                    stale_events ? (long long)first_stale - (long long)crash_cycle : 0ll);
+    }
+
+    if (!o.ages.empty()) {  // the picture's data: worst age per bucket and series
+        FILE *f = std::fopen(o.ages.c_str(), "w");
+        if (!f) { std::fprintf(stderr, "cannot write %s\n", o.ages.c_str()); return 1; }
+        std::fprintf(f, "# mobot_sim ages: bucket_start_cycle, then per series the worst age in the bucket "
+                        "(clocks; empty: no Import)\n# crash_cycle %llu first_stale %llu\ncycle", (unsigned long long)crash_cycle,
+                     (unsigned long long)first_stale);
+        for (const Series &s : series)
+            std::fprintf(f, ",%s@%s(bound=%llu)", s.ch->name.c_str(), plan.board_names[s.board].c_str(),
+                         (unsigned long long)s.bound);
+        std::fprintf(f, "\n");
+        const uint64_t used = std::min<uint64_t>(n_buckets, (cycle + bucket_len - 1) / bucket_len);
+        for (uint64_t k = 0; k < used; ++k) {
+            std::fprintf(f, "%llu", (unsigned long long)(k * bucket_len));
+            for (const Series &s : series) {
+                if (s.bucket_max[k]) std::fprintf(f, ",%llu", (unsigned long long)s.bucket_max[k]);
+                else std::fprintf(f, ",");
+            }
+            std::fprintf(f, "\n");
+        }
+        std::fclose(f);
+    }
+
+    std::string verdict = "pass", last;
+    std::vector<std::string> lines;
+    if (o.expect.empty()) {
+        for (auto &f : failed) lines.push_back(f.first + ": " + f.second);
+        if (!failed.empty()) verdict = "fail";
+        last = lines.empty() ? "pass" : "FAIL: " + lines.front();
+    } else {
+        std::string caught_by;
+        for (const std::string &e : expect) {
+            if (failed.count(e)) caught_by += (caught_by.empty() ? "" : "; ") + e + ": " + failed[e];
+            else lines.push_back("negative test: expected the fault to be caught by " + e + ", it was not");
+        }
+        for (auto &f : failed)
+            if (std::find(expect.begin(), expect.end(), f.first) == expect.end())
+                lines.push_back("also failed, unexpectedly: " + f.first + ": " + f.second);
+        verdict = lines.empty() ? "pass" : "fail";
+        last = verdict == "pass" ? "pass: negative test: caught as expected by " + caught_by : "FAIL: " + lines.back();
+    }
+    std::string checks = "{";
+    for (const char *c : kChecks)
+        checks += std::string(checks.size() > 1 ? ", " : "") + "\"" + c + "\": \"" + (failed.count(c) ? "fail" : "pass") + "\"";
+    r.raw("checks", checks + "}").str("expect_caught_by", o.expect).str("verdict", verdict);
+    if (!o.report.empty() && !r.write(o.report)) return 1;
+    for (const std::string &l : lines) std::printf("  %s\n", l.c_str());
+    std::printf("%s: %s\n", o.label.c_str(), last.c_str());
+    return verdict == "pass" ? 0 : 1;
+}
