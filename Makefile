@@ -61,8 +61,10 @@ test: ## build and run every test; ends with "N passed, N failed"
 
 bench: $(BENCHES) ## run the benchmarks, figures to build/reports/
 
-figures: ## regenerate README.md's figure tables from build/reports/*.json
+figures: ## regenerate README.md's figure tables from build/reports/*.json (and the termination picture)
 	@$(PYTHON) tools/figures.py README.md
+	@if [ -f $(REPORTS)/tb_random.json ]; then $(PYTHON) sim/plot_termination.py $(REPORTS)/tb_random.json \
+	    $(REPORTS)/termination.svg && echo "figures: $(REPORTS)/termination.svg"; fi
 
 clean: ## remove build/
 	rm -rf $(BUILD)

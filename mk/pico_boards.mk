@@ -29,13 +29,14 @@ PB_VFLAGS   := -Wall --timescale 1ns/1ps -y rtl -y tb/rtl --top-module pico_boar
 PB_SRC      := sim/mobot_sim.cpp tb/system/plan.cpp
 PB_HDR      := tb/report.h tb/system/plan.h
 
-# $(1) = board: firmware/mobot_<board>.c + generated <board>.c + the driver.
+# $(1) = board: firmware/mobot_<board>.c + the generated <board>.c of the
+# schedule build/schedule/<sched>/ + the driver -> $(PB_DIR)/<sched>/fw/.
 define pb_fw
-$(PB_DIR)/fw/$(1).elf: firmware/mobot_$(1).c firmware/mobot_check.h $(PB_SCHED)/rom.hex $(FW_DEPS)
+$(PB_DIR)/%/fw/$(1).elf: firmware/mobot_$(1).c firmware/mobot_check.h $(BUILD)/schedule/%/rom.hex $(FW_DEPS)
 	@$$(DRV_RV_NEED)
 	@mkdir -p $$(@D)
-	$(DRV_RV_CC) $(FW_CFLAGS) -I$(PB_SCHED) -Icompiler/examples -o $$@ firmware/crt0.S \
-	    firmware/mobot_$(1).c $(PB_SCHED)/$(1).c c-driver/albatross.c $(FW_LDFLAGS)
+	$(DRV_RV_CC) $(FW_CFLAGS) -I$(BUILD)/schedule/$$* -Icompiler/examples -o $$@ firmware/crt0.S \
+	    firmware/mobot_$(1).c $(BUILD)/schedule/$$*/$(1).c c-driver/albatross.c $(FW_LDFLAGS)
 endef
 $(foreach b,$(PB_BOARDS),$(eval $(call pb_fw,$(b))))
 
@@ -56,13 +57,15 @@ $(eval $(call pb_model,obj,))
 $(eval $(call pb_model,obj-trace,--trace))
 PB_BIN := $(PB_DIR)/obj/Vpico_boards
 
-# Firmware of every board; $(1) = radar image, $(2) = navigation image.
-pb_fw_args = +fw0=$(1) +fw1=$(PB_DIR)/fw/odometry.hex +fw2=$(2) +fw3=$(PB_DIR)/fw/motor.hex \
-             +ram0=$(PB_SCHED)/radar_ram.hex +ram1=$(PB_SCHED)/odometry_ram.hex \
-             +ram2=$(PB_SCHED)/navigation_ram.hex +ram3=$(PB_SCHED)/motor_ram.hex \
-             +rom=$(PB_SCHED)/rom.hex --plan $(PB_SCHED)/tb_plan.txt
-PB_FW     := $(foreach b,$(PB_BOARDS),$(PB_DIR)/fw/$(b).hex)
-PB_FW_ARGS = $(call pb_fw_args,$(PB_DIR)/fw/radar.hex,$(PB_DIR)/fw/navigation.hex)
+# Arguments of a run: $(1) = schedule dir, $(2) = firmware dir, $(3) = radar
+# image, $(4) = navigation image.
+pb_args = +fw0=$(3) +fw1=$(2)/odometry.hex +fw2=$(4) +fw3=$(2)/motor.hex \
+          +ram0=$(1)/radar_ram.hex +ram1=$(1)/odometry_ram.hex +ram2=$(1)/navigation_ram.hex \
+          +ram3=$(1)/motor_ram.hex +rom=$(1)/rom.hex --plan $(1)/tb_plan.txt
+PB_FWDIR  := $(PB_DIR)/mobot3/fw
+PB_FW     := $(foreach b,$(PB_BOARDS),$(PB_FWDIR)/$(b).hex)
+pb_fw_args = $(call pb_args,$(PB_SCHED),$(PB_FWDIR),$(1),$(2))
+PB_FW_ARGS = $(call pb_fw_args,$(PB_FWDIR)/radar.hex,$(PB_FWDIR)/navigation.hex)
 
 # Scenario tests: NAME:OPTIONS (commas for spaces).
 PB_SCENARIOS := \
@@ -114,7 +117,7 @@ PB_NEGATIVE := \
   nav_wrong_status:faults:fw:nav_wrong_status:--fault-rate,0.05 \
   age:age:fw:fw:--age-scale,0.5 \
   hang:liveness:fw:fw:--hang,motor@200000
-pb_img = $(if $(filter fw,$(1)),$(PB_DIR)/fw/$(2).hex,$(PB_DIR)/mutant/$(1)/$(2).hex)
+pb_img = $(if $(filter fw,$(1)),$(PB_FWDIR)/$(2).hex,$(PB_DIR)/mutant/$(1)/$(2).hex)
 define pb_negative
 TESTS += pico-boards-negative-$(call neg_field,$(1),1)
 .PHONY: test-pico-boards-negative-$(call neg_field,$(1),1)

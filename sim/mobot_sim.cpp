@@ -288,7 +288,10 @@ int main(int argc, char **argv)
 #endif
         m->clk_i = 0; m->eval();
 #if VM_TRACE
-        if (vcd && vcd->isOpen()) vcd->dump(2 * cycle + 1);
+        if (vcd && vcd->isOpen()) {
+            vcd->dump(2 * cycle + 1);
+            if (cycle + 1 >= o.trace_from + o.trace_cycles) vcd->close();  // the window is over
+        }
 #endif
         ++cycle;
         // next clock's fault kind
@@ -404,9 +407,9 @@ int main(int argc, char **argv)
             }
         }
         if (cycle >= next_progress) {
-            uint64_t worst_pm = 0;  // worst age / bound so far, per mille (copy channels: latency only)
+            uint64_t worst_pm = 0;  // worst age / bound so far, per mille (not the crashed producer's channel)
             for (const Series &s : series)
-                if (s.age.n) {
+                if (s.age.n && !(crash_prod && crash_prod->ch == s.ch)) {
                     const uint64_t b = s.ch->copy() ? s.ch->latency_retry + producers[s.ch->id].max_gap : s.ch->latency_retry;
                     worst_pm = std::max(worst_pm, b ? 1000 * s.age.max / b : 0);
                 }
@@ -501,15 +504,15 @@ int main(int argc, char **argv)
     }
 
     // ---- report ----
-    std::printf("\n%s: %llu cycles (%.2f ms at 50 MHz), controller time %u, bus busy %.1f %%, "
+    std::printf("\n%s: %llu cycles (%.2f ms at %.0f MHz), controller time %u, bus busy %.1f %%, "
                 "%llu requests, %llu faults injected, STATUS: %u retries, %u abandoned\n",
-                o.label.c_str(), (unsigned long long)cycle, double(cycle) / 50000.0, m->time_o,
+                o.label.c_str(), (unsigned long long)cycle, 1e3 * double(cycle) / plan.clock_hz, plan.clock_hz / 1e6, m->time_o,
                 cycle ? 100.0 * double(busy) / double(cycle) : 0.0, (unsigned long long)requests,
                 (unsigned long long)faults, status_retries, status_abandoned);
     std::printf("  %-11s %-11s %7s %7s %9s %9s %9s %9s %6s %11s\n", "channel", "consumer", "New", "Old",
                 "age min", "age mean", "age max", "bound", "ratio", "cyc/Import");
     JsonReport r;
-    r.str("label", o.label).num("seed", double(o.seed)).num("cycles", double(cycle))
+    r.str("label", o.label).num("seed", double(o.seed)).num("cycles", double(cycle)).num("clock_hz", plan.clock_hz)
      .num("fault_rate", o.fault_rate).num("faults_injected", double(faults)).num("requests", double(requests))
      .num("status_retries", status_retries).num("status_abandoned", status_abandoned)
      .num("bus_busy_fraction", cycle ? double(busy) / double(cycle) : 0.0)

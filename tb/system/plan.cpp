@@ -26,6 +26,8 @@ bool Plan::load(const std::string &path, std::string &error)
                  (mode == "rigid" || mode == "sync");
             sync_mode = mode == "sync";
             have_system = ok;
+        } else if (what == "clock") {
+            ok = static_cast<bool>(s >> clock_hz) && clock_hz > 0;
         } else if (what == "board") {
             int index = -1;
             std::string name;

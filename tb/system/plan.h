@@ -4,6 +4,7 @@
 // report.json (one line per fact, so the C++ side needs no JSON parser):
 //
 //   system <boards> <cycle_clocks> <rigid|sync> <n_chan> <ram_bytes>
+//   clock <hz>                                the controller's clock
 //   board <index> <name>                      (in index order)
 //   channel <id> <name> <copy|time|status> <size> <words> <src_board> <src_base>
 //           <period> <latency> <latency_with_retries> <sync> <slots>
@@ -42,6 +43,7 @@ struct Plan {
     uint64_t cycle = 0;
     bool sync_mode = false;
     uint32_t ram_bytes = 0;
+    double clock_hz = 50e6;                // controller clock (from the description)
     std::vector<std::string> board_names;  // by index
     std::vector<PlanChannel> channels;
 

@@ -20,6 +20,7 @@ def main():
     mode = "sync" if r["mode"] == "position-synchronised" else "rigid"
     out = [f"# from {sys.argv[1]}",
            f"system {len(r['boards'])} {r['cycle']['clocks']} {mode} {r['bus']['n_chan']} {ram[0]}"]
+    out.append(f"clock {r['clock_hz']}")
     out += [f"board {b['index']} {b['name']}" for b in sorted(r["boards"], key=lambda b: b["index"])]
     for c in r["channels"]:
         bound = c["latency"] if c["kind"] == "copy" else c["age_bound"]
