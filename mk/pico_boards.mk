@@ -16,8 +16,9 @@
 # Reuses PICO_RV32_V, PICO_NEED, FW_CFLAGS, FW_LDFLAGS, FW_DEPS of mk/pico.mk
 # (included before this file: mk/*.mk are read in sorted order).
 # pico_boards.v needs picorv32.v from PyPI: it is kept out of make lint and
-# linted (Verilator -Wall, Icarus, Yosys) by test-pico-boards-lint.
-TB_RTL := $(filter-out tb/rtl/pico_boards.v,$(TB_RTL))
+# linted (Verilator -Wall, Icarus, Yosys) by test-pico-boards-lint, with
+# its Icarus bench tb/rtl/pico_boards_tb.v (make bench-sim-speed, mk/sim.mk).
+TB_RTL := $(filter-out tb/rtl/pico_boards.v tb/rtl/pico_boards_tb.v,$(TB_RTL))
 
 PB_DIR      := $(BUILD)/pico_boards
 PB_SCHED    := $(BUILD)/schedule/mobot3
@@ -137,5 +138,7 @@ test-pico-boards-lint:
 	$(PICO_NEED)
 	@tools/run_test.sh pico-boards-lint bash -c 'verilator --lint-only $(PB_VFLAGS) $(PICO_RV32_V) tb/rtl/pico_boards.v && \
 	    iverilog -g2005 -y rtl -y tb/rtl -s pico_boards -o /dev/null $(PICO_RV32_V) tb/rtl/pico_boards.v && \
+	    verilator --lint-only --timing $(subst pico_boards,pico_boards_tb,$(PB_VFLAGS)) $(PICO_RV32_V) tb/rtl/pico_boards_tb.v && \
+	    iverilog -g2005 -y rtl -y tb/rtl -s pico_boards_tb -o /dev/null $(PICO_RV32_V) tb/rtl/pico_boards_tb.v && \
 	    yosys -q -p "read_verilog $(PICO_RV32_V) $(PB_RTL); hierarchy -check -top pico_boards; proc" && \
-	    echo "lint ok  tb/rtl/pico_boards.v"'
+	    echo "lint ok  tb/rtl/pico_boards.v tb/rtl/pico_boards_tb.v"'

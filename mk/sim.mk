@@ -44,3 +44,16 @@ sim: $(SIM_BIN) $(foreach b,$(PB_BOARDS),$(SIM_FWDIR)/$(b).hex) $(SIM_SCHED)/tb_
 	    $(if $(filter 1,$(TRACE)),--trace $(SIM_DIR)/mobot.vcd --trace-from $(TRACE_FROM) --trace-cycles $(TRACE_CYCLES))
 	@$(PYTHON) sim/plot_ages.py $(SIM_DIR)/ages.csv $(REPORTS)/sim.json $(SIM_DIR)/ages.svg
 	@echo "sim: report $(REPORTS)/sim.json, picture $(SIM_DIR)/ages.svg$(if $(filter 1,$(TRACE)), wave $(SIM_DIR)/mobot.vcd)"
+
+# Whole-system simulation speed, Verilator against Icarus Verilog (one run each).
+SIM_ICARUS  := $(PB_DIR)/icarus/pico_boards_tb.vvp
+$(SIM_ICARUS): $(PB_RTL) tb/rtl/pico_boards_tb.v $(PICO_RV32_V)
+	$(PICO_NEED)
+	@mkdir -p $(@D)
+	iverilog -g2005 -y rtl -y tb/rtl -s pico_boards_tb -o $@ $(PICO_RV32_V) tb/rtl/pico_boards_tb.v
+BENCHES += bench-sim-speed
+.PHONY: bench-sim-speed
+bench-sim-speed: $(PB_BIN) $(SIM_ICARUS) $(PB_FW) $(PB_SCHED)/tb_plan.txt
+	$(PYTHON) sim/bench_speed.py --report $(REPORTS)/sim_speed.json \
+	    --verilator-cycles 2000000 --verilator "$(PB_BIN) $(PB_FW_ARGS) --cycles 2000000 --progress 0 --label bench" \
+	    --icarus-cycles 40000 --icarus "vvp -n $(SIM_ICARUS) $(filter +%,$(PB_FW_ARGS)) +cycles=40000"
