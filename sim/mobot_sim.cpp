@@ -173,6 +173,7 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a[0] == '+') continue;  // plusargs: the RTL reads them
+        if (a == "--help" || a == "-h") { usage("the whole-system simulation (sim/mobot_sim.cpp)"); return 0; }
         if (i + 1 >= argc) return usage((a + " needs a value").c_str());
         const char *v = argv[++i];
         uint64_t n = 0;

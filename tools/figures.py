@@ -233,7 +233,58 @@ def pico_cost():
     return out
 
 
-SECTIONS = {"system-latency": system_latency, "system-delivery": system_delivery, "system-bus": system_bus,"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
+def robot():
+    r = load("pico_boards.json")
+    if not r:
+        return missing("pico_boards.json", "make test-pico-boards")
+    rows = []
+    for e in r["series"]:
+        a = e["age"]
+        rows.append([e["channel"], e["consumer"], n(e["new"]), n(a["min"]), n(a["mean"]), n(a["max"]),
+                     n(e["bound"]), f"{a['max'] / e['bound']:.3f}" if e["bound"] else "-",
+                     n(e["import_cycles"]["mean"])])
+    out = table(["channel", "consumer", "New", "age min", "age mean", "age max", "bound", "max / bound",
+                 "cycles per Import"], rows)
+    rows = [[p["channel"], p["producer"], n(p["exports"]), n(p["export_cycles"]["mean"]),
+             n(p["export_cycles"]["max"]), n(p["max_gap"])] for p in r["producers"]]
+    out += "\n\n" + table(["channel", "producer", "Exports", "cycles per Export (mean)", "(max)",
+                           "longest gap between Actual stores"], rows)
+    return out + (f"\n\nAges, bounds and gaps in controller clocks (50 MHz); {n(r['cycles'])} cycles, "
+                  f"seed {r['seed']}, cores stalled in random bursts (`{REPORTS}/pico_boards.json`).")
+
+
+def robot_scenarios():
+    rows = []
+    for name, what in (("pico_boards", "fault-free"), ("pico_boards_faults", "bus faults"),
+                       ("pico_boards_crash", "radar crashes inside an Export"),
+                       ("serv_boards", "motor board on SERV")):
+        r = load(name + ".json")
+        if not r:
+            rows.append([what, missing(name + ".json", "make test")] + [""] * 5)
+            continue
+        worst = max((e["age"]["max"] / e["bound"] for e in r["series"]
+                     if e["bound"] and not (r.get("crash_board") and e["channel"] == "RadarMap")), default=0)
+        stale = (f"after {n(r['first_stale_cycle'] - r['crash_cycle'])} clocks" if r.get("crash_board")
+                 and r["stale_events"] else n(r["stale_events"]))
+        rows.append([what, f"{r['fault_rate']:.2f}", f"{n(r['faults_injected'])} / {n(r['requests'])}",
+                     f"{n(r['status_retries'])} / {n(r['status_abandoned'])}", f"{worst:.3f}", stale,
+                     r["verdict"]])
+    return table(["scenario", "fault rate", "faults / requests", "STATUS retries / abandoned",
+                  "worst age / bound (live producers)", "RadarMap stale reported", "verdict"], rows)
+
+
+def sim_speed():
+    r = load("sim_speed.json")
+    if not r:
+        return missing("sim_speed.json", "make bench-sim-speed")
+    return table(["simulator", "cycles run", "wall time (s)", "cycles per second"],
+                 [["Verilator 5 (harness with every check)", n(r["verilator_cycles"]), r["verilator_wall_s"],
+                   n(r["verilator_cycles_per_s"])],
+                  ["Icarus Verilog 11", n(r["icarus_cycles"]), r["icarus_wall_s"], n(r["icarus_cycles_per_s"])],
+                  ["Verilator / Icarus", "", "", f"{r['verilator_over_icarus']:.0f}"]])
+
+
+SECTIONS = {"robot": robot, "robot-scenarios": robot_scenarios, "sim-speed": sim_speed, "system-latency": system_latency, "system-delivery": system_delivery, "system-bus": system_bus,"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
             "driver-size": driver_size, "bench": bench, "cdc": cdc, "synth": synth,
             "pico-cost": pico_cost}
 
