@@ -70,8 +70,8 @@ PB_FW_ARGS = $(call pb_fw_args,$(PB_FWDIR)/radar.hex,$(PB_FWDIR)/navigation.hex)
 
 # Scenario tests: NAME:OPTIONS (commas for spaces).
 PB_SCENARIOS := \
-  pico-boards:--stall,2048 \
-  pico-boards-faults:--stall,2048,--fault-rate,0.05 \
+  pico-boards:--stall,2048,--require-done \
+  pico-boards-faults:--stall,2048,--fault-rate,0.05,--require-done \
   pico-boards-crash:--stall,2048,--crash,radar@200000
 define pb_scenario
 TESTS += $(call neg_field,$(1),1)
@@ -126,7 +126,7 @@ test-pico-boards-negative-$(call neg_field,$(1),1): $(PB_BIN) $(PB_FW) $(PB_SCHE
         $(call pb_img,$(call neg_field,$(1),3),radar) $(call pb_img,$(call neg_field,$(1),4),navigation)
 	@tools/run_test.sh pico-boards-negative-$(call neg_field,$(1),1) $(PB_BIN) \
 	    $(call pb_fw_args,$(call pb_img,$(call neg_field,$(1),3),radar),$(call pb_img,$(call neg_field,$(1),4),navigation)) \
-	    --cycles $(PB_CYCLES) --seed $(SEED) --stall 2048 --label pico-boards-negative-$(call neg_field,$(1),1) \
+	    --cycles $(PB_CYCLES) --seed $(SEED) --stall 2048 --require-done --label pico-boards-negative-$(call neg_field,$(1),1) \
 	    --expect-caught-by $(call neg_field,$(1),2) $(subst $(comma), ,$(call neg_field,$(1),5)) \
 	    --report $(REPORTS)/pico_boards_negative_$(call neg_field,$(1),1).json
 endef

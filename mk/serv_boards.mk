@@ -28,4 +28,4 @@ TESTS += serv-boards
 .PHONY: test-serv-boards
 test-serv-boards: $(SB_BIN) $(PB_FW) $(PB_DIR)/mobot3/fw-serv/motor.hex $(PB_SCHED)/tb_plan.txt
 	@tools/run_test.sh serv-boards $(SB_BIN) $(subst $(PB_FWDIR)/motor.hex,$(PB_DIR)/mobot3/fw-serv/motor.hex,$(PB_FW_ARGS)) \
-	    --cycles $(PB_CYCLES) --seed $(SEED) --stall 2048 --label serv-boards --report $(REPORTS)/serv_boards.json
+	    --cycles $(PB_CYCLES) --seed $(SEED) --stall 2048 --require-done --label serv-boards --report $(REPORTS)/serv_boards.json

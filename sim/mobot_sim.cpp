@@ -10,7 +10,7 @@
 //             [--crash BOARD@CYCLE] [--hang BOARD@CYCLE]
 //             [--trace FILE.vcd [--trace-from N] [--trace-cycles N]]
 //             [--report FILE] [--ages FILE.csv] [--label NAME] [--progress K]
-//             [--age-scale X] [--expect-caught-by CHECK]
+//             [--age-scale X] [--require-done] [--expect-caught-by CHECK]
 //
 // The cores report every Import and Export as board events (EVENT/ARG,
 // firmware/mobot_check.h).  The harness watches every core's DPRAM port: it
@@ -39,8 +39,9 @@
 //   cpu        every core's own verdict (TOHOST exit code, mobot_check.h):
 //              checksums, sequence order, New exactly once
 //   liveness   no trap, no unmapped access, no controller error; every
-//              board reported done (all quotas met), or, in a crash run,
-//              every live board kept calling the driver until the end
+//              live board kept calling the driver into the last quarter of
+//              the run, and with --require-done (no crash) every board
+//              reported done (its quotas met, firmware/mobot_check.h)
 //              (not judged once a core failed its own check: that board
 //              stopped and starves its consumers; cpu reports it)
 //   age        runs without faults (and no core failed its check): every age <= bound, where the bound of a copy
@@ -82,6 +83,7 @@ struct Options {
     uint64_t cycles = 2000000, seed = 1, stall = 0, trace_from = 0, trace_cycles = 20000, progress = 10;
     double fault_rate = 0, age_scale = 1;
     int crash_board = -1, hang_board = -1;
+    bool require_done = false;
     uint64_t crash_at = 0, hang_at = 0;
 };
 
@@ -143,7 +145,7 @@ int usage(const char *msg)
                  "usage: mobot_sim --plan tb_plan.txt +fw0..3=FILE +ram0..3=FILE +rom=FILE [--cycles N]\n"
                  "                 [--seed S] [--stall P] [--fault-rate R] [--crash BOARD@CYCLE] [--hang BOARD@CYCLE]\n"
                  "                 [--trace FILE.vcd [--trace-from N] [--trace-cycles N]] [--report FILE]\n"
-                 "                 [--ages FILE.csv] [--label NAME] [--progress K] [--age-scale X]\n"
+                 "                 [--ages FILE.csv] [--label NAME] [--progress K] [--age-scale X] [--require-done]\n"
                  "                 [--expect-caught-by cpu|liveness|age|staleness|faults]\n", msg);
     return 2;
 }
@@ -174,6 +176,7 @@ int main(int argc, char **argv)
         const std::string a = argv[i];
         if (a[0] == '+') continue;  // plusargs: the RTL reads them
         if (a == "--help" || a == "-h") { usage("the whole-system simulation (sim/mobot_sim.cpp)"); return 0; }
+        if (a == "--require-done") { o.require_done = true; continue; }
         if (i + 1 >= argc) return usage((a + " needs a value").c_str());
         const char *v = argv[++i];
         uint64_t n = 0;
@@ -460,13 +463,13 @@ int main(int argc, char **argv)
     for (int c = 0; c < NB; ++c) cpu_failed = cpu_failed || (((done >> c) & 1u) && code[c] != 0);
     for (int c = 0; c < NB && !cpu_failed; ++c) {
         if (crash_run && c == o.crash_board) continue;
-        if (!crash_run && !((done >> c) & 1u)) {
+        if (o.require_done && !crash_run && !((done >> c) & 1u)) {
             std::snprintf(b, sizeof b, "expected %s to report done (its quotas met) within %llu cycles, it did not",
                           plan.board_names[c].c_str(), (unsigned long long)o.cycles);
             fail("liveness", b);
         }
-        if (crash_run && last_event[c] + o.cycles / 4 < cycle) {
-            std::snprintf(b, sizeof b, "expected %s to keep calling the driver after the crash, its last event was "
+        if (last_event[c] + o.cycles / 4 < cycle) {
+            std::snprintf(b, sizeof b, "expected %s to keep calling the driver to the end, its last event was "
                           "at cycle %llu of %llu", plan.board_names[c].c_str(), (unsigned long long)last_event[c],
                           (unsigned long long)cycle);
             fail("liveness", b);
