@@ -9,7 +9,7 @@ PYTHON        ?= python3
 SUDO          := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # Debian packages and PyPI packages that `make deps` installs.
-APT_PACKAGES  := make g++ python3 verilator iverilog yosys \
+APT_PACKAGES  := make g++ python3 verilator iverilog yosys nextpnr-ice40 fpga-icestorm z3 spin \
                  gcc-riscv64-unknown-elf
 PIP_PACKAGES  := pythondata-cpu-picorv32 pythondata-cpu-serv
 
@@ -25,12 +25,14 @@ TB_RTL        := $(filter-out tb/rtl/pico_pair.v tb/rtl/pico_core.v,$(sort $(wil
 comma         := ,
 neg_field      = $(word $(2),$(subst :, ,$(1)))
 
-# Each fragment in mk/ adds its tests to TESTS (names) and rules test-<name>.
+# Each fragment in mk/ adds its tests to TESTS (names) and rules test-<name>;
+# the formal ones also to FORMAL_TESTS (make formal runs just those).
 TESTS         :=
 BENCHES       :=
+FORMAL_TESTS  :=
 include $(sort $(wildcard mk/*.mk))
 
-.PHONY: help deps lint test bench figures sim clean
+.PHONY: help deps lint test formal bench figures sim clean
 
 help: ## list the targets
 	@echo "ALBATROSS -- make targets:"
@@ -58,6 +60,11 @@ test: ## build and run every test; ends with "N passed, N failed"
 	@rm -rf $(BUILD)/results
 	@$(MAKE) -k --no-print-directory $(addprefix test-,$(TESTS)) || true
 	@tools/summary.sh $(TESTS)
+
+formal: ## the formal proofs and model checks alone (also part of make test)
+	@rm -rf $(BUILD)/results
+	@$(if $(FORMAL_TESTS),$(MAKE) -k --no-print-directory $(addprefix test-,$(FORMAL_TESTS)) || true)
+	@tools/summary.sh $(FORMAL_TESTS)
 
 bench: $(BENCHES) ## run the benchmarks, figures to build/reports/
 
