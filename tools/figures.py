@@ -284,9 +284,26 @@ def sim_speed():
                   ["Verilator / Icarus", "", "", f"{r['verilator_over_icarus']:.0f}"]])
 
 
+def formal_spin():
+    rows = []
+    for name in ["formal_spin.json"] + sorted(
+            f for f in (os.listdir(REPORTS) if os.path.isdir(REPORTS) else [])
+            if f.startswith("formal_spin_negative_") and f.endswith(".json")):
+        rep = load(name)
+        for c in (rep or {}).get("checks", []):
+            variant = f"`-D{rep['variant']}`" if rep.get("variant") else "protocol"
+            rows.append([variant, c["check"], c["result"],
+                         "yes" if c["ok"] else "**no**", n(c["states"]), n(c["depth"]),
+                         f"{c['seconds']:.2f}"])
+    if not rows:
+        return missing("formal_spin.json", "make formal")
+    return table(["model", "check", "result", "as expected", "states stored",
+                  "depth", "pan seconds"], rows)
+
+
 SECTIONS = {"robot": robot, "robot-scenarios": robot_scenarios, "sim-speed": sim_speed, "system-latency": system_latency, "system-delivery": system_delivery, "system-bus": system_bus,"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
             "driver-size": driver_size, "bench": bench, "cdc": cdc, "synth": synth,
-            "pico-cost": pico_cost}
+            "pico-cost": pico_cost, "formal-spin": formal_spin}
 
 
 def main():

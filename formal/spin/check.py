@@ -62,7 +62,7 @@ def build(out, name, defines, safety):
     rc, log = run(["spin"] + ["-D" + x for x in defines] + ["-a", "albatross.pml"], d)
     if rc != 0 or not os.path.exists(os.path.join(d, "pan.c")):
         raise SystemExit(f"spin -a failed for {name}:\n{log}")
-    cc = ["gcc", "-O2", "-w", "-o", "pan", "pan.c"]
+    cc = ["gcc", "-O1", "-w", "-o", "pan", "pan.c"]
     if safety:
         cc[1:1] = ["-DSAFETY", "-DNOCLAIM"]
     rc, log = run(cc, d)
