@@ -22,7 +22,8 @@
 `default_nettype none
 
 module albatross_dpram #(
-    parameter ADDR_WIDTH = 10  // word-address bits: 2**ADDR_WIDTH words of 32 bits
+    parameter ADDR_WIDTH = 10, // word-address bits: 2**ADDR_WIDTH words of 32 bits
+    parameter INIT_FILE  = ""  // $readmemh image loaded at configuration ("": none)
 ) (
     input  wire                  clk_i,
     input  wire                  rst_i,     // synchronous, active high
@@ -47,6 +48,7 @@ module albatross_dpram #(
 );
 
     reg [31:0] mem [0:(1<<ADDR_WIDTH)-1];
+    initial if (INIT_FILE != "") $readmemh(INIT_FILE, mem);  // block-RAM contents, no reset
     reg        slot_q;   // whose cycle this is: 0 = port A, 1 = port B
     reg        a_ack_q;
     reg        b_ack_q;

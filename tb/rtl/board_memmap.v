@@ -4,7 +4,8 @@
 //
 // Memory map (address bits 31:28 select the region; firmware/board.h):
 //   0x0xxx_xxxx  local RAM, RAM_WORDS words, performed at the edge after the
-//                request (one-cycle access), loaded from +fw<CORE>=FILE
+//                request (one-cycle access), loaded from FW_FILE (synthesis:
+//                block-RAM contents) or, in simulation, from +fw<CORE>=FILE
 //   0x1xxx_xxxx  DPRAM window: wb_* through a pico_wb_adapter
 //   0x2xxx_xxxx  board registers, one-cycle access, reads give 0:
 //                +0x00 TOHOST: a store sets done_o and code_o
@@ -23,7 +24,8 @@
 module board_memmap #(
     parameter CORE       = 0,     // index: the firmware plusarg is +fw<CORE>=FILE (0..3)
     parameter ADDR_WIDTH = 10,    // word-address bits of the DPRAM port
-    parameter RAM_WORDS  = 4096   // words of the local RAM (16 KiB)
+    parameter RAM_WORDS  = 4096,  // words of the local RAM (16 KiB)
+    parameter FW_FILE    = ""     // $readmemh program image at configuration ("": +fw<CORE>=FILE in simulation)
 ) (
     input  wire                  clk_i,
     input  wire                  rst_i,     // synchronous, active high
@@ -67,10 +69,15 @@ module board_memmap #(
     reg [31:0] ram_rdata_q;
     reg        ram_ready_q;
     wire [RAM_BITS-1:0] ram_idx = addr_i[RAM_BITS+1:2];
+    generate
+        if (FW_FILE != "") begin : g_fw
+            initial $readmemh(FW_FILE, ram);
+        end
+    endgenerate
 `ifndef SYNTHESIS  // simulation only: Yosys has no $value$plusargs
     reg [8*256-1:0] fw_file;
     integer         have_fw;
-    initial begin
+    initial if (FW_FILE == "") begin
         case (CORE)
             0:       have_fw = $value$plusargs("fw0=%s", fw_file);
             1:       have_fw = $value$plusargs("fw1=%s", fw_file);

@@ -5,13 +5,17 @@
 // accesses (instruction fetches included); DPRAM accesses are never held.
 // Reset (synchronous, active high) clears control state, never the RAM.
 // PicoRV32 comes from PyPI (pythondata-cpu-picorv32): rv32i, counters on,
-// no IRQ, no PCPI.
+// no IRQ, no PCPI; SMALL = 1 drops the counters (the firmware must not read
+// them) and the misalign/illegal-instruction traps, for FPGA tops whose
+// firmware needs neither.
 `default_nettype none
 
 module pico_core #(
     parameter CORE       = 0,     // index: the firmware plusarg is +fw<CORE>=FILE (0..3)
     parameter ADDR_WIDTH = 10,    // word-address bits of the DPRAM port
-    parameter RAM_WORDS  = 4096   // words of the local RAM (16 KiB)
+    parameter RAM_WORDS  = 4096,  // words of the local RAM (16 KiB)
+    parameter FW_FILE    = "",    // program image at configuration (board_memmap)
+    parameter SMALL      = 0      // 1: a smaller PicoRV32 (no counters, no misalign/illegal-instruction traps)
 ) (
     input  wire                  clk_i,
     input  wire                  rst_i,     // synchronous, active high
@@ -47,7 +51,9 @@ module pico_core #(
     wire        trace_valid;
 
     picorv32 #(
-        .ENABLE_COUNTERS  (1),
+        .ENABLE_COUNTERS  (SMALL ? 0 : 1),
+        .CATCH_MISALIGN   (SMALL ? 0 : 1),
+        .CATCH_ILLINSN    (SMALL ? 0 : 1),
         .ENABLE_COUNTERS64(0),
         .ENABLE_MUL       (0),
         .ENABLE_FAST_MUL  (0),
@@ -89,7 +95,7 @@ module pico_core #(
                          la_wstrb, pcpi_valid, pcpi_insn, pcpi_rs1, pcpi_rs2, eoi,
                          trace_valid, trace_data};
 
-    board_memmap #(.CORE(CORE), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_map (
+    board_memmap #(.CORE(CORE), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE)) u_map (
         .clk_i     (clk_i),
         .rst_i     (rst_i),
         .stall_i   (stall_i),

@@ -1,0 +1,43 @@
+// icebreaker_top -- the FPGA demonstration on an iCEBreaker (iCE40UP5K-SG48,
+// 12 MHz oscillator; pins in constraints/icebreaker.pcf): albatross_soc with
+// two PicoRV32 boards, 'sensor' (board 0) exporting Sample and 'actuator'
+// (board 1) importing and checking it (fpga/duo.toml, firmware/duo_*.c).
+// LEDs (the PMOD2 snap-off and the two on-board LEDs): LED1/LED2 blink with
+// the sensor's/actuator's heartbeat (every 4096 Exports / New Imports), LED3
+// and LED4 light when a core stopped, LED5 on a controller error; the green
+// on-board LED is the actuator's heartbeat, the red one lights on any error
+// (a failed check, a trap, a controller error).  BTN_N resets everything.
+`default_nettype none
+
+module icebreaker_top #(
+    parameter ROM_FILE   = "build/fpga/duo/rom.hex",  // schedule ROM image
+    parameter FW_PREFIX  = "build/fpga/duo/fw",       // board c's program: <prefix><c>.hex
+    parameter RAM_PREFIX = "build/fpga/duo/ram"       // board c's DPRAM image: <prefix><c>.hex
+) (
+    input  wire clk_i,      // 12 MHz
+    input  wire btn_n_i,    // BTN_N, active low
+    output wire led_r_n_o,  // LEDR_N, active low
+    output wire led_g_n_o,  // LEDG_N, active low
+    output wire [4:0] led_o // PMOD2 LED1..LED5, active high
+);
+
+    wire       rst, ctrl_err;
+    wire [1:0] done, err, beat, trap;
+
+    board_reset u_reset (.clk_i(clk_i), .btn_n_i(btn_n_i), .rst_o(rst));
+
+    albatross_soc #(
+        .NB(2), .ADDR_WIDTH(8), .RAM_WORDS(512), .N_CHAN(4), .ROM_WORDS(256),
+        .ROM_FILE(ROM_FILE), .FW_PREFIX(FW_PREFIX), .RAM_PREFIX(RAM_PREFIX)
+    ) u_soc (
+        .clk_i(clk_i), .rst_i(rst), .done_o(done), .err_o(err), .beat_o(beat),
+        .trap_o(trap), .ctrl_err_o(ctrl_err)
+    );
+
+    assign led_o     = {ctrl_err, done[1], done[0], beat[1], beat[0]};
+    assign led_g_n_o = ~beat[1];
+    assign led_r_n_o = ~(|err | |trap | ctrl_err);
+
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,39 @@
+// ulx3s_top -- the FPGA demonstration on a ULX3S (ECP5 LFE5U-85F/45F/25F/12F,
+// CABGA381, 25 MHz oscillator; pins in constraints/ulx3s.lpf): albatross_soc
+// with two PicoRV32 boards as on the iCEBreaker (fpga/icebreaker_top.v,
+// fpga/duo.toml).  LEDs: led[0]/led[1] the sensor's/actuator's heartbeat,
+// led[2]/led[3] a core stopped, led[4] a failed check, led[5] a trap,
+// led[6] a controller error, led[7] reset.  btn[0] (PWR, active low) resets.
+// wifi_gpio0 is held high so that the board's ESP32 leaves the FPGA alone.
+`default_nettype none
+
+module ulx3s_top #(
+    parameter ROM_FILE   = "build/fpga/duo/rom.hex",  // schedule ROM image
+    parameter FW_PREFIX  = "build/fpga/duo/fw",       // board c's program: <prefix><c>.hex
+    parameter RAM_PREFIX = "build/fpga/duo/ram"       // board c's DPRAM image: <prefix><c>.hex
+) (
+    input  wire       clk_i,         // clk_25mhz
+    input  wire       btn_n_i,       // btn[0], active low
+    output wire [7:0] led_o,         // led[7:0], active high
+    output wire       wifi_gpio0_o   // ESP32 GPIO0: 1 keeps it from resetting the FPGA
+);
+
+    wire       rst, ctrl_err;
+    wire [1:0] done, err, beat, trap;
+
+    board_reset u_reset (.clk_i(clk_i), .btn_n_i(btn_n_i), .rst_o(rst));
+
+    albatross_soc #(
+        .NB(2), .ADDR_WIDTH(8), .RAM_WORDS(512), .N_CHAN(4), .ROM_WORDS(256),
+        .ROM_FILE(ROM_FILE), .FW_PREFIX(FW_PREFIX), .RAM_PREFIX(RAM_PREFIX)
+    ) u_soc (
+        .clk_i(clk_i), .rst_i(rst), .done_o(done), .err_o(err), .beat_o(beat),
+        .trap_o(trap), .ctrl_err_o(ctrl_err)
+    );
+
+    assign led_o        = {rst, ctrl_err, |trap, |err, done[1], done[0], beat[1], beat[0]};
+    assign wifi_gpio0_o = 1'b1;
+
+endmodule
+
+`default_nettype wire

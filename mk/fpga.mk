@@ -1,0 +1,114 @@
+# mk/fpga.mk -- the FPGA flow (fpga/, constraints/): the demonstration
+# system fpga/albatross_soc.v (two PicoRV32 boards, their DPRAMs, the bus and
+# the controller, running fpga/duo.toml's schedule and firmware/duo_*.c) in
+# a top per board: iCEBreaker (iCE40UP5K), ULX3S (ECP5), Arty A7 (xc7).
+#   make synth       Yosys on every family: the DPRAM alone, the controller
+#                    alone, one PicoRV32 alone and the board top; iCE40 Fmax
+#                    from nextpnr-ice40 -> build/reports/fpga.json
+#   make pnr         place and route the iCEBreaker top (nextpnr-ice40, UP5K
+#                    SG48, constraints/icebreaker.pcf, 12 MHz), timing against
+#                    the constraint -> build/reports/fpga_pnr.json
+#   make bitstream   make pnr, then icepack -> build/fpga/icebreaker_top.bin
+#   make test-fpga-soc    the iCEBreaker top simulated (Verilator): both
+#                    cores' heartbeats blink, no error LED (-negative: a
+#                    corrupted ROM image must light the red LED)
+#   make test-fpga-icebreaker  make bitstream as a test: fits, meets 12 MHz
+#   make test-fpga-lint   Verilator -Wall, Icarus and Yosys on fpga/*.v
+# Images: build/fpga/duo/{rom,fw0,fw1,ram0,ram1}.hex, the names the tops'
+# parameters give (board 0 = sensor, 1 = actuator).  PicoRV32 from PyPI
+# (PICO_RV32_V, mk/pico.mk).
+
+FPGA_DIR    := $(BUILD)/fpga
+FPGA_IMG    := $(FPGA_DIR)/duo
+FPGA_SCHED  := $(BUILD)/schedule/duo
+FPGA_BOARDS := sensor actuator
+FPGA_RAM    := 2048   # bytes of each core's program RAM (RAM_WORDS 512 in the tops)
+FPGA_RTL    := $(wildcard fpga/*.v) rtl/albatross_dpram.v rtl/albatross_bus.v rtl/albatross_controller.v \
+               tb/rtl/pico_core.v tb/rtl/board_memmap.v tb/rtl/pico_wb_adapter.v
+# (mk/pico.mk, read after this file, defines PICO_RV32_V and FW_*: every use
+# below is deferred, in recipes or with = / $$.)
+FPGA_REPORT  = $(PYTHON) tools/fpga_report.py --picorv32 $(PICO_RV32_V) --out $(FPGA_DIR)/synth
+FPGA_FW_DEPS := firmware/crt0.S firmware/link.ld firmware/board.h c-driver/albatross.c c-driver/albatross.h \
+                c-driver/albatross_layout.h c-driver/alb_port.h c-driver/port/mmio/alb_port_impl.h
+
+$(FPGA_SCHED)/rom.hex: fpga/duo.toml $(SCHEDULE_TOOL)
+	$(PYTHON) $(SCHEDULE_TOOL) $< --out $(@D) -q
+
+# $(1) = board index, $(2) = board name.
+define fpga_board
+$(FPGA_DIR)/fw/$(2).elf: firmware/duo_$(2).c $(FPGA_SCHED)/rom.hex $(FPGA_FW_DEPS)
+	@$$(DRV_RV_NEED)
+	@mkdir -p $$(@D)
+	$$(DRV_RV_CC) $$(FW_CFLAGS) -ffunction-sections -fdata-sections -I$(FPGA_SCHED) -o $$@ firmware/crt0.S \
+	    firmware/duo_$(2).c $(FPGA_SCHED)/$(2).c c-driver/albatross.c $$(FW_LDFLAGS) -Wl,--gc-sections \
+	    -Wl,--defsym=__board_ram_bytes=$(FPGA_RAM)
+$(FPGA_IMG)/fw$(1).hex: $(FPGA_DIR)/fw/$(2).elf
+	@mkdir -p $$(@D)
+	$$(DRV_RV_PREFIX)objcopy -O verilog --verilog-data-width=4 $$< $$@
+$(FPGA_IMG)/ram$(1).hex: $(FPGA_SCHED)/rom.hex
+	@mkdir -p $$(@D)
+	cp $(FPGA_SCHED)/$(2)_ram.hex $$@
+endef
+$(eval $(call fpga_board,0,sensor))
+$(eval $(call fpga_board,1,actuator))
+$(FPGA_IMG)/rom.hex: $(FPGA_SCHED)/rom.hex
+	@mkdir -p $(@D)
+	cp $< $@
+FPGA_IMAGES := $(FPGA_IMG)/rom.hex $(foreach i,0 1,$(FPGA_IMG)/fw$(i).hex $(FPGA_IMG)/ram$(i).hex)
+
+.PHONY: synth pnr bitstream
+synth: $(FPGA_IMAGES) ## Yosys on iCE40, ECP5, xc7: DPRAM, controller, PicoRV32, board top (+ iCE40 Fmax) -> build/reports/fpga.json
+	$(PICO_NEED)
+	$(FPGA_REPORT) --pnr --report $(REPORTS)/fpga.json
+
+pnr: $(FPGA_IMAGES) ## place and route the iCEBreaker top, timing against its 12 MHz constraint
+	$(PICO_NEED)
+	$(FPGA_REPORT) --designs top --families ice40 --pnr --report $(REPORTS)/fpga_pnr.json
+	@grep -E "Max frequency|Info: Device utilisation" -A 0 $(FPGA_DIR)/synth/top_ice40_pnr.log | tail -n 2
+
+bitstream: pnr ## icepack the iCEBreaker top -> build/fpga/icebreaker_top.bin
+	icepack $(FPGA_DIR)/synth/top_ice40.asc $(FPGA_DIR)/icebreaker_top.bin
+	@echo "bitstream: $(FPGA_DIR)/icebreaker_top.bin (iceprog it to the iCEBreaker)"
+
+# The iCEBreaker top in Verilator: the demonstration must run.  The negative
+# model is built with a schedule ROM whose header word H1 is changed (its
+# checksum fails): the red LED must light.  $(1) = dir, $(2) = Verilator flags.
+define fpga_sim
+$(FPGA_DIR)/$(1)/Vicebreaker_top: $(FPGA_RTL) tb/fpga/test_fpga_soc.cpp tb/report.h tb/pico/picorv32.vlt mk/fpga.mk
+	$$(PICO_NEED)
+	@mkdir -p $$(@D)
+	verilator --cc --exe --build -j 2 -O3 -Wall --timescale 1ns/1ps -y rtl -y tb/rtl -y fpga $(2) \
+	    --top-module icebreaker_top tb/pico/picorv32.vlt -CFLAGS "-O2 -std=c++17" --Mdir $$(@D) \
+	    $$(PICO_RV32_V) fpga/icebreaker_top.v $$(abspath tb/fpga/test_fpga_soc.cpp) \
+	    > $$(@D)/build.log 2>&1 || { cat $$(@D)/build.log; exit 1; }
+endef
+$(eval $(call fpga_sim,sim,))
+$(eval $(call fpga_sim,sim-badrom,-GROM_FILE='"$(FPGA_DIR)/badrom/rom.hex"'))
+FPGA_SIM := $(FPGA_DIR)/sim/Vicebreaker_top
+$(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
+	@mkdir -p $(@D)
+	sed '2s/^.*$$/00000001/' $< > $@
+
+TESTS += fpga-soc fpga-soc-negative fpga-icebreaker fpga-lint
+.PHONY: test-fpga-soc test-fpga-soc-negative test-fpga-icebreaker test-fpga-lint
+test-fpga-soc: $(FPGA_SIM) $(FPGA_IMAGES)
+	@tools/run_test.sh fpga-soc $(FPGA_SIM) --cycles 16000000 --report $(REPORTS)/fpga_soc.json
+test-fpga-soc-negative: $(FPGA_DIR)/sim-badrom/Vicebreaker_top $(FPGA_IMAGES) $(FPGA_DIR)/badrom/rom.hex
+	@tools/run_test.sh fpga-soc-negative $(FPGA_DIR)/sim-badrom/Vicebreaker_top --cycles 100000 --expect-error
+
+test-fpga-icebreaker: $(FPGA_IMAGES)
+	$(PICO_NEED)
+	@tools/run_test.sh fpga-icebreaker bash -c '$(FPGA_REPORT) --designs top --families ice40 --pnr \
+	    --report $(REPORTS)/fpga_pnr.json && icepack $(FPGA_DIR)/synth/top_ice40.asc $(FPGA_DIR)/icebreaker_top.bin && \
+	    echo "bitstream $(FPGA_DIR)/icebreaker_top.bin: $$(stat -c %s $(FPGA_DIR)/icebreaker_top.bin) bytes"'
+
+# Each file of fpga/ as a top: Verilator -Wall, Icarus, Yosys (with the images
+# the tops load).
+test-fpga-lint: $(FPGA_IMAGES)
+	$(PICO_NEED)
+	@tools/run_test.sh fpga-lint bash -c 'set -e; for f in $(wildcard fpga/*.v); do t=$$(basename $$f .v); \
+	    verilator --lint-only -Wall --timescale 1ns/1ps -y rtl -y tb/rtl -y fpga tb/pico/picorv32.vlt \
+	        --top-module $$t $(PICO_RV32_V) $$f; \
+	    iverilog -g2005 -y rtl -y tb/rtl -y fpga -s $$t -o /dev/null $(PICO_RV32_V) $$f; \
+	    yosys -q -p "read_verilog -DSYNTHESIS $(PICO_RV32_V) $(FPGA_RTL); hierarchy -check -top $$t; proc"; \
+	    echo "lint ok  $$f"; done'
