@@ -101,6 +101,16 @@ module albatross_controller #(
         end
     endfunction
 
+    // Comparisons with a constant are look-ups in a constant mask: Yosys maps a
+    // comparison to a carry chain, a look-up to a few LUTs.
+    function [255:0] ge_mask;             // bit i set when i >= lo
+        input integer lo;
+        integer i;
+        begin
+            for (i = 0; i < 256; i = i + 1) ge_mask[i] = (i >= lo);
+        end
+    endfunction
+
     localparam AW           = ADDR_WIDTH;
     localparam BOARD_BITS   = 4;                    // m_adr_o = {board[3:0], word}
     localparam FETCH_CYCLES = 10;                   // slot start to the first access on the bus
@@ -123,11 +133,18 @@ module albatross_controller #(
     localparam [TMO_BITS-1:0] TMO_LAST  = TMO_LAST_I[TMO_BITS-1:0];  // last clock of an access
     localparam [PC_BITS-1:0]  PC_LAST   = PC_LAST_I[PC_BITS-1:0];    // last clock of a poll interval
     localparam [CB_BITS-1:0]  II_LAST   = II_LAST_I[CB_BITS-1:0];    // last clock of INIT
-    localparam [7:0]          NE_MAX8   = NE_MAX[7:0];
     localparam [LB-1:0]       CYC_IDX   = CYC[LB-1:0];
     localparam [33:0]         PRE       = 34'd1 - K;                  // scan accumulator start
     localparam [31:0]         CK_INIT   = 32'hA1BA7055;
     localparam [11:0]         W_STATUS  = 2 * N_CHAN + 1;
+    localparam [255:0]        M_FC_HOLD = ge_mask(K + 2);                  // fc >= K + 2
+    localparam [255:0]        M_FC_WORD = ge_mask(1) & ~ge_mask(9);        // 1 <= fc <= 8
+    localparam [255:0]        M_FC_H3   = ge_mask(1) & ~ge_mask(4);        // 1 <= fc <= 3
+    localparam [255:0]        M_FC_E7   = ge_mask(1) & ~ge_mask(8);        // 1 <= fc <= 7
+    localparam [255:0]        M_ND_BAD  = ~ge_mask(1) | ge_mask(5);        // ND not in 1..4
+    localparam [255:0]        M_CH_BAD  = ge_mask(N_CHAN);                 // channel id >= N_CHAN
+    localparam [255:0]        M_NE_BAD  = ~ge_mask(1) | ge_mask(NE_MAX + 1); // NE not in 1..NE_MAX
+    localparam [255:0]        M_LE_FC   = ~ge_mask(FETCH_CYCLES + 1);      // <= FETCH_CYCLES
 
     // States.
     localparam [4:0] S_INIT   = 5'd0,   // clear the per-channel memories
@@ -332,8 +349,10 @@ module albatross_controller #(
     wire        acc_ack  = cyc_q & m_ack_i;
     wire        acc_fail = cyc_q & ~m_ack_i & (m_err_i | (tmo_q == TMO_LAST));
     wire        wi_is_w  = {{(16-AW){1'b0}}, wi_q} == {4'd0, w_q};
-    wire        wi1_is_w = {{(16-AW){1'b0}}, wi_q} + 16'd1 == {4'd0, w_q};
+    wire [AW:0] wi_inc   = {1'b0, wi_q} + {{AW{1'b0}}, 1'b1};  // also the next word (W_INC)
+    wire        wi1_is_w = {{(15-AW){1'b0}}, wi_inc} == {4'd0, w_q};
     wire        cur_last = {{(16-LB){1'b0}}, cur_q} + 16'd1 == {8'd0, ne_q};
+    wire [7:0]  fc_q8    = {{(8-FC_BITS){1'b0}}, fc_q};
     wire        scan_ok  = !bad_q && ck_ok_q && !c1;         // c1 here: E1 + E2 - 1 >= H1
 
     // ------------------------------------------------------------ FSM (control only)
@@ -428,7 +447,7 @@ module albatross_controller #(
             S_SCAN: begin
                 if (fc_q == 1)                        rel_op = R_PRE;
                 else if (fc_q == 2 || fc_q == 3)      rel_op = R_ACC;
-                else if (fc_q >= K + 2)               rel_op = R_HOLD;
+                else if (M_FC_HOLD[fc_q8])            rel_op = R_HOLD;
                 if (fc_q == SCAN_LAST) begin
                     fc_op = FC_0;
                     if (scan_ok) begin
@@ -792,7 +811,7 @@ module albatross_controller #(
     end
 
     wire [AW-1:0] wi_d   = (wi_op == W_ZERO) ? {AW{1'b0}} :
-                           (wi_op == W_INC)  ? wi_q + {{(AW-1){1'b0}}, 1'b1} : wi_q;
+                           (wi_op == W_INC)  ? wi_inc[AW-1:0] : wi_q;
     wire [1:0]    pick_v = pick(act_cur, vidx(r_byte) ? r_byte[1:0] : 2'd0);
     wire [7:0]    wbuf_d = wbuf_we ? put2(wbuf_q, di_q, pick_v) : wbuf_q;
     wire [LB-1:0] ent_d  = (ent_op == E_NEXT) ? lk_next : (ent_op == E_CYC) ? CYC_IDX : ent_q;
@@ -855,7 +874,8 @@ module albatross_controller #(
     wire [FC_BITS-1:0] fc_d = (fc_op == FC_0) ? {FC_BITS{1'b0}} :
                               (fc_op == FC_1) ? {{(FC_BITS-1){1'b0}}, 1'b1} :
                               fc_q + {{(FC_BITS-1){1'b0}}, 1'b1};
-    wire          fc_word = fc_d >= 1 && fc_d <= 8;       // fetching E(fc_d - 1)
+    wire [7:0]    fc_d8   = {{(8-FC_BITS){1'b0}}, fc_d};
+    wire          fc_word = M_FC_WORD[fc_d8];            // fetching E(fc_d - 1)
     wire [2:0]    fc_j    = fc_d[2:0] - 3'd1;
     reg [ROM_AW-1:0] rom_ra;
     always @* begin
@@ -979,8 +999,8 @@ module albatross_controller #(
     // ------------------------------------------------------------ data path (no reset)
     wire [33:0] rel_sum  = rel_q + ((rel_op == R_ACC) ? {2'b00, rom_q} : 34'd1);
     wire        ck_first = fc_q == 1;
-    wire        ck_acc   = (state_q == S_HDR && fc_q >= 1 && fc_q <= 3) ||
-                           ((state_q == S_SCAN || state_q == S_FETCH) && fc_q >= 1 && fc_q <= 7);
+    wire        ck_acc   = (state_q == S_HDR && M_FC_H3[fc_q8]) ||
+                           ((state_q == S_SCAN || state_q == S_FETCH) && M_FC_E7[fc_q8]);
     wire        ck_chk   = (state_q == S_HDR && fc_q == 4) ||
                            ((state_q == S_SCAN || state_q == S_FETCH) && fc_q == 8);
     wire [31:0] ck_base  = ck_first ? CK_INIT : ck_q;
@@ -998,25 +1018,27 @@ module albatross_controller #(
                          brd_ok[rom_q[31:28]];
     wire [3:0]  e0_kind = rom_q[31:28];
     wire [3:0]  e0_nd   = rom_q[15:12];
-    wire        e0_bad  = e0_kind > 4'd3 ||
+    wire        e0_bad  = e0_kind[3:2] != 2'b00 ||
                           (rom_q[24] && !(cur_q == {LB{1'b0}} && smode_q && e0_kind == {2'b00, K_COPY})) ||
                           (e0_kind != {2'b00, K_IDLE} &&
-                           (e0_nd == 4'd0 || e0_nd > 4'd4 || rom_q[23:16] >= N_CHAN)) ||
+                           (M_ND_BAD[{4'd0, e0_nd}] || M_CH_BAD[rom_q[23:16]])) ||
                           (e0_kind == {2'b00, K_COPY}   && rom_q[11:0] == 12'd0) ||
                           (e0_kind == {2'b00, K_TIME}   && rom_q[11:0] != 12'd1) ||
                           (e0_kind == {2'b00, K_STATUS} && rom_q[11:0] != W_STATUS);
+    wire        nd_ge2  = nd_q[2] | nd_q[1];
+    wire        nd_ge3  = nd_q[2] | (nd_q[1] & nd_q[0]);
     reg bad_now;
     always @* begin
         bad_now = 1'b0;
         if (state_q == S_HDR && fc_q == 1)
-            bad_now = rom_q[31:16] != 16'hA1BA || rom_q[15:8] == 8'd0 || rom_q[15:8] > NE_MAX8;
+            bad_now = rom_q[31:16] != 16'hA1BA || M_NE_BAD[rom_q[15:8]];
         else if (state_q == S_SCAN)
             case (fc_q)
                 1: bad_now = e0_bad;
-                3: bad_now = (lv_q != CYC_IDX && c2) || rom_q <= FETCH_CYCLES;
+                3: bad_now = (lv_q != CYC_IDX && c2) || (rom_q[31:8] == 24'd0 && M_LE_FC[rom_q[7:0]]);
                 4: bad_now = kind_q == K_COPY && !src_ok;
-                5: bad_now = kind_q != K_IDLE && (!lo_ok || (nd_q >= 3'd2 && !hi_ok));
-                6: bad_now = kind_q != K_IDLE && nd_q >= 3'd3 && (!lo_ok || (nd_q == 3'd4 && !hi_ok));
+                5: bad_now = kind_q != K_IDLE && (!lo_ok || (nd_ge2 && !hi_ok));
+                6: bad_now = kind_q != K_IDLE && nd_ge3 && (!lo_ok || (nd_q == 3'd4 && !hi_ok));
                 default: bad_now = 1'b0;
             endcase
     end
