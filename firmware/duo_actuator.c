@@ -4,13 +4,17 @@
  * checks every Sample as the pair test's consumer does (firmware/consumer.c):
  * complete (check words), never going back, New exactly when newer.  The
  * all-zero start value of the RAM image passes once, as sequence 0.  STAT 0
- * bit 0 toggles every 4096 New Samples (a heartbeat LED); a failed check
+ * bit 0 toggles every 2**DUO_BEAT_SHIFT (256) New Samples (a heartbeat LED); a failed check
  * ends the program with code | sequence << 8 in TOHOST (an error LED):
  * 0x2 Import error, 0x3 torn value, 0x4 sequence went back, 0x5 New without
  * a newer value, 0x6 Old with a newer value, 0x7 attach error.
  */
 #include "albatross.h"
 #include "actuator.h"
+
+#ifndef DUO_BEAT_SHIFT
+#define DUO_BEAT_SHIFT 8   /* heartbeat: STAT 0 bit 0 toggles every 2**N */
+#endif
 
 static int zero(const pair_value_t *v)
 {
@@ -44,6 +48,6 @@ int main(void)
         r = alb_import(&alb_ch_GlobalTime, &gt);
         if (r != ALB_NEW && r != ALB_OLD)
             return 0x2 | (int)(last << 8);
-        board_stat(0u, news >> 12);
+        board_stat(0u, news >> DUO_BEAT_SHIFT);
     }
 }

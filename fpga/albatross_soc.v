@@ -1,7 +1,8 @@
 // albatross_soc -- the synthesisable multi-board system for one FPGA: NB
 // boards, each a PicoRV32 core (tb/rtl/pico_core.v with SMALL = 1: no
-// counters, one register-file read port; its program in local block RAM,
-// board registers, a Wishbone master) on port A of its own
+// counters, no traps) or, where SERV_MASK selects it, a SERV core
+// (tb/rtl/serv_core.v; its program in local block RAM, board registers, a
+// Wishbone master) on port A of its own
 // albatross_dpram, the RAMs' port B joined by albatross_bus, whose master is
 // albatross_controller running the schedule ROM.  One clock, one synchronous
 // reset (active high) for everything.
@@ -27,7 +28,8 @@ module albatross_soc #(
     parameter FW_PREFIX  = "",       // board c's program: <FW_PREFIX><c>.hex ("": none)
     parameter RAM_PREFIX = "",       // board c's DPRAM image: <RAM_PREFIX><c>.hex ("": none)
     parameter TIMEOUT    = 8,        // controller access timeout, clocks
-    parameter POLL       = 16        // controller poll interval in sync mode
+    parameter POLL       = 16,       // controller poll interval in sync mode
+    parameter SERV_MASK  = 0         // NB bits: board c's core is SERV when bit c is set, else PicoRV32
 ) (
     input  wire          clk_i,
     input  wire          rst_i,      // synchronous, active high
@@ -91,28 +93,52 @@ module albatross_soc #(
                 .b_dat_i(s_wdat[c*32 +: 32]), .b_dat_o(s_rdat[c*32 +: 32]), .b_ack_o(s_ack[c])
             );
 
-            pico_core #(.CORE(c), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE),
-                        .SMALL(1)) u_core (
-                .clk_i     (clk_i),
-                .rst_i     (rst_i),
-                .stall_i   (1'b0),
-                .wb_cyc_o  (a_cyc),
-                .wb_stb_o  (a_stb),
-                .wb_we_o   (a_we),
-                .wb_adr_o  (a_adr),
-                .wb_sel_o  (a_sel),
-                .wb_dat_o  (a_wdat),
-                .wb_dat_i  (a_rdat),
-                .wb_ack_i  (a_ack),
-                .done_o    (done_o[c]),
-                .code_o    (code),
-                .stat_o    (stat),
-                .ev_valid_o(ev_valid),
-                .ev_data_o (ev_data),
-                .ev_arg_o  (ev_arg),
-                .trap_o    (trap_o[c]),
-                .bus_err_o (bus_err)
-            );
+            if (((SERV_MASK >> c) & 1) == 0) begin : g_pico
+                pico_core #(.CORE(c), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE),
+                            .SMALL(1)) u_core (
+                    .clk_i     (clk_i),
+                    .rst_i     (rst_i),
+                    .stall_i   (1'b0),
+                    .wb_cyc_o  (a_cyc),
+                    .wb_stb_o  (a_stb),
+                    .wb_we_o   (a_we),
+                    .wb_adr_o  (a_adr),
+                    .wb_sel_o  (a_sel),
+                    .wb_dat_o  (a_wdat),
+                    .wb_dat_i  (a_rdat),
+                    .wb_ack_i  (a_ack),
+                    .done_o    (done_o[c]),
+                    .code_o    (code),
+                    .stat_o    (stat),
+                    .ev_valid_o(ev_valid),
+                    .ev_data_o (ev_data),
+                    .ev_arg_o  (ev_arg),
+                    .trap_o    (trap_o[c]),
+                    .bus_err_o (bus_err)
+                );
+            end else begin : g_serv
+                serv_core #(.CORE(c), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE)) u_core (
+                    .clk_i     (clk_i),
+                    .rst_i     (rst_i),
+                    .stall_i   (1'b0),
+                    .wb_cyc_o  (a_cyc),
+                    .wb_stb_o  (a_stb),
+                    .wb_we_o   (a_we),
+                    .wb_adr_o  (a_adr),
+                    .wb_sel_o  (a_sel),
+                    .wb_dat_o  (a_wdat),
+                    .wb_dat_i  (a_rdat),
+                    .wb_ack_i  (a_ack),
+                    .done_o    (done_o[c]),
+                    .code_o    (code),
+                    .stat_o    (stat),
+                    .ev_valid_o(ev_valid),
+                    .ev_data_o (ev_data),
+                    .ev_arg_o  (ev_arg),
+                    .trap_o    (trap_o[c]),
+                    .bus_err_o (bus_err)
+                );
+            end
             assign err_o[c]  = done_o[c] & (|code);
             assign beat_o[c] = stat[0];
         end

@@ -1,9 +1,12 @@
 // icebreaker_top -- the FPGA demonstration on an iCEBreaker (iCE40UP5K-SG48,
 // 12 MHz oscillator; pins in constraints/icebreaker.pcf): albatross_soc with
-// two PicoRV32 boards, 'sensor' (board 0) exporting Sample and 'actuator'
-// (board 1) importing and checking it (fpga/duo.toml, firmware/duo_*.c).
+// two boards, 'sensor' (board 0, a SERV core) exporting Sample and
+// 'actuator' (board 1, a PicoRV32) importing and checking it (fpga/duo.toml,
+// firmware/duo_*.c).  Two PicoRV32 and the controller do not fit the UP5K's
+// 5280 logic cells; the bit-serial SERV does, and the two sides of the
+// channel then run at very different speeds.
 // LEDs (the PMOD2 snap-off and the two on-board LEDs): LED1/LED2 blink with
-// the sensor's/actuator's heartbeat (every 4096 Exports / New Imports), LED3
+// the sensor's/actuator's heartbeat (every 256 Exports / New Imports), LED3
 // and LED4 light when a core stopped, LED5 on a controller error; the green
 // on-board LED is the actuator's heartbeat, the red one lights on any error
 // (a failed check, a trap, a controller error).  BTN_N resets everything.
@@ -28,7 +31,7 @@ module icebreaker_top #(
 
     albatross_soc #(
         .NB(2), .ADDR_WIDTH(8), .RAM_WORDS(512), .N_CHAN(4), .ROM_WORDS(256),
-        .ROM_FILE(ROM_FILE), .FW_PREFIX(FW_PREFIX), .RAM_PREFIX(RAM_PREFIX)
+        .ROM_FILE(ROM_FILE), .FW_PREFIX(FW_PREFIX), .RAM_PREFIX(RAM_PREFIX), .SERV_MASK(1)
     ) u_soc (
         .clk_i(clk_i), .rst_i(rst), .done_o(done), .err_o(err), .beat_o(beat),
         .trap_o(trap), .ctrl_err_o(ctrl_err)

@@ -1,7 +1,8 @@
 # mk/fpga.mk -- the FPGA flow (fpga/, constraints/): the demonstration
 # system fpga/albatross_soc.v (two PicoRV32 boards, their DPRAMs, the bus and
 # the controller, running fpga/duo.toml's schedule and firmware/duo_*.c) in
-# a top per board: iCEBreaker (iCE40UP5K), ULX3S (ECP5), Arty A7 (xc7).
+# a top per board: iCEBreaker (iCE40UP5K; the sensor board on SERV, as two
+# PicoRV32 and the controller do not fit), ULX3S (ECP5), Arty A7 (xc7).
 #   make synth       Yosys on every family: the DPRAM alone, the controller
 #                    alone, one PicoRV32 alone and the board top; iCE40 Fmax
 #                    from nextpnr-ice40 -> build/reports/fpga.json
@@ -13,10 +14,11 @@
 #                    cores' heartbeats blink, no error LED (-negative: a
 #                    corrupted ROM image must light the red LED)
 #   make test-fpga-icebreaker  make bitstream as a test: fits, meets 12 MHz
+#   make test-fpga-tops   the ULX3S and Arty tops synthesise (Yosys)
 #   make test-fpga-lint   Verilator -Wall, Icarus and Yosys on fpga/*.v
 # Images: build/fpga/duo/{rom,fw0,fw1,ram0,ram1}.hex, the names the tops'
 # parameters give (board 0 = sensor, 1 = actuator).  PicoRV32 from PyPI
-# (PICO_RV32_V, mk/pico.mk).
+# and SERV from PyPI (PICO_RV32_V, mk/pico.mk; SERV_CPU_RTL, mk/serv.mk).
 
 FPGA_DIR    := $(BUILD)/fpga
 FPGA_IMG    := $(FPGA_DIR)/duo
@@ -24,10 +26,13 @@ FPGA_SCHED  := $(BUILD)/schedule/duo
 FPGA_BOARDS := sensor actuator
 FPGA_RAM    := 2048   # bytes of each core's program RAM (RAM_WORDS 512 in the tops)
 FPGA_RTL    := $(wildcard fpga/*.v) rtl/albatross_dpram.v rtl/albatross_bus.v rtl/albatross_controller.v \
-               tb/rtl/pico_core.v tb/rtl/board_memmap.v tb/rtl/pico_wb_adapter.v
+               tb/rtl/pico_core.v tb/rtl/serv_core.v tb/rtl/serv_bridge.v tb/rtl/board_memmap.v \
+               tb/rtl/pico_wb_adapter.v
+# PicoRV32 and SERV come from PyPI (mk/pico.mk, mk/serv.mk); Verilator flags.
+FPGA_VFLAGS  = -Wall --timescale 1ns/1ps -y rtl -y tb/rtl -y fpga -y $(SERV_CPU_RTL) tb/pico/picorv32.vlt tb/pico/serv.vlt
 # (mk/pico.mk, read after this file, defines PICO_RV32_V and FW_*: every use
 # below is deferred, in recipes or with = / $$.)
-FPGA_REPORT  = $(PYTHON) tools/fpga_report.py --picorv32 $(PICO_RV32_V) --out $(FPGA_DIR)/synth
+FPGA_REPORT  = $(PYTHON) tools/fpga_report.py --picorv32 $(PICO_RV32_V) --serv $(SERV_CPU_RTL) --out $(FPGA_DIR)/synth
 FPGA_FW_DEPS := firmware/crt0.S firmware/link.ld firmware/board.h c-driver/albatross.c c-driver/albatross.h \
                 c-driver/albatross_layout.h c-driver/alb_port.h c-driver/port/mmio/alb_port_impl.h
 
@@ -36,7 +41,7 @@ $(FPGA_SCHED)/rom.hex: fpga/duo.toml $(SCHEDULE_TOOL)
 
 # $(1) = board index, $(2) = board name.
 define fpga_board
-$(FPGA_DIR)/fw/$(2).elf: firmware/duo_$(2).c $(FPGA_SCHED)/rom.hex $(FPGA_FW_DEPS)
+$(FPGA_DIR)/fw/$(2).elf: firmware/duo_$(2).c $(FPGA_SCHED)/rom.hex $(FPGA_FW_DEPS) mk/fpga.mk
 	@$$(DRV_RV_NEED)
 	@mkdir -p $$(@D)
 	$$(DRV_RV_CC) $$(FW_CFLAGS) -ffunction-sections -fdata-sections -I$(FPGA_SCHED) -o $$@ firmware/crt0.S \
@@ -76,9 +81,10 @@ bitstream: pnr ## icepack the iCEBreaker top -> build/fpga/icebreaker_top.bin
 define fpga_sim
 $(FPGA_DIR)/$(1)/Vicebreaker_top: $(FPGA_RTL) tb/fpga/test_fpga_soc.cpp tb/report.h tb/pico/picorv32.vlt mk/fpga.mk
 	$$(PICO_NEED)
+	$$(SERV_NEED)
 	@mkdir -p $$(@D)
-	verilator --cc --exe --build -j 2 -O3 -Wall --timescale 1ns/1ps -y rtl -y tb/rtl -y fpga $(2) \
-	    --top-module icebreaker_top tb/pico/picorv32.vlt -CFLAGS "-O2 -std=c++17" --Mdir $$(@D) \
+	verilator --cc --exe --build -j 2 -O3 $$(FPGA_VFLAGS) $(2) \
+	    --top-module icebreaker_top -CFLAGS "-O2 -std=c++17" --Mdir $$(@D) \
 	    $$(PICO_RV32_V) fpga/icebreaker_top.v $$(abspath tb/fpga/test_fpga_soc.cpp) \
 	    > $$(@D)/build.log 2>&1 || { cat $$(@D)/build.log; exit 1; }
 endef
@@ -89,8 +95,10 @@ $(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
 	@mkdir -p $(@D)
 	sed '2s/^.*$$/00000001/' $< > $@
 
-TESTS += fpga-soc fpga-soc-negative fpga-icebreaker fpga-lint
-.PHONY: test-fpga-soc test-fpga-soc-negative test-fpga-icebreaker test-fpga-lint
+BENCHES += synth
+
+TESTS += fpga-soc fpga-soc-negative fpga-icebreaker fpga-tops fpga-lint
+.PHONY: test-fpga-soc test-fpga-soc-negative test-fpga-icebreaker test-fpga-tops test-fpga-lint
 test-fpga-soc: $(FPGA_SIM) $(FPGA_IMAGES)
 	@tools/run_test.sh fpga-soc $(FPGA_SIM) --cycles 16000000 --report $(REPORTS)/fpga_soc.json
 test-fpga-soc-negative: $(FPGA_DIR)/sim-badrom/Vicebreaker_top $(FPGA_IMAGES) $(FPGA_DIR)/badrom/rom.hex
@@ -102,13 +110,18 @@ test-fpga-icebreaker: $(FPGA_IMAGES)
 	    --report $(REPORTS)/fpga_pnr.json && icepack $(FPGA_DIR)/synth/top_ice40.asc $(FPGA_DIR)/icebreaker_top.bin && \
 	    echo "bitstream $(FPGA_DIR)/icebreaker_top.bin: $$(stat -c %s $(FPGA_DIR)/icebreaker_top.bin) bytes"'
 
+# The ECP5 and 7-series tops synthesise (no place and route in Debian 12).
+test-fpga-tops: $(FPGA_IMAGES)
+	$(PICO_NEED)
+	@tools/run_test.sh fpga-tops $(FPGA_REPORT) --designs top --families ecp5,xc7 --report $(REPORTS)/fpga_tops.json
+
 # Each file of fpga/ as a top: Verilator -Wall, Icarus, Yosys (with the images
 # the tops load).
 test-fpga-lint: $(FPGA_IMAGES)
 	$(PICO_NEED)
+	$(SERV_NEED)
 	@tools/run_test.sh fpga-lint bash -c 'set -e; for f in $(wildcard fpga/*.v); do t=$$(basename $$f .v); \
-	    verilator --lint-only -Wall --timescale 1ns/1ps -y rtl -y tb/rtl -y fpga tb/pico/picorv32.vlt \
-	        --top-module $$t $(PICO_RV32_V) $$f; \
-	    iverilog -g2005 -y rtl -y tb/rtl -y fpga -s $$t -o /dev/null $(PICO_RV32_V) $$f; \
-	    yosys -q -p "read_verilog -DSYNTHESIS $(PICO_RV32_V) $(FPGA_RTL); hierarchy -check -top $$t; proc"; \
+	    verilator --lint-only $(FPGA_VFLAGS) --top-module $$t $(PICO_RV32_V) $$f; \
+	    iverilog -g2005 -y rtl -y tb/rtl -y fpga -y $(SERV_CPU_RTL) -s $$t -o /dev/null $(PICO_RV32_V) $$f; \
+	    yosys -q -p "read_verilog -DSYNTHESIS $(PICO_RV32_V) $(SERV_CPU_V) $(FPGA_RTL); hierarchy -check -top $$t; proc"; \
 	    echo "lint ok  $$f"; done'

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """fpga_report.py -- synthesis (and iCE40 place-and-route) figures of the designs on three families.
 
-    tools/fpga_report.py --picorv32 FILE [--designs dpram,controller,picorv32,top]
+    tools/fpga_report.py --picorv32 FILE --serv DIR [--designs dpram,controller,picorv32,top]
                          [--families ice40,ecp5,xc7] [--pnr] [--out DIR] [--report JSON]
 
 Designs (files are read with -DSYNTHESIS; parameters as the systems use them):
@@ -10,9 +10,10 @@ Designs (files are read with -DSYNTHESIS; parameters as the systems use them):
               (the four-board robot's configuration)
   picorv32    one PicoRV32 as tb/rtl/pico_core.v configures it (rv32i, counters),
               behind fpga/picorv32_ooc.v (only its memory port on pins)
-  top         the board top of the family: fpga/icebreaker_top.v (ice40),
-              fpga/ulx3s_top.v (ecp5), fpga/arty_top.v (xc7): two PicoRV32
-              boards, their DPRAMs, the bus and the controller
+  top         the board top of the family: fpga/icebreaker_top.v (ice40: a
+              SERV and a PicoRV32 board), fpga/ulx3s_top.v (ecp5) and
+              fpga/arty_top.v (xc7): two PicoRV32 boards; with their DPRAMs,
+              the bus and the controller
 For each design and family: Yosys synth_ice40 / synth_ecp5 / synth_xilinx
 -family xc7 -flatten, counted from `stat -json` (LUTs, flip-flops, carries,
 block RAMs, distributed RAMs).  With --pnr, the iCE40 netlists are placed and
@@ -38,13 +39,13 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from synth_report import FAMILIES, cell_types, count  # noqa: E402
 
 SOC_FILES = ["rtl/albatross_dpram.v", "rtl/albatross_bus.v", "rtl/albatross_controller.v",
-             "tb/rtl/pico_core.v", "tb/rtl/board_memmap.v", "tb/rtl/pico_wb_adapter.v",
-             "fpga/albatross_soc.v", "fpga/board_reset.v"]
+             "tb/rtl/pico_core.v", "tb/rtl/serv_core.v", "tb/rtl/serv_bridge.v", "tb/rtl/board_memmap.v",
+             "tb/rtl/pico_wb_adapter.v", "fpga/albatross_soc.v", "fpga/board_reset.v"]
 TOPS = {"ice40": "icebreaker_top", "ecp5": "ulx3s_top", "xc7": "arty_top"}
 TOP_CLOCK_MHZ = {"ice40": 12, "ecp5": 25, "xc7": 100}
 
 
-def design(name, fam, picorv32):
+def design(name, fam, picorv32, serv):
     """(files, top, chparam) of a design on a family."""
     if name == "dpram":
         return ["rtl/albatross_dpram.v"], "albatross_dpram", "chparam -set ADDR_WIDTH 10 albatross_dpram"
@@ -54,7 +55,7 @@ def design(name, fam, picorv32):
     if name == "picorv32":
         return [picorv32, "fpga/picorv32_ooc.v"], "picorv32_ooc", ""
     top = TOPS[fam]
-    return [picorv32] + SOC_FILES + [f"fpga/{top}.v"], top, ""
+    return [picorv32] + serv + SOC_FILES + [f"fpga/{top}.v"], top, ""
 
 
 def run(cmd, log, timeout=1800):
@@ -75,8 +76,8 @@ def tail(log, n=3):
     return " | ".join(lines[-n:])
 
 
-def synth(name, fam, picorv32, out):
-    files, top, chparam = design(name, fam, picorv32)
+def synth(name, fam, picorv32, serv, out):
+    files, top, chparam = design(name, fam, picorv32, serv)
     spec = FAMILIES[fam]
     stem = os.path.join(out, f"{name}_{fam}")
     script = (f"read_verilog -DSYNTHESIS {' '.join(files)}; {chparam + '; ' if chparam else ''}"
@@ -127,6 +128,7 @@ def pnr(r, out):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--picorv32", required=True, help="picorv32.v of the PyPI package")
+    ap.add_argument("--serv", required=True, help="the rtl/ folder of the PyPI package pythondata-cpu-serv")
     ap.add_argument("--designs", default="dpram,controller,picorv32,top")
     ap.add_argument("--families", default="ice40,ecp5,xc7")
     ap.add_argument("--pnr", action="store_true")
@@ -141,12 +143,17 @@ def main():
         ap.error(f"unknown design or family: {', '.join(bad)}")
     if not os.path.isfile(a.picorv32):
         ap.error(f"--picorv32 {a.picorv32}: no such file (run make deps)")
+    serv = sorted(os.path.join(a.serv, f) for f in os.listdir(a.serv)
+                  if f.startswith("serv_") and f.endswith(".v") and f != "serv_synth_wrapper.v") \
+        if os.path.isdir(a.serv) else []
+    if not serv:
+        ap.error(f"--serv {a.serv}: no serv_*.v there (run make deps)")
     os.makedirs(a.out, exist_ok=True)
     rows = []
     for fam in fams:
         for d in designs:
             print(f"fpga_report: {d} on {fam} ...", flush=True)
-            r = synth(d, fam, a.picorv32, a.out)
+            r = synth(d, fam, a.picorv32, serv, a.out)
             if a.pnr and fam == "ice40" and "error" not in r:
                 pnr(r, a.out)
             rows.append(r)

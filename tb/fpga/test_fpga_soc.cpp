@@ -5,8 +5,8 @@
 //   test_fpga_soc [--cycles N] [--report FILE] [--expect-error]
 //
 // Watches the LEDs for N clocks (default 30,000,000, 2.5 s at 12 MHz) and
-// passes when both heartbeats (LED1: sensor, every 4096 Exports; LED2:
-// actuator, every 4096 New Imports) changed at least twice, neither core
+// passes when both heartbeats (LED1: sensor, every 256 Exports; LED2:
+// actuator, every 256 New Imports) changed at least twice, neither core
 // stopped (LED3, LED4), the controller flagged no error (LED5) and the red
 // LED never lit.  --expect-error (negative test: a model built with a
 // corrupted image) inverts the verdict: it passes only if the red LED lit.

@@ -22,7 +22,8 @@
 module serv_core #(
     parameter CORE       = 0,     // index: the firmware plusarg is +fw<CORE>=FILE (0..3)
     parameter ADDR_WIDTH = 10,    // word-address bits of the DPRAM port
-    parameter RAM_WORDS  = 4096   // words of the local RAM (16 KiB)
+    parameter RAM_WORDS  = 4096,  // words of the local RAM (16 KiB)
+    parameter FW_FILE    = ""     // program image at configuration (board_memmap)
 ) (
     input  wire                  clk_i,
     input  wire                  rst_i,     // synchronous, active high
@@ -113,7 +114,7 @@ module serv_core #(
         .rdata_i   (mem_rdata)
     );
 
-    board_memmap #(.CORE(CORE), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_map (
+    board_memmap #(.CORE(CORE), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE)) u_map (
         .clk_i     (clk_i),
         .rst_i     (rst_i),
         .stall_i   (stall_i),
