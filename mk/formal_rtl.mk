@@ -1,0 +1,61 @@
+# mk/formal_rtl.mk -- bounded proofs of the RTL properties (formal/rtl/,
+# README "Formal proofs (RTL)").  formal/rtl/run_check.py runs one check,
+# names the failed assertions and writes build/reports/formal_rtl.json.
+#   formal-dpram                  albatross_dpram: access time, byte atomicity
+#                                 (yosys-smtbmc + z3)
+#   formal-controller             albatross_controller, black box: complete
+#                                 publication, no write of a locked buffer, slot
+#                                 times (yosys-abc bmc3: z3 cannot unroll it)
+#   formal-*-negative-<variant>   a broken variant; passes only if the proof
+#                                 fails on the named property
+# Build outputs in build/formal/rtl/.
+
+FRTL_DIR   := $(BUILD)/formal/rtl
+FRTL_RUN   := $(PYTHON) formal/rtl/run_check.py
+FRTL_DEPS  := formal/rtl/run_check.py mk/formal_rtl.mk
+
+DPRAM_PROPS := access_time_a,access_time_b,no_spurious_a,no_spurious_b,atomicity_a,atomicity_b
+DPRAM_DEPTH := 16
+frtl_dpram   = $(FRTL_RUN) $(1) --engine smtbmc --top formal_dpram --depth $(DPRAM_DEPTH) \
+               --props $(DPRAM_PROPS) --src $(2) formal/rtl/formal_dpram.v --define DUT=$(3) --expect $(4)
+
+CTRL_PROPS := complete_publish,no_locked_write,slot_idle,slot_start,time_step,rom_valid
+CTRL_REACH := reach_publish0,reach_publish1
+# Two slots: cycle 0 starts at time 23, the second slot's first access is at 57.
+CTRL_DEPTH := 62
+frtl_ctrl    = $(FRTL_RUN) $(1) --engine abc --top formal_controller --depth $(CTRL_DEPTH) \
+               --src $(2) formal/rtl/formal_controller.v --props $(3) --expect $(4)
+
+FORMAL_RTL_TESTS := formal-dpram formal-dpram-negative-no_arbitration formal-dpram-negative-priority_a \
+                    formal-controller formal-controller-negative-ignore_readlocked \
+                    formal-controller-negative-publish_early formal-controller-negative-slot_late
+TESTS        += $(FORMAL_RTL_TESTS)
+FORMAL_TESTS += $(FORMAL_RTL_TESTS)
+.PHONY: $(addprefix test-,$(FORMAL_RTL_TESTS))
+
+test-formal-dpram: $(FRTL_DEPS)
+	@tools/run_test.sh formal-dpram $(call frtl_dpram,formal-dpram,rtl/albatross_dpram.v,albatross_dpram,pass)
+# dpram_no_arbitration tears a byte read while the other port writes it.
+test-formal-dpram-negative-no_arbitration: $(FRTL_DEPS)
+	@tools/run_test.sh formal-dpram-negative-no_arbitration $(call frtl_dpram,formal-dpram-negative-no_arbitration,tb/rtl/dpram_no_arbitration.v,dpram_no_arbitration,'atomicity_a|atomicity_b')
+# dpram_priority_a blocks port B while port A is busy.
+test-formal-dpram-negative-priority_a: $(FRTL_DEPS)
+	@tools/run_test.sh formal-dpram-negative-priority_a $(call frtl_dpram,formal-dpram-negative-priority_a,tb/rtl/dpram_priority_a.v,dpram_priority_a,access_time_b)
+
+test-formal-controller: $(FRTL_DEPS) formal/rtl/ctrl_time.hex rtl/albatross_controller.v
+	@tools/run_test.sh formal-controller $(call frtl_ctrl,formal-controller,rtl/albatross_controller.v,$(CTRL_PROPS),pass) --reach $(CTRL_REACH)
+
+# Controller mutants: tb/mutants/controller/ignore_readlocked.sed (shared with
+# the system tests) and formal/rtl/mutants/*.sed (formal only).
+$(FRTL_DIR)/mutant-src/%/albatross_controller.v: rtl/albatross_controller.v
+	@mkdir -p $(@D)
+	sed -f $(firstword $(wildcard formal/rtl/mutants/$*.sed tb/mutants/controller/$*.sed)) $< > $@
+	@if cmp -s $@ $<; then echo "controller mutant $* did not apply: rtl/albatross_controller.v no longer has the line its .sed edits"; \
+	    rm -f $@; exit 1; fi
+.SECONDARY:
+FRTL_CTRL_NEG := ignore_readlocked:no_locked_write publish_early:complete_publish slot_late:slot_start
+define frtl_ctrl_negative
+test-formal-controller-negative-$(call neg_field,$(1),1): $(FRTL_DEPS) $(FRTL_DIR)/mutant-src/$(call neg_field,$(1),1)/albatross_controller.v
+	@tools/run_test.sh formal-controller-negative-$(call neg_field,$(1),1) $$(call frtl_ctrl,formal-controller-negative-$(call neg_field,$(1),1),$(FRTL_DIR)/mutant-src/$(call neg_field,$(1),1)/albatross_controller.v,$(call neg_field,$(1),2),$(call neg_field,$(1),2))
+endef
+$(foreach n,$(FRTL_CTRL_NEG),$(eval $(call frtl_ctrl_negative,$(n))))
