@@ -273,6 +273,29 @@ def robot_scenarios():
                   "worst age / bound (live producers)", "RadarMap stale reported", "verdict"], rows)
 
 
+def fpga():
+    r = load("fpga.json")
+    if not r:
+        return missing("fpga.json", "make synth")
+    names = {"dpram": "albatross_dpram (4 KiB)", "controller": "albatross_controller (NB 4, N_CHAN 16)",
+             "picorv32": "one PicoRV32 (as pico_core)", "top": "board top (two boards)"}
+    rows = []
+    for e in r["rows"]:
+        if "luts" not in e:
+            rows.append([names.get(e["design"], e["design"]), e["family"], "error", "", "", "", "", ""])
+            continue
+        fm = e.get("fmax_mhz")
+        rows.append([names.get(e["design"], e["design"]), e["family"], n(e["luts"]), n(e["ffs"]), n(e["carries"]),
+                     n(e["brams"]), n(e["lutrams"]),
+                     (f"{fm:.1f} ({e['pnr_part']})" if fm is not None else "-")])
+    out = table(["design", "family", "LUTs", "FFs", "carries", "block RAMs", "LUT RAMs", "Fmax MHz (part)"], rows)
+    ratios = r.get("controller_over_picorv32_luts", {})
+    if ratios:
+        out += "\n\nController LUTs / one PicoRV32's LUTs: " + ", ".join(
+            f"{fam} {x:.2f}" for fam, x in ratios.items()) + f" (`{REPORTS}/fpga.json`)."
+    return out
+
+
 def sim_speed():
     r = load("sim_speed.json")
     if not r:
@@ -301,9 +324,30 @@ def formal_spin():
                   "depth", "pan seconds"], rows)
 
 
-SECTIONS = {"robot": robot, "robot-scenarios": robot_scenarios, "sim-speed": sim_speed, "system-latency": system_latency, "system-delivery": system_delivery, "system-bus": system_bus,"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
+def formal_rtl():
+    rep = load("formal_rtl.json")
+    rows = []
+    for c in (rep or {}).get("checks", []):
+        det = c.get("detail") or {}
+        if c["expect"] == "pass":
+            props = ", ".join(f"`{p}`" for p in c["properties"])
+            result = "hold" if c["ok"] else "**fail: " + ", ".join(det.get("failed", [])) + "**"
+        else:
+            props = "broken variant, must fail on " + " or ".join(f"`{e}`" for e in c["expect"].split("|"))
+            failed = det.get("failed", [])
+            result = ("caught by " if c["ok"] else "**not caught**: ") + (", ".join(f"`{f}`" for f in failed) or "none")
+        rows.append([c["check"], c["engine"], props, result, c["depth"], f"{c['seconds']:.1f}"])
+    if not rows:
+        return missing("formal_rtl.json", "make formal")
+    return table(["check", "engine", "properties", "result", "depth (clocks)", "seconds"], rows)
+
+
+SECTIONS = {"fpga": fpga, "robot": robot, "robot-scenarios": robot_scenarios, "sim-speed": sim_speed, "system-latency": system_latency, "system-delivery": system_delivery, "system-bus": system_bus,"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
             "driver-size": driver_size, "bench": bench, "cdc": cdc, "synth": synth,
             "pico-cost": pico_cost, "formal-spin": formal_spin}
+
+
+SECTIONS["formal-rtl"] = formal_rtl
 
 
 def main():
