@@ -114,7 +114,7 @@ module albatross_controller #(
     localparam AW           = ADDR_WIDTH;
     localparam BOARD_BITS   = 4;                    // m_adr_o = {board[3:0], word}
     localparam FETCH_CYCLES = 10;                   // slot start to the first access on the bus
-    localparam K            = TIMEOUT + 3;          // deadline margin: dl = E1 + E2 + 1 - K
+    localparam K            = TIMEOUT + 3;          // deadline margin: dl = E1 + E2 - K
     localparam NE_FIT       = (ROM_WORDS - 4) / 8;  // entries the ROM can hold
     localparam NE_MAX       = (NE_FIT > 255) ? 255 : NE_FIT;
     localparam CYC          = NE_MAX;               // index of the cycle node in the entry ring
@@ -134,7 +134,8 @@ module albatross_controller #(
     localparam [PC_BITS-1:0]  PC_LAST   = PC_LAST_I[PC_BITS-1:0];    // last clock of a poll interval
     localparam [CB_BITS-1:0]  II_LAST   = II_LAST_I[CB_BITS-1:0];    // last clock of INIT
     localparam [LB-1:0]       CYC_IDX   = CYC[LB-1:0];
-    localparam [33:0]         PRE       = 34'd1 - K;                  // scan accumulator start
+    localparam [33:0]         PRE       = 34'd1 - K;                  // HDR accumulator start
+    localparam [33:0]         PRE_S     = 34'd0 - K;                  // SCAN accumulator start
     localparam [31:0]         CK_INIT   = 32'hA1BA7055;
     localparam [11:0]         W_STATUS  = 2 * N_CHAN + 1;
     localparam [255:0]        M_FC_HOLD = ge_mask(K + 2);                  // fc >= K + 2
@@ -172,7 +173,7 @@ module albatross_controller #(
 
     // Control codes from the FSM to the data path.
     localparam [1:0] FC_INC = 2'd0, FC_0 = 2'd1, FC_1 = 2'd2;
-    localparam [2:0] R_INC = 3'd0, R_HOLD = 3'd1, R_ZERO = 3'd2, R_PRE = 3'd3, R_ACC = 3'd4;
+    localparam [2:0] R_INC = 3'd0, R_HOLD = 3'd1, R_ZERO = 3'd2, R_PRE = 3'd3, R_PRE_S = 3'd4;
     localparam [1:0] E_HOLD = 2'd0, E_NEXT = 2'd1, E_CYC = 2'd2;
     localparam [1:0] C_HOLD = 2'd0, C_ENT = 2'd1, C_ZERO = 2'd2, C_INC = 2'd3;
     localparam [1:0] RL_HOLD = 2'd0, RL_APEND = 2'd1, RL_ZERO = 2'd2;
@@ -208,7 +209,12 @@ module albatross_controller #(
     reg [15:0]         cycles_q;          // cycles begun
     // schedule
     reg [33:0]         rel_q;             // signed: clocks since the cycle start; SCAN accumulator
-    reg [33:0]         dl_q;              // signed: an access may be decided while rel < dl
+    reg [33:0]         dl_q;              // signed: an access may be decided while rel <= dl
+    reg                c2_q;              // rel_q <= dl_q (from RING on; set a clock ahead)
+    reg                c1w_q;             // rel_q >= rom_q if rel and rom_q did not jump (a clock ahead)
+    reg                rel0_q;            // rel_q was zeroed (a cycle start)
+    reg                rel_acc_q;         // HDR fc 2, SCAN fc 2..3: rel_sum adds rom_q
+    reg                rel_two_q;         // SCAN fc 4: rel_sum adds 2
     reg [LB-1:0]       ent_q;             // next entry of the ring (CYC: the cycle node)
     reg [LB-1:0]       cur_q;             // entry being checked or fetched
     reg [LB-1:0]       lv_q;              // SCAN: last valid entry (CYC: none yet)
@@ -243,6 +249,7 @@ module albatross_controller #(
     reg [1:0]          apend_q;           // value being stored into ReadLocked
     reg [1:0]          di_q;              // destination of the access
     reg [AW-1:0]       wi_q;              // word of the access
+    reg [AW-1:0]       w1_q;              // W + 1: destination buffer stride (a clock after w_q)
     reg [PC_BITS-1:0]  pc_q;              // poll interval
     // bus
     reg                we_q;
@@ -254,7 +261,7 @@ module albatross_controller #(
     // ------------------------------------------------------------ memories
     reg [31:0]   rom [0:ROM_WORDS-1];
     reg [31:0]   rom_q;
-    reg [33:0]   dlm_dl [0:NE_MAX];       // entry: dl; cycle node: H1 - 1
+    reg [33:0]   dlm_dl [0:NE_MAX];       // entry: dl; cycle node: H1 - 2
     reg [33:0]   dlm_dl_q;
     reg [LB+7:0] dlm_lk [0:NE_MAX];       // valid entry, cycle node: {next valid, invalid skipped}
     reg [LB+7:0] dlm_lk_q;
@@ -340,8 +347,11 @@ module albatross_controller #(
     wire        out_cur  = |(out_q & dsel);                   // di_q was dropped
     wire [1:0]  act_nxt  = sel2(act_q, first4(nm_next));      // Actual copy of the next one
     wire [1:0]  act_imp  = sel2(act_q, first4(nm_imp));
-    wire        c1       = $signed(rel_q) >= $signed({2'b00, rom_q});   // slot start reached
-    wire        c2       = $signed(rel_q) <  $signed(dl_q);             // before the deadline
+    // The FSM sees only registered compare results, computed a clock ahead
+    // (see "schedule compares" below).
+    wire        c1       = c1w_q | (rel0_q && rom_q == 32'd0);  // WAIT: slot start reached (rel >= E1)
+    wire        c2       = c2_q;                                // before the deadline (rel <= dl)
+    wire        c1_scan;                                        // SCAN_LAST: rel >= H1
     wire [LB-1:0] lk_next = dlm_lk_q[LB+7:8];
     wire [7:0]  lk_skip  = dlm_lk_q[7:0];
     wire [7:0]  a_byte   = m_dat_i[7:0];                     // Actual
@@ -353,7 +363,7 @@ module albatross_controller #(
     wire        wi1_is_w = {{(15-AW){1'b0}}, wi_inc} == {4'd0, w_q};
     wire        cur_last = {{(16-LB){1'b0}}, cur_q} + 16'd1 == {8'd0, ne_q};
     wire [7:0]  fc_q8    = {{(8-FC_BITS){1'b0}}, fc_q};
-    wire        scan_ok  = !bad_q && ck_ok_q && !c1;         // c1 here: E1 + E2 - 1 >= H1
+    wire        scan_ok  = !bad_q && ck_ok_q && !c1_scan;    // c1_scan: E1 + E2 - 1 >= H1
 
     // ------------------------------------------------------------ FSM (control only)
     reg [4:0] state_d;
@@ -370,9 +380,10 @@ module albatross_controller #(
     reg [2:0] di_op;
     reg [1:0] wi_op, pc_op;
     reg       go_new, go_retry;
+    reg [4:0] acc_st;     // go_new: the state of the access (state_d)
     reg [2:0] dat_sel;
-    reg       ev_we, ev_pop;
-    reg [1:0] ev_lane;
+    reg       ev_we;
+    reg [1:0] ev_lane_f;  // the lane event_inc names (ev_lane decodes it directly)
     reg       cyc_inc;
     reg [1:0] rerr_op;
     reg       st_we;
@@ -406,10 +417,10 @@ module albatross_controller #(
         pc_op      = P_INC;
         go_new     = 1'b0;
         go_retry   = 1'b0;
+        acc_st     = S_POLL;
         dat_sel    = DS_NONE;
         ev_we      = 1'b0;
-        ev_pop     = 1'b0;
-        ev_lane    = L_RETRY;
+        ev_lane_f  = L_RETRY;
         cyc_inc    = 1'b0;
         rerr_op    = RE_NONE;
         st_we      = 1'b0;
@@ -423,10 +434,10 @@ module albatross_controller #(
                 end
             end
 
-            // rom_q: H0..H3 at fc 1..4.  rel: 1-K (fc 2), H1+1-K (fc 3), +1 to H1-1 (fc K+1).
+            // rom_q: H0..H3 at fc 1..4.  rel: 1-K (fc 2), H1+1-K (fc 3: rel_sum adds
+            // H1 at fc 2), +1 to H1-2 (fc K, the cycle node's dl) and H1-1 (fc K+1).
             S_HDR: begin
                 if (fc_q == 1)      rel_op = R_PRE;
-                else if (fc_q == 2) rel_op = R_ACC;
                 if (fc_q == HDR_LAST) begin
                     if (!bad_q && ck_ok_q && !rel_q[33]) begin
                         state_d = S_SCAN;
@@ -441,12 +452,12 @@ module albatross_controller #(
                 end
             end
 
-            // rom_q: E0..E7 at fc 1..8, H1 from fc 9.  rel: 1-K (fc 2), E1+1-K (fc 3:
-            // order check against dl_q = the last valid entry's dl), dl = E1+E2+1-K
-            // (fc 4, stored), +1 to E1+E2-1 (fc K+2: c1 is the cycle check).
+            // rom_q: E0..E7 at fc 1..8, H1 from fc 9.  rel (rel_sum adds E1 at fc 2,
+            // E2 at fc 3, 2 at fc 4): -K (fc 2), E1-K (fc 3: order check against
+            // dl_q = the last valid entry's dl), dl = E1+E2-K (fc 4, stored),
+            // E1+E2+2-K (fc 5), +1 to E1+E2-1 (fc K+2: c1_scan is the cycle check).
             S_SCAN: begin
-                if (fc_q == 1)                        rel_op = R_PRE;
-                else if (fc_q == 2 || fc_q == 3)      rel_op = R_ACC;
+                if (fc_q == 1)                        rel_op = R_PRE_S;
                 else if (M_FC_HOLD[fc_q8])            rel_op = R_HOLD;
                 if (fc_q == SCAN_LAST) begin
                     fc_op = FC_0;
@@ -623,8 +634,7 @@ module albatross_controller #(
             S_WRAP: begin
                 st_we = 1'b1;
                 if (ab_m != 4'd0) begin
-                    event_inc(L_ABANDON);
-                    ev_pop = 1'b1;
+                    event_inc(L_ABANDON);                 // of popcount(ab_m)
                 end
                 if (ent_q != CYC_IDX) state_d = S_WAIT;
                 else if (!c2)         cycle_start;
@@ -637,6 +647,7 @@ module albatross_controller #(
                 else if (pc_q == PC_LAST) begin
                     pc_op   = P_ZERO;
                     go_new  = 1'b1;
+                    acc_st  = S_POLL;
                     state_d = S_POLL;
                 end
             end
@@ -663,6 +674,7 @@ module albatross_controller #(
     task access;
         input [4:0] s;
         begin
+            acc_st = s;
             if (c2) begin
                 go_new  = 1'b1;
                 state_d = s;
@@ -675,7 +687,7 @@ module albatross_controller #(
     task end_transfer;
         begin
             state_d = S_WRAP;
-            dl_ld   = 1'b1;                      // the next entry's dl, or H1 - 1
+            dl_ld   = 1'b1;                      // the next entry's dl, or H1 - 2
         end
     endtask
 
@@ -691,7 +703,7 @@ module albatross_controller #(
         input [1:0] lane;
         begin
             ev_we   = 1'b1;
-            ev_lane = lane;
+            ev_lane_f = lane;
         end
     endtask
 
@@ -836,13 +848,15 @@ module albatross_controller #(
         endcase
     end
 
-    wire          a_src  = state_d == S_SA_LD || state_d == S_SRL_ST ||
-                           state_d == S_SW_LD || state_d == S_POLL;
-    wire          a_data = state_d == S_SW_LD || state_d == S_DW_ST;
+    // a_src, a_data from acc_st (== state_d whenever go_new), not from the
+    // cycle-start logic, so the address arithmetic starts earlier.
+    wire          a_src  = acc_st == S_SA_LD || acc_st == S_SRL_ST ||
+                           acc_st == S_SW_LD || acc_st == S_POLL;
+    wire          a_data = acc_st == S_SW_LD || acc_st == S_DW_ST;
     wire [AW-1:0] a_base = a_src ? sbase_q : d_base;
     wire [BOARD_BITS-1:0] a_brd = a_src ? sbrd_q : d_brd;
     wire [1:0]    a_buf  = a_src ? rl_q : sel2(wbuf_d, di_d);
-    wire [AW-1:0] a_str  = w_q[AW-1:0] + {{(AW-1){1'b0}}, ~a_src};
+    wire [AW-1:0] a_str  = a_src ? w_q[AW-1:0] : w1_q;
     wire [AW-1:0] a_off  = (a_buf == 2'd2) ? a_str :
                            (a_buf == 2'd3) ? {a_str[AW-2:0], 1'b0} : {AW{1'b0}};
     wire [AW-1:0] a_word = a_base + (a_data ? a_off + wi_d + {{(AW-1){1'b0}}, 1'b1} : {AW{1'b0}});
@@ -892,9 +906,9 @@ module albatross_controller #(
         rom_q <= rom[rom_ra];
     end
 
-    // Entry ring: dl written at SCAN fc 4 (cycle node: H1 - 1 at HDR_LAST); a
+    // Entry ring: dl written at SCAN fc 4 (cycle node: H1 - 2 at HDR fc K); a
     // link when an entry is found valid, and the last one in RING.
-    wire          dl_we  = (state_q == S_HDR && fc_q == HDR_LAST) || (state_q == S_SCAN && fc_q == 4);
+    wire          dl_we  = (state_q == S_HDR && fc_q == K) || (state_q == S_SCAN && fc_q == 4);
     wire [LB-1:0] dl_wa  = (state_q == S_HDR) ? CYC_IDX : cur_q;
     wire          lk_we  = (state_q == S_SCAN && fc_q == SCAN_LAST && scan_ok) ||
                            (state_q == S_RING && fc_q == 0);
@@ -925,6 +939,24 @@ module albatross_controller #(
     end
 
     // Counters: lane ev_lane of channel chan_q := saturate(old + 1, or + abandoned).
+    // The lane and the amount are decoded straight from state_q and the bus
+    // (short paths to the counter write data); they are the lane event_inc
+    // names whenever ev_we (checked in simulation): abandoned in WRAP, a retry
+    // after a failed access (no ack), a transfer on an ack of a DA_ST or of a
+    // DA_LD with a valid Actual, else corrupt.
+    wire [1:0] ev_lane = (state_q == S_WRAP) ? L_ABANDON :
+                         !m_ack_i ? L_RETRY :
+                         (state_q == S_DA_ST || (state_q == S_DA_LD && vidx(a_byte))) ? L_XFER : L_CORRUPT;
+    wire       ev_pop  = state_q == S_WRAP;
+`ifndef SYNTHESIS
+    always @(posedge clk_i) begin
+        if (!rst_i && ev_we && ev_lane != ev_lane_f) begin
+            $display("albatross_controller: counter lane %0d decoded, %0d named (state %0d)",
+                     ev_lane, ev_lane_f, state_q);
+            $stop;
+        end
+    end
+`endif
     reg [15:0] ev_old;
     always @* begin
         case (ev_lane)
@@ -997,7 +1029,10 @@ module albatross_controller #(
     end
 
     // ------------------------------------------------------------ data path (no reset)
-    wire [33:0] rel_sum  = rel_q + ((rel_op == R_ACC) ? {2'b00, rom_q} : 34'd1);
+    // rel_sum: the next rel unless zeroed, preset or held.  Its addend comes
+    // from registers only: H1 at HDR fc 2, E1 and E2 at SCAN fc 2 and 3, 2 at
+    // SCAN fc 4, else 1 (rel_acc_q, rel_two_q: decoded a clock ahead).
+    wire [33:0] rel_sum  = rel_q + (rel_acc_q ? {2'b00, rom_q} : {32'd0, rel_two_q, ~rel_two_q});
     wire        ck_first = fc_q == 1;
     wire        ck_acc   = (state_q == S_HDR && M_FC_H3[fc_q8]) ||
                            ((state_q == S_SCAN || state_q == S_FETCH) && M_FC_E7[fc_q8]);
@@ -1005,6 +1040,28 @@ module albatross_controller #(
                            ((state_q == S_SCAN || state_q == S_FETCH) && fc_q == 8);
     wire [31:0] ck_base  = ck_first ? CK_INIT : ck_q;
     wire        st_ld    = state_q == S_FETCH && fc_q == 2;
+    wire        dl_load  = dl_ld || (state_q == S_SCAN && fc_q == 1) || (st_ld && kind_q == K_IDLE);
+
+    // Schedule compares, a clock ahead.  c2_q: rel <= dl next clock, that is
+    // 0 <= dl (rel zeroed) or rel_q < dl (rel + 1), dl being dl_q or the
+    // dlm_dl_q it loads; valid from the RING cycle start on (only cycle
+    // starts and +1 follow).  c1w_q: rel_sum >= rom_q, which is rel >= rom_q
+    // next clock if rel goes up by 1 and rom_q holds: in WAIT, rom_q holds E1
+    // of ent_q from the clock before (WRAP, FETCH fc 9, WAIT), except after a
+    // cycle start (rel0_q: rel = 0, and c1 is E1 == 0).
+    wire        c2_lt    = $signed(rel_q) < $signed(dl_q);           // also SCAN fc 3: E1 < last E1 + E2
+    wire        c2_lt_m  = $signed(rel_q) < $signed(dlm_dl_q);
+    wire        c2_d     = (rel_op == R_ZERO) ? ~(dl_load ? dlm_dl_q[33] : dl_q[33]) :
+                           (rel_op == R_HOLD) ? c2_q : (dl_load ? c2_lt_m : c2_lt);
+    wire        c1w_d    = rel_op != R_ZERO && $signed(rel_sum) >= $signed({2'b00, rom_q});
+    // SCAN cycle check at SCAN_LAST (rom_q = H1 from fc 9; rel held from fc K+2).
+    generate
+        if (K >= 8) begin : g_c1_scan_ahead        // SCAN_LAST = K+2, fc K+1 >= 9 has +1 and H1
+            assign c1_scan = c1w_q;
+        end else begin : g_c1_scan_now
+            assign c1_scan = $signed(rel_q) >= $signed({2'b00, rom_q});
+        end
+    endgenerate
 
     // Field checks: HDR fc 1; SCAN fc 1 (E0), 3 (order, length), 4 (source), 5, 6 (destinations).
     wire [13:0] e3     = {2'b00, w_q} + {1'b0, w_q, 1'b0};          // 3 * W
@@ -1035,7 +1092,7 @@ module albatross_controller #(
         else if (state_q == S_SCAN)
             case (fc_q)
                 1: bad_now = e0_bad;
-                3: bad_now = (lv_q != CYC_IDX && c2) || (rom_q[31:8] == 24'd0 && M_LE_FC[rom_q[7:0]]);
+                3: bad_now = (lv_q != CYC_IDX && c2_lt) || (rom_q[31:8] == 24'd0 && M_LE_FC[rom_q[7:0]]);
                 4: bad_now = kind_q == K_COPY && !src_ok;
                 5: bad_now = kind_q != K_IDLE && (!lo_ok || (nd_ge2 && !hi_ok));
                 6: bad_now = kind_q != K_IDLE && nd_ge3 && (!lo_ok || (nd_q == 3'd4 && !hi_ok));
@@ -1045,11 +1102,17 @@ module albatross_controller #(
 
     always @(posedge clk_i) begin
         // schedule
-        if (rel_op == R_ZERO)      rel_q <= 34'd0;
-        else if (rel_op == R_PRE)  rel_q <= PRE;
-        else if (rel_op != R_HOLD) rel_q <= rel_sum;
-        if (dl_ld || (state_q == S_SCAN && fc_q == 1) || (st_ld && kind_q == K_IDLE))
-            dl_q <= dlm_dl_q;
+        if (rel_op == R_ZERO)       rel_q <= 34'd0;
+        else if (rel_op == R_PRE)   rel_q <= PRE;
+        else if (rel_op == R_PRE_S) rel_q <= PRE_S;
+        else if (rel_op != R_HOLD)  rel_q <= rel_sum;
+        if (dl_load) dl_q <= dlm_dl_q;
+        c2_q   <= c2_d;
+        c1w_q  <= c1w_d;
+        rel0_q <= rel_op == R_ZERO;
+        rel_acc_q <= !rst_i && ((state_d == S_HDR && fc_d == 2) ||
+                                (state_d == S_SCAN && (fc_d == 2 || fc_d == 3)));
+        rel_two_q <= !rst_i && state_d == S_SCAN && fc_d == 4;
         ent_q <= ent_d;
         cur_q <= cur_d;
         lv_q  <= lv_d;
@@ -1123,6 +1186,7 @@ module albatross_controller #(
         if (apend_ld)      apend_q <= a_byte[1:0];
         di_q <= di_d;
         wi_q <= wi_d;
+        w1_q <= w_q[AW-1:0] + {{(AW-1){1'b0}}, 1'b1};
         case (pc_op)
             P_ZERO:  pc_q <= {PC_BITS{1'b0}};
             P_LAST:  pc_q <= PC_LAST;
