@@ -15,7 +15,8 @@
 module icebreaker_top #(
     parameter ROM_FILE   = "build/fpga/duo/rom.hex",  // schedule ROM image
     parameter FW_PREFIX  = "build/fpga/duo/fw",       // board c's program: <prefix><c>.hex
-    parameter RAM_PREFIX = "build/fpga/duo/ram"       // board c's DPRAM image: <prefix><c>.hex
+    parameter RAM_PREFIX = "build/fpga/duo/ram",      // board c's DPRAM image: <prefix><c>.hex
+    parameter SERV_MASK  = 1                          // board 0 (sensor) on SERV; 0: both on PicoRV32 (simulation of the ULX3S/Arty system)
 ) (
     input  wire clk_i,      // 12 MHz
     input  wire btn_n_i,    // BTN_N, active low
@@ -31,7 +32,7 @@ module icebreaker_top #(
 
     albatross_soc #(
         .NB(2), .ADDR_WIDTH(8), .RAM_WORDS(512), .N_CHAN(4), .ROM_WORDS(256),
-        .ROM_FILE(ROM_FILE), .FW_PREFIX(FW_PREFIX), .RAM_PREFIX(RAM_PREFIX), .SERV_MASK(1)
+        .ROM_FILE(ROM_FILE), .FW_PREFIX(FW_PREFIX), .RAM_PREFIX(RAM_PREFIX), .SERV_MASK(SERV_MASK)
     ) u_soc (
         .clk_i(clk_i), .rst_i(rst), .done_o(done), .err_o(err), .beat_o(beat),
         .trap_o(trap), .ctrl_err_o(ctrl_err)

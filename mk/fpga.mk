@@ -11,7 +11,8 @@
 #                    the constraint -> build/reports/fpga_pnr.json
 #   make bitstream   make pnr, then icepack -> build/fpga/icebreaker_top.bin
 #   make test-fpga-soc    the iCEBreaker top simulated (Verilator): both
-#                    cores' heartbeats blink, no error LED (-negative: a
+#                    cores' heartbeats blink, no error LED (-pico: both
+#                    boards on PicoRV32, the ULX3S/Arty system; -negative: a
 #                    corrupted ROM image must light the red LED)
 #   make test-fpga-icebreaker  make bitstream as a test: fits, meets 12 MHz
 #   make test-fpga-tops   the ULX3S and Arty tops synthesise (Yosys)
@@ -90,6 +91,7 @@ $(FPGA_DIR)/$(1)/Vicebreaker_top: $(FPGA_RTL) tb/fpga/test_fpga_soc.cpp tb/repor
 endef
 $(eval $(call fpga_sim,sim,))
 $(eval $(call fpga_sim,sim-badrom,-GROM_FILE='"$(FPGA_DIR)/badrom/rom.hex"'))
+$(eval $(call fpga_sim,sim-pico,-GSERV_MASK=0))
 FPGA_SIM := $(FPGA_DIR)/sim/Vicebreaker_top
 $(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
 	@mkdir -p $(@D)
@@ -97,10 +99,14 @@ $(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
 
 BENCHES += synth
 
-TESTS += fpga-soc fpga-soc-negative fpga-icebreaker fpga-tops fpga-lint
-.PHONY: test-fpga-soc test-fpga-soc-negative test-fpga-icebreaker test-fpga-tops test-fpga-lint
+TESTS += fpga-soc fpga-soc-pico fpga-soc-negative fpga-icebreaker fpga-tops fpga-lint
+.PHONY: test-fpga-soc test-fpga-soc-pico test-fpga-soc-negative test-fpga-icebreaker test-fpga-tops test-fpga-lint
 test-fpga-soc: $(FPGA_SIM) $(FPGA_IMAGES)
 	@tools/run_test.sh fpga-soc $(FPGA_SIM) --cycles 16000000 --report $(REPORTS)/fpga_soc.json
+# The same system with both boards on PicoRV32, as on the ULX3S and the Arty.
+test-fpga-soc-pico: $(FPGA_DIR)/sim-pico/Vicebreaker_top $(FPGA_IMAGES)
+	@tools/run_test.sh fpga-soc-pico $(FPGA_DIR)/sim-pico/Vicebreaker_top --cycles 4000000 \
+	    --report $(REPORTS)/fpga_soc_pico.json
 test-fpga-soc-negative: $(FPGA_DIR)/sim-badrom/Vicebreaker_top $(FPGA_IMAGES) $(FPGA_DIR)/badrom/rom.hex
 	@tools/run_test.sh fpga-soc-negative $(FPGA_DIR)/sim-badrom/Vicebreaker_top --cycles 100000 --expect-error
 
