@@ -19,7 +19,7 @@ TB_DIR        := $(BUILD)/tb
 TB            := $(TB_DIR)/albatross/tb_dpram
 RTL           := $(sort $(wildcard rtl/*.v))
 # pico_pair.v and pico_core.v need picorv32.v from PyPI: linted by test-pico-lint (mk/pico.mk).
-TB_RTL        := $(filter-out tb/rtl/pico_pair.v tb/rtl/pico_core.v,$(sort $(wildcard tb/rtl/*.v)))
+TB_RTL        := $(filter-out tb/rtl/pico_pair.v tb/rtl/pico_core.v tb/rtl/board_core.v,$(sort $(wildcard tb/rtl/*.v)))
 
 # Helpers for the fragments: field N of a colon-separated list entry.
 comma         := ,

@@ -93,52 +93,28 @@ module albatross_soc #(
                 .b_dat_i(s_wdat[c*32 +: 32]), .b_dat_o(s_rdat[c*32 +: 32]), .b_ack_o(s_ack[c])
             );
 
-            if (((SERV_MASK >> c) & 1) == 0) begin : g_pico
-                pico_core #(.CORE(c), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE),
-                            .SMALL(1)) u_core (
-                    .clk_i     (clk_i),
-                    .rst_i     (rst_i),
-                    .stall_i   (1'b0),
-                    .wb_cyc_o  (a_cyc),
-                    .wb_stb_o  (a_stb),
-                    .wb_we_o   (a_we),
-                    .wb_adr_o  (a_adr),
-                    .wb_sel_o  (a_sel),
-                    .wb_dat_o  (a_wdat),
-                    .wb_dat_i  (a_rdat),
-                    .wb_ack_i  (a_ack),
-                    .done_o    (done_o[c]),
-                    .code_o    (code),
-                    .stat_o    (stat),
-                    .ev_valid_o(ev_valid),
-                    .ev_data_o (ev_data),
-                    .ev_arg_o  (ev_arg),
-                    .trap_o    (trap_o[c]),
-                    .bus_err_o (bus_err)
-                );
-            end else begin : g_serv
-                serv_core #(.CORE(c), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE)) u_core (
-                    .clk_i     (clk_i),
-                    .rst_i     (rst_i),
-                    .stall_i   (1'b0),
-                    .wb_cyc_o  (a_cyc),
-                    .wb_stb_o  (a_stb),
-                    .wb_we_o   (a_we),
-                    .wb_adr_o  (a_adr),
-                    .wb_sel_o  (a_sel),
-                    .wb_dat_o  (a_wdat),
-                    .wb_dat_i  (a_rdat),
-                    .wb_ack_i  (a_ack),
-                    .done_o    (done_o[c]),
-                    .code_o    (code),
-                    .stat_o    (stat),
-                    .ev_valid_o(ev_valid),
-                    .ev_data_o (ev_data),
-                    .ev_arg_o  (ev_arg),
-                    .trap_o    (trap_o[c]),
-                    .bus_err_o (bus_err)
-                );
-            end
+            board_core #(.SERV((SERV_MASK >> c) & 1), .CORE(c), .ADDR_WIDTH(ADDR_WIDTH),
+                         .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE), .SMALL(1)) u_core (
+                .clk_i     (clk_i),
+                .rst_i     (rst_i),
+                .stall_i   (1'b0),
+                .wb_cyc_o  (a_cyc),
+                .wb_stb_o  (a_stb),
+                .wb_we_o   (a_we),
+                .wb_adr_o  (a_adr),
+                .wb_sel_o  (a_sel),
+                .wb_dat_o  (a_wdat),
+                .wb_dat_i  (a_rdat),
+                .wb_ack_i  (a_ack),
+                .done_o    (done_o[c]),
+                .code_o    (code),
+                .stat_o    (stat),
+                .ev_valid_o(ev_valid),
+                .ev_data_o (ev_data),
+                .ev_arg_o  (ev_arg),
+                .trap_o    (trap_o[c]),
+                .bus_err_o (bus_err)
+            );
             assign err_o[c]  = done_o[c] & (|code);
             assign beat_o[c] = stat[0];
         end

@@ -27,7 +27,7 @@ FPGA_SCHED  := $(BUILD)/schedule/duo
 FPGA_BOARDS := sensor actuator
 FPGA_RAM    := 2048   # bytes of each core's program RAM (RAM_WORDS 512 in the tops)
 FPGA_RTL    := $(wildcard fpga/*.v) rtl/albatross_dpram.v rtl/albatross_bus.v rtl/albatross_controller.v \
-               tb/rtl/pico_core.v tb/rtl/serv_core.v tb/rtl/serv_bridge.v tb/rtl/board_memmap.v \
+               tb/rtl/board_core.v tb/rtl/pico_core.v tb/rtl/serv_core.v tb/rtl/serv_bridge.v tb/rtl/board_memmap.v \
                tb/rtl/pico_wb_adapter.v
 # PicoRV32 and SERV come from PyPI (mk/pico.mk, mk/serv.mk); Verilator flags.
 FPGA_VFLAGS  = -Wall --timescale 1ns/1ps -y rtl -y tb/rtl -y fpga -y $(SERV_CPU_RTL) tb/pico/picorv32.vlt tb/pico/serv.vlt

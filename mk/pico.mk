@@ -20,7 +20,7 @@ PICO_RV32_V   := $(if $(PICO_RV32_DIR),$(firstword $(shell find $(PICO_RV32_DIR)
 PICO_NEED      = @test -n "$(PICO_RV32_V)" || { echo "picorv32.v not found: the PyPI package \
 pythondata-cpu-picorv32 is missing; run make deps"; exit 1; }
 PICO_MAX_CYCLES ?= 20000000
-PICO_RTL      := tb/rtl/pico_pair.v tb/rtl/pico_core.v tb/rtl/board_memmap.v tb/rtl/pico_wb_adapter.v rtl/albatross_dpram.v
+PICO_RTL      := tb/rtl/pico_pair.v tb/rtl/board_core.v tb/rtl/pico_core.v tb/rtl/board_memmap.v tb/rtl/pico_wb_adapter.v rtl/albatross_dpram.v
 PICO_VFLAGS   := -Wall --timescale 1ns/1ps -y rtl -y tb/rtl --top-module pico_pair tb/pico/picorv32.vlt
 
 # Firmware: rv32i, the real driver with the mmio port (TOOLCHAIN.md flags).

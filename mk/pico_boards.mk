@@ -24,7 +24,7 @@ PB_DIR      := $(BUILD)/pico_boards
 PB_SCHED    := $(BUILD)/schedule/mobot3
 PB_BOARDS   := radar odometry navigation motor
 PB_CYCLES   ?= 1500000
-PB_RTL      := tb/rtl/pico_boards.v tb/rtl/pico_core.v tb/rtl/board_memmap.v tb/rtl/bus_fault_injector.v \
+PB_RTL      := tb/rtl/pico_boards.v tb/rtl/board_core.v tb/rtl/pico_core.v tb/rtl/board_memmap.v tb/rtl/bus_fault_injector.v \
                tb/rtl/pico_wb_adapter.v rtl/albatross_dpram.v rtl/albatross_bus.v rtl/albatross_controller.v
 PB_VFLAGS   := -Wall --timescale 1ns/1ps -y rtl -y tb/rtl --top-module pico_boards tb/pico/picorv32.vlt
 PB_SRC      := sim/mobot_sim.cpp tb/system/plan.cpp

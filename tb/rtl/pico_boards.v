@@ -125,51 +125,28 @@ module pico_boards #(
             assign dp_adr_o[c*ADDR_WIDTH +: ADDR_WIDTH]  = a_adr;
             assign dp_sel_o[c*4 +: 4]                    = a_sel;
 
-            if (((SERV_MASK >> c) & 1) == 0) begin : g_pico
-                pico_core #(.CORE(c), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_core (
-                    .clk_i    (clk_i),
-                    .rst_i    (rst_i),
-                    .stall_i  (stall_i[c]),
-                    .wb_cyc_o (a_cyc),
-                    .wb_stb_o (a_stb),
-                    .wb_we_o  (a_we),
-                    .wb_adr_o (a_adr),
-                    .wb_sel_o (a_sel),
-                    .wb_dat_o (a_wdat),
-                    .wb_dat_i (a_rdat),
-                    .wb_ack_i (a_ack),
-                    .done_o   (done_o[c]),
-                    .code_o   (code_o[c*32 +: 32]),
-                    .stat_o   (stat_o[c*128 +: 128]),
-                    .ev_valid_o(ev_valid_o[c]),
-                    .ev_data_o(ev_data_o[c*32 +: 32]),
-                    .ev_arg_o (ev_arg_o[c*32 +: 32]),
-                    .trap_o   (trap_o[c]),
-                    .bus_err_o(bus_err_o[c])
-                );
-            end else begin : g_serv
-                serv_core #(.CORE(c), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_core (
-                    .clk_i    (clk_i),
-                    .rst_i    (rst_i),
-                    .stall_i  (stall_i[c]),
-                    .wb_cyc_o (a_cyc),
-                    .wb_stb_o (a_stb),
-                    .wb_we_o  (a_we),
-                    .wb_adr_o (a_adr),
-                    .wb_sel_o (a_sel),
-                    .wb_dat_o (a_wdat),
-                    .wb_dat_i (a_rdat),
-                    .wb_ack_i (a_ack),
-                    .done_o   (done_o[c]),
-                    .code_o   (code_o[c*32 +: 32]),
-                    .stat_o   (stat_o[c*128 +: 128]),
-                    .ev_valid_o(ev_valid_o[c]),
-                    .ev_data_o(ev_data_o[c*32 +: 32]),
-                    .ev_arg_o (ev_arg_o[c*32 +: 32]),
-                    .trap_o   (trap_o[c]),
-                    .bus_err_o(bus_err_o[c])
-                );
-            end
+            board_core #(.SERV((SERV_MASK >> c) & 1), .CORE(c), .ADDR_WIDTH(ADDR_WIDTH),
+                         .RAM_WORDS(RAM_WORDS)) u_core (
+                .clk_i    (clk_i),
+                .rst_i    (rst_i),
+                .stall_i  (stall_i[c]),
+                .wb_cyc_o (a_cyc),
+                .wb_stb_o (a_stb),
+                .wb_we_o  (a_we),
+                .wb_adr_o (a_adr),
+                .wb_sel_o (a_sel),
+                .wb_dat_o (a_wdat),
+                .wb_dat_i (a_rdat),
+                .wb_ack_i (a_ack),
+                .done_o   (done_o[c]),
+                .code_o   (code_o[c*32 +: 32]),
+                .stat_o   (stat_o[c*128 +: 128]),
+                .ev_valid_o(ev_valid_o[c]),
+                .ev_data_o(ev_data_o[c*32 +: 32]),
+                .ev_arg_o (ev_arg_o[c*32 +: 32]),
+                .trap_o   (trap_o[c]),
+                .bus_err_o(bus_err_o[c])
+            );
 `ifndef SYNTHESIS  // simulation only: +ram<c>=FILE is the start image of this board's DPRAM
             reg [8*256-1:0] img_file;
             integer         have_img;

@@ -59,51 +59,28 @@ module pico_pair #(
     genvar c;
     generate
         for (c = 0; c < 2; c = c + 1) begin : g_core
-            if (((SERV_MASK >> c) & 1) == 0) begin : g_pico
-                pico_core #(.CORE(c), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_core (
-                    .clk_i    (clk_i),
-                    .rst_i    (rst_i),
-                    .stall_i  (stall_i[c]),
-                    .wb_cyc_o (wb_cyc[c]),
-                    .wb_stb_o (wb_stb[c]),
-                    .wb_we_o  (wb_we[c]),
-                    .wb_adr_o (wb_adr[c*ADDR_WIDTH +: ADDR_WIDTH]),
-                    .wb_sel_o (wb_sel[c*4 +: 4]),
-                    .wb_dat_o (wb_wdat[c*32 +: 32]),
-                    .wb_dat_i (wb_rdat[c*32 +: 32]),
-                    .wb_ack_i (wb_ack[c]),
-                    .done_o   (done_o[c]),
-                    .code_o   (code_o[c*32 +: 32]),
-                    .stat_o   (stat_o[c*128 +: 128]),
-                    .ev_valid_o(ev_valid[c]),
-                    .ev_data_o(ev_data[c*32 +: 32]),
-                    .ev_arg_o (ev_arg[c*32 +: 32]),
-                    .trap_o   (trap_o[c]),
-                    .bus_err_o(bus_err_o[c])
-                );
-            end else begin : g_serv
-                serv_core #(.CORE(c), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_core (
-                    .clk_i    (clk_i),
-                    .rst_i    (rst_i),
-                    .stall_i  (stall_i[c]),
-                    .wb_cyc_o (wb_cyc[c]),
-                    .wb_stb_o (wb_stb[c]),
-                    .wb_we_o  (wb_we[c]),
-                    .wb_adr_o (wb_adr[c*ADDR_WIDTH +: ADDR_WIDTH]),
-                    .wb_sel_o (wb_sel[c*4 +: 4]),
-                    .wb_dat_o (wb_wdat[c*32 +: 32]),
-                    .wb_dat_i (wb_rdat[c*32 +: 32]),
-                    .wb_ack_i (wb_ack[c]),
-                    .done_o   (done_o[c]),
-                    .code_o   (code_o[c*32 +: 32]),
-                    .stat_o   (stat_o[c*128 +: 128]),
-                    .ev_valid_o(ev_valid[c]),
-                    .ev_data_o(ev_data[c*32 +: 32]),
-                    .ev_arg_o (ev_arg[c*32 +: 32]),
-                    .trap_o   (trap_o[c]),
-                    .bus_err_o(bus_err_o[c])
-                );
-            end
+            board_core #(.SERV((SERV_MASK >> c) & 1), .CORE(c), .ADDR_WIDTH(ADDR_WIDTH),
+                         .RAM_WORDS(RAM_WORDS)) u_core (
+                .clk_i    (clk_i),
+                .rst_i    (rst_i),
+                .stall_i  (stall_i[c]),
+                .wb_cyc_o (wb_cyc[c]),
+                .wb_stb_o (wb_stb[c]),
+                .wb_we_o  (wb_we[c]),
+                .wb_adr_o (wb_adr[c*ADDR_WIDTH +: ADDR_WIDTH]),
+                .wb_sel_o (wb_sel[c*4 +: 4]),
+                .wb_dat_o (wb_wdat[c*32 +: 32]),
+                .wb_dat_i (wb_rdat[c*32 +: 32]),
+                .wb_ack_i (wb_ack[c]),
+                .done_o   (done_o[c]),
+                .code_o   (code_o[c*32 +: 32]),
+                .stat_o   (stat_o[c*128 +: 128]),
+                .ev_valid_o(ev_valid[c]),
+                .ev_data_o(ev_data[c*32 +: 32]),
+                .ev_arg_o (ev_arg[c*32 +: 32]),
+                .trap_o   (trap_o[c]),
+                .bus_err_o(bus_err_o[c])
+            );
         end
     endgenerate
 

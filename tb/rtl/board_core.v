@@ -1,0 +1,62 @@
+// board_core -- the soft core of one board: a PicoRV32 (pico_core) or a
+// SERV (serv_core), chosen by SERV, with the ports both share (the board's
+// memory map, board_memmap, is inside each).  The tops (pico_pair,
+// pico_boards, fpga/albatross_soc) instantiate this once per board; the
+// timing and rules are those of the chosen core.
+`default_nettype none
+
+module board_core #(
+    parameter SERV       = 0,     // 0: PicoRV32, 1: SERV
+    parameter CORE       = 0,     // index: the firmware plusarg is +fw<CORE>=FILE (0..3)
+    parameter ADDR_WIDTH = 10,    // word-address bits of the DPRAM port
+    parameter RAM_WORDS  = 4096,  // words of the local RAM (16 KiB)
+    parameter FW_FILE    = "",    // program image at configuration ("": +fw<CORE>=FILE in simulation)
+    parameter SMALL      = 0      // PicoRV32 only: 1 drops the counters and traps (pico_core)
+) (
+    input  wire                  clk_i,
+    input  wire                  rst_i,     // synchronous, active high
+    input  wire                  stall_i,   // hold the local-RAM access this cycle
+    // Wishbone B4 classic master to a DPRAM port
+    output wire                  wb_cyc_o,
+    output wire                  wb_stb_o,
+    output wire                  wb_we_o,
+    output wire [ADDR_WIDTH-1:0] wb_adr_o,
+    output wire [3:0]            wb_sel_o,
+    output wire [31:0]           wb_dat_o,
+    input  wire [31:0]           wb_dat_i,
+    input  wire                  wb_ack_i,
+    // board status
+    output wire                  done_o,    // the core stored to TOHOST
+    output wire [31:0]           code_o,    // the last value it stored (exit code)
+    output wire [127:0]          stat_o,    // STAT k at [k*32 +: 32]
+    output wire                  ev_valid_o,// a store to EVENT, this clock
+    output wire [31:0]           ev_data_o, // its value
+    output wire [31:0]           ev_arg_o,  // ARG at that time
+    output wire                  trap_o,    // the core trapped (PicoRV32; SERV: 0)
+    output wire                  bus_err_o  // an access to an unmapped address
+);
+
+    generate
+        if (SERV == 0) begin : g_pico
+            pico_core #(.CORE(CORE), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE),
+                        .SMALL(SMALL)) u_core (
+                .clk_i(clk_i), .rst_i(rst_i), .stall_i(stall_i),
+                .wb_cyc_o(wb_cyc_o), .wb_stb_o(wb_stb_o), .wb_we_o(wb_we_o), .wb_adr_o(wb_adr_o),
+                .wb_sel_o(wb_sel_o), .wb_dat_o(wb_dat_o), .wb_dat_i(wb_dat_i), .wb_ack_i(wb_ack_i),
+                .done_o(done_o), .code_o(code_o), .stat_o(stat_o), .ev_valid_o(ev_valid_o),
+                .ev_data_o(ev_data_o), .ev_arg_o(ev_arg_o), .trap_o(trap_o), .bus_err_o(bus_err_o)
+            );
+        end else begin : g_serv
+            serv_core #(.CORE(CORE), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE)) u_core (
+                .clk_i(clk_i), .rst_i(rst_i), .stall_i(stall_i),
+                .wb_cyc_o(wb_cyc_o), .wb_stb_o(wb_stb_o), .wb_we_o(wb_we_o), .wb_adr_o(wb_adr_o),
+                .wb_sel_o(wb_sel_o), .wb_dat_o(wb_dat_o), .wb_dat_i(wb_dat_i), .wb_ack_i(wb_ack_i),
+                .done_o(done_o), .code_o(code_o), .stat_o(stat_o), .ev_valid_o(ev_valid_o),
+                .ev_data_o(ev_data_o), .ev_arg_o(ev_arg_o), .trap_o(trap_o), .bus_err_o(bus_err_o)
+            );
+        end
+    endgenerate
+
+endmodule
+
+`default_nettype wire
