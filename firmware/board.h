@@ -26,6 +26,7 @@
 
 #ifndef __ASSEMBLER__
 #include <stdint.h>
+#include "albatross.h"
 
 /* Channel of the pair test: DPRAM offset 0; a start flag word after it. */
 #define BOARD_CHANNEL      ((uintptr_t)BOARD_DPRAM_BASE)
@@ -113,6 +114,26 @@ static inline int pair_ok(const pair_value_t *v)
 {
     return v->h1 == pair_mix(v->seq) && v->h2 == pair_mix(v->h1) &&
            v->sum == (v->seq ^ v->h1 ^ v->h2 ^ PAIR_SALT);
+}
+
+/* The consumer's check of one Import that returned r (ALB_NEW or ALB_OLD)
+ * with value v, after the value with sequence number last: 0, or the code
+ * 0x3 torn value, 0x4 sequence went back, 0x5 New without a newer value,
+ * 0x6 Old with a newer value, with the sequence number concerned << 8.
+ * zero_start: an all-zero value (a RAM image's start value) passes while
+ * last is 0, as sequence 0. */
+static inline uint32_t pair_check(const pair_value_t *v, int r, uint32_t last, int zero_start)
+{
+    int zero = (v->seq | v->h1 | v->h2 | v->sum) == 0u;
+    if (!pair_ok(v) && !(zero_start && zero && last == 0u))
+        return 0x3u | last << 8;
+    if (v->seq < last)
+        return 0x4u | v->seq << 8;
+    if (r == ALB_NEW && v->seq == last && !(zero_start && last == 0u))
+        return 0x5u | last << 8;
+    if (r != ALB_NEW && v->seq != last)
+        return 0x6u | v->seq << 8;
+    return 0u;
 }
 #endif
 

@@ -20,7 +20,7 @@ static alb_channel_t ch;
 int main(void)
 {
     pair_value_t v;
-    uint32_t last = 0u, news = 0u, calls = 0u, t0, cycles = 0u;
+    uint32_t last = 0u, news = 0u, calls = 0u, t0, cycles = 0u, code;
     int r;
 
     if (alb_channel_setup(&ch, BOARD_CHANNEL, sizeof v) != ALB_OK)
@@ -39,14 +39,9 @@ int main(void)
         ++calls;
         if (r != ALB_NEW && r != ALB_OLD)
             return (0x20 - r) | (int)(last << 8);
-        if (!pair_ok(&v))
-            return 0x3 | (int)(last << 8);
-        if (v.seq < last)
-            return 0x4 | (int)(v.seq << 8);
-        if (r == ALB_NEW && v.seq == last)
-            return 0x5 | (int)(v.seq << 8);
-        if (r == ALB_OLD && v.seq != last)
-            return 0x6 | (int)(v.seq << 8);
+        code = pair_check(&v, r, last, 0);
+        if (code != 0u)
+            return (int)code;
         if (r == ALB_NEW)
             ++news;
         last = v.seq;

@@ -26,9 +26,8 @@ $(PBN_DIR)/bench.elf: firmware/bench.c c-driver/albatross.c firmware/crt0.S firm
 	@mkdir -p $(@D)
 	$(DRV_RV_CC) $(FW_CFLAGS) -o $@ firmware/crt0.S firmware/bench.c c-driver/albatross.c $(FW_LDFLAGS)
 
-$(PBN_DIR)/bench.hex: $(PBN_DIR)/bench.elf
-	$(DRV_RV_PREFIX)objcopy -O verilog --verilog-data-width=4 $< $@
-	$(DRV_RV_PREFIX)objdump -d $< > $(PBN_DIR)/bench.dis
+$(PBN_DIR)/bench.dis: $(PBN_DIR)/bench.elf
+	$(DRV_RV_PREFIX)objdump -d $< > $@
 
 $(PBN_BIN): $(PBN_RTL) tb/pico/bench_pico.cpp tb/pico/picorv32.vlt tb/report.h mk/bench_pico.mk
 	$(PICO_NEED)
@@ -39,7 +38,7 @@ $(PBN_BIN): $(PBN_RTL) tb/pico/bench_pico.cpp tb/pico/picorv32.vlt tb/report.h m
 
 BENCHES += bench-pico
 .PHONY: bench-pico
-bench-pico: $(PBN_BIN) $(PBN_DIR)/bench.hex driver-size ## cycles of alb_export/alb_import vs a plain copy on PicoRV32
+bench-pico: $(PBN_BIN) $(PBN_DIR)/bench.hex $(PBN_DIR)/bench.dis driver-size ## cycles of alb_export/alb_import vs a plain copy on PicoRV32
 	$(PBN_BIN) +fw0=$(PBN_DIR)/bench.hex --max-cycles $(PBN_MAX_CYCLES) --report $(REPORTS)/bench_pico.json
 	verilator --lint-only $(PBN_VFLAGS) $(PICO_RV32_V) tb/rtl/pico_bench.v
 	iverilog -g2005 -y rtl -y tb/rtl -s pico_bench -o /dev/null $(PICO_RV32_V) tb/rtl/pico_bench.v

@@ -18,6 +18,11 @@ DRV_UNIT      := $(BUILD)/unit
 DRV_UNIT_DEPS := tb/unit/test_driver.c tb/unit/port/alb_port_impl.h $(DRV_SRC) \
                  $(wildcard c-driver/*.h)
 DRV_BROKEN    := 1 2
+# Any rv32i program built under build/ becomes a $readmemh image of 32-bit
+# words (the soft-core boards' program RAM) with the same name, .hex.
+$(BUILD)/%.hex: $(BUILD)/%.elf
+	$(DRV_RV_PREFIX)objcopy -O verilog --verilog-data-width=4 $< $@
+
 DRV_RV_NEED    = command -v $(DRV_RV_CC) >/dev/null 2>&1 || { echo "driver-rv32i: \
 $(DRV_RV_CC) not found: run make deps (installs gcc-riscv64-unknown-elf)"; exit 1; }
 

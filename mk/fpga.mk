@@ -48,9 +48,9 @@ $(FPGA_DIR)/fw/$(2).elf: firmware/duo_$(2).c $(FPGA_SCHED)/rom.hex $(FPGA_FW_DEP
 	$$(DRV_RV_CC) $$(FW_CFLAGS) -ffunction-sections -fdata-sections -I$(FPGA_SCHED) -o $$@ firmware/crt0.S \
 	    firmware/duo_$(2).c $(FPGA_SCHED)/$(2).c c-driver/albatross.c $$(FW_LDFLAGS) -Wl,--gc-sections \
 	    -Wl,--defsym=__board_ram_bytes=$(FPGA_RAM)
-$(FPGA_IMG)/fw$(1).hex: $(FPGA_DIR)/fw/$(2).elf
+$(FPGA_IMG)/fw$(1).hex: $(FPGA_DIR)/fw/$(2).hex
 	@mkdir -p $$(@D)
-	$$(DRV_RV_PREFIX)objcopy -O verilog --verilog-data-width=4 $$< $$@
+	cp $$< $$@
 $(FPGA_IMG)/ram$(1).hex: $(FPGA_SCHED)/rom.hex
 	@mkdir -p $$(@D)
 	cp $(FPGA_SCHED)/$(2)_ram.hex $$@

@@ -46,9 +46,6 @@ $(eval $(call pico_fw,consumer,consumer,c-driver/albatross.c))
 # without stalls, caught with seed 2, 3, 4, 5, 9 of 1..11 with them.)
 $(eval $(call pico_fw,producer-ignore_readlocked,producer,$(TB_DIR)/mutants/ignore_readlocked.c))
 
-$(PICO_DIR)/fw/%.hex: $(PICO_DIR)/fw/%.elf
-	$(DRV_RV_PREFIX)objcopy -O verilog --verilog-data-width=4 $< $@
-
 PICO_BIN := $(PICO_DIR)/obj/Vpico_pair
 $(PICO_BIN): $(PICO_RTL) $(PICO_RV32_V) tb/pico/test_pico_pair.cpp tb/pico/picorv32.vlt tb/report.h mk/pico.mk
 	$(PICO_NEED)

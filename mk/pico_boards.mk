@@ -41,9 +41,6 @@ $(PB_DIR)/%/fw/$(1).elf: firmware/mobot_$(1).c firmware/mobot_check.h $(BUILD)/s
 endef
 $(foreach b,$(PB_BOARDS),$(eval $(call pb_fw,$(b))))
 
-$(PB_DIR)/%.hex: $(PB_DIR)/%.elf
-	$(DRV_RV_PREFIX)objcopy -O verilog --verilog-data-width=4 $< $@
-
 # The model, without and with waves (--trace, for make sim TRACE=1).
 # $(1) = variant dir, $(2) = extra Verilator flags.
 define pb_model

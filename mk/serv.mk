@@ -40,7 +40,7 @@ SERV_RTL       := $(PICO_RTL) tb/rtl/serv_core.v tb/rtl/serv_bridge.v
 SERV_VFLAGS    := $(PICO_VFLAGS) -y $(SERV_CPU_RTL) tb/pico/serv.vlt
 SERV_MAX_CYCLES ?= 20000000
 # Values per run: 2000 (as the PicoRV32 pair) where PicoRV32 produces; fewer
-# where SERV produces (one Export with its pause is about 15 times slower).
+# where SERV produces (its Exports, bit-serial, take far longer).
 SERV_PAIR_VALUES     ?= 2000
 SERV_PRODUCER_VALUES ?= 300
 
@@ -58,9 +58,6 @@ $(eval $(call serv_fw,consumer-serv-while_as_if,consumer,$(TB_DIR)/mutants/while
 $(eval $(call serv_fw,producer-pico-ignore_readlocked,producer,$(TB_DIR)/mutants/ignore_readlocked.c,-DPAIR_VALUES=$(SERV_PAIR_VALUES)u))
 $(eval $(call serv_fw,producer-serv,producer,c-driver/albatross.c,$(SERV_FW_SERV) -DPAIR_VALUES=$(SERV_PRODUCER_VALUES)u))
 $(eval $(call serv_fw,consumer-pico,consumer,c-driver/albatross.c,-DPAIR_VALUES=$(SERV_PRODUCER_VALUES)u))
-
-$(SERV_DIR)/fw/%.hex: $(SERV_DIR)/fw/%.elf
-	$(DRV_RV_PREFIX)objcopy -O verilog --verilog-data-width=4 $< $@
 
 # pico_pair with SERV_MASK=$(1), in its own --Mdir; the class keeps the name
 # Vpico_pair, so the harness is the PicoRV32 pair's.

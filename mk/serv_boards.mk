@@ -1,7 +1,7 @@
 # mk/serv_boards.mk -- the MOBOT-III robot of mk/pico_boards.mk with the motor
 # board's PicoRV32 replaced by SERV (tb/rtl/pico_boards.v, SERV_MASK = 8):
-# the navigation board (PicoRV32) exports MotorCmd, a bit-serial core 10 to
-# 20 times slower imports it, and every check of sim/mobot_sim.cpp applies.
+# the navigation board (PicoRV32) exports MotorCmd, a far slower bit-serial
+# core imports it, and every check of sim/mobot_sim.cpp applies.
 #   make test-serv-boards   fault-free, PicoRV32 cores stalled in random
 #                           bursts; build/reports/serv_boards.json
 # Reuses PB_* (mk/pico_boards.mk) and SERV_* (mk/serv.mk), read before this

@@ -241,6 +241,12 @@ int main(int argc, char **argv)
         }
         if (c.copy()) producers[c.id].ch = &c;
     }
+    // The guaranteed age: a copy channel's latency (with retries) plus its
+    // producer's longest gap between Actual stores so far; time/status: the
+    // compiler's age bound.
+    auto age_bound = [&](const Series &s) -> uint64_t {
+        return s.ch->copy() ? s.ch->latency_retry + producers[s.ch->id].max_gap : s.ch->latency_retry;
+    };
     auto find_series = [&](int board, uint32_t id) -> Series * {
         for (Series &s : series)
             if (s.board == board && uint32_t(s.ch->id) == id) return &s;
@@ -414,7 +420,7 @@ int main(int argc, char **argv)
             uint64_t worst_pm = 0;  // worst age / bound so far, per mille (not the crashed producer's channel)
             for (const Series &s : series)
                 if (s.age.n && !(crash_prod && crash_prod->ch == s.ch)) {
-                    const uint64_t b = s.ch->copy() ? s.ch->latency_retry + producers[s.ch->id].max_gap : s.ch->latency_retry;
+                    const uint64_t b = age_bound(s);
                     worst_pm = std::max(worst_pm, b ? 1000 * s.age.max / b : 0);
                 }
             std::printf("  [%3llu%%] cycle %9llu  exports", (unsigned long long)(100 * cycle / o.cycles),
@@ -432,7 +438,7 @@ int main(int argc, char **argv)
     // ---- bounds and checks ----
     for (Series &s : series) {
         const PlanChannel &c = *s.ch;
-        s.bound = c.copy() ? c.latency_retry + producers[c.id].max_gap : c.latency_retry;
+        s.bound = age_bound(s);
         const double limit = o.age_scale * double(s.bound);
         // ages of a crashed producer's channel grow without bound: not checked
         if (!(crash_prod && crash_prod->ch == &c))
@@ -476,8 +482,8 @@ int main(int argc, char **argv)
         }
     }
     // A crashed producer's channel is skipped; a stopped core's channels age too (left to cpu).
-    const bool fault_free = o.fault_rate == 0 && o.hang_board < 0 && !cpu_failed;
-    if (fault_free)
+    const bool check_ages = o.fault_rate == 0 && o.hang_board < 0 && !cpu_failed;
+    if (check_ages)
         for (const Series &s : series)
             if (s.over_bound) {
                 std::snprintf(b, sizeof b, "expected every age of %s at %s <= %.0f clocks, got %llu over it (worst %llu)",
