@@ -70,7 +70,7 @@ synth: $(FPGA_IMAGES) ## Yosys on iCE40, ECP5, xc7: DPRAM, controller, PicoRV32,
 pnr: $(FPGA_IMAGES) ## place and route the iCEBreaker top, timing against its 12 MHz constraint
 	$(PICO_NEED)
 	$(FPGA_REPORT) --designs top --families ice40 --pnr --report $(REPORTS)/fpga_pnr.json
-	@grep -E "Max frequency|Info: Device utilisation" -A 0 $(FPGA_DIR)/synth/top_ice40_pnr.log | tail -n 2
+	@grep "Max frequency" $(FPGA_DIR)/synth/top_ice40_pnr.log | tail -n 1
 
 bitstream: pnr ## icepack the iCEBreaker top -> build/fpga/icebreaker_top.bin
 	icepack $(FPGA_DIR)/synth/top_ice40.asc $(FPGA_DIR)/icebreaker_top.bin
