@@ -10,6 +10,8 @@
 #                    SG48, constraints/icebreaker.pcf, 12 MHz), timing against
 #                    the constraint -> build/reports/fpga_pnr.json
 #   make bitstream   make pnr, then icepack -> build/fpga/icebreaker_top.bin
+#   make area        the controller with each optional feature tied off, and
+#                    one PicoRV32, per family -> build/reports/controller_area.json
 #   make test-fpga-soc    the iCEBreaker top simulated (Verilator): both
 #                    cores' heartbeats blink, no error LED (-pico: both
 #                    boards on PicoRV32, the ULX3S/Arty system; -negative: a
@@ -62,7 +64,7 @@ $(FPGA_IMG)/rom.hex: $(FPGA_SCHED)/rom.hex
 	cp $< $@
 FPGA_IMAGES := $(FPGA_IMG)/rom.hex $(foreach i,0 1,$(FPGA_IMG)/fw$(i).hex $(FPGA_IMG)/ram$(i).hex)
 
-.PHONY: synth pnr bitstream
+.PHONY: synth pnr bitstream area
 synth: $(FPGA_IMAGES) ## Yosys on iCE40, ECP5, xc7: DPRAM, controller, PicoRV32, board top (+ iCE40 Fmax) -> build/reports/fpga.json
 	$(PICO_NEED)
 	$(FPGA_REPORT) --pnr --report $(REPORTS)/fpga.json
@@ -71,6 +73,13 @@ pnr: $(FPGA_IMAGES) ## place and route the iCEBreaker top, timing against its 12
 	$(PICO_NEED)
 	$(FPGA_REPORT) --designs top --families ice40 --pnr --report $(REPORTS)/fpga_pnr.json
 	@grep "Max frequency" $(FPGA_DIR)/synth/top_ice40_pnr.log | tail -n 1
+
+# Where the controller's logic goes: each optional feature tied off, against
+# one PicoRV32 in the same run (tools/controller_area.py).
+area: ## the controller's LUTs without each optional feature, per family -> build/reports/controller_area.json
+	$(PICO_NEED)
+	$(PYTHON) tools/controller_area.py --picorv32 $(PICO_RV32_V) --out $(FPGA_DIR)/area \
+	    --report $(REPORTS)/controller_area.json
 
 bitstream: pnr ## icepack the iCEBreaker top -> build/fpga/icebreaker_top.bin
 	icepack $(FPGA_DIR)/synth/top_ice40.asc $(FPGA_DIR)/icebreaker_top.bin
@@ -97,7 +106,7 @@ $(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
 	@mkdir -p $(@D)
 	sed '2s/^.*$$/00000001/' $< > $@
 
-BENCHES += synth
+BENCHES += synth area
 
 TESTS += fpga-soc fpga-soc-pico fpga-soc-negative fpga-icebreaker fpga-tops fpga-lint
 .PHONY: test-fpga-soc test-fpga-soc-pico test-fpga-soc-negative test-fpga-icebreaker test-fpga-tops test-fpga-lint

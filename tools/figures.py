@@ -296,6 +296,24 @@ def fpga():
     return out
 
 
+def controller_area():
+    r = load("controller_area.json")
+    if not r:
+        return missing("controller_area.json", "make area")
+    fams = list(r["picorv32_luts"])
+    head = ["controller variant", "what is tied off"] + [f"{fam} LUTs (/ PicoRV32)" for fam in fams]
+    rows = [["one PicoRV32 (as pico_core)", "-"] + [n(r["picorv32_luts"][f]) if r["picorv32_luts"][f] else "error"
+                                                   for f in fams]]
+    for name in dict.fromkeys(e["variant"] for e in r["rows"]):
+        cells = []
+        for fam in fams:
+            e = next(x for x in r["rows"] if x["variant"] == name and x["family"] == fam)
+            cells.append(f"{n(e['luts'])} ({e['over_picorv32']:.2f})" if "over_picorv32" in e else "error")
+        desc = next(x["description"] for x in r["rows"] if x["variant"] == name)
+        rows.append([name, desc] + cells)
+    return table(head, rows) + f"\n\nThe goal: {r['goal_over_picorv32']:.2f} of one PicoRV32 (`{REPORTS}/controller_area.json`)."
+
+
 def sim_speed():
     r = load("sim_speed.json")
     if not r:
@@ -342,7 +360,7 @@ def formal_rtl():
     return table(["check", "engine", "properties", "result", "depth (clocks)", "seconds"], rows)
 
 
-SECTIONS = {"fpga": fpga, "robot": robot, "robot-scenarios": robot_scenarios, "sim-speed": sim_speed, "system-latency": system_latency, "system-delivery": system_delivery, "system-bus": system_bus,"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
+SECTIONS = {"fpga": fpga, "controller-area": controller_area, "robot": robot, "robot-scenarios": robot_scenarios, "sim-speed": sim_speed, "system-latency": system_latency, "system-delivery": system_delivery, "system-bus": system_bus,"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
             "driver-size": driver_size, "bench": bench, "cdc": cdc, "synth": synth,
             "pico-cost": pico_cost, "formal-spin": formal_spin}
 

@@ -78,13 +78,18 @@ def tail(log, n=3):
 
 def synth(name, fam, picorv32, serv, out):
     files, top, chparam = design(name, fam, picorv32, serv)
+    r = synth_files(files, top, chparam, fam, os.path.join(out, f"{name}_{fam}"))
+    return dict({"design": name}, **r)
+
+
+def synth_files(files, top, chparam, fam, stem):
+    """Yosys on one family; the cell counts (or "error"), logs at stem*."""
     spec = FAMILIES[fam]
-    stem = os.path.join(out, f"{name}_{fam}")
     script = (f"read_verilog -DSYNTHESIS {' '.join(files)}; {chparam + '; ' if chparam else ''}"
               f"{spec['synth'].format(top=top)}; tee -q -o {stem}_stat.json stat -json"
               + (f"; write_json {stem}.json" if fam == "ice40" else ""))
     ok, secs = run(["yosys", "-q", "-p", script], stem + "_yosys.log")
-    r = {"design": name, "family": fam, "top": top, "yosys_seconds": round(secs, 1)}
+    r = {"family": fam, "top": top, "yosys_seconds": round(secs, 1)}
     if not ok:
         r["error"] = f"yosys failed: {tail(stem + '_yosys.log')} (log {stem}_yosys.log)"
         return r
