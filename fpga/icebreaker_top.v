@@ -16,7 +16,7 @@ module icebreaker_top #(
     parameter ROM_FILE   = "build/fpga/duo/rom.hex",  // schedule ROM image
     parameter FW_PREFIX  = "build/fpga/duo/fw",       // board c's program: <prefix><c>.hex
     parameter RAM_PREFIX = "build/fpga/duo/ram",      // board c's DPRAM image: <prefix><c>.hex
-    parameter SERV_MASK  = 1                          // board 0 (sensor) on SERV; 0: both on PicoRV32 (simulation of the ULX3S/Arty system)
+    parameter SERV_MASK  = 1                          // board 0 (sensor) on SERV; 0: both on PicoRV32 (does not fit the UP5K)
 ) (
     input  wire clk_i,      // 12 MHz
     input  wire btn_n_i,    // BTN_N, active low

@@ -13,9 +13,9 @@
 #   make area        the controller with each optional feature tied off, and
 #                    one PicoRV32, per family -> build/reports/controller_area.json
 #   make test-fpga-soc    the iCEBreaker top simulated (Verilator): both
-#                    cores' heartbeats blink, no error LED (-pico: both
-#                    boards on PicoRV32, the ULX3S/Arty system; -negative: a
-#                    corrupted ROM image must light the red LED)
+#                    cores' heartbeats blink, no error LED (-ulx3s, -arty:
+#                    those tops; -negative, -ulx3s-negative, -arty-negative:
+#                    a corrupted ROM image must light the top's error LED)
 #   make test-fpga-icebreaker  make bitstream as a test: fits, meets 12 MHz
 #   make test-fpga-tops   the ULX3S and Arty tops synthesise (Yosys)
 #   make test-fpga-lint   Verilator -Wall, Icarus and Yosys on fpga/*.v
@@ -85,39 +85,81 @@ bitstream: pnr ## icepack the iCEBreaker top -> build/fpga/icebreaker_top.bin
 	icepack $(FPGA_DIR)/synth/top_ice40.asc $(FPGA_DIR)/icebreaker_top.bin
 	@echo "bitstream: $(FPGA_DIR)/icebreaker_top.bin (iceprog it to the iCEBreaker)"
 
-# The iCEBreaker top in Verilator: the demonstration must run.  The negative
-# model is built with a schedule ROM whose header word H1 is changed (its
-# checksum fails): the red LED must light.  $(1) = dir, $(2) = Verilator flags.
+# Each board top in Verilator (tb/fpga/test_fpga_soc.cpp): the demonstration
+# must run and the top's LEDs show it.  The negative tests run the same
+# models on a schedule ROM whose header word H1 is changed (its checksum
+# fails; the controller's simulation model reads +rom=FILE instead of
+# ROM_FILE): the error LED must light.  $(1) = top, $(2) = harness define.
 define fpga_sim
-$(FPGA_DIR)/$(1)/Vicebreaker_top: $(FPGA_RTL) tb/fpga/test_fpga_soc.cpp tb/report.h tb/pico/picorv32.vlt mk/fpga.mk
+$(FPGA_DIR)/sim-$(1)/V$(1): $(FPGA_RTL) tb/fpga/test_fpga_soc.cpp tb/report.h tb/pico/picorv32.vlt mk/fpga.mk
 	$$(PICO_NEED)
 	$$(SERV_NEED)
 	@mkdir -p $$(@D)
-	verilator --cc --exe --build -j 2 -O3 $$(FPGA_VFLAGS) $(2) \
-	    --top-module icebreaker_top -CFLAGS "-O2 -std=c++17" --Mdir $$(@D) \
-	    $$(PICO_RV32_V) fpga/icebreaker_top.v $$(abspath tb/fpga/test_fpga_soc.cpp) \
+	verilator --cc --exe --build -j 2 -O3 $$(FPGA_VFLAGS) --top-module $(1) \
+	    -CFLAGS "-O2 -std=c++17 -D$(2)" --Mdir $$(@D) \
+	    $$(PICO_RV32_V) fpga/$(1).v $$(abspath tb/fpga/test_fpga_soc.cpp) \
 	    > $$(@D)/build.log 2>&1 || { cat $$(@D)/build.log; exit 1; }
 endef
-$(eval $(call fpga_sim,sim,))
-$(eval $(call fpga_sim,sim-badrom,-GROM_FILE='"$(FPGA_DIR)/badrom/rom.hex"'))
-$(eval $(call fpga_sim,sim-pico,-GSERV_MASK=0))
-FPGA_SIM := $(FPGA_DIR)/sim/Vicebreaker_top
+$(eval $(call fpga_sim,icebreaker_top,TOP_ICEBREAKER))
+$(eval $(call fpga_sim,ulx3s_top,TOP_ULX3S))
+$(eval $(call fpga_sim,arty_top,TOP_ARTY))
+FPGA_SIM = $(FPGA_DIR)/sim-$(1)/V$(1)
+
+# Broken tops, each built from a sed of the real one, for the negative tests
+# of the harness's pin checks.  $(1) = name, $(2) = top, $(3) = define,
+# $(4) = sed expression (it must change the file).
+define fpga_mutant
+$(FPGA_DIR)/mutant-$(1)/V$(2): $(FPGA_RTL) tb/fpga/test_fpga_soc.cpp tb/report.h tb/pico/picorv32.vlt mk/fpga.mk
+	$$(PICO_NEED)
+	$$(SERV_NEED)
+	@mkdir -p $$(@D)
+	sed -e '$(4)' fpga/$(2).v > $$(@D)/$(2).v
+	@! cmp -s fpga/$(2).v $$(@D)/$(2).v || { echo "fpga_mutant $(1): the sed changed nothing in fpga/$(2).v"; exit 1; }
+	verilator --cc --exe --build -j 2 -O3 $$(FPGA_VFLAGS) --top-module $(2) \
+	    -CFLAGS "-O2 -std=c++17 -D$(3)" --Mdir $$(@D) \
+	    $$(PICO_RV32_V) $$(@D)/$(2).v $$(abspath tb/fpga/test_fpga_soc.cpp) \
+	    > $$(@D)/build.log 2>&1 || { cat $$(@D)/build.log; exit 1; }
+endef
+$(eval $(call fpga_mutant,green_led,icebreaker_top,TOP_ICEBREAKER,s/assign led_g_n_o = ~beat\[1\];/assign led_g_n_o = ~beat[0];/))
+$(eval $(call fpga_mutant,wifi_gpio0,ulx3s_top,TOP_ULX3S,s/assign wifi_gpio0_o = 1'"'"'b1;/assign wifi_gpio0_o = 1'"'"'b0;/))
+$(eval $(call fpga_mutant,rgb_green,arty_top,TOP_ARTY,s/assign led0_g_o = ~bad & ~rst;/assign led0_g_o = ~bad \& rst;/))
 $(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
 	@mkdir -p $(@D)
 	sed '2s/^.*$$/00000001/' $< > $@
 
 BENCHES += synth area
 
-TESTS += fpga-soc fpga-soc-pico fpga-soc-negative fpga-icebreaker fpga-tops fpga-lint
-.PHONY: test-fpga-soc test-fpga-soc-pico test-fpga-soc-negative test-fpga-icebreaker test-fpga-tops test-fpga-lint
-test-fpga-soc: $(FPGA_SIM) $(FPGA_IMAGES)
-	@tools/run_test.sh fpga-soc $(FPGA_SIM) --cycles 16000000 --report $(REPORTS)/fpga_soc.json
-# The same system with both boards on PicoRV32, as on the ULX3S and the Arty.
-test-fpga-soc-pico: $(FPGA_DIR)/sim-pico/Vicebreaker_top $(FPGA_IMAGES)
-	@tools/run_test.sh fpga-soc-pico $(FPGA_DIR)/sim-pico/Vicebreaker_top --cycles 4000000 \
-	    --report $(REPORTS)/fpga_soc_pico.json
-test-fpga-soc-negative: $(FPGA_DIR)/sim-badrom/Vicebreaker_top $(FPGA_IMAGES) $(FPGA_DIR)/badrom/rom.hex
-	@tools/run_test.sh fpga-soc-negative $(FPGA_DIR)/sim-badrom/Vicebreaker_top --cycles 100000 --expect-error
+TESTS += fpga-soc fpga-soc-ulx3s fpga-soc-arty fpga-soc-negative fpga-soc-ulx3s-negative fpga-soc-arty-negative \
+         fpga-soc-pins-negative fpga-icebreaker fpga-tops fpga-lint
+.PHONY: test-fpga-soc test-fpga-soc-ulx3s test-fpga-soc-arty test-fpga-soc-negative test-fpga-soc-ulx3s-negative \
+        test-fpga-soc-arty-negative test-fpga-soc-pins-negative test-fpga-icebreaker test-fpga-tops test-fpga-lint
+# The iCEBreaker (sensor on SERV: slow to start) gets more clocks than the
+# PicoRV32-only ULX3S and Arty tops.
+test-fpga-soc: $(call FPGA_SIM,icebreaker_top) $(FPGA_IMAGES)
+	@tools/run_test.sh fpga-soc $(call FPGA_SIM,icebreaker_top) --cycles 16000000 --report $(REPORTS)/fpga_soc.json
+test-fpga-soc-ulx3s: $(call FPGA_SIM,ulx3s_top) $(FPGA_IMAGES)
+	@tools/run_test.sh fpga-soc-ulx3s $(call FPGA_SIM,ulx3s_top) --cycles 4000000 \
+	    --report $(REPORTS)/fpga_soc_ulx3s.json
+test-fpga-soc-arty: $(call FPGA_SIM,arty_top) $(FPGA_IMAGES)
+	@tools/run_test.sh fpga-soc-arty $(call FPGA_SIM,arty_top) --cycles 4000000 --report $(REPORTS)/fpga_soc_arty.json
+test-fpga-soc-negative: $(call FPGA_SIM,icebreaker_top) $(FPGA_IMAGES) $(FPGA_DIR)/badrom/rom.hex
+	@tools/run_test.sh fpga-soc-negative $(call FPGA_SIM,icebreaker_top) --cycles 100000 --expect-error \
+	    +rom=$(FPGA_DIR)/badrom/rom.hex
+test-fpga-soc-ulx3s-negative: $(call FPGA_SIM,ulx3s_top) $(FPGA_IMAGES) $(FPGA_DIR)/badrom/rom.hex
+	@tools/run_test.sh fpga-soc-ulx3s-negative $(call FPGA_SIM,ulx3s_top) --cycles 100000 --expect-error \
+	    +rom=$(FPGA_DIR)/badrom/rom.hex
+test-fpga-soc-arty-negative: $(call FPGA_SIM,arty_top) $(FPGA_IMAGES) $(FPGA_DIR)/badrom/rom.hex
+	@tools/run_test.sh fpga-soc-arty-negative $(call FPGA_SIM,arty_top) --cycles 100000 --expect-error \
+	    +rom=$(FPGA_DIR)/badrom/rom.hex
+
+# The pin checks catch a broken top (a green LED on the wrong heartbeat, the
+# ESP32's GPIO0 pulled low, the RGB LED green only in reset).
+test-fpga-soc-pins-negative: $(foreach m,green_led/Vicebreaker_top wifi_gpio0/Vulx3s_top rgb_green/Varty_top,\
+                               $(FPGA_DIR)/mutant-$(m)) $(FPGA_IMAGES)
+	@tools/run_test.sh fpga-soc-pins-negative bash -c 'set -e; \
+	    $(FPGA_DIR)/mutant-green_led/Vicebreaker_top --cycles 16000000 --expect-fail "green LED"; \
+	    $(FPGA_DIR)/mutant-wifi_gpio0/Vulx3s_top --cycles 4000000 --expect-fail "wifi_gpio0"; \
+	    $(FPGA_DIR)/mutant-rgb_green/Varty_top --cycles 4000000 --expect-fail "RGB LED green"'
 
 test-fpga-icebreaker: $(FPGA_IMAGES)
 	$(PICO_NEED)
