@@ -2,7 +2,8 @@
 // XC7A100T, CSG324, 100 MHz oscillator; pins and clock in
 // constraints/arty_a7.xdc): albatross_soc with two PicoRV32 boards as on the
 // iCEBreaker (fpga/icebreaker_top.v, fpga/duo.toml).  LEDs: LD4/LD5 the
-// sensor's/actuator's heartbeat, LD6/LD7 a core stopped; RGB LED LD0 red on
+// sensor's/actuator's heartbeat (beat_divider: a change every 2**BEAT_LOG2
+// beats, so it blinks visibly), LD6/LD7 a core stopped; RGB LED LD0 red on
 // any error (a failed check, a trap, a controller error), green while
 // running.  The red RESET button (ck_rst, active low) resets.
 `default_nettype none
@@ -10,7 +11,8 @@
 module arty_top #(
     parameter ROM_FILE   = "build/fpga/duo/rom.hex",  // schedule ROM image
     parameter FW_PREFIX  = "build/fpga/duo/fw",       // board c's program: <prefix><c>.hex
-    parameter RAM_PREFIX = "build/fpga/duo/ram"       // board c's DPRAM image: <prefix><c>.hex
+    parameter RAM_PREFIX = "build/fpga/duo/ram",      // board c's DPRAM image: <prefix><c>.hex
+    parameter BEAT_LOG2  = 7                           // heartbeat LEDs change every 2**BEAT_LOG2 beats (a blink at 100 MHz)
 ) (
     input  wire       clk_i,       // CLK100MHZ
     input  wire       btn_n_i,     // ck_rst, active low
@@ -20,7 +22,7 @@ module arty_top #(
 );
 
     wire       rst, ctrl_err, bad;
-    wire [1:0] done, err, beat, trap;
+    wire [1:0] done, err, beat, trap, led_beat;
 
     board_reset u_reset (.clk_i(clk_i), .btn_n_i(btn_n_i), .rst_o(rst));
 
@@ -32,8 +34,11 @@ module arty_top #(
         .trap_o(trap), .ctrl_err_o(ctrl_err)
     );
 
+    beat_divider #(.LOG2(BEAT_LOG2)) u_beat0 (.clk_i(clk_i), .rst_i(rst), .beat_i(beat[0]), .beat_o(led_beat[0]));
+    beat_divider #(.LOG2(BEAT_LOG2)) u_beat1 (.clk_i(clk_i), .rst_i(rst), .beat_i(beat[1]), .beat_o(led_beat[1]));
+
     assign bad      = |err | |trap | ctrl_err;
-    assign led_o    = {done[1], done[0], beat[1], beat[0]};
+    assign led_o    = {done[1], done[0], led_beat[1], led_beat[0]};
     assign led0_r_o = bad;
     assign led0_g_o = ~bad & ~rst;
 

@@ -1,7 +1,8 @@
 // ulx3s_top -- the FPGA demonstration on a ULX3S (ECP5 LFE5U-85F/45F/25F/12F,
 // CABGA381, 25 MHz oscillator; pins in constraints/ulx3s.lpf): albatross_soc
 // with two PicoRV32 boards as on the iCEBreaker (fpga/icebreaker_top.v,
-// fpga/duo.toml).  LEDs: led[0]/led[1] the sensor's/actuator's heartbeat,
+// fpga/duo.toml).  LEDs: led[0]/led[1] the sensor's/actuator's heartbeat
+// (beat_divider: a change every 2**BEAT_LOG2 beats, so it blinks visibly),
 // led[2]/led[3] a core stopped, led[4] a failed check, led[5] a trap,
 // led[6] a controller error, led[7] reset.  btn[0] (PWR, active low) resets.
 // wifi_gpio0 is held high so that the board's ESP32 leaves the FPGA alone.
@@ -10,7 +11,8 @@
 module ulx3s_top #(
     parameter ROM_FILE   = "build/fpga/duo/rom.hex",  // schedule ROM image
     parameter FW_PREFIX  = "build/fpga/duo/fw",       // board c's program: <prefix><c>.hex
-    parameter RAM_PREFIX = "build/fpga/duo/ram"       // board c's DPRAM image: <prefix><c>.hex
+    parameter RAM_PREFIX = "build/fpga/duo/ram",      // board c's DPRAM image: <prefix><c>.hex
+    parameter BEAT_LOG2  = 5                           // heartbeat LEDs change every 2**BEAT_LOG2 beats (a blink at 25 MHz)
 ) (
     input  wire       clk_i,         // clk_25mhz
     input  wire       btn_n_i,       // btn[0], active low
@@ -19,7 +21,7 @@ module ulx3s_top #(
 );
 
     wire       rst, ctrl_err;
-    wire [1:0] done, err, beat, trap;
+    wire [1:0] done, err, beat, trap, led_beat;
 
     board_reset u_reset (.clk_i(clk_i), .btn_n_i(btn_n_i), .rst_o(rst));
 
@@ -31,7 +33,10 @@ module ulx3s_top #(
         .trap_o(trap), .ctrl_err_o(ctrl_err)
     );
 
-    assign led_o        = {rst, ctrl_err, |trap, |err, done[1], done[0], beat[1], beat[0]};
+    beat_divider #(.LOG2(BEAT_LOG2)) u_beat0 (.clk_i(clk_i), .rst_i(rst), .beat_i(beat[0]), .beat_o(led_beat[0]));
+    beat_divider #(.LOG2(BEAT_LOG2)) u_beat1 (.clk_i(clk_i), .rst_i(rst), .beat_i(beat[1]), .beat_o(led_beat[1]));
+
+    assign led_o        = {rst, ctrl_err, |trap, |err, done[1], done[0], led_beat[1], led_beat[0]};
     assign wifi_gpio0_o = 1'b1;
 
 endmodule
