@@ -93,15 +93,17 @@ bitstream: pnr ## icepack the iCEBreaker top -> build/fpga/icebreaker_top.bin
 # $(3) = parameters.  The ULX3S and Arty models divide their heartbeat LEDs
 # by 2 (BEAT_LOG2 = 1) instead of 32 and 128: the only difference from the
 # synthesised tops, so that a few million clocks show the LEDs blink.
+FPGA_SIM_DEPS := $(FPGA_RTL) tb/fpga/test_fpga_soc.cpp tb/report.h tb/pico/picorv32.vlt mk/fpga.mk
+# Recipe: the model of top $(1) from file $(4), harness define $(2), parameters $(3), into $(@D).
+FPGA_VERILATE = verilator --cc --exe --build -j 2 -O3 $(FPGA_VFLAGS) --top-module $(1) $(3) \
+    -CFLAGS "-O2 -std=c++17 -D$(2)" --Mdir $(@D) $(PICO_RV32_V) $(4) $(abspath tb/fpga/test_fpga_soc.cpp) \
+    > $(@D)/build.log 2>&1 || { cat $(@D)/build.log; exit 1; }
 define fpga_sim
-$(FPGA_DIR)/sim-$(1)/V$(1): $(FPGA_RTL) tb/fpga/test_fpga_soc.cpp tb/report.h tb/pico/picorv32.vlt mk/fpga.mk
+$(FPGA_DIR)/sim-$(1)/V$(1): $(FPGA_SIM_DEPS)
 	$$(PICO_NEED)
 	$$(SERV_NEED)
 	@mkdir -p $$(@D)
-	verilator --cc --exe --build -j 2 -O3 $$(FPGA_VFLAGS) --top-module $(1) $(3) \
-	    -CFLAGS "-O2 -std=c++17 -D$(2)" --Mdir $$(@D) \
-	    $$(PICO_RV32_V) fpga/$(1).v $$(abspath tb/fpga/test_fpga_soc.cpp) \
-	    > $$(@D)/build.log 2>&1 || { cat $$(@D)/build.log; exit 1; }
+	$$(call FPGA_VERILATE,$(1),$(2),$(3),fpga/$(1).v)
 endef
 $(eval $(call fpga_sim,icebreaker_top,TOP_ICEBREAKER))
 $(eval $(call fpga_sim,ulx3s_top,TOP_ULX3S,-GBEAT_LOG2=1))
@@ -112,16 +114,13 @@ FPGA_SIM = $(FPGA_DIR)/sim-$(1)/V$(1)
 # of the harness's pin checks.  $(1) = name, $(2) = top, $(3) = define,
 # $(4) = sed expression (it must change the file), $(5) = parameters.
 define fpga_mutant
-$(FPGA_DIR)/mutant-$(1)/V$(2): $(FPGA_RTL) tb/fpga/test_fpga_soc.cpp tb/report.h tb/pico/picorv32.vlt mk/fpga.mk
+$(FPGA_DIR)/mutant-$(1)/V$(2): $(FPGA_SIM_DEPS)
 	$$(PICO_NEED)
 	$$(SERV_NEED)
 	@mkdir -p $$(@D)
 	sed -e '$(4)' fpga/$(2).v > $$(@D)/$(2).v
 	@! cmp -s fpga/$(2).v $$(@D)/$(2).v || { echo "fpga_mutant $(1): the sed changed nothing in fpga/$(2).v"; exit 1; }
-	verilator --cc --exe --build -j 2 -O3 $$(FPGA_VFLAGS) --top-module $(2) $(5) \
-	    -CFLAGS "-O2 -std=c++17 -D$(3)" --Mdir $$(@D) \
-	    $$(PICO_RV32_V) $$(@D)/$(2).v $$(abspath tb/fpga/test_fpga_soc.cpp) \
-	    > $$(@D)/build.log 2>&1 || { cat $$(@D)/build.log; exit 1; }
+	$$(call FPGA_VERILATE,$(2),$(3),$(5),$$(@D)/$(2).v)
 endef
 $(eval $(call fpga_mutant,green_led,icebreaker_top,TOP_ICEBREAKER,s/assign led_g_n_o = ~beat\[1\];/assign led_g_n_o = ~beat[0];/))
 $(eval $(call fpga_mutant,wifi_gpio0,ulx3s_top,TOP_ULX3S,s/assign wifi_gpio0_o = 1'"'"'b1;/assign wifi_gpio0_o = 1'"'"'b0;/,-GBEAT_LOG2=1))
