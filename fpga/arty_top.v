@@ -22,23 +22,17 @@ module arty_top #(
 );
 
     wire       rst, ctrl_err, bad;
-    wire [1:0] done, err, beat, trap, led_beat;
+    wire [1:0] done, err, beat, trap;
 
-    board_reset u_reset (.clk_i(clk_i), .btn_n_i(btn_n_i), .rst_o(rst));
-
-    albatross_soc #(
-        .NB(2), .ADDR_WIDTH(8), .RAM_WORDS(512), .N_CHAN(4), .ROM_WORDS(256),
-        .ROM_FILE(ROM_FILE), .FW_PREFIX(FW_PREFIX), .RAM_PREFIX(RAM_PREFIX)
-    ) u_soc (
-        .clk_i(clk_i), .rst_i(rst), .done_o(done), .err_o(err), .beat_o(beat),
-        .trap_o(trap), .ctrl_err_o(ctrl_err)
+    duo_system #(
+        .ROM_FILE(ROM_FILE), .FW_PREFIX(FW_PREFIX), .RAM_PREFIX(RAM_PREFIX), .BEAT_LOG2(BEAT_LOG2)
+    ) u_duo (
+        .clk_i(clk_i), .btn_n_i(btn_n_i), .rst_o(rst), .done_o(done), .err_o(err), .trap_o(trap),
+        .beat_o(beat), .ctrl_err_o(ctrl_err)
     );
 
-    beat_divider #(.LOG2(BEAT_LOG2)) u_beat0 (.clk_i(clk_i), .rst_i(rst), .beat_i(beat[0]), .beat_o(led_beat[0]));
-    beat_divider #(.LOG2(BEAT_LOG2)) u_beat1 (.clk_i(clk_i), .rst_i(rst), .beat_i(beat[1]), .beat_o(led_beat[1]));
-
     assign bad      = |err | |trap | ctrl_err;
-    assign led_o    = {done[1], done[0], led_beat[1], led_beat[0]};
+    assign led_o    = {done[1], done[0], beat[1], beat[0]};
     assign led0_r_o = bad;
     assign led0_g_o = ~bad & ~rst;
 

@@ -25,17 +25,19 @@ module icebreaker_top #(
     output wire [4:0] led_o // PMOD2 LED1..LED5, active high
 );
 
-    wire       rst, ctrl_err;
+    wire       ctrl_err;
     wire [1:0] done, err, beat, trap;
 
-    board_reset u_reset (.clk_i(clk_i), .btn_n_i(btn_n_i), .rst_o(rst));
-
-    albatross_soc #(
-        .NB(2), .ADDR_WIDTH(8), .RAM_WORDS(512), .N_CHAN(4), .ROM_WORDS(256),
+    // The heartbeat blinks visibly at 12 MHz as it is (BEAT_LOG2 0).  No LED
+    // is left for the reset state.
+    duo_system #(
         .ROM_FILE(ROM_FILE), .FW_PREFIX(FW_PREFIX), .RAM_PREFIX(RAM_PREFIX), .SERV_MASK(SERV_MASK)
-    ) u_soc (
-        .clk_i(clk_i), .rst_i(rst), .done_o(done), .err_o(err), .beat_o(beat),
-        .trap_o(trap), .ctrl_err_o(ctrl_err)
+    ) u_duo (
+        .clk_i(clk_i), .btn_n_i(btn_n_i),
+        /* verilator lint_off PINCONNECTEMPTY */
+        .rst_o(),
+        /* verilator lint_on PINCONNECTEMPTY */
+        .done_o(done), .err_o(err), .trap_o(trap), .beat_o(beat), .ctrl_err_o(ctrl_err)
     );
 
     assign led_o     = {ctrl_err, done[1], done[0], beat[1], beat[0]};

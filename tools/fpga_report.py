@@ -46,7 +46,8 @@ from synth_report import FAMILIES, cell_types, count  # noqa: E402
 
 SOC_FILES = ["rtl/albatross_dpram.v", "rtl/albatross_bus.v", "rtl/albatross_controller.v",
              "tb/rtl/board_core.v", "tb/rtl/pico_core.v", "tb/rtl/serv_core.v", "tb/rtl/serv_bridge.v", "tb/rtl/board_memmap.v",
-             "tb/rtl/pico_wb_adapter.v", "fpga/albatross_soc.v", "fpga/board_reset.v", "fpga/beat_divider.v"]
+             "tb/rtl/pico_wb_adapter.v", "fpga/albatross_soc.v", "fpga/board_reset.v", "fpga/beat_divider.v",
+             "fpga/duo_system.v"]
 TOPS = {"ice40": "icebreaker_top", "ecp5": "ulx3s_top", "xc7": "arty_top"}
 TOP_CLOCK_MHZ = {"ice40": 12, "ecp5": 25, "xc7": 100}
 
