@@ -145,24 +145,20 @@ TESTS += fpga-soc fpga-soc-ulx3s fpga-soc-arty fpga-soc-negative fpga-soc-ulx3s-
 .PHONY: test-fpga-soc test-fpga-soc-ulx3s test-fpga-soc-arty test-fpga-soc-negative test-fpga-soc-ulx3s-negative \
         test-fpga-soc-arty-negative test-fpga-soc-pins-negative test-fpga-icebreaker test-fpga-ulx3s \
         test-fpga-report-negative test-fpga-arty test-fpga-lint
-# The iCEBreaker (sensor on SERV: slow to start) gets more clocks than the
-# PicoRV32-only ULX3S and Arty tops.
-test-fpga-soc: $(call FPGA_SIM,icebreaker_top) $(FPGA_IMAGES)
-	@tools/run_test.sh fpga-soc $(call FPGA_SIM,icebreaker_top) --cycles 16000000 --report $(REPORTS)/fpga_soc.json
-test-fpga-soc-ulx3s: $(call FPGA_SIM,ulx3s_top) $(FPGA_IMAGES)
-	@tools/run_test.sh fpga-soc-ulx3s $(call FPGA_SIM,ulx3s_top) --cycles 4000000 \
-	    --report $(REPORTS)/fpga_soc_ulx3s.json
-test-fpga-soc-arty: $(call FPGA_SIM,arty_top) $(FPGA_IMAGES)
-	@tools/run_test.sh fpga-soc-arty $(call FPGA_SIM,arty_top) --cycles 4000000 --report $(REPORTS)/fpga_soc_arty.json
-test-fpga-soc-negative: $(call FPGA_SIM,icebreaker_top) $(FPGA_IMAGES) $(FPGA_DIR)/badrom/rom.hex
-	@tools/run_test.sh fpga-soc-negative $(call FPGA_SIM,icebreaker_top) --cycles 100000 --expect-error \
+# Per top: test-fpga-soc$(1) runs it for $(3) clocks (the iCEBreaker, whose
+# sensor is on SERV and slow to start, gets more than the PicoRV32-only
+# ULX3S and Arty); test-fpga-soc$(1)-negative runs it on the corrupted ROM.
+# $(1) = test suffix, $(2) = top.
+define fpga_soc_tests
+test-fpga-soc$(1): $(call FPGA_SIM,$(2)) $$(FPGA_IMAGES)
+	@tools/run_test.sh fpga-soc$(1) $(call FPGA_SIM,$(2)) --cycles $(3) --report $$(REPORTS)/fpga_soc$(subst -,_,$(1)).json
+test-fpga-soc$(1)-negative: $(call FPGA_SIM,$(2)) $$(FPGA_IMAGES) $(FPGA_DIR)/badrom/rom.hex
+	@tools/run_test.sh fpga-soc$(1)-negative $(call FPGA_SIM,$(2)) --cycles 100000 --expect-error \
 	    +rom=$(FPGA_DIR)/badrom/rom.hex
-test-fpga-soc-ulx3s-negative: $(call FPGA_SIM,ulx3s_top) $(FPGA_IMAGES) $(FPGA_DIR)/badrom/rom.hex
-	@tools/run_test.sh fpga-soc-ulx3s-negative $(call FPGA_SIM,ulx3s_top) --cycles 100000 --expect-error \
-	    +rom=$(FPGA_DIR)/badrom/rom.hex
-test-fpga-soc-arty-negative: $(call FPGA_SIM,arty_top) $(FPGA_IMAGES) $(FPGA_DIR)/badrom/rom.hex
-	@tools/run_test.sh fpga-soc-arty-negative $(call FPGA_SIM,arty_top) --cycles 100000 --expect-error \
-	    +rom=$(FPGA_DIR)/badrom/rom.hex
+endef
+$(eval $(call fpga_soc_tests,,icebreaker_top,16000000))
+$(eval $(call fpga_soc_tests,-ulx3s,ulx3s_top,4000000))
+$(eval $(call fpga_soc_tests,-arty,arty_top,4000000))
 
 # The pin checks catch a broken top (a green LED on the wrong heartbeat, the
 # ESP32's GPIO0 pulled low, the RGB LED green only in reset).

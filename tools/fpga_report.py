@@ -85,16 +85,17 @@ def tail(log, n=3):
 
 def synth(name, fam, picorv32, serv, out):
     files, top, chparam = design(name, fam, picorv32, serv)
-    r = synth_files(files, top, chparam, fam, os.path.join(out, f"{name}_{fam}"))
+    r = synth_files(files, top, chparam, fam, os.path.join(out, f"{name}_{fam}"), netlist=fam in PNR)
     return dict({"design": name}, **r)
 
 
-def synth_files(files, top, chparam, fam, stem):
-    """Yosys on one family; the cell counts (or "error"), logs at stem*."""
+def synth_files(files, top, chparam, fam, stem, netlist=False):
+    """Yosys on one family; the cell counts (or "error"), logs at stem*; netlist: also
+    stem.json for place and route."""
     spec = FAMILIES[fam]
     script = (f"read_verilog -DSYNTHESIS {' '.join(files)}; {chparam + '; ' if chparam else ''}"
               f"{spec['synth'].format(top=top)}; tee -q -o {stem}_stat.json stat -json"
-              + (f"; write_json {stem}.json" if fam in PNR else ""))
+              + (f"; write_json {stem}.json" if netlist else ""))
     ok, secs = run(["yosys", "-q", "-p", script], stem + "_yosys.log")
     r = {"family": fam, "top": top, "yosys_seconds": round(secs, 1)}
     if not ok:
