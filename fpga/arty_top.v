@@ -27,7 +27,7 @@ module arty_top #(
     duo_system #(
         .ROM_FILE(ROM_FILE), .FW_PREFIX(FW_PREFIX), .RAM_PREFIX(RAM_PREFIX), .BEAT_LOG2(BEAT_LOG2)
     ) u_duo (
-        .clk_i(clk_i), .btn_n_i(btn_n_i), .rst_o(rst), .done_o(done), .err_o(err), .trap_o(trap),
+        .clk_i(clk_i), .cpu_clk_i(clk_i), .btn_n_i(btn_n_i), .rst_o(rst), .done_o(done), .err_o(err), .trap_o(trap),
         .beat_o(beat), .ctrl_err_o(ctrl_err)
     );
 

@@ -3,7 +3,22 @@
 // and 'actuator' = board 1, with the sizes the compiler's images are made
 // for), its reset (board_reset: power-on and the reset button) and the
 // heartbeats divided for the eye (beat_divider).  A top adds only its pins
-// and LED mapping.  One clock; rst_o is synchronous, active high.
+// and LED mapping.
+//
+// Clocks: with CPU_CDC 0 everything runs on clk_i (cpu_clk_i unused).  With
+// CPU_CDC 1 the two cores run on cpu_clk_i and reach their DPRAMs through
+// albatross_wb_cdc, while the DPRAMs, the bus and the controller stay on
+// clk_i (albatross_soc).  The cores' reset is then the clk_i reset passed
+// through a second board_reset on cpu_clk_i: it is taken on a cpu_clk_i edge
+// at most 6 cpu_clk_i clocks after the clk_i reset rises (synchroniser, a
+// possibly metastable first capture, the hold counter's clear, its register)
+// and falls 2**4 + 3 cpu_clk_i clocks after it falls.  The clk_i reset lasts
+// 15 clk_i clocks at least, so albatross_wb_cdc's reset rule (each side's
+// reset is taken by the other side before it ends) holds whenever cpu_clk_i
+// runs at 0.4 times clk_i's frequency or faster.  A top that derives its
+// clocks from a PLL holds btn_n_i low until the PLL locks.
+// rst_o (either reset, for an LED only) is active high; done_o, err_o,
+// trap_o and beat_o are synchronous to the cores' clock.
 `default_nettype none
 
 module duo_system #(
@@ -11,9 +26,11 @@ module duo_system #(
     parameter FW_PREFIX  = "build/fpga/duo/fw",       // board c's program: <prefix><c>.hex
     parameter RAM_PREFIX = "build/fpga/duo/ram",      // board c's DPRAM image: <prefix><c>.hex
     parameter SERV_MASK  = 0,                         // bit c: board c on SERV, else PicoRV32
-    parameter BEAT_LOG2  = 0                          // beat_o changes every 2**BEAT_LOG2 heartbeats
+    parameter BEAT_LOG2  = 0,                         // beat_o changes every 2**BEAT_LOG2 heartbeats
+    parameter CPU_CDC    = 0                          // 1: the cores on cpu_clk_i, the rest on clk_i; 0: all on clk_i
 ) (
-    input  wire       clk_i,
+    input  wire       clk_i,      // DPRAMs, bus and controller (CPU_CDC 0: everything)
+    input  wire       cpu_clk_i,  // the cores' clock (CPU_CDC 1 only)
     input  wire       btn_n_i,    // reset button, active low, asynchronous
     output wire       rst_o,      // the system is in reset
     output wire [1:0] done_o,     // core c stopped (stored to TOHOST)
@@ -24,20 +41,34 @@ module duo_system #(
 );
 
     wire [1:0] beat;
+    wire       rst, core_clk, core_rst;
 
-    board_reset u_reset (.clk_i(clk_i), .btn_n_i(btn_n_i), .rst_o(rst_o));
+    board_reset u_reset (.clk_i(clk_i), .btn_n_i(btn_n_i), .rst_o(rst));
+
+    generate
+        if (CPU_CDC != 0) begin : g_cpu_clock
+            assign core_clk = cpu_clk_i;
+            board_reset u_cpu_reset (.clk_i(cpu_clk_i), .btn_n_i(~rst), .rst_o(core_rst));
+        end else begin : g_one_clock
+            wire unused_cpu_clk = cpu_clk_i;  // the cores run on clk_i
+            assign core_clk = clk_i;
+            assign core_rst = rst;
+        end
+    endgenerate
+    assign rst_o = rst | core_rst;
 
     // Sizes as in fpga/duo.toml (ram 1024 bytes, n_chan 4) and mk/fpga.mk (2 KiB programs).
     albatross_soc #(
         .NB(2), .ADDR_WIDTH(8), .RAM_WORDS(512), .N_CHAN(4), .ROM_WORDS(256),
-        .ROM_FILE(ROM_FILE), .FW_PREFIX(FW_PREFIX), .RAM_PREFIX(RAM_PREFIX), .SERV_MASK(SERV_MASK)
+        .ROM_FILE(ROM_FILE), .FW_PREFIX(FW_PREFIX), .RAM_PREFIX(RAM_PREFIX), .SERV_MASK(SERV_MASK),
+        .CPU_CDC(CPU_CDC)
     ) u_soc (
-        .clk_i(clk_i), .rst_i(rst_o), .done_o(done_o), .err_o(err_o), .beat_o(beat),
+        .clk_i(clk_i), .rst_i(rst), .cpu_clk_i(core_clk), .cpu_rst_i(core_rst), .done_o(done_o), .err_o(err_o), .beat_o(beat),
         .trap_o(trap_o), .ctrl_err_o(ctrl_err_o)
     );
 
-    beat_divider #(.LOG2(BEAT_LOG2)) u_beat0 (.clk_i(clk_i), .rst_i(rst_o), .beat_i(beat[0]), .beat_o(beat_o[0]));
-    beat_divider #(.LOG2(BEAT_LOG2)) u_beat1 (.clk_i(clk_i), .rst_i(rst_o), .beat_i(beat[1]), .beat_o(beat_o[1]));
+    beat_divider #(.LOG2(BEAT_LOG2)) u_beat0 (.clk_i(core_clk), .rst_i(core_rst), .beat_i(beat[0]), .beat_o(beat_o[0]));
+    beat_divider #(.LOG2(BEAT_LOG2)) u_beat1 (.clk_i(core_clk), .rst_i(core_rst), .beat_i(beat[1]), .beat_o(beat_o[1]));
 
 endmodule
 

@@ -33,7 +33,7 @@ module icebreaker_top #(
     duo_system #(
         .ROM_FILE(ROM_FILE), .FW_PREFIX(FW_PREFIX), .RAM_PREFIX(RAM_PREFIX), .SERV_MASK(SERV_MASK)
     ) u_duo (
-        .clk_i(clk_i), .btn_n_i(btn_n_i),
+        .clk_i(clk_i), .cpu_clk_i(clk_i), .btn_n_i(btn_n_i),
         /* verilator lint_off PINCONNECTEMPTY */
         .rst_o(),
         /* verilator lint_on PINCONNECTEMPTY */

@@ -8,8 +8,9 @@
 #                    ECP5 Fmax from nextpnr -> build/reports/fpga.json
 #   make pnr         place and route the iCEBreaker top (nextpnr-ice40, UP5K
 #                    SG48, constraints/icebreaker.pcf, 12 MHz) and the ULX3S
-#                    top (nextpnr-ecp5 from PyPI, LFE5U-12F, ulx3s.lpf,
-#                    25 MHz), timing and fit -> build/reports/fpga_pnr.json
+#                    top (nextpnr-ecp5 from PyPI, LFE5U-12F, ulx3s.lpf: its
+#                    PLL's 50 MHz CPU and 25 MHz bus clocks), timing per
+#                    clock domain and fit -> build/reports/fpga_pnr.json
 #   make bitstream   make pnr, then icepack and ecppack ->
 #                    build/fpga/icebreaker_top.bin, build/fpga/ulx3s_top.bit
 #   make area        the controller with each optional feature tied off, and
@@ -32,11 +33,11 @@ FPGA_IMG    := $(FPGA_DIR)/duo
 FPGA_SCHED  := $(BUILD)/schedule/duo
 FPGA_BOARDS := sensor actuator
 FPGA_RAM    := 2048   # bytes of each core's program RAM (RAM_WORDS 512 in the tops)
-FPGA_RTL    := $(wildcard fpga/*.v) rtl/albatross_dpram.v rtl/albatross_bus.v rtl/albatross_controller.v \
+FPGA_RTL    := $(wildcard fpga/*.v) rtl/albatross_dpram.v rtl/albatross_wb_cdc.v rtl/albatross_bus.v rtl/albatross_controller.v \
                tb/rtl/board_core.v tb/rtl/pico_core.v tb/rtl/serv_core.v tb/rtl/serv_bridge.v tb/rtl/board_memmap.v \
                tb/rtl/pico_wb_adapter.v
 # PicoRV32 and SERV come from PyPI (mk/pico.mk, mk/serv.mk); Verilator flags.
-FPGA_VFLAGS  = -Wall --timescale 1ns/1ps -y rtl -y tb/rtl -y fpga -y $(SERV_CPU_RTL) tb/pico/picorv32.vlt tb/pico/serv.vlt
+FPGA_VFLAGS  = -Wall --timescale 1ns/1ps -y rtl -y tb/rtl -y fpga -y tb/fpga -y $(SERV_CPU_RTL) tb/pico/picorv32.vlt tb/pico/serv.vlt
 # (mk/pico.mk, read after this file, defines PICO_RV32_V and FW_*: every use
 # below is deferred, in recipes or with = / $$.)
 # ecppack from PyPI (YoWASP, like nextpnr-ecp5): it works under the current
@@ -100,9 +101,10 @@ bitstream: pnr ## pack the iCEBreaker and ULX3S tops -> build/fpga/icebreaker_to
 # fails; the controller's simulation model reads +rom=FILE instead of
 # ROM_FILE): the error LED must light.  $(1) = top, $(2) = harness define,
 # $(3) = parameters.  The ULX3S and Arty models divide their heartbeat LEDs
-# by 2 (BEAT_LOG2 = 1) instead of 32 and 128: the only difference from the
-# synthesised tops, so that a few million clocks show the LEDs blink.
-FPGA_SIM_DEPS := $(FPGA_RTL) tb/fpga/test_fpga_soc.cpp tb/report.h tb/pico/picorv32.vlt mk/fpga.mk
+# by 2 (BEAT_LOG2 = 1) instead of 64 and 128: the only difference from the
+# synthesised tops, so that a few million clocks show the LEDs blink.  The
+# ULX3S model's PLL is tb/fpga/EHXPLLL.v (its two clocks at the real 2:1).
+FPGA_SIM_DEPS := $(FPGA_RTL) tb/fpga/EHXPLLL.v tb/fpga/test_fpga_soc.cpp tb/report.h tb/pico/picorv32.vlt mk/fpga.mk
 # Recipe: the model of top $(1) from file $(4), harness define $(2), parameters $(3), into $(@D).
 FPGA_VERILATE = verilator --cc --exe --build -j 2 -O3 $(FPGA_VFLAGS) --top-module $(1) $(3) \
     -CFLAGS "-O2 -std=c++17 -D$(2)" --Mdir $(@D) $(PICO_RV32_V) $(4) $(abspath tb/fpga/test_fpga_soc.cpp) \
@@ -199,6 +201,6 @@ test-fpga-lint: $(FPGA_IMAGES)
 	$(SERV_NEED)
 	@tools/run_test.sh fpga-lint bash -c 'set -e; for f in $(wildcard fpga/*.v); do t=$$(basename $$f .v); \
 	    verilator --lint-only $(FPGA_VFLAGS) --top-module $$t $(PICO_RV32_V) $$f; \
-	    iverilog -g2005 -y rtl -y tb/rtl -y fpga -y $(SERV_CPU_RTL) -s $$t -o /dev/null $(PICO_RV32_V) $$f; \
-	    yosys -q -p "read_verilog -DSYNTHESIS $(PICO_RV32_V) $(SERV_CPU_V) $(FPGA_RTL); hierarchy -check -top $$t; proc"; \
+	    iverilog -g2005 -y rtl -y tb/rtl -y fpga -y tb/fpga -y $(SERV_CPU_RTL) -s $$t -o /dev/null $(PICO_RV32_V) $$f; \
+	    yosys -q -p "read_verilog -lib +/ecp5/cells_bb.v; read_verilog -DSYNTHESIS $(PICO_RV32_V) $(SERV_CPU_V) $(FPGA_RTL); hierarchy -check -top $$t; proc"; \
 	    echo "lint ok  $$f"; done'

@@ -3,7 +3,9 @@
 // (build/fpga/duo/), its power-on reset and the reset button released.  The
 // top is chosen when the model is built: -DTOP_ICEBREAKER (default),
 // -DTOP_ULX3S or -DTOP_ARTY; each top's LEDs are decoded below as the
-// top's comment says.
+// top's comment says.  The ULX3S top's PLL is tb/fpga/EHXPLLL.v: the clock
+// this harness drives is its 50 MHz CPU clock, and its 25 MHz bus clock
+// runs at half that rate, as on the board; N below counts CPU clocks.
 //
 //   test_fpga_soc [--cycles N] [--report FILE] [--expect-error | --expect-fail TEXT]
 //                 [+rom=FILE]
