@@ -284,16 +284,25 @@ def fpga():
         if "luts" not in e:
             rows.append([names.get(e["design"], e["design"]), e["family"], "error", "", "", "", "", ""])
             continue
-        fm = e.get("fmax_mhz")
+        fm, clocks = e.get("fmax_mhz"), e.get("clocks")
+        if clocks:   # a placed top: every clock domain
+            fm_text = ", ".join(f"{net} {c['fmax_mhz']:.1f}" for net, c in sorted(clocks.items()))
+        else:
+            fm_text = f"{fm:.1f}" if fm is not None else None
         rows.append([names.get(e["design"], e["design"]), e["family"], n(e["luts"]), n(e["ffs"]), n(e["carries"]),
                      n(e["brams"]), n(e["lutrams"]),
-                     (f"{fm:.1f} ({e['pnr_part']})" if fm is not None else "-")])
+                     (f"{fm_text} ({e['pnr_part']})" if fm_text else "-")])
     out = table(["design", "family", "LUTs", "FFs", "carries", "block RAMs", "LUT RAMs", "Fmax MHz (part)"], rows)
     for e in r["rows"]:
-        cp = e.get("critical_path")
-        if e["design"] == "top" and cp:
-            out += (f"\n\nCritical path of the {e['family']} top ({e['top']}, {e['pnr_part']}): "
-                    f"from `{cp[0]}` to `{cp[1]}`.")
+        if e["design"] != "top" or not e.get("clocks"):
+            continue
+        out += f"\n\nThe {e['family']} top ({e['top']}, {e['pnr_part']}), per clock domain:"
+        for net, c in sorted(e["clocks"].items()):
+            cp = c.get("critical_path") or ["?", "?"]
+            out += (f"\n- `{net}`: Fmax {c['fmax_mhz']:.1f} MHz against {c['constraint_mhz']:g} MHz; "
+                    f"critical path from `{cp[0]}` to `{cp[1]}`")
+        for x in e.get("clock_crossings", []):
+            out += f"\n- worst path from `{x['from']}` to `{x['to']}`: {x['delay_ns']:.2f} ns"
     ratios = r.get("controller_over_picorv32_luts", {})
     if ratios:
         out += "\n\nController LUTs / one PicoRV32's LUTs: " + ", ".join(

