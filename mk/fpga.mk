@@ -121,30 +121,37 @@ $(eval $(call fpga_sim,ulx3s_top,TOP_ULX3S,-GBEAT_LOG2=1))
 $(eval $(call fpga_sim,arty_top,TOP_ARTY,-GBEAT_LOG2=1))
 FPGA_SIM = $(FPGA_DIR)/sim-$(1)/V$(1)
 
-# Broken tops, each built from a sed of the real one, for the negative tests
-# of the harness's pin checks.  $(1) = name, $(2) = top, $(3) = define,
-# $(4) = sed expression (it must change the file), $(5) = parameters.
+# Broken systems, each built from a sed of one fpga/ file, for the negative
+# tests of the harness's checks.  $(1) = name, $(2) = top, $(3) = define,
+# $(4) = sed expression (it must change the file), $(5) = parameters,
+# $(6) = the fpga/ module to break (default: the top).
 define fpga_mutant
 $(FPGA_DIR)/mutant-$(1)/V$(2): $(FPGA_SIM_DEPS)
 	$$(PICO_NEED)
 	$$(SERV_NEED)
 	@mkdir -p $$(@D)
-	sed -e '$(4)' fpga/$(2).v > $$(@D)/$(2).v
-	@! cmp -s fpga/$(2).v $$(@D)/$(2).v || { echo "fpga_mutant $(1): the sed changed nothing in fpga/$(2).v"; exit 1; }
-	$$(call FPGA_VERILATE,$(2),$(3),$(5),$$(@D)/$(2).v)
+	sed -e '$(4)' fpga/$(or $(6),$(2)).v > $$(@D)/$(or $(6),$(2)).v
+	@! cmp -s fpga/$(or $(6),$(2)).v $$(@D)/$(or $(6),$(2)).v || \
+	    { echo "fpga_mutant $(1): the sed changed nothing in fpga/$(or $(6),$(2)).v"; exit 1; }
+	$$(call FPGA_VERILATE,$(2),$(3),$(5),$(if $(6),fpga/$(2).v) $$(@D)/$(or $(6),$(2)).v)
 endef
 $(eval $(call fpga_mutant,green_led,icebreaker_top,TOP_ICEBREAKER,s/assign led_g_n_o = ~beat\[1\];/assign led_g_n_o = ~beat[0];/))
 $(eval $(call fpga_mutant,wifi_gpio0,ulx3s_top,TOP_ULX3S,s/assign wifi_gpio0_o = 1'"'"'b1;/assign wifi_gpio0_o = 1'"'"'b0;/,-GBEAT_LOG2=1))
 $(eval $(call fpga_mutant,rgb_green,arty_top,TOP_ARTY,s/assign led0_g_o = ~bad & ~rst;/assign led0_g_o = ~bad \& rst;/,-GBEAT_LOG2=1))
+# The ULX3S's cores on their own clock but without albatross_wb_cdc: each
+# core's bus goes straight to its DPRAM on the other clock.
+$(eval $(call fpga_mutant,no_cdc,ulx3s_top,TOP_ULX3S,s/if (CPU_CDC != 0) begin : g_cdc/if (CPU_CDC == 2) begin : g_cdc/; \
+    s/assign core_clk = clk_i;/assign core_clk = cpu_clk_i;/; s/assign core_rst = rst_i;/assign core_rst = cpu_rst_i;/,\
+    -GBEAT_LOG2=1,albatross_soc))
 $(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
 	@mkdir -p $(@D)
 	sed '2s/^.*$$/00000001/' $< > $@
 
 BENCHES += synth area
 
-TESTS += fpga-soc fpga-soc-ulx3s fpga-soc-arty fpga-soc-negative fpga-soc-ulx3s-negative fpga-soc-arty-negative \
+TESTS += fpga-soc fpga-soc-ulx3s fpga-soc-ulx3s-drift fpga-soc-ulx3s-drift-negative fpga-soc-arty fpga-soc-negative fpga-soc-ulx3s-negative fpga-soc-arty-negative \
          fpga-soc-pins-negative fpga-icebreaker fpga-ulx3s fpga-report-negative fpga-arty fpga-lint
-.PHONY: test-fpga-soc test-fpga-soc-ulx3s test-fpga-soc-arty test-fpga-soc-negative test-fpga-soc-ulx3s-negative \
+.PHONY: test-fpga-soc test-fpga-soc-ulx3s test-fpga-soc-ulx3s-drift test-fpga-soc-ulx3s-drift-negative test-fpga-soc-arty test-fpga-soc-negative test-fpga-soc-ulx3s-negative \
         test-fpga-soc-arty-negative test-fpga-soc-pins-negative test-fpga-icebreaker test-fpga-ulx3s \
         test-fpga-report-negative test-fpga-arty test-fpga-lint
 # Per top: test-fpga-soc$(1) runs it for $(3) clocks (the iCEBreaker, whose
@@ -161,6 +168,20 @@ endef
 $(eval $(call fpga_soc_tests,,icebreaker_top,16000000))
 $(eval $(call fpga_soc_tests,-ulx3s,ulx3s_top,4000000))
 $(eval $(call fpga_soc_tests,-arty,arty_top,4000000))
+
+# The ULX3S top with its bus clock wandering against the cores' clock
+# (tb/fpga/EHXPLLL.v with +pll_drift: half-periods of 1 to 4 half-periods
+# of the cores' clock, edges on either of its edges): the whole system on
+# two unrelated clocks, checked as above.
+test-fpga-soc-ulx3s-drift: $(call FPGA_SIM,ulx3s_top) $(FPGA_IMAGES)
+	@tools/run_test.sh fpga-soc-ulx3s-drift $(call FPGA_SIM,ulx3s_top) --cycles 4000000 +pll_drift=4242 \
+	    --report $(REPORTS)/fpga_soc_ulx3s_drift.json
+# Its negative: the cores' buses straight to their DPRAMs, no bridge (the
+# no_cdc mutant below).  At the PLL's fixed 2:1 that system happens to run;
+# with the clocks unrelated it must stall.
+test-fpga-soc-ulx3s-drift-negative: $(FPGA_DIR)/mutant-no_cdc/Vulx3s_top $(FPGA_IMAGES)
+	@tools/run_test.sh fpga-soc-ulx3s-drift-negative $(FPGA_DIR)/mutant-no_cdc/Vulx3s_top --cycles 4000000 \
+	    +pll_drift=4242 --expect-fail "expected both heartbeats to change"
 
 # The pin checks catch a broken top (a green LED on the wrong heartbeat, the
 # ESP32's GPIO0 pulled low, the RGB LED green only in reset).

@@ -5,10 +5,11 @@
 // -DTOP_ULX3S or -DTOP_ARTY; each top's LEDs are decoded below as the
 // top's comment says.  The ULX3S top's PLL is tb/fpga/EHXPLLL.v: the clock
 // this harness drives is its 50 MHz CPU clock, and its 25 MHz bus clock
-// runs at half that rate, as on the board; N below counts CPU clocks.
+// runs at half that rate, as on the board, or with +pll_drift=SEED wanders
+// unrelated to it (see that file); N below counts CPU clocks.
 //
 //   test_fpga_soc [--cycles N] [--report FILE] [--expect-error | --expect-fail TEXT]
-//                 [+rom=FILE]
+//                 [+rom=FILE] [+pll_drift=SEED]
 //
 // Watches the LEDs for N clocks (default 30,000,000) and passes when both
 // heartbeats (the sensor's, every 256 Exports; the actuator's, every 256 New
@@ -91,7 +92,7 @@ int main(int argc, char **argv)
         else if (argv[i][0] == '+') continue;                 // a plusarg for the model
         else {
             std::fprintf(stderr, "usage: test_fpga_soc [--cycles N] [--report FILE] [--expect-error | "
-                         "--expect-fail TEXT] [+rom=FILE]\n");
+                         "--expect-fail TEXT] [+rom=FILE] [+pll_drift=SEED]\n");
             return 2;
         }
     }
