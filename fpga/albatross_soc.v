@@ -14,8 +14,8 @@
 // controller is then independent of the processors' clock (seed 3.2, b-2):
 // it never limits it.  The two clocks may be unrelated.  rst_i and cpu_rst_i
 // must follow albatross_wb_cdc's reset rule (fpga/duo_system.v shows one way).
-// A core's DPRAM access then takes up to 6 CPU + 7 RAM clocks instead of 2
-// clocks (albatross_wb_cdc's bound with SYNC_STAGES 2).
+// A core's DPRAM access then takes up to 6 CPU + 7 RAM clocks instead of 1
+// or 2 clocks (albatross_wb_cdc's bound with SYNC_STAGES 2).
 //
 // Images (the make flow, mk/fpga.mk, writes them): board c's program is
 // <FW_PREFIX><c>.hex, the start image of its DPRAM <RAM_PREFIX><c>.hex (the
@@ -66,7 +66,9 @@ module albatross_soc #(
     wire [NB*4-1:0]          s_sel;
     wire [NB*32-1:0]         s_wdat, s_rdat;
     wire unused_ctrl = &{1'b0, time_now, rom_errors};
-    wire unused_cpu  = &{1'b0, cpu_clk_i, cpu_rst_i};  // with CPU_CDC 0
+    // The cores' clock and reset (a constant choice, no clock multiplexer).
+    wire core_clk = (CPU_CDC != 0) ? cpu_clk_i : clk_i;
+    wire core_rst = (CPU_CDC != 0) ? cpu_rst_i : rst_i;
 
     albatross_controller #(
         .NB(NB), .ADDR_WIDTH(ADDR_WIDTH), .N_CHAN(N_CHAN), .ROM_WORDS(ROM_WORDS),
@@ -93,7 +95,7 @@ module albatross_soc #(
             localparam RAM_FILE = (RAM_PREFIX == "") ? "" : {RAM_PREFIX, 8'd48 + c[7:0], ".hex"};
             // Port A of the RAM (a_*) and the core's bus (c_*): the same
             // wires with CPU_CDC 0, the two sides of a bridge with CPU_CDC 1.
-            wire                  a_cyc, a_stb, a_we, a_ack, c_cyc, c_stb, c_we, c_ack, core_clk, core_rst;
+            wire                  a_cyc, a_stb, a_we, a_ack, c_cyc, c_stb, c_we, c_ack;
             wire [ADDR_WIDTH-1:0] a_adr, c_adr;
             wire [3:0]            a_sel, c_sel;
             wire [31:0]           a_wdat, a_rdat, c_wdat, c_rdat, code, ev_data, ev_arg;
@@ -111,8 +113,6 @@ module albatross_soc #(
             );
 
             if (CPU_CDC != 0) begin : g_cdc
-                assign core_clk = cpu_clk_i;
-                assign core_rst = cpu_rst_i;
                 albatross_wb_cdc #(.ADDR_WIDTH(ADDR_WIDTH)) u_cdc (
                     .s_clk_i(cpu_clk_i), .s_rst_i(cpu_rst_i), .m_clk_i(clk_i), .m_rst_i(rst_i),
                     .s_cyc_i(c_cyc), .s_stb_i(c_stb), .s_we_i(c_we), .s_adr_i(c_adr), .s_sel_i(c_sel),
@@ -121,8 +121,6 @@ module albatross_soc #(
                     .m_dat_o(a_wdat), .m_dat_i(a_rdat), .m_ack_i(a_ack)
                 );
             end else begin : g_direct
-                assign core_clk = clk_i;
-                assign core_rst = rst_i;
                 assign {a_cyc, a_stb, a_we, a_adr, a_sel, a_wdat} = {c_cyc, c_stb, c_we, c_adr, c_sel, c_wdat};
                 assign {c_rdat, c_ack} = {a_rdat, a_ack};
             end

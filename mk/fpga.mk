@@ -140,8 +140,7 @@ $(eval $(call fpga_mutant,wifi_gpio0,ulx3s_top,TOP_ULX3S,s/assign wifi_gpio0_o =
 $(eval $(call fpga_mutant,rgb_green,arty_top,TOP_ARTY,s/assign led0_g_o = ~bad & ~rst;/assign led0_g_o = ~bad \& rst;/,-GBEAT_LOG2=1))
 # The ULX3S's cores on their own clock but without albatross_wb_cdc: each
 # core's bus goes straight to its DPRAM on the other clock.
-$(eval $(call fpga_mutant,no_cdc,ulx3s_top,TOP_ULX3S,s/if (CPU_CDC != 0) begin : g_cdc/if (CPU_CDC == 2) begin : g_cdc/; \
-    s/assign core_clk = clk_i;/assign core_clk = cpu_clk_i;/; s/assign core_rst = rst_i;/assign core_rst = cpu_rst_i;/,\
+$(eval $(call fpga_mutant,no_cdc,ulx3s_top,TOP_ULX3S,s/if (CPU_CDC != 0) begin : g_cdc/if (CPU_CDC == 2) begin : g_cdc/,\
     -GBEAT_LOG2=1,albatross_soc))
 $(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
 	@mkdir -p $(@D)
