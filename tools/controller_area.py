@@ -22,13 +22,12 @@ a usage error.
 
 import argparse
 import concurrent.futures
-import json
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fpga_report import design, synth_files  # noqa: E402
-from synth_report import FAMILIES  # noqa: E402
+from synth_report import FAMILIES, write_json  # noqa: E402
 
 # name: (what is tied off, [(exact text, replacement), ...])
 EDITS = {
@@ -153,12 +152,9 @@ def main():
             line += f"{row.get('luts', 'ERROR'):>12}" + (f"{row['over_picorv32']:>8.2f}" if "over_picorv32" in row
                                                         else f"{'-':>8}")
         print(line)
-    os.makedirs(os.path.dirname(a.report) or ".", exist_ok=True)
-    with open(a.report, "w") as f:
-        json.dump({"picorv32_luts": pico, "rows": rows, "goal_over_picorv32": 0.25,
-                   "note": "LUTs: SB_LUT4 / LUT4 / LUT1-6; variants are tie-offs of rtl/albatross_controller.v "
-                           "(tools/controller_area.py), measurements only"}, f, indent=2)
-        f.write("\n")
+    write_json(a.report, {"picorv32_luts": pico, "rows": rows, "goal_over_picorv32": 0.25,
+                          "note": "LUTs: SB_LUT4 / LUT4 / LUT1-6; variants are tie-offs of "
+                                  "rtl/albatross_controller.v (tools/controller_area.py), measurements only"})
     print(f"controller_area: {a.report}")
     if errors:
         print("controller_area: FAIL: " + "; ".join(errors))

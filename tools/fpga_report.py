@@ -48,7 +48,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from synth_report import FAMILIES, cell_types, count  # noqa: E402
+from synth_report import FAMILIES, cell_types, count, write_json  # noqa: E402
 
 SOC_FILES = ["rtl/albatross_dpram.v", "rtl/albatross_wb_cdc.v", "rtl/albatross_bus.v", "rtl/albatross_controller.v",
              "tb/rtl/board_core.v", "tb/rtl/pico_core.v", "tb/rtl/serv_core.v", "tb/rtl/serv_bridge.v", "tb/rtl/board_memmap.v",
@@ -343,12 +343,9 @@ def main():
             print(f"{r['design']} on {r['family']}: worst path from {x['from']} to {x['to']}: {x['delay_ns']} ns")
     for fam, x in ratios.items():
         print(f"controller / PicoRV32 LUTs on {fam}: {x:.3f}")
-    os.makedirs(os.path.dirname(a.report) or ".", exist_ok=True)
-    with open(a.report, "w") as f:
-        json.dump({"rows": rows, "controller_over_picorv32_luts": ratios,
-                   "note": "LUTs: SB_LUT4 / LUT4 / LUT1-6; Fmax from nextpnr-ice40 and nextpnr-ecp5 "
-                           "(no open place and route for xc7 in Debian or PyPI)"}, f, indent=2)
-        f.write("\n")
+    write_json(a.report, {"rows": rows, "controller_over_picorv32_luts": ratios,
+                          "note": "LUTs: SB_LUT4 / LUT4 / LUT1-6; Fmax from nextpnr-ice40 and nextpnr-ecp5 "
+                                  "(no open place and route for xc7 in Debian or PyPI)"})
     print(f"fpga_report: {a.report}")
     errors = [f"{r['design']} on {r['family']}: {r['error']}" for r in rows if "error" in r]
     if errors:

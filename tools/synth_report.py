@@ -206,6 +206,15 @@ def bram_failure(fam, r, max_ffs):
     return "expected block RAM on %s, got %s" % (fam, ", ".join(got))
 
 
+def write_json(path, obj):
+    """Write a report: its folder made, the file replaced whole (never left half written)."""
+    os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
+    with open(path + ".tmp", "w") as f:
+        json.dump(obj, f, indent=2)
+        f.write("\n")
+    os.replace(path + ".tmp", path)
+
+
 def fmt(v):
     return "-" if v is None else str(v)
 
@@ -249,7 +258,6 @@ def main():
     outdir = os.path.join(args.build, "synth", args.module)
     os.makedirs(outdir, exist_ok=True)
     report = args.report or os.path.join(args.build, "reports", "synth_%s.json" % args.module)
-    os.makedirs(os.path.dirname(report) or ".", exist_ok=True)
 
     try:
         version = subprocess.run(["yosys", "-V"], stdout=subprocess.PIPE,
@@ -282,10 +290,7 @@ def main():
     out = {"module": args.module, "source": src, "addr_width": args.addr_width,
            "bytes": 4 << args.addr_width, "yosys": version, "max_ffs": args.max_ffs,
            "families": results}
-    with open(report + ".tmp", "w") as f:
-        json.dump(out, f, indent=2)
-        f.write("\n")
-    os.replace(report + ".tmp", report)
+    write_json(report, out)
     print("report: %s" % report)
 
     failures = {fam: bram_failure(fam, r, args.max_ffs) for fam, r in results.items()}
