@@ -18,8 +18,16 @@ TB_DIR        := $(BUILD)/tb
 # The co-simulation testbench (mk/tb.mk), used by the tests, make sim, soak.
 TB            := $(TB_DIR)/albatross/tb_dpram
 RTL           := $(sort $(wildcard rtl/*.v))
-# pico_pair.v and pico_core.v need picorv32.v from PyPI: linted by test-pico-lint (mk/pico.mk).
-TB_RTL        := $(filter-out tb/rtl/pico_pair.v tb/rtl/pico_core.v tb/rtl/board_core.v,$(sort $(wildcard tb/rtl/*.v)))
+# Verilog library folders (modules found by name): the IP, the soft-core board
+# parts, the shared test-only modules.  Tops are always named on the command line.
+VLIB          := -y rtl -y soc -y tb/common
+# The shared harness headers (tb/common/: report.h, plan.h, ...) for Verilator-built benches.
+TB_COMMON_INC := -I$(abspath tb/common)
+# Files `make lint` checks besides rtl/: the board parts and test benches that
+# need nothing from PyPI.  The soft-core tops need picorv32.v or SERV and are
+# linted by their own targets (test-pico-lint, test-serv-lint, test-fpga-lint).
+TB_RTL        := $(sort soc/board_memmap.v soc/pico_wb_adapter.v soc/serv_bridge.v soc/board_reset.v \
+                 soc/beat_divider.v $(wildcard tb/common/*.v tb/dpram/*.v tb/cdc/*.v tb/system/*.v))
 
 # Helpers for the fragments: field N of a colon-separated list entry.
 comma         := ,
@@ -44,7 +52,7 @@ deps: ## install every tool (apt-get, pip)
 	DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y --no-install-recommends $(APT_PACKAGES)
 	$(if $(strip $(PIP_PACKAGES)),$(PYTHON) -m pip install $(PIP_PACKAGES))
 
-lint: ## Verilator -Wall lint, Icarus and Yosys read of all RTL
+lint: ## Verilator -Wall lint, Icarus and Yosys read of the RTL and the test-only Verilog
 	@tools/lint.sh $(RTL) $(TB_RTL)
 
 TESTS += lint lint-negative
@@ -70,7 +78,7 @@ bench: $(BENCHES) ## run the benchmarks, figures to build/reports/
 
 figures: ## regenerate README.md's figure tables from build/reports/*.json (and the termination picture)
 	@$(PYTHON) tools/figures.py README.md
-	@if [ -f $(REPORTS)/tb_random.json ]; then $(PYTHON) sim/plot_termination.py $(REPORTS)/tb_random.json \
+	@if [ -f $(REPORTS)/tb_random.json ]; then $(PYTHON) tb/dpram/plot_termination.py $(REPORTS)/tb_random.json \
 	    $(REPORTS)/termination.svg && echo "figures: $(REPORTS)/termination.svg"; fi
 
 clean: ## remove build/

@@ -2,7 +2,7 @@
 // 12 MHz oscillator; pins in constraints/icebreaker.pcf): albatross_soc with
 // two boards, 'sensor' (board 0, a SERV core) exporting Sample and
 // 'actuator' (board 1, a PicoRV32) importing and checking it (fpga/duo.toml,
-// firmware/duo_*.c).  Two PicoRV32 and the controller do not fit the UP5K's
+// fpga/firmware/duo_*.c).  Two PicoRV32 and the controller do not fit the UP5K's
 // 5280 logic cells; the bit-serial SERV does, and the two sides of the
 // channel then run at very different speeds.
 // LEDs (the PMOD2 snap-off and the two on-board LEDs): LED1/LED2 blink with

@@ -10,7 +10,7 @@
 // 25 MHz for the DPRAMs, the bus and the controller, which the cores reach
 // through albatross_wb_cdc (duo_system with CPU_CDC 1): the controller's
 // speed never limits the cores' clock.  The system stays in reset until the
-// PLL locks.  (tb/fpga/EHXPLLL.v is the simulation model.)
+// PLL locks.  (fpga/EHXPLLL.v is the simulation model.)
 `default_nettype none
 
 module ulx3s_top #(

@@ -12,7 +12,7 @@ CDC_ACCESSES    := $(or $(ACCESSES),1000000)
 CDC_NEG_ACCESSES:= 50000
 CDC_SYNC_STAGES := 2
 CDC_ADDR_WIDTH  := 8
-CDC_SRC         := tb/rtl/tb_dpram_async.v rtl/albatross_wb_cdc.v rtl/albatross_dpram.v \
+CDC_SRC         := tb/cdc/tb_dpram_async.v rtl/albatross_wb_cdc.v rtl/albatross_dpram.v \
                    tb/cdc/test_cdc.cpp
 
 $(CDC_BIN): $(CDC_SRC) mk/cdc.mk
@@ -20,7 +20,7 @@ $(CDC_BIN): $(CDC_SRC) mk/cdc.mk
 	verilator --cc --exe --build -j 2 -O3 -Wall --top-module tb_dpram_async \
 	    -GSYNC_STAGES=$(CDC_SYNC_STAGES) -GADDR_WIDTH=$(CDC_ADDR_WIDTH) \
 	    -CFLAGS "-O2 -DSYNC_STAGES=$(CDC_SYNC_STAGES) -DADDR_WIDTH=$(CDC_ADDR_WIDTH)" \
-	    --Mdir $(CDC_DIR)/obj -y rtl tb/rtl/tb_dpram_async.v $(abspath tb/cdc/test_cdc.cpp) \
+	    --Mdir $(CDC_DIR)/obj -y rtl tb/cdc/tb_dpram_async.v $(abspath tb/cdc/test_cdc.cpp) \
 	    > $(CDC_DIR)/build.log 2>&1 || { cat $(CDC_DIR)/build.log; exit 1; }
 
 TESTS += cdc cdc-negative

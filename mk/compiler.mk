@@ -2,11 +2,11 @@
 # a system description (TOML) -> schedule ROM, board headers and sources, RAM
 # images, reports and a timeline picture.  Standard-library Python only.
 #   make schedule [SCHEDULE_DESC=file.toml]   -> build/schedule/<file name>/
-#   make build/schedule/<example>/rom.hex     any compiler/examples/<example>.toml
+#   make build/schedule/<example>/rom.hex     any sim/<example>.toml or compiler/examples/<example>.toml
 #   make test-compiler                        compiler/tests (examples, bad
 #                                             descriptions, gcc, end-to-end)
 
-SCHEDULE_DESC ?= compiler/examples/mobot3.toml
+SCHEDULE_DESC ?= sim/mobot3.toml
 SCHEDULE_TOOL := compiler/albatross_schedule.py
 SCHEDULE_DIR  := $(BUILD)/schedule/$(basename $(notdir $(SCHEDULE_DESC)))
 
@@ -23,5 +23,8 @@ schedule: $(SCHEDULE_DIR)/rom.hex ## compile SCHEDULE_DESC (default: the MOBOT-I
 $(SCHEDULE_DIR)/rom.hex: $(SCHEDULE_DESC) $(SCHEDULE_TOOL)
 	$(PYTHON) $(SCHEDULE_TOOL) $(SCHEDULE_DESC) --out $(@D)
 
+# Any example description: the robot's (sim/) or the compiler's own (compiler/examples/).
+$(BUILD)/schedule/%/rom.hex: sim/%.toml $(SCHEDULE_TOOL)
+	$(PYTHON) $(SCHEDULE_TOOL) $< --out $(@D)
 $(BUILD)/schedule/%/rom.hex: compiler/examples/%.toml $(SCHEDULE_TOOL)
 	$(PYTHON) $(SCHEDULE_TOOL) $< --out $(@D)

@@ -1,6 +1,6 @@
 # mk/controller.mk -- smoke test of albatross_controller on the multi-board test
-# top tb/rtl/tb_system.v: 4 boards, albatross_bus, bus_fault_injector
-# (tb/ctrl/test_controller.cpp).  Outputs in build/ctrl/.
+# top tb/system/tb_system.v: 4 boards, albatross_bus, bus_fault_injector
+# (tb/controller/test_controller.cpp).  Outputs in build/ctrl/.
 #   make test-controller-smoke            the self-checking run (all scenarios)
 #   make test-controller-smoke-negative   the timing checker, given a formula one
 #                                         clock off, must fail (exit 65: timing only)
@@ -9,14 +9,14 @@
 
 CTRL_DIR := $(BUILD)/ctrl
 CTRL_BIN := $(CTRL_DIR)/obj/Vtb_system
-CTRL_SRC := tb/rtl/tb_system.v tb/rtl/bus_fault_injector.v rtl/albatross_controller.v \
-            rtl/albatross_bus.v rtl/albatross_dpram.v tb/ctrl/test_controller.cpp
+CTRL_SRC := tb/system/tb_system.v tb/common/bus_fault_injector.v rtl/albatross_controller.v \
+            rtl/albatross_bus.v rtl/albatross_dpram.v tb/controller/test_controller.cpp
 
 $(CTRL_BIN): $(CTRL_SRC) mk/controller.mk
 	@mkdir -p $(CTRL_DIR)
 	verilator --cc --exe --build -j 2 -O3 -Wall --top-module tb_system \
-	    -GROM_FILE='"ctrl_rom.hex"' -CFLAGS "-O2 -std=c++17 -Wall -Wextra" \
-	    --Mdir $(CTRL_DIR)/obj -y rtl -y tb/rtl tb/rtl/tb_system.v $(abspath tb/ctrl/test_controller.cpp) \
+	    -GROM_FILE='"ctrl_rom.hex"' -CFLAGS "-O2 -std=c++17 -Wall -Wextra $(TB_COMMON_INC)" \
+	    --Mdir $(CTRL_DIR)/obj $(VLIB) tb/system/tb_system.v $(abspath tb/controller/test_controller.cpp) \
 	    > $(CTRL_DIR)/build.log 2>&1 || { cat $(CTRL_DIR)/build.log; exit 1; }
 
 TESTS += controller-smoke controller-smoke-negative

@@ -37,10 +37,10 @@ test-formal-dpram: $(FRTL_DEPS)
 	@tools/run_test.sh formal-dpram $(call frtl_dpram,formal-dpram,rtl/albatross_dpram.v,albatross_dpram,pass)
 # dpram_no_arbitration tears a byte read while the other port writes it.
 test-formal-dpram-negative-no_arbitration: $(FRTL_DEPS)
-	@tools/run_test.sh formal-dpram-negative-no_arbitration $(call frtl_dpram,formal-dpram-negative-no_arbitration,tb/rtl/dpram_no_arbitration.v,dpram_no_arbitration,'atomicity_a|atomicity_b')
+	@tools/run_test.sh formal-dpram-negative-no_arbitration $(call frtl_dpram,formal-dpram-negative-no_arbitration,tb/dpram/dpram_no_arbitration.v,dpram_no_arbitration,'atomicity_a|atomicity_b')
 # dpram_priority_a blocks port B while port A is busy.
 test-formal-dpram-negative-priority_a: $(FRTL_DEPS)
-	@tools/run_test.sh formal-dpram-negative-priority_a $(call frtl_dpram,formal-dpram-negative-priority_a,tb/rtl/dpram_priority_a.v,dpram_priority_a,access_time_b)
+	@tools/run_test.sh formal-dpram-negative-priority_a $(call frtl_dpram,formal-dpram-negative-priority_a,tb/dpram/dpram_priority_a.v,dpram_priority_a,access_time_b)
 
 test-formal-controller: $(FRTL_DEPS) formal/rtl/ctrl_time.hex rtl/albatross_controller.v
 	@tools/run_test.sh formal-controller $(call frtl_ctrl,formal-controller,rtl/albatross_controller.v,$(CTRL_PROPS),pass) --reach $(CTRL_REACH)

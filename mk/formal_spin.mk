@@ -6,7 +6,7 @@
 #                               (Spin must find the starvation cycle).
 #                               Report: build/reports/formal_spin.json
 #   make test-formal-spin-negative-<variant>
-#                               a broken variant (the driver mutants of tb/mutants/)
+#                               a broken variant (the driver mutants of tb/mutants/driver/)
 #                               must violate mutual exclusion and definite results.
 # Builds (spin -a, gcc pan.c) go to build/formal/spin/.
 

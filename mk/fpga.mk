@@ -1,6 +1,6 @@
 # mk/fpga.mk -- the FPGA flow (fpga/, constraints/): the demonstration
-# system fpga/albatross_soc.v (two PicoRV32 boards, their DPRAMs, the bus and
-# the controller, running fpga/duo.toml's schedule and firmware/duo_*.c) in
+# system soc/albatross_soc.v (two PicoRV32 boards, their DPRAMs, the bus and
+# the controller, running fpga/duo.toml's schedule and fpga/firmware/duo_*.c) in
 # a top per board: iCEBreaker (iCE40UP5K; the sensor board on SERV, as two
 # PicoRV32 and the controller do not fit), ULX3S (ECP5), Arty A7 (xc7).
 #   make synth       Yosys on every family: the DPRAM alone, the controller
@@ -23,7 +23,7 @@
 #                    bitstream as a test: fits, meets its clock
 #   make test-fpga-arty   the Arty top synthesises (Yosys; no open place and
 #                    route for 7-series)
-#   make test-fpga-lint   Verilator -Wall, Icarus and Yosys on fpga/*.v
+#   make test-fpga-lint   Verilator -Wall, Icarus and Yosys on FPGA_LINT (fpga/ and soc/ tops)
 # Images: build/fpga/duo/{rom,fw0,fw1,ram0,ram1}.hex, the names the tops'
 # parameters give (board 0 = sensor, 1 = actuator).  PicoRV32 from PyPI
 # and SERV from PyPI (PICO_RV32_V, mk/pico.mk; SERV_CPU_RTL, mk/serv.mk).
@@ -33,18 +33,25 @@ FPGA_IMG    := $(FPGA_DIR)/duo
 FPGA_SCHED  := $(BUILD)/schedule/duo
 FPGA_BOARDS := sensor actuator
 FPGA_RAM    := 2048   # bytes of each core's program RAM (RAM_WORDS 512 in the tops)
-FPGA_RTL    := $(wildcard fpga/*.v) rtl/albatross_dpram.v rtl/albatross_wb_cdc.v rtl/albatross_bus.v rtl/albatross_controller.v \
-               tb/rtl/board_core.v tb/rtl/pico_core.v tb/rtl/serv_core.v tb/rtl/serv_bridge.v tb/rtl/board_memmap.v \
-               tb/rtl/pico_wb_adapter.v
+# The demonstration's own Verilog (fpga/: duo_system and the board tops; the
+# PLL model fpga/EHXPLLL.v is for simulation only) and what it instantiates.
+FPGA_TOPS   := $(wildcard fpga/*_top.v)
+FPGA_OWN    := fpga/duo_system.v $(FPGA_TOPS)
+FPGA_RTL    := $(FPGA_OWN) soc/albatross_soc.v soc/board_reset.v soc/beat_divider.v \
+               rtl/albatross_dpram.v rtl/albatross_wb_cdc.v rtl/albatross_bus.v rtl/albatross_controller.v \
+               soc/board_core.v soc/pico_core.v soc/serv_core.v soc/serv_bridge.v soc/board_memmap.v \
+               soc/pico_wb_adapter.v
+# Files fpga-lint checks each as a top: the demonstration and the FPGA-only soc/ parts.
+FPGA_LINT   := $(FPGA_OWN) soc/albatross_soc.v soc/picorv32_ooc.v
 # PicoRV32 and SERV come from PyPI (mk/pico.mk, mk/serv.mk); Verilator flags.
-FPGA_VFLAGS  = -Wall --timescale 1ns/1ps -y rtl -y tb/rtl -y fpga -y tb/fpga -y $(SERV_CPU_RTL) tb/pico/picorv32.vlt tb/pico/serv.vlt
+FPGA_VFLAGS  = -Wall --timescale 1ns/1ps $(VLIB) -y fpga -y $(SERV_CPU_RTL) tb/pico/picorv32.vlt tb/pico/serv.vlt
 # (mk/pico.mk, read after this file, defines PICO_RV32_V and FW_*: every use
 # below is deferred, in recipes or with = / $$.)
 # ecppack from PyPI (YoWASP, like nextpnr-ecp5): it works under the current
 # directory only, so its paths are relative.
 ECPPACK      := yowasp-ecppack --compress
 FPGA_REPORT  = $(PYTHON) tools/fpga_report.py --picorv32 $(PICO_RV32_V) --serv $(SERV_CPU_RTL) --out $(FPGA_DIR)/synth
-FPGA_FW_DEPS := firmware/crt0.S firmware/link.ld firmware/board.h c-driver/albatross.c c-driver/albatross.h \
+FPGA_FW_DEPS := soc/firmware/crt0.S soc/firmware/link.ld soc/firmware/board.h c-driver/albatross.c c-driver/albatross.h \
                 c-driver/albatross_layout.h c-driver/alb_port.h c-driver/port/mmio/alb_port_impl.h
 
 $(FPGA_SCHED)/rom.hex: fpga/duo.toml $(SCHEDULE_TOOL)
@@ -52,11 +59,11 @@ $(FPGA_SCHED)/rom.hex: fpga/duo.toml $(SCHEDULE_TOOL)
 
 # $(1) = board index, $(2) = board name.
 define fpga_board
-$(FPGA_DIR)/fw/$(2).elf: firmware/duo_$(2).c $(FPGA_SCHED)/rom.hex $(FPGA_FW_DEPS) mk/fpga.mk
+$(FPGA_DIR)/fw/$(2).elf: fpga/firmware/duo_$(2).c $(FPGA_SCHED)/rom.hex $(FPGA_FW_DEPS) mk/fpga.mk
 	@$$(DRV_RV_NEED)
 	@mkdir -p $$(@D)
-	$$(DRV_RV_CC) $$(FW_CFLAGS) -ffunction-sections -fdata-sections -I$(FPGA_SCHED) -o $$@ firmware/crt0.S \
-	    firmware/duo_$(2).c $(FPGA_SCHED)/$(2).c c-driver/albatross.c $$(FW_LDFLAGS) -Wl,--gc-sections \
+	$$(DRV_RV_CC) $$(FW_CFLAGS) -ffunction-sections -fdata-sections -I$(FPGA_SCHED) -o $$@ soc/firmware/crt0.S \
+	    fpga/firmware/duo_$(2).c $(FPGA_SCHED)/$(2).c c-driver/albatross.c $$(FW_LDFLAGS) -Wl,--gc-sections \
 	    -Wl,--defsym=__board_ram_bytes=$(FPGA_RAM)
 $(FPGA_IMG)/fw$(1).hex: $(FPGA_DIR)/fw/$(2).hex
 	@mkdir -p $$(@D)
@@ -95,7 +102,7 @@ bitstream: pnr ## pack the iCEBreaker and ULX3S tops -> build/fpga/icebreaker_to
 	@echo "bitstream: $(FPGA_DIR)/icebreaker_top.bin (iceprog it to the iCEBreaker)"
 	@echo "bitstream: $(FPGA_DIR)/ulx3s_top.bit (fujprog or openFPGALoader it to the ULX3S)"
 
-# Each board top in Verilator (tb/fpga/test_fpga_soc.cpp): the demonstration
+# Each board top in Verilator (fpga/test_fpga_soc.cpp): the demonstration
 # must run and the top's LEDs show it.  The negative tests run the same
 # models on a schedule ROM whose header word H1 is changed (its checksum
 # fails; the controller's simulation model reads +rom=FILE instead of
@@ -103,11 +110,11 @@ bitstream: pnr ## pack the iCEBreaker and ULX3S tops -> build/fpga/icebreaker_to
 # $(3) = parameters.  The ULX3S and Arty models divide their heartbeat LEDs
 # by 2 (BEAT_LOG2 = 1) instead of 64 and 128: the only difference from the
 # synthesised tops, so that a few million clocks show the LEDs blink.  The
-# ULX3S model's PLL is tb/fpga/EHXPLLL.v (its two clocks at the real 2:1).
-FPGA_SIM_DEPS := $(FPGA_RTL) tb/fpga/EHXPLLL.v tb/fpga/test_fpga_soc.cpp tb/report.h tb/pico/picorv32.vlt mk/fpga.mk
+# ULX3S model's PLL is fpga/EHXPLLL.v (its two clocks at the real 2:1).
+FPGA_SIM_DEPS := $(FPGA_RTL) fpga/EHXPLLL.v fpga/test_fpga_soc.cpp tb/common/report.h tb/pico/picorv32.vlt mk/fpga.mk
 # Recipe: the model of top $(1) from file $(4), harness define $(2), parameters $(3), into $(@D).
 FPGA_VERILATE = verilator --cc --exe --build -j 2 -O3 $(FPGA_VFLAGS) --top-module $(1) $(3) \
-    -CFLAGS "-O2 -std=c++17 -D$(2)" --Mdir $(@D) $(PICO_RV32_V) $(4) $(abspath tb/fpga/test_fpga_soc.cpp) \
+    -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC) -D$(2)" --Mdir $(@D) $(PICO_RV32_V) $(4) $(abspath fpga/test_fpga_soc.cpp) \
     > $(@D)/build.log 2>&1 || { cat $(@D)/build.log; exit 1; }
 define fpga_sim
 $(FPGA_DIR)/sim-$(1)/V$(1): $(FPGA_SIM_DEPS)
@@ -121,19 +128,20 @@ $(eval $(call fpga_sim,ulx3s_top,TOP_ULX3S,-GBEAT_LOG2=1))
 $(eval $(call fpga_sim,arty_top,TOP_ARTY,-GBEAT_LOG2=1))
 FPGA_SIM = $(FPGA_DIR)/sim-$(1)/V$(1)
 
-# Broken systems, each built from a sed of one fpga/ file, for the negative
-# tests of the harness's checks.  $(1) = name, $(2) = top, $(3) = define,
+# Broken systems, each built from a sed of one file, for the negative tests
+# of the harness's checks.  $(1) = name, $(2) = top, $(3) = define,
 # $(4) = sed expression (it must change the file), $(5) = parameters,
-# $(6) = the fpga/ module to break (default: the top).
+# $(6) = the file to break (default: the top, fpga/$(2).v).
+fpga_victim = $(or $(1),fpga/$(2).v)
 define fpga_mutant
 $(FPGA_DIR)/mutant-$(1)/V$(2): $(FPGA_SIM_DEPS)
 	$$(PICO_NEED)
 	$$(SERV_NEED)
 	@mkdir -p $$(@D)
-	sed -e '$(4)' fpga/$(or $(6),$(2)).v > $$(@D)/$(or $(6),$(2)).v
-	@! cmp -s fpga/$(or $(6),$(2)).v $$(@D)/$(or $(6),$(2)).v || \
-	    { echo "fpga_mutant $(1): the sed changed nothing in fpga/$(or $(6),$(2)).v"; exit 1; }
-	$$(call FPGA_VERILATE,$(2),$(3),$(5),$(if $(6),fpga/$(2).v) $$(@D)/$(or $(6),$(2)).v)
+	sed -e '$(4)' $(call fpga_victim,$(6),$(2)) > $$(@D)/$(notdir $(call fpga_victim,$(6),$(2)))
+	@! cmp -s $(call fpga_victim,$(6),$(2)) $$(@D)/$(notdir $(call fpga_victim,$(6),$(2))) || \
+	    { echo "fpga_mutant $(1): the sed changed nothing in $(call fpga_victim,$(6),$(2))"; exit 1; }
+	$$(call FPGA_VERILATE,$(2),$(3),$(5),$(if $(6),fpga/$(2).v) $$(@D)/$(notdir $(call fpga_victim,$(6),$(2))))
 endef
 $(eval $(call fpga_mutant,green_led,icebreaker_top,TOP_ICEBREAKER,s/assign led_g_n_o = ~beat\[1\];/assign led_g_n_o = ~beat[0];/))
 $(eval $(call fpga_mutant,wifi_gpio0,ulx3s_top,TOP_ULX3S,s/assign wifi_gpio0_o = 1'"'"'b1;/assign wifi_gpio0_o = 1'"'"'b0;/,-GBEAT_LOG2=1))
@@ -141,7 +149,7 @@ $(eval $(call fpga_mutant,rgb_green,arty_top,TOP_ARTY,s/assign led0_g_o = ~bad &
 # The ULX3S's cores on their own clock but without albatross_wb_cdc: each
 # core's bus goes straight to its DPRAM on the other clock.
 $(eval $(call fpga_mutant,no_cdc,ulx3s_top,TOP_ULX3S,s/if (CPU_CDC != 0) begin : g_cdc/if (CPU_CDC == 2) begin : g_cdc/,\
-    -GBEAT_LOG2=1,albatross_soc))
+    -GBEAT_LOG2=1,soc/albatross_soc.v))
 $(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
 	@mkdir -p $(@D)
 	sed '2s/^.*$$/00000001/' $< > $@
@@ -169,7 +177,7 @@ $(eval $(call fpga_soc_tests,-ulx3s,ulx3s_top,4000000))
 $(eval $(call fpga_soc_tests,-arty,arty_top,4000000))
 
 # The ULX3S top with its bus clock wandering against the cores' clock
-# (tb/fpga/EHXPLLL.v with +pll_drift: half-periods of 1 to 4 half-periods
+# (fpga/EHXPLLL.v with +pll_drift: half-periods of 1 to 4 half-periods
 # of the cores' clock, edges on either of its edges): the whole system on
 # two unrelated clocks, checked as above.
 test-fpga-soc-ulx3s-drift: $(call FPGA_SIM,ulx3s_top) $(FPGA_IMAGES)
@@ -219,8 +227,8 @@ test-fpga-arty: $(FPGA_IMAGES)
 test-fpga-lint: $(FPGA_IMAGES)
 	$(PICO_NEED)
 	$(SERV_NEED)
-	@tools/run_test.sh fpga-lint bash -c 'set -e; for f in $(wildcard fpga/*.v); do t=$$(basename $$f .v); \
+	@tools/run_test.sh fpga-lint bash -c 'set -e; for f in $(FPGA_LINT); do t=$$(basename $$f .v); \
 	    verilator --lint-only $(FPGA_VFLAGS) --top-module $$t $(PICO_RV32_V) $$f; \
-	    iverilog -g2005 -y rtl -y tb/rtl -y fpga -y tb/fpga -y $(SERV_CPU_RTL) -s $$t -o /dev/null $(PICO_RV32_V) $$f; \
-	    yosys -q -p "read_verilog -lib +/ecp5/cells_bb.v; read_verilog -DSYNTHESIS $(PICO_RV32_V) $(SERV_CPU_V) $(FPGA_RTL); hierarchy -check -top $$t; proc"; \
+	    iverilog -g2005 $(VLIB) -y fpga -y $(SERV_CPU_RTL) -s $$t -o /dev/null $(PICO_RV32_V) $$f; \
+	    yosys -q -p "read_verilog -lib +/ecp5/cells_bb.v; read_verilog -DSYNTHESIS $(PICO_RV32_V) $(SERV_CPU_V) $(FPGA_RTL) soc/picorv32_ooc.v; hierarchy -check -top $$t; proc"; \
 	    echo "lint ok  $$f"; done'

@@ -1,9 +1,9 @@
 # mk/pico.mk -- two PicoRV32 soft cores run the real C driver (firmware/)
-# against one albatross_dpram (tb/rtl/pico_pair.v, harness tb/pico/).
+# against one albatross_dpram (tb/pico/pico_pair.v, harness tb/pico/).
 #   make test-pico-pair           producer and consumer firmware, every import
 #                                 checked on the core; build/reports/pico_pair.json
 #   make test-pico-pair-negative  the producer built from the ignore_readlocked
-#                                 driver mutant (tb/mutants/): the real consumer
+#                                 driver mutant (tb/mutants/driver/): the real consumer
 #                                 must report a torn or out-of-order value
 #   make bench-pico-pair          the same run without stalls: cycles per
 #                                 alb_export / alb_import, build/reports/pico_pair_bench.json
@@ -20,21 +20,21 @@ PICO_RV32_V   := $(if $(PICO_RV32_DIR),$(firstword $(shell find $(PICO_RV32_DIR)
 PICO_NEED      = @test -n "$(PICO_RV32_V)" || { echo "picorv32.v not found: the PyPI package \
 pythondata-cpu-picorv32 is missing; run make deps"; exit 1; }
 PICO_MAX_CYCLES ?= 20000000
-PICO_RTL      := tb/rtl/pico_pair.v tb/rtl/board_core.v tb/rtl/pico_core.v tb/rtl/board_memmap.v tb/rtl/pico_wb_adapter.v rtl/albatross_dpram.v
-PICO_VFLAGS   := -Wall --timescale 1ns/1ps -y rtl -y tb/rtl --top-module pico_pair tb/pico/picorv32.vlt
+PICO_RTL      := tb/pico/pico_pair.v soc/board_core.v soc/pico_core.v soc/board_memmap.v soc/pico_wb_adapter.v rtl/albatross_dpram.v
+PICO_VFLAGS   := -Wall --timescale 1ns/1ps $(VLIB) --top-module pico_pair tb/pico/picorv32.vlt
 
 # Firmware: rv32i, the real driver with the mmio port (TOOLCHAIN.md flags).
 FW_CFLAGS     := -march=rv32i -mabi=ilp32 -ffreestanding -nostdlib -nostartfiles -Os -std=c99 \
-                 -Wall -Wextra -Werror -pedantic -Ic-driver -Ic-driver/port/mmio -Ifirmware
-FW_LDFLAGS    := -T firmware/link.ld -Wl,--no-warn-rwx-segments -lgcc
-FW_DEPS       := firmware/crt0.S firmware/link.ld firmware/board.h $(DRV_HDRS)
+                 -Wall -Wextra -Werror -pedantic -Ic-driver -Ic-driver/port/mmio -Isoc/firmware
+FW_LDFLAGS    := -T soc/firmware/link.ld -Wl,--no-warn-rwx-segments -lgcc
+FW_DEPS       := soc/firmware/crt0.S soc/firmware/link.ld soc/firmware/board.h $(DRV_HDRS)
 
 # $(1) = image name, $(2) = program, $(3) = driver source.
 define pico_fw
-$(PICO_DIR)/fw/$(1).elf: firmware/$(2).c $(3) $(FW_DEPS)
+$(PICO_DIR)/fw/$(1).elf: tb/pico/firmware/$(2).c $(3) $(FW_DEPS)
 	@$$(DRV_RV_NEED)
 	@mkdir -p $$(@D)
-	$(DRV_RV_CC) $(FW_CFLAGS) -o $$@ firmware/crt0.S firmware/$(2).c $(3) $(FW_LDFLAGS)
+	$(DRV_RV_CC) $(FW_CFLAGS) -o $$@ soc/firmware/crt0.S tb/pico/firmware/$(2).c $(3) $(FW_LDFLAGS)
 endef
 $(eval $(call pico_fw,producer,producer,c-driver/albatross.c))
 $(eval $(call pico_fw,consumer,consumer,c-driver/albatross.c))
@@ -47,11 +47,11 @@ $(eval $(call pico_fw,consumer,consumer,c-driver/albatross.c))
 $(eval $(call pico_fw,producer-ignore_readlocked,producer,$(TB_DIR)/mutants/ignore_readlocked.c))
 
 PICO_BIN := $(PICO_DIR)/obj/Vpico_pair
-$(PICO_BIN): $(PICO_RTL) $(PICO_RV32_V) tb/pico/test_pico_pair.cpp tb/pico/picorv32.vlt tb/report.h mk/pico.mk
+$(PICO_BIN): $(PICO_RTL) $(PICO_RV32_V) tb/pico/test_pico_pair.cpp tb/pico/picorv32.vlt tb/common/report.h mk/pico.mk
 	$(PICO_NEED)
 	@mkdir -p $(PICO_DIR)
-	verilator --cc --exe --build -j 2 -O3 $(PICO_VFLAGS) -CFLAGS "-O2 -std=c++17" \
-	    --Mdir $(PICO_DIR)/obj $(PICO_RV32_V) tb/rtl/pico_pair.v $(abspath tb/pico/test_pico_pair.cpp) \
+	verilator --cc --exe --build -j 2 -O3 $(PICO_VFLAGS) -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" \
+	    --Mdir $(PICO_DIR)/obj $(PICO_RV32_V) tb/pico/pico_pair.v $(abspath tb/pico/test_pico_pair.cpp) \
 	    > $(PICO_DIR)/build.log 2>&1 || { cat $(PICO_DIR)/build.log; exit 1; }
 
 TESTS += pico-pair pico-pair-negative pico-lint
@@ -76,10 +76,10 @@ bench-pico-pair: $(PICO_BIN) $(PICO_DIR)/fw/producer.hex $(PICO_DIR)/fw/consumer
 	    --report $(REPORTS)/pico_pair_bench.json
 
 # pico_pair.v (and pico_core.v, which it instantiates) is kept out of make lint (root Makefile, TB_RTL): tools/lint.sh
-# finds modules in rtl/ and tb/rtl/ only, and picorv32.v lives in the package.
+# finds modules in rtl/, soc/ and tb/common/ only, and picorv32.v lives in the package.
 test-pico-lint:
 	@tools/run_test.sh pico-lint bash -c '$(PICO_NEED:@%=%) && \
-	    verilator --lint-only $(PICO_VFLAGS) $(PICO_RV32_V) tb/rtl/pico_pair.v && \
-	    iverilog -g2005 -y rtl -y tb/rtl -s pico_pair -o /dev/null $(PICO_RV32_V) tb/rtl/pico_pair.v && \
+	    verilator --lint-only $(PICO_VFLAGS) $(PICO_RV32_V) tb/pico/pico_pair.v && \
+	    iverilog -g2005 $(VLIB) -s pico_pair -o /dev/null $(PICO_RV32_V) tb/pico/pico_pair.v && \
 	    yosys -q -p "read_verilog $(PICO_RV32_V) $(PICO_RTL); hierarchy -check -top pico_pair; proc" && \
-	    echo "lint ok  tb/rtl/pico_pair.v (picorv32.v from $(PICO_RV32_V))"'
+	    echo "lint ok  tb/pico/pico_pair.v (picorv32.v from $(PICO_RV32_V))"'

@@ -1,9 +1,9 @@
 # mk/pico_boards.mk -- the multi-board system with real CPUs: four PicoRV32
 # boards (radar, odometry, navigation, motor of the MOBOT-III example), each
 # with its own albatross_dpram, joined by albatross_bus and
-# albatross_controller behind a bus fault injector (tb/rtl/pico_boards.v);
+# albatross_controller behind a bus fault injector (sim/pico_boards.v);
 # harness sim/mobot_sim.cpp (make sim runs the same model, mk/sim.mk).
-# Each board's firmware is firmware/mobot_<board>.c linked with the
+# Each board's firmware is sim/firmware/mobot_<board>.c linked with the
 # compiler-generated <board>.c and the real driver; the DPRAMs start from the
 # compiler's RAM images, the controller runs the compiler's rom.hex; every
 # Import is checked on the cores and reported to the harness as an event.
@@ -12,32 +12,31 @@
 #   make test-pico-boards-crash     the radar crashes inside an Export
 #   make test-pico-boards-negative-*  one per check of the harness, each
 #                                   with a firmware/driver mutant
-#                                   (tb/mutants/firmware/) or an option
+#                                   (sim/mutants/) or an option
 # Reuses PICO_RV32_V, PICO_NEED, FW_CFLAGS, FW_LDFLAGS, FW_DEPS of mk/pico.mk
 # (included before this file: mk/*.mk are read in sorted order).
 # pico_boards.v needs picorv32.v from PyPI: it is kept out of make lint and
 # linted (Verilator -Wall, Icarus, Yosys) by test-pico-boards-lint, with
-# its Icarus bench tb/rtl/pico_boards_tb.v (make bench-sim-speed, mk/sim.mk).
-TB_RTL := $(filter-out tb/rtl/pico_boards.v tb/rtl/pico_boards_tb.v,$(TB_RTL))
+# its Icarus bench sim/pico_boards_tb.v (make bench-sim-speed, mk/sim.mk).
 
 PB_DIR      := $(BUILD)/pico_boards
 PB_SCHED    := $(BUILD)/schedule/mobot3
 PB_BOARDS   := radar odometry navigation motor
 PB_CYCLES   ?= 1500000
-PB_RTL      := tb/rtl/pico_boards.v tb/rtl/board_core.v tb/rtl/pico_core.v tb/rtl/board_memmap.v tb/rtl/bus_fault_injector.v \
-               tb/rtl/pico_wb_adapter.v rtl/albatross_dpram.v rtl/albatross_bus.v rtl/albatross_controller.v
-PB_VFLAGS   := -Wall --timescale 1ns/1ps -y rtl -y tb/rtl --top-module pico_boards tb/pico/picorv32.vlt
-PB_SRC      := sim/mobot_sim.cpp tb/system/plan.cpp
-PB_HDR      := tb/report.h tb/system/plan.h
+PB_RTL      := sim/pico_boards.v soc/board_core.v soc/pico_core.v soc/board_memmap.v tb/common/bus_fault_injector.v \
+               soc/pico_wb_adapter.v rtl/albatross_dpram.v rtl/albatross_bus.v rtl/albatross_controller.v
+PB_VFLAGS   := -Wall --timescale 1ns/1ps $(VLIB) --top-module pico_boards tb/pico/picorv32.vlt
+PB_SRC      := sim/mobot_sim.cpp tb/common/plan.cpp
+PB_HDR      := tb/common/report.h tb/common/plan.h
 
-# $(1) = board: firmware/mobot_<board>.c + the generated <board>.c of the
+# $(1) = board: sim/firmware/mobot_<board>.c + the generated <board>.c of the
 # schedule build/schedule/<sched>/ + the driver -> $(PB_DIR)/<sched>/fw/.
 define pb_fw
-$(PB_DIR)/%/fw/$(1).elf: firmware/mobot_$(1).c firmware/mobot_check.h $(BUILD)/schedule/%/rom.hex $(FW_DEPS)
+$(PB_DIR)/%/fw/$(1).elf: sim/firmware/mobot_$(1).c sim/firmware/mobot_check.h $(BUILD)/schedule/%/rom.hex $(FW_DEPS)
 	@$$(DRV_RV_NEED)
 	@mkdir -p $$(@D)
-	$(DRV_RV_CC) $(FW_CFLAGS) -I$(BUILD)/schedule/$$* -Icompiler/examples -o $$@ firmware/crt0.S \
-	    firmware/mobot_$(1).c $(BUILD)/schedule/$$*/$(1).c c-driver/albatross.c $(FW_LDFLAGS)
+	$(DRV_RV_CC) $(FW_CFLAGS) -I$(BUILD)/schedule/$$* -Isim -o $$@ soc/firmware/crt0.S \
+	    sim/firmware/mobot_$(1).c $(BUILD)/schedule/$$*/$(1).c c-driver/albatross.c $(FW_LDFLAGS)
 endef
 $(foreach b,$(PB_BOARDS),$(eval $(call pb_fw,$(b))))
 
@@ -47,8 +46,8 @@ define pb_model
 $(PB_DIR)/$(1)/Vpico_boards: $(PB_RTL) $(PICO_RV32_V) $(PB_SRC) $(PB_HDR) tb/pico/picorv32.vlt mk/pico_boards.mk
 	$$(PICO_NEED)
 	@mkdir -p $$(@D)
-	verilator --cc --exe --build -j 2 -O3 $(2) $(PB_VFLAGS) -CFLAGS "-O2 -std=c++17" \
-	    --Mdir $$(@D) $(PICO_RV32_V) tb/rtl/pico_boards.v $(abspath $(PB_SRC)) \
+	verilator --cc --exe --build -j 2 -O3 $(2) $(PB_VFLAGS) -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" \
+	    --Mdir $$(@D) $(PICO_RV32_V) sim/pico_boards.v $(abspath $(PB_SRC)) \
 	    > $$(@D)/build.log 2>&1 || { cat $$(@D)/build.log; exit 1; }
 endef
 $(eval $(call pb_model,obj,))
@@ -80,27 +79,27 @@ test-$(call neg_field,$(1),1): $(PB_BIN) $(PB_FW) $(PB_SCHED)/tb_plan.txt
 endef
 $(foreach s,$(PB_SCENARIOS),$(eval $(call pb_scenario,$(s))))
 
-# Firmware mutants (tb/mutants/firmware/NAME.sed): NAME:BOARD:FILE, where
-# FILE (firmware/mobot_<board>.c, firmware/mobot_check.h or
+# Firmware mutants (sim/mutants/NAME.sed): NAME:BOARD:FILE, where
+# FILE (sim/firmware/mobot_<board>.c, sim/firmware/mobot_check.h or
 # c-driver/albatross.c) is the file the script edits; the board's program is
 # built from copies of the three in $(PB_DIR)/mutant/NAME/, one of them
 # mutated (its #include "..." finds the copied header first).
 PB_MUTANTS := \
-  radar_bad_checksum:radar:firmware/mobot_check.h \
-  nav_never_stale:navigation:firmware/mobot_navigation.c \
-  nav_stale_early:navigation:firmware/mobot_navigation.c \
-  nav_wrong_status:navigation:firmware/mobot_navigation.c
+  radar_bad_checksum:radar:sim/firmware/mobot_check.h \
+  nav_never_stale:navigation:sim/firmware/mobot_navigation.c \
+  nav_stale_early:navigation:sim/firmware/mobot_navigation.c \
+  nav_wrong_status:navigation:sim/firmware/mobot_navigation.c
 define pb_mutant
-$(PB_DIR)/mutant/$(1)/$(2).elf: tb/mutants/firmware/$(1).sed firmware/mobot_$(2).c firmware/mobot_check.h \
+$(PB_DIR)/mutant/$(1)/$(2).elf: sim/mutants/$(1).sed sim/firmware/mobot_$(2).c sim/firmware/mobot_check.h \
         c-driver/albatross.c $(PB_SCHED)/rom.hex $(FW_DEPS)
 	@$$(DRV_RV_NEED)
 	@mkdir -p $$(@D)
-	cp firmware/mobot_$(2).c firmware/mobot_check.h c-driver/albatross.c $$(@D)/
+	cp sim/firmware/mobot_$(2).c sim/firmware/mobot_check.h c-driver/albatross.c $$(@D)/
 	sed -f $$< $(3) > $$(@D)/$(notdir $(3))
 	@if cmp -s $$(@D)/$(notdir $(3)) $(3); then \
-	    echo "firmware mutant $(1) did not apply: $(3) no longer has the line tb/mutants/firmware/$(1).sed edits"; \
+	    echo "firmware mutant $(1) did not apply: $(3) no longer has the line sim/mutants/$(1).sed edits"; \
 	    exit 1; fi
-	$(DRV_RV_CC) $(FW_CFLAGS) -I$(PB_SCHED) -Icompiler/examples -o $$@ firmware/crt0.S \
+	$(DRV_RV_CC) $(FW_CFLAGS) -I$(PB_SCHED) -Isim -o $$@ soc/firmware/crt0.S \
 	    $$(@D)/mobot_$(2).c $(PB_SCHED)/$(2).c $$(@D)/albatross.c $(FW_LDFLAGS)
 endef
 $(foreach m,$(PB_MUTANTS),$(eval $(call pb_mutant,$(call neg_field,$(m),1),$(call neg_field,$(m),2),$(call neg_field,$(m),3))))
@@ -133,9 +132,9 @@ TESTS += pico-boards-lint
 .PHONY: test-pico-boards-lint
 test-pico-boards-lint:
 	$(PICO_NEED)
-	@tools/run_test.sh pico-boards-lint bash -c 'verilator --lint-only $(PB_VFLAGS) $(PICO_RV32_V) tb/rtl/pico_boards.v && \
-	    iverilog -g2005 -y rtl -y tb/rtl -s pico_boards -o /dev/null $(PICO_RV32_V) tb/rtl/pico_boards.v && \
-	    verilator --lint-only --timing $(subst pico_boards,pico_boards_tb,$(PB_VFLAGS)) $(PICO_RV32_V) tb/rtl/pico_boards_tb.v && \
-	    iverilog -g2005 -y rtl -y tb/rtl -s pico_boards_tb -o /dev/null $(PICO_RV32_V) tb/rtl/pico_boards_tb.v && \
+	@tools/run_test.sh pico-boards-lint bash -c 'verilator --lint-only $(PB_VFLAGS) $(PICO_RV32_V) sim/pico_boards.v && \
+	    iverilog -g2005 $(VLIB) -s pico_boards -o /dev/null $(PICO_RV32_V) sim/pico_boards.v && \
+	    verilator --lint-only --timing -y sim $(subst pico_boards,pico_boards_tb,$(PB_VFLAGS)) $(PICO_RV32_V) sim/pico_boards_tb.v && \
+	    iverilog -g2005 $(VLIB) -y sim -s pico_boards_tb -o /dev/null $(PICO_RV32_V) sim/pico_boards_tb.v && \
 	    yosys -q -p "read_verilog $(PICO_RV32_V) $(PB_RTL); hierarchy -check -top pico_boards; proc" && \
-	    echo "lint ok  tb/rtl/pico_boards.v tb/rtl/pico_boards_tb.v"'
+	    echo "lint ok  sim/pico_boards.v sim/pico_boards_tb.v"'

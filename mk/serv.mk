@@ -1,7 +1,7 @@
 # mk/serv.mk -- the pair test with a SERV core (bit-serial RISC-V, 32+ clocks
 # per instruction) on one side of the channel and PicoRV32 on the other: the
-# same tb/rtl/pico_pair.v with SERV_MASK set (tb/rtl/serv_core.v,
-# tb/rtl/serv_bridge.v) and the same harness tb/pico/test_pico_pair.cpp.
+# same tb/pico/pico_pair.v with SERV_MASK set (soc/serv_core.v,
+# soc/serv_bridge.v) and the same harness tb/pico/test_pico_pair.cpp.
 #   make test-serv-pair           PicoRV32 producer, SERV consumer (SERV_MASK=2):
 #                                 every import checked on the core;
 #                                 build/reports/serv_pair.json
@@ -21,13 +21,12 @@
 #   make bench-serv-pair          test-serv-pair without stalls: cycles per
 #                                 alb_import on SERV, build/reports/serv_pair_bench.json
 # SERV firmware is built with -DBOARD_NO_COUNTERS: SERV has no cycle/instret
-# CSRs, serv_bridge provides them as board registers (firmware/board.h).
+# CSRs, serv_bridge provides them as board registers (soc/firmware/board.h).
 # Reuses PICO_VFLAGS, PICO_RTL, PICO_NEED, FW_CFLAGS, FW_LDFLAGS, FW_DEPS of
 # mk/pico.mk (included before this file: mk/*.mk are read in sorted order).
 # SERV comes from PyPI (pythondata-cpu-serv, make deps); its rtl/ folder is
 # located through the package at build time, never copied here.  serv_core.v
 # needs it: it is kept out of make lint here and linted by test-serv-lint.
-TB_RTL := $(filter-out tb/rtl/serv_core.v,$(TB_RTL))
 
 SERV_DIR       := $(BUILD)/serv
 SERV_CPU_DIR   := $(shell $(PYTHON) -c 'import pythondata_cpu_serv as p; print(p.data_location)' 2>/dev/null)
@@ -36,7 +35,7 @@ SERV_CPU_RTL   := $(if $(SERV_CPU_DIR),$(wildcard $(SERV_CPU_DIR)/rtl))
 SERV_CPU_V     := $(if $(SERV_CPU_RTL),$(filter-out %/serv_synth_wrapper.v,$(wildcard $(SERV_CPU_RTL)/serv_*.v)))
 SERV_NEED       = @test -n "$(SERV_CPU_V)" || { echo "SERV not found: the PyPI package \
 pythondata-cpu-serv is missing; run make deps"; exit 1; }
-SERV_RTL       := $(PICO_RTL) tb/rtl/serv_core.v tb/rtl/serv_bridge.v
+SERV_RTL       := $(PICO_RTL) soc/serv_core.v soc/serv_bridge.v
 SERV_VFLAGS    := $(PICO_VFLAGS) -y $(SERV_CPU_RTL) tb/pico/serv.vlt
 SERV_MAX_CYCLES ?= 20000000
 # Values per run: 2000 (as the PicoRV32 pair) where PicoRV32 produces; fewer
@@ -46,10 +45,10 @@ SERV_PRODUCER_VALUES ?= 300
 
 # $(1) = image name, $(2) = program, $(3) = driver source, $(4) = extra flags.
 define serv_fw
-$(SERV_DIR)/fw/$(1).elf: firmware/$(2).c $(3) $(FW_DEPS) mk/serv.mk
+$(SERV_DIR)/fw/$(1).elf: tb/pico/firmware/$(2).c $(3) $(FW_DEPS) mk/serv.mk
 	@$$(DRV_RV_NEED)
 	@mkdir -p $$(@D)
-	$(DRV_RV_CC) $(FW_CFLAGS) $(4) -o $$@ firmware/crt0.S firmware/$(2).c $(3) $(FW_LDFLAGS)
+	$(DRV_RV_CC) $(FW_CFLAGS) $(4) -o $$@ soc/firmware/crt0.S tb/pico/firmware/$(2).c $(3) $(FW_LDFLAGS)
 endef
 SERV_FW_SERV := -DBOARD_NO_COUNTERS
 $(eval $(call serv_fw,producer-pico,producer,c-driver/albatross.c,-DPAIR_VALUES=$(SERV_PAIR_VALUES)u))
@@ -63,12 +62,12 @@ $(eval $(call serv_fw,consumer-pico,consumer,c-driver/albatross.c,-DPAIR_VALUES=
 # Vpico_pair, so the harness is the PicoRV32 pair's.
 define serv_model
 $(SERV_DIR)/mask$(1)/Vpico_pair: $(SERV_RTL) tb/pico/test_pico_pair.cpp tb/pico/picorv32.vlt tb/pico/serv.vlt \
-        tb/report.h mk/pico.mk mk/serv.mk
+        tb/common/report.h mk/pico.mk mk/serv.mk
 	$$(SERV_NEED)
 	$$(PICO_NEED)
 	@mkdir -p $$(@D)
 	verilator --cc --exe --build -j 2 -O3 $$(SERV_VFLAGS) -GSERV_MASK=$(1) --prefix Vpico_pair \
-	    -CFLAGS "-O2 -std=c++17" --Mdir $$(@D) $$(PICO_RV32_V) tb/rtl/pico_pair.v \
+	    -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" --Mdir $$(@D) $$(PICO_RV32_V) tb/pico/pico_pair.v \
 	    $$(abspath tb/pico/test_pico_pair.cpp) > $(SERV_DIR)/build-mask$(1).log 2>&1 \
 	    || { cat $(SERV_DIR)/build-mask$(1).log; exit 1; }
 endef
@@ -126,14 +125,14 @@ bench-serv-pair: $(SERV_BIN2) $(SERV_DIR)/fw/producer-pico.hex $(SERV_DIR)/fw/co
 # elaborated before hierarchy sets the parameters.
 test-serv-lint:
 	@tools/run_test.sh serv-lint bash -c '$(SERV_NEED:@%=%) && $(PICO_NEED:@%=%) && \
-	    verilator --lint-only -Wall --timescale 1ns/1ps -y rtl -y tb/rtl -y $(SERV_CPU_RTL) \
-	        --top-module serv_core tb/pico/serv.vlt tb/rtl/serv_core.v && \
-	    verilator --lint-only $(SERV_VFLAGS) -GSERV_MASK=3 $(PICO_RV32_V) tb/rtl/pico_pair.v && \
-	    iverilog -g2005 -y rtl -y tb/rtl -y $(SERV_CPU_RTL) -s serv_core -o /dev/null tb/rtl/serv_core.v && \
-	    iverilog -g2005 -y rtl -y tb/rtl -y $(SERV_CPU_RTL) -Ppico_pair.SERV_MASK=3 -s pico_pair -o /dev/null \
-	        $(PICO_RV32_V) tb/rtl/pico_pair.v && \
+	    verilator --lint-only -Wall --timescale 1ns/1ps $(VLIB) -y $(SERV_CPU_RTL) \
+	        --top-module serv_core tb/pico/serv.vlt soc/serv_core.v && \
+	    verilator --lint-only $(SERV_VFLAGS) -GSERV_MASK=3 $(PICO_RV32_V) tb/pico/pico_pair.v && \
+	    iverilog -g2005 $(VLIB) -y $(SERV_CPU_RTL) -s serv_core -o /dev/null soc/serv_core.v && \
+	    iverilog -g2005 $(VLIB) -y $(SERV_CPU_RTL) -Ppico_pair.SERV_MASK=3 -s pico_pair -o /dev/null \
+	        $(PICO_RV32_V) tb/pico/pico_pair.v && \
 	    yosys -q -p "read_verilog -defer $(SERV_CPU_V); read_verilog $(SERV_RTL); \
 	        hierarchy -check -top serv_core; proc" && \
 	    yosys -q -p "read_verilog -defer $(SERV_CPU_V); read_verilog $(PICO_RV32_V) $(SERV_RTL); \
 	        hierarchy -check -top pico_pair -chparam SERV_MASK 3; proc" && \
-	    echo "lint ok  tb/rtl/serv_core.v, tb/rtl/pico_pair.v SERV_MASK=3 (SERV from $(SERV_CPU_RTL))"'
+	    echo "lint ok  soc/serv_core.v, tb/pico/pico_pair.v SERV_MASK=3 (SERV from $(SERV_CPU_RTL))"'

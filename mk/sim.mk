@@ -9,11 +9,11 @@
 #   make sim [SIM_CYCLES=N] [FAULT_RATE=R] [CRASH=board@cycle] [STALL=P]
 #            [TRACE=0|1] [TRACE_FROM=N] [TRACE_CYCLES=N] [SIM_DESC=file.toml] [SEED=S]
 # SIM_DESC must describe the boards radar, odometry, navigation and motor and
-# the channels of compiler/examples/mobot3.toml (the firmware uses them), for
-# example compiler/examples/mobot3_possync.toml.
+# the channels of sim/mobot3.toml (the firmware uses them), for
+# example sim/mobot3_possync.toml.
 
 SIM_DIR      := $(BUILD)/sim
-SIM_DESC     ?= compiler/examples/mobot3.toml
+SIM_DESC     ?= sim/mobot3.toml
 SIM_NAME     := $(basename $(notdir $(SIM_DESC)))
 SIM_SCHED    := $(BUILD)/schedule/$(SIM_NAME)
 SIM_FWDIR    := $(PB_DIR)/$(SIM_NAME)/fw
@@ -26,8 +26,8 @@ TRACE_FROM   ?= 0
 TRACE_CYCLES ?= 20000
 SIM_BIN      := $(PB_DIR)/$(if $(filter 1,$(TRACE)),obj-trace,obj)/Vpico_boards
 
-# A description outside compiler/examples/ (those have a pattern rule).
-ifeq ($(filter compiler/examples/%,$(SIM_DESC)),)
+# A description outside sim/ and compiler/examples/ (those have a pattern rule).
+ifeq ($(filter sim/% compiler/examples/%,$(SIM_DESC)),)
 ifneq ($(SIM_DESC),$(SCHEDULE_DESC))
 $(SIM_SCHED)/rom.hex: $(SIM_DESC) $(SCHEDULE_TOOL)
 	$(PYTHON) $(SCHEDULE_TOOL) $(SIM_DESC) --out $(@D)
@@ -47,10 +47,10 @@ sim: $(SIM_BIN) $(foreach b,$(PB_BOARDS),$(SIM_FWDIR)/$(b).hex) $(SIM_SCHED)/tb_
 
 # Whole-system simulation speed, Verilator against Icarus Verilog (one run each).
 SIM_ICARUS  := $(PB_DIR)/icarus/pico_boards_tb.vvp
-$(SIM_ICARUS): $(PB_RTL) tb/rtl/pico_boards_tb.v $(PICO_RV32_V)
+$(SIM_ICARUS): $(PB_RTL) sim/pico_boards_tb.v $(PICO_RV32_V)
 	$(PICO_NEED)
 	@mkdir -p $(@D)
-	iverilog -g2005 -y rtl -y tb/rtl -s pico_boards_tb -o $@ $(PICO_RV32_V) tb/rtl/pico_boards_tb.v
+	iverilog -g2005 $(VLIB) -y sim -s pico_boards_tb -o $@ $(PICO_RV32_V) sim/pico_boards_tb.v
 BENCHES += bench-sim-speed
 .PHONY: bench-sim-speed
 bench-sim-speed: $(PB_BIN) $(SIM_ICARUS) $(PB_FW) $(PB_SCHED)/tb_plan.txt

@@ -1,20 +1,20 @@
-# mk/system.mk -- the multi-board system (tb/rtl/tb_system.v, tb/system/):
+# mk/system.mk -- the multi-board system (tb/system/tb_system.v, tb/system/):
 # simulated CPUs run the C driver on every board, the RTL controller executes
-# a schedule compiled from compiler/examples/, faults are injected on its bus.
+# a schedule compiled from sim/mobot3*.toml, faults are injected on its bus.
 
 SYS_DIR     := $(BUILD)/system
 SYS_BIN     := $(SYS_DIR)/real/tb_system
-SYS_HDR     := $(wildcard tb/system/*.h) $(wildcard tb/*.h) tb/port/alb_port_impl.h $(wildcard c-driver/*.h)
+SYS_HDR     := $(wildcard tb/system/*.h) $(wildcard tb/common/*.h) tb/common/port/alb_port_impl.h $(wildcard c-driver/*.h)
 SYS_CYCLES  ?= 400000
 
 # The harness is compiled once; only system_sim.cpp sees the Verilated model.
-SYS_COMMON  := tb/system/tb_system.cpp tb/system/system_checker.cpp tb/system/plan.cpp \
-               tb/sim_cpu.cpp tb/ref_ram.cpp tb/protocol_checker.cpp
+SYS_COMMON  := tb/system/tb_system.cpp tb/system/system_checker.cpp tb/common/plan.cpp \
+               tb/common/sim_cpu.cpp tb/common/ref_ram.cpp tb/common/protocol_checker.cpp
 SYS_OBJS    := $(patsubst %.cpp,$(SYS_DIR)/obj/%.o,$(notdir $(SYS_COMMON))) $(SYS_DIR)/obj/driver.o
 $(SYS_DIR)/obj/%.o: tb/system/%.cpp $(SYS_HDR)
 	@mkdir -p $(@D)
 	$(CXX) $(TB_CXXFLAGS) -Itb/system -c $< -o $@
-$(SYS_DIR)/obj/%.o: tb/%.cpp $(SYS_HDR)
+$(SYS_DIR)/obj/%.o: tb/common/%.cpp $(SYS_HDR)
 	@mkdir -p $(@D)
 	$(CXX) $(TB_CXXFLAGS) -Itb/system -c $< -o $@
 $(SYS_DIR)/obj/driver.o: c-driver/albatross.c $(SYS_HDR)
@@ -25,8 +25,8 @@ $(SYS_DIR)/obj/driver.o: c-driver/albatross.c $(SYS_HDR)
 define sys_model
 $(SYS_DIR)/$(1)/model/Vsys__ALL.a: $(RTL) $(TB_RTL) $(2)
 	@mkdir -p $$(@D)
-	verilator --cc -O3 --prefix Vsys --top-module tb_system $(if $(2),-y $(dir $(2))) -y rtl -y tb/rtl \
-	    -Mdir $$(@D) tb/rtl/tb_system.v
+	verilator --cc -O3 --prefix Vsys --top-module tb_system $(if $(2),-y $(dir $(2))) $(VLIB) \
+	    -Mdir $$(@D) tb/system/tb_system.v
 	$$(MAKE) -s -C $$(@D) -f Vsys.mk OPT_FAST=-O3 CXX="$$(CXX)" >/dev/null
 $(SYS_DIR)/$(1)/tb_system: tb/system/system_sim.cpp $(SYS_HDR) $(SYS_OBJS) $(SYS_DIR)/$(1)/model/Vsys__ALL.a \
         $(TB_DIR)/verilated.o
@@ -49,9 +49,9 @@ $(foreach m,$(CTRL_MUTANTS),$(eval $(call sys_model,mutant-$(m),$(SYS_DIR)/mutan
 # The testbench's view of a compiled schedule; a plan without redundancy.  The
 # compiler outputs are kept (make would delete them as intermediate files).
 .SECONDARY:
-$(BUILD)/schedule/%/tb_plan.txt: $(BUILD)/schedule/%/rom.hex tb/system/plan_for_tb.py
-	$(PYTHON) tb/system/plan_for_tb.py $(@D)/report.json $@
-$(BUILD)/schedule/%-noredundancy/rom.hex: compiler/examples/%.toml $(SCHEDULE_TOOL)
+$(BUILD)/schedule/%/tb_plan.txt: $(BUILD)/schedule/%/rom.hex tb/common/plan_for_tb.py
+	$(PYTHON) tb/common/plan_for_tb.py $(@D)/report.json $@
+$(BUILD)/schedule/%-noredundancy/rom.hex: sim/%.toml $(SCHEDULE_TOOL)
 	$(PYTHON) $(SCHEDULE_TOOL) $< --out $(@D) --no-redundancy -q
 
 SYS_RIGID   := $(BUILD)/schedule/mobot3

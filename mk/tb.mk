@@ -1,16 +1,16 @@
-# mk/tb.mk -- the Verilator co-simulation testbench (tb/tb_dpram.cpp):
+# mk/tb.mk -- the Verilator co-simulation testbench (tb/dpram/tb_dpram.cpp):
 # simulated CPUs run the real C driver against the RTL RAM.
 #
 # Variants: the real RAM and driver, a RAM without byte arbitration, and the
-# driver mutated by tb/mutants/*.sed (each must be caught: negative tests).
+# driver mutated by tb/mutants/driver/*.sed (each must be caught: negative tests).
 
 VERILATOR_ROOT_DIR := $(shell verilator --getenv VERILATOR_ROOT 2>/dev/null)
-TB_CXXFLAGS := -std=c++17 -O3 -g0 -U_FORTIFY_SOURCE -Wall -Wextra -Werror -Itb -Ic-driver -Itb/port \
+TB_CXXFLAGS := -std=c++17 -O3 -g0 -U_FORTIFY_SOURCE -Wall -Wextra -Werror -Itb/common -Ic-driver -Itb/common/port \
                -isystem $(VERILATOR_ROOT_DIR)/include -isystem $(VERILATOR_ROOT_DIR)/include/vltstd
-TB_CFLAGS   := -std=c99 -O2 -Wall -Wextra -Werror -pedantic -U_FORTIFY_SOURCE -Ic-driver -Itb/port
-TB_SRC      := tb/tb_dpram.cpp tb/ram_bus.cpp tb/ref_ram.cpp tb/sim_cpu.cpp tb/protocol_checker.cpp
-TB_HDR      := $(wildcard tb/*.h) tb/port/alb_port_impl.h c-driver/albatross.h c-driver/albatross_layout.h
-MUTANTS     := $(patsubst tb/mutants/%.sed,%,$(wildcard tb/mutants/*.sed))
+TB_CFLAGS   := -std=c99 -O2 -Wall -Wextra -Werror -pedantic -U_FORTIFY_SOURCE -Ic-driver -Itb/common/port
+TB_SRC      := tb/dpram/tb_dpram.cpp tb/common/ram_bus.cpp tb/common/ref_ram.cpp tb/common/sim_cpu.cpp tb/common/protocol_checker.cpp
+TB_HDR      := $(wildcard tb/common/*.h) tb/common/port/alb_port_impl.h c-driver/albatross.h c-driver/albatross_layout.h
+MUTANTS     := $(patsubst tb/mutants/driver/%.sed,%,$(wildcard tb/mutants/driver/*.sed))
 TB_IMPORTS  ?= 1000000
 SOAK_IMPORTS ?= 100000000
 
@@ -42,11 +42,11 @@ $(TB_DIR)/verilated.o:
 	ld -r $(@D)/vlrt/verilated.o $(@D)/vlrt/verilated_threads.o -o $@
 
 # Driver sources: the real one, and each mutant made from it by sed.
-$(TB_DIR)/mutants/%.c: tb/mutants/%.sed c-driver/albatross.c
+$(TB_DIR)/mutants/%.c: tb/mutants/driver/%.sed c-driver/albatross.c
 	@mkdir -p $(@D)
 	sed -f $< c-driver/albatross.c > $@
 	@if cmp -s $@ c-driver/albatross.c; then \
-	    echo "mutant $* did not apply: c-driver/albatross.c no longer has the line tb/mutants/$*.sed edits"; \
+	    echo "mutant $* did not apply: c-driver/albatross.c no longer has the line tb/mutants/driver/$*.sed edits"; \
 	    rm -f $@; exit 1; fi
 
 # tb_dpram linked against <model> and <driver source>.

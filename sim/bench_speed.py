@@ -3,7 +3,7 @@
 
 Simulated cycles per second of wall time for the whole four-board system
 (make bench-sim-speed): CMD under Verilator (sim/mobot_sim.cpp, all checks
-on) and under Icarus Verilog (tb/rtl/pico_boards_tb.v), each run once in
+on) and under Icarus Verilog (sim/pico_boards_tb.v), each run once in
 this process, one after the other, so the ratio compares like with like on
 one machine.  Each run must succeed (exit 0; the Icarus run must report no
 trap, no bus error, no controller error), else the bench fails.  Prints the

@@ -1,6 +1,6 @@
 // mobot_sim.cpp -- the whole-system simulation (make sim) and its scenario
-// tests: tb/rtl/pico_boards.v, four PicoRV32 boards of the MOBOT-III example
-// (radar, odometry, navigation, motor) running firmware/mobot_<board>.c with
+// tests: sim/pico_boards.v, four PicoRV32 boards of the MOBOT-III example
+// (radar, odometry, navigation, motor) running sim/firmware/mobot_<board>.c with
 // the compiler-generated channel code and the real C driver, each with its
 // own albatross_dpram, joined over the bus by albatross_controller running the
 // compiler's schedule ROM, with a bus fault injector in between.
@@ -13,7 +13,7 @@
 //             [--age-scale X] [--require-done] [--expect-caught-by CHECK]
 //
 // The cores report every Import and Export as board events (EVENT/ARG,
-// firmware/mobot_check.h).  The harness watches every core's DPRAM port: it
+// sim/firmware/mobot_check.h).  The harness watches every core's DPRAM port: it
 // ages each imported value as (controller time of the Import's last load of
 // the control word, that is of Actual) - taken_at, and times each producer's
 // stores of Actual; it takes the cycles per call from the events, and it injects
@@ -41,7 +41,7 @@
 //   liveness   no trap, no unmapped access, no controller error; every
 //              live board kept calling the driver into the last quarter of
 //              the run, and with --require-done (no crash) every board
-//              reported done (its quotas met, firmware/mobot_check.h)
+//              reported done (its quotas met, sim/firmware/mobot_check.h)
 //              (not judged once a core failed its own check: that board
 //              stopped and starves its consumers; cpu reports it)
 //   age        runs without faults (and no core failed its check): every age <= bound, where the bound of a copy
@@ -69,8 +69,8 @@
 #if VM_TRACE
 #include "verilated_vcd_c.h"
 #endif
-#include "../tb/report.h"
-#include "../tb/system/plan.h"
+#include "report.h"
+#include "plan.h"
 
 namespace {
 
@@ -219,7 +219,7 @@ int main(int argc, char **argv)
     std::string err;
     if (!plan.load(o.plan, err)) return usage(err.c_str());
     if (plan.boards != NB || int(plan.board_names.size()) != NB)
-        return usage("the plan must have 4 boards (tb/rtl/pico_boards.v has NB = 4)");
+        return usage("the plan must have 4 boards (sim/pico_boards.v has NB = 4)");
     if (!crash_arg.empty() && !parse_board_at(crash_arg, plan, o.crash_board, o.crash_at))
         return usage(("--crash: expected BOARD@CYCLE with a board of the plan, got " + crash_arg).c_str());
     if (!hang_arg.empty() && !parse_board_at(hang_arg, plan, o.hang_board, o.hang_at))

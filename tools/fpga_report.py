@@ -9,8 +9,8 @@ Designs (files are read with -DSYNTHESIS; parameters as the systems use them):
   dpram       rtl/albatross_dpram.v, ADDR_WIDTH 10 (4 KiB)
   controller  rtl/albatross_controller.v, NB 4, ADDR_WIDTH 10, N_CHAN 16, ROM_WORDS 1024
               (the four-board robot's configuration)
-  picorv32    one PicoRV32 as tb/rtl/pico_core.v configures it (rv32i, counters),
-              behind fpga/picorv32_ooc.v (only its memory port on pins)
+  picorv32    one PicoRV32 as soc/pico_core.v configures it (rv32i, counters),
+              behind soc/picorv32_ooc.v (only its memory port on pins)
   top         the board top of the family: fpga/icebreaker_top.v (ice40: a
               SERV and a PicoRV32 board), fpga/ulx3s_top.v (ecp5) and
               fpga/arty_top.v (xc7): two PicoRV32 boards; with their DPRAMs,
@@ -51,8 +51,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from synth_report import FAMILIES, cell_types, count, write_json  # noqa: E402
 
 SOC_FILES = ["rtl/albatross_dpram.v", "rtl/albatross_wb_cdc.v", "rtl/albatross_bus.v", "rtl/albatross_controller.v",
-             "tb/rtl/board_core.v", "tb/rtl/pico_core.v", "tb/rtl/serv_core.v", "tb/rtl/serv_bridge.v", "tb/rtl/board_memmap.v",
-             "tb/rtl/pico_wb_adapter.v", "fpga/albatross_soc.v", "fpga/board_reset.v", "fpga/beat_divider.v",
+             "soc/board_core.v", "soc/pico_core.v", "soc/serv_core.v", "soc/serv_bridge.v", "soc/board_memmap.v",
+             "soc/pico_wb_adapter.v", "soc/albatross_soc.v", "soc/board_reset.v", "soc/beat_divider.v",
              "fpga/duo_system.v"]
 TOPS = {"ice40": "icebreaker_top", "ecp5": "ulx3s_top", "xc7": "arty_top"}
 # Each placed top's clock nets and the MHz each must meet: the iCEBreaker's
@@ -73,7 +73,7 @@ def design(name, fam, picorv32, serv):
         return (["rtl/albatross_controller.v"], "albatross_controller",
                 "chparam -set NB 4 -set ADDR_WIDTH 10 -set N_CHAN 16 -set ROM_WORDS 1024 albatross_controller")
     if name == "picorv32":
-        return [picorv32, "fpga/picorv32_ooc.v"], "picorv32_ooc", ""
+        return [picorv32, "soc/picorv32_ooc.v"], "picorv32_ooc", ""
     top = TOPS[fam]
     return [picorv32] + serv + SOC_FILES + [f"fpga/{top}.v"], top, ""
 

@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
 # lint.sh FILE... -- every Verilog file is its own top (module named as the
-# file); the modules it instantiates come from rtl/ and, for test tops, from
-# tb/rtl/.  Each must pass Verilator's -Wall lint with no warning, compile with
-# Icarus (-g2005) and elaborate in Yosys (which reads the files given, not
-# every file of tb/rtl/: test benches there may hold constructs Yosys does
-# not parse, and are linted by their own targets).  Stops at the first failure.
+# file); the modules it instantiates come from the library folders rtl/
+# (the IP), soc/ (soft-core board parts) and tb/common/ (shared test-only
+# modules).  Each must pass Verilator's -Wall lint with no warning, compile
+# with Icarus (-g2005) and elaborate in Yosys (which reads the files given,
+# not whole library folders: test benches there may hold constructs Yosys
+# does not parse, and are linted by their own targets).  Stops at the first
+# failure.
 set -eu
+lib="-y rtl -y soc -y tb/common"
 for f in "$@"; do
     top=$(basename "$f" .v)
-    verilator --lint-only -Wall -y rtl -y tb/rtl --top-module "$top" "$f"
-    iverilog -g2005 -y rtl -y tb/rtl -s "$top" -o /dev/null "$f"
+    verilator --lint-only -Wall $lib --top-module "$top" "$f"
+    iverilog -g2005 $lib -s "$top" -o /dev/null "$f"
     others=""
     for r in "$@"; do [ "$r" -ef "$f" ] || others="$others $r"; done
     yosys -q -p "read_verilog$others $f; hierarchy -check -top $top; proc"

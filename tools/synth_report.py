@@ -72,7 +72,7 @@ MEM_CELLS = ("$mem", "$mem_v2")
 
 
 def find_source(module):
-    for d in ("rtl", "tb/rtl"):
+    for d in ("rtl", "soc", "tb/dpram"):
         path = os.path.join(d, module + ".v")
         if os.path.isfile(path):
             return path
@@ -222,7 +222,7 @@ def fmt(v):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("module")
-    ap.add_argument("--file", help="Verilog source (default rtl/ or tb/rtl/MODULE.v)")
+    ap.add_argument("--file", help="Verilog source (default rtl/, soc/ or tb/dpram/MODULE.v)")
     ap.add_argument("--addr-width", type=int, default=10)
     ap.add_argument("--families", default="ice40,ecp5,xc7")
     ap.add_argument("--require-bram", action="store_true",

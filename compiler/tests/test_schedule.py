@@ -23,7 +23,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 COMPILER_DIR = os.path.dirname(HERE)
 REPO = os.path.dirname(COMPILER_DIR)
 TOOL = os.path.join(COMPILER_DIR, "albatross_schedule.py")
-EXAMPLES = os.path.join(COMPILER_DIR, "examples")
+EXAMPLES = os.path.join(REPO, "sim")  # the MOBOT-III robot's descriptions
 BAD = os.path.join(HERE, "bad")
 OUT = os.path.join(REPO, "build", "compiler-tests")
 CFLAGS = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"]

@@ -1,5 +1,5 @@
 // test_cdc -- self-checking test of albatross_dpram behind two albatross_wb_cdc
-// bridges with three independent clocks (top: tb/rtl/tb_dpram_async.v).
+// bridges with three independent clocks (top: tb/cdc/tb_dpram_async.v).
 //
 // The RAM clock is fixed; the two CPU clocks drift randomly so that their
 // frequency ratio wanders over 1:100..100:1.  Clocks come from this event loop

@@ -1,5 +1,5 @@
-// bench_pico.cpp -- Verilator harness of tb/rtl/pico_bench.v: one PicoRV32
-// core runs firmware/bench.c (the real driver) against an albatross_dpram
+// bench_pico.cpp -- Verilator harness of tb/pico/pico_bench.v: one PicoRV32
+// core runs tb/pico/firmware/bench.c (the real driver) against an albatross_dpram
 // whose other port is idle, and reports cycles per call as board EVENTs
 // (key = size << 16 | metric << 8 | field, ARG = the figure; see bench.c).
 //
@@ -18,7 +18,7 @@
 #include <string>
 #include "Vpico_bench.h"
 #include "verilated.h"
-#include "../report.h"
+#include "report.h"
 
 static const uint32_t SIZES[] = {4, 16, 64, 256};
 static const char *METRIC[] = {"export", "import_new", "import_old", "copy_to_dpram", "copy_from_dpram"};
@@ -121,7 +121,7 @@ int main(int argc, char **argv)
     }
     std::string st = slope.text();
     JsonReport r;
-    r.str("label", "bench-pico").str("cpu", "PicoRV32 rv32i (tb/rtl/pico_bench.v), firmware -Os")
+    r.str("label", "bench-pico").str("cpu", "PicoRV32 rv32i (tb/pico/pico_bench.v), firmware -Os")
      .num("calls_per_figure", reps).num("rdcycle_overhead", ev[K_OVERHEAD])
      .num("cycles", static_cast<double>(cycle))
      .str("note", "cycles per call with rdcycle around the call, the empty rdcycle pair subtracted; "

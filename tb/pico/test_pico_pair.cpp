@@ -1,5 +1,5 @@
-// test_pico_pair.cpp -- Verilator harness of tb/rtl/pico_pair.v: two PicoRV32
-// cores run the real C driver (firmware/producer.c, firmware/consumer.c)
+// test_pico_pair.cpp -- Verilator harness of tb/pico/pico_pair.v: two PicoRV32
+// cores run the real C driver (tb/pico/firmware/producer.c, tb/pico/firmware/consumer.c)
 // against one albatross_dpram.  The clock is driven from here (no --timing).
 //
 //   test_pico_pair +fw0=PRODUCER.hex +fw1=CONSUMER.hex [--max-cycles N]
@@ -17,7 +17,7 @@
 // address, or N cycles pass (then it fails, naming what was still running).
 // Normal run: both exit codes must be 0.  --expect-consumer-failure (negative
 // test with a broken driver on either core): the consumer must report a torn
-// or out-of-order value (codes 3..6, firmware/consumer.c) and the producer
+// or out-of-order value (codes 3..6, tb/pico/firmware/consumer.c) and the producer
 // must still finish with 0.
 // Exit status 0 = verdict pass.
 #include <cstdint>
@@ -27,7 +27,7 @@
 #include <string>
 #include "Vpico_pair.h"
 #include "verilated.h"
-#include "../report.h"
+#include "report.h"
 
 static const char *code_text(uint32_t code)
 {

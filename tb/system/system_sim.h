@@ -1,4 +1,4 @@
-// system_sim.h -- the Verilated multi-board system (tb/rtl/tb_system.v):
+// system_sim.h -- the Verilated multi-board system (tb/system/tb_system.v):
 // one simulated CPU per board on its RAM's port A, the communication
 // controller on every port B, the bus fault injector between them.
 //

@@ -1,0 +1,195 @@
+/*
+ * mobot_check.h -- payloads and on-core checks of the four-board PicoRV32
+ * system (sim/pico_boards.v, sim/firmware/mobot_<board>.c).  Every value of
+ * the MOBOT-III channels carries a sequence number and a checksum derived
+ * from it, in the channel's own type (sim/mobot3_types.h):
+ *   RadarShot      range_mm[0..1] = seq, [2..30] = mix words, [31] = rotate-xor sum
+ *   RobotPosition  x = seq, y = mix(seq), heading = x ^ y ^ SALT
+ *   MotorCommand   left/right = seq low/high half, flags = mix(seq) ^ SALT
+ * The all-zero start value of the RAM images counts as sequence 0 and is
+ * accepted once, as the first New (the controller's cold-start Import
+ * delivers it).  Exit code (TOHOST) = check | channel id << 4 | seq << 12:
+ *   1 alb_import error, 2 attach error, 3 checksum, 4 sequence went back,
+ *   5 New without a newer value, 6 Old with a newer value, 7 export error.
+ * Every Import and Export is also reported to the harness as a board event
+ * (board_event, soc/firmware/board.h): EVENT = kind | channel id << 4 |
+ * cycles << 8, where cycles (24 bits, saturating) is the rdcycle count of the
+ * call, and ARG as listed at MOBOT_EV_*.
+ */
+#ifndef MOBOT_CHECK_H
+#define MOBOT_CHECK_H
+
+#include <stdint.h>
+#include "albatross.h"
+#include "board.h"
+#include "mobot3_types.h"
+
+#define MOBOT_SALT     0x5A5A5A5Au
+#define MOBOT_NEWS     40u   /* New values every consumer must see per channel */
+#define MOBOT_EXPORTS  40u   /* exports before a producer reports */
+
+/* Time budgets of the application, in controller clocks (50 MHz). */
+#define MOBOT_RADAR_SCAN_CLOCKS 20000u  /* the radar publishes a scan at least this often (400 us) */
+
+/* Board event kinds (ARG). */
+#define MOBOT_EV_NEW     1u  /* alb_import returned New (taken_at)            */
+#define MOBOT_EV_OLD     2u  /* alb_import returned Old (taken_at)            */
+#define MOBOT_EV_ERROR   3u  /* alb_import returned an error (the error)      */
+#define MOBOT_EV_BEGIN   4u  /* an Export begins (its sequence number)        */
+#define MOBOT_EV_EXPORT  5u  /* an Export returned (its sequence number)      */
+#define MOBOT_EV_STALE   6u  /* a consumer found its channel stale (the age)  */
+#define MOBOT_EV_FRESH   7u  /* ... and fresh again (the age)                 */
+#define MOBOT_EV_STATUS  8u  /* a new STATUS (retries summed over channels;
+                                the cycles field: abandoned summed)           */
+
+#define MOBOT_CODE(chk, id, seq) ((uint32_t)(chk) | ((uint32_t)(id) << 4) | ((uint32_t)(seq) << 12))
+
+static inline void mobot_tohost(uint32_t code)
+{
+    *(volatile uint32_t *)(uintptr_t)BOARD_TOHOST = code;
+}
+
+static inline void mobot_event(uint32_t kind, uint32_t id, uint32_t cycles, uint32_t arg)
+{
+    if (cycles > 0xFFFFFFu)
+        cycles = 0xFFFFFFu;
+    board_event(kind | id << 4 | cycles << 8, arg);
+}
+
+/* alb_import with its event; taken_at is the message's taken_at field. */
+static inline int mobot_import(alb_channel_t *ch, uint32_t id, void *msg, const uint32_t *taken_at)
+{
+    uint32_t c0 = board_cycles(), c1;
+    int r = alb_import(ch, msg);
+    c1 = board_cycles();
+    if (r == ALB_NEW || r == ALB_OLD)
+        mobot_event(r == ALB_NEW ? MOBOT_EV_NEW : MOBOT_EV_OLD, id, c1 - c0, *taken_at);
+    else
+        mobot_event(MOBOT_EV_ERROR, id, c1 - c0, (uint32_t)r);
+    return r;
+}
+
+/* alb_export with its two events (begin, end). */
+static inline int mobot_export(alb_channel_t *ch, uint32_t id, const void *v, uint32_t seq)
+{
+    uint32_t c0, c1;
+    int r;
+    mobot_event(MOBOT_EV_BEGIN, id, 0u, seq);
+    c0 = board_cycles();
+    r = alb_export(ch, v);
+    c1 = board_cycles();
+    mobot_event(MOBOT_EV_EXPORT, id, c1 - c0, seq);
+    return r;
+}
+
+static inline uint32_t mobot_mix(uint32_t x)
+{
+    x ^= x << 13;
+    x ^= x >> 17;
+    x ^= x << 5;
+    return x + 0x9E3779B9u;
+}
+
+static inline void radar_make(RadarShot *v, uint32_t seq)
+{
+    uint32_t k, h = seq, sum = 0u;
+    v->range_mm[0] = (uint16_t)seq;
+    v->range_mm[1] = (uint16_t)(seq >> 16);
+    for (k = 2u; k < 31u; ++k) {
+        h = mobot_mix(h);
+        v->range_mm[k] = (uint16_t)h;
+    }
+    for (k = 0u; k < 31u; ++k)
+        sum = ((sum << 5) | (sum >> 27)) ^ v->range_mm[k];   /* order-sensitive, no multiply */
+    v->range_mm[31] = (uint16_t)(sum ^ MOBOT_SALT);
+}
+
+static inline uint32_t radar_seq(const RadarShot *v)
+{
+    return v->range_mm[0] | ((uint32_t)v->range_mm[1] << 16);
+}
+
+static inline int radar_ok(const RadarShot *v)
+{
+    RadarShot w;
+    uint32_t k;
+    radar_make(&w, radar_seq(v));
+    for (k = 0u; k < 32u; ++k)
+        if (w.range_mm[k] != v->range_mm[k])
+            return 0;
+    return 1;
+}
+
+static inline void position_make(RobotPosition *v, uint32_t seq)
+{
+    v->x_mm = (int32_t)seq;
+    v->y_mm = (int32_t)mobot_mix(seq);
+    v->heading_urad = (int32_t)(seq ^ mobot_mix(seq) ^ MOBOT_SALT);
+}
+
+static inline int position_ok(const RobotPosition *v)
+{
+    RobotPosition w;
+    position_make(&w, (uint32_t)v->x_mm);
+    return w.y_mm == v->y_mm && w.heading_urad == v->heading_urad;
+}
+
+static inline void motor_make(MotorCommand *v, uint32_t seq)
+{
+    v->left_mm_s = (int16_t)(uint16_t)seq;
+    v->right_mm_s = (int16_t)(uint16_t)(seq >> 16);
+    v->flags = mobot_mix(seq) ^ MOBOT_SALT;
+}
+
+static inline uint32_t motor_seq(const MotorCommand *v)
+{
+    return (uint16_t)v->left_mm_s | ((uint32_t)(uint16_t)v->right_mm_s << 16);
+}
+
+/* The start image (all zero) is sequence 0 and passes as such. */
+static inline int radar_ok0(const RadarShot *v)
+{
+    uint32_t k, z = 0u;
+    for (k = 0u; k < 32u; ++k) z |= v->range_mm[k];
+    return z == 0u || radar_ok(v);
+}
+static inline int position_ok0(const RobotPosition *v)
+{
+    return (v->x_mm == 0 && v->y_mm == 0 && v->heading_urad == 0) || position_ok(v);
+}
+static inline int motor_ok0(const MotorCommand *v)
+{
+    return (v->left_mm_s == 0 && v->right_mm_s == 0 && v->flags == 0u) ||
+           v->flags == (mobot_mix(motor_seq(v)) ^ MOBOT_SALT);
+}
+
+/* Per imported channel: the last sequence, New count, whether any New came. */
+typedef struct {
+    uint32_t last, news, calls, started;
+} mobot_track_t;
+
+/* Check one Import result r (ALB_NEW / ALB_OLD / error) of sequence seq with
+ * checksum verdict ok.  Returns 0 or the exit code. */
+static inline uint32_t mobot_check(mobot_track_t *t, uint32_t id, int r, int ok, uint32_t seq)
+{
+    ++t->calls;
+    if (r != ALB_NEW && r != ALB_OLD)
+        return MOBOT_CODE(1, id, t->last);
+    if (!ok)
+        return MOBOT_CODE(3, id, seq);
+    if (seq < t->last)
+        return MOBOT_CODE(4, id, seq);
+    if (r == ALB_NEW) {
+        /* the first New may be the start value again (sequence 0) */
+        if (seq == t->last && !(seq == 0u && !t->started))
+            return MOBOT_CODE(5, id, seq);
+        t->started = 1u;
+        ++t->news;
+    } else if (seq != t->last) {
+        return MOBOT_CODE(6, id, seq);
+    }
+    t->last = seq;
+    return 0u;
+}
+
+#endif

@@ -1,0 +1,86 @@
+/*
+ * mobot_navigation.c -- board 'navigation' of the four-board PicoRV32 system
+ * (sim/pico_boards.v): imports RadarMap, Position, GlobalTime and Status,
+ * exports MotorCmd, through the compiler-generated navigation.c.  Reports 0
+ * after MOBOT_NEWS New values of every copied import and MOBOT_EXPORTS
+ * exports, then keeps going.  STAT: 0 RadarMap New, 1 Position New,
+ * 2 GlobalTime New, 3 exports.  Checks and events: sim/firmware/mobot_check.h.
+ *
+ * Actuality: the map's age is estimated as GlobalTime - taken_at (an
+ * underestimate: GlobalTime is itself a little old).  A healthy radar
+ * publishes at least every MOBOT_RADAR_SCAN_CLOCKS and the controller
+ * guarantees ALB_RADARMAP_LATENCY_CLOCKS from an Export to this RAM, so an
+ * older map means the radar stopped: navigation reports MOBOT_EV_STALE (and
+ * MOBOT_EV_FRESH when New maps come back) and keeps driving on the last one.
+ */
+#include "albatross.h"
+#include "navigation.h"
+#include "mobot_check.h"
+
+#define NAV_RADAR_STALE_CLOCKS (MOBOT_RADAR_SCAN_CLOCKS + ALB_RADARMAP_LATENCY_CLOCKS)
+
+/* Retries and abandoned transfers summed over the channels of the system. */
+static void nav_status_event(const Status_t *s)
+{
+    uint32_t id, retries = 0u, abandoned = 0u;
+    for (id = 0u; id <= ALB_STATUS_ID; ++id) {
+        retries += ALB_STATUS_RETRIES(s->word, id);
+        abandoned += ALB_STATUS_ABANDONED(s->word, id);
+    }
+    mobot_event(MOBOT_EV_STATUS, ALB_STATUS_ID, abandoned, retries);
+}
+
+int main(void)
+{
+    static RadarMap_msg map;
+    static Position_msg pos;
+    static GlobalTime_msg gt;
+    static Status_msg st;
+    static MotorCommand cmd;
+    mobot_track_t tr = {0u, 0u, 0u, 0u}, tp = {0u, 0u, 0u, 0u}, tt = {0u, 0u, 0u, 0u};
+    uint32_t seq = 0u, code, reported = 0u, stale = 0u, age;
+    int r;
+
+    r = alb_navigation_attach_all(BOARD_DPRAM_BASE);
+    if (r != ALB_OK)
+        return (int)MOBOT_CODE(2, 0xfu, (uint32_t)-r);
+    for (;;) {
+        r = mobot_import(&alb_ch_RadarMap, ALB_RADARMAP_ID, &map, &map.taken_at);
+        code = mobot_check(&tr, ALB_RADARMAP_ID, r, radar_ok0(&map.value), radar_seq(&map.value));
+        if (code)
+            return (int)code;
+        r = mobot_import(&alb_ch_Position, ALB_POSITION_ID, &pos, &pos.taken_at);
+        code = mobot_check(&tp, ALB_POSITION_ID, r, position_ok0(&pos.value), (uint32_t)pos.value.x_mm);
+        if (code)
+            return (int)code;
+        r = mobot_import(&alb_ch_GlobalTime, ALB_GLOBALTIME_ID, &gt, &gt.taken_at);
+        code = mobot_check(&tt, ALB_GLOBALTIME_ID, r, 1, gt.value);
+        if (code)
+            return (int)code;
+        age = (int32_t)(gt.value - map.taken_at) > 0 ? gt.value - map.taken_at : 0u;
+        if (!stale && age > NAV_RADAR_STALE_CLOCKS) {
+            mobot_event(MOBOT_EV_STALE, ALB_RADARMAP_ID, 0u, age);
+            stale = 1u;
+        } else if (stale && age <= NAV_RADAR_STALE_CLOCKS) {
+            mobot_event(MOBOT_EV_FRESH, ALB_RADARMAP_ID, 0u, age);
+            stale = 0u;
+        }
+        r = mobot_import(&alb_ch_Status, ALB_STATUS_ID, &st, &st.taken_at);
+        if (r != ALB_NEW && r != ALB_OLD)
+            return (int)MOBOT_CODE(1, ALB_STATUS_ID, 0u);
+        if (r == ALB_NEW)
+            nav_status_event(&st.value);
+        motor_make(&cmd, ++seq);
+        if (mobot_export(&alb_ch_MotorCmd, ALB_MOTORCMD_ID, &cmd, seq) != ALB_OK)
+            return (int)MOBOT_CODE(7, ALB_MOTORCMD_ID, seq);
+        if (!reported && seq >= MOBOT_EXPORTS && tr.news >= MOBOT_NEWS && tp.news >= MOBOT_NEWS &&
+            tt.news >= MOBOT_NEWS) {
+            board_stat(0u, tr.news);
+            board_stat(1u, tp.news);
+            board_stat(2u, tt.news);
+            board_stat(3u, seq);
+            mobot_tohost(0u);
+            reported = 1u;
+        }
+    }
+}

@@ -1,0 +1,40 @@
+/*
+ * mobot_odometry.c -- board 'odometry' of the four-board PicoRV32 system
+ * (sim/pico_boards.v): exports Position, imports GlobalTime through the
+ * compiler-generated odometry.c.  Reports 0 after MOBOT_EXPORTS exports and
+ * MOBOT_NEWS New times, then keeps exporting.  STAT: 1 GlobalTime New,
+ * 3 exports.  Checks and events: sim/firmware/mobot_check.h.
+ */
+#include "albatross.h"
+#include "odometry.h"
+#include "mobot_check.h"
+
+int main(void)
+{
+    static RobotPosition p;
+    static GlobalTime_msg gt;
+    mobot_track_t tt = {0u, 0u, 0u, 0u};
+    uint32_t seq = 0u, code, reported = 0u, k;
+    int r;
+
+    r = alb_odometry_attach_all(BOARD_DPRAM_BASE);
+    if (r != ALB_OK)
+        return (int)MOBOT_CODE(2, 0xfu, (uint32_t)-r);
+    for (;;) {
+        position_make(&p, ++seq);
+        if (mobot_export(&alb_ch_Position, ALB_POSITION_ID, &p, seq) != ALB_OK)
+            return (int)MOBOT_CODE(7, ALB_POSITION_ID, seq);
+        r = mobot_import(&alb_ch_GlobalTime, ALB_GLOBALTIME_ID, &gt, &gt.taken_at);
+        code = mobot_check(&tt, ALB_GLOBALTIME_ID, r, 1, gt.value);
+        if (code)
+            return (int)code;
+        for (k = seq & 255u; k != 0u; --k)   /* vary the phase against the controller */
+            __asm__ volatile("" ::: "memory");
+        if (!reported && seq >= MOBOT_EXPORTS && tt.news >= MOBOT_NEWS) {
+            board_stat(1u, tt.news);
+            board_stat(3u, seq);
+            mobot_tohost(0u);
+            reported = 1u;
+        }
+    }
+}

@@ -1,0 +1,166 @@
+// board_memmap -- test fixture: the memory map of one simulated board behind
+// a PicoRV32-style native memory port (valid/addr/wdata/wstrb in,
+// ready/rdata out).  Shared by every core wrapper (pico_core, serv_core).
+//
+// Memory map (address bits 31:28 select the region; soc/firmware/board.h):
+//   0x0xxx_xxxx  local RAM, RAM_WORDS words, performed at the edge after the
+//                request (one-cycle access), loaded from FW_FILE (synthesis:
+//                block-RAM contents) or, in simulation, from +fw<CORE>=FILE
+//   0x1xxx_xxxx  DPRAM window: wb_* through a pico_wb_adapter
+//   0x2xxx_xxxx  board registers, one-cycle access, reads give 0:
+//                +0x00 TOHOST: a store sets done_o and code_o
+//                +0x10..0x1c STAT 0..3 (stat_o)
+//                +0x20 EVENT: a store pulses ev_valid_o for one clock with
+//                      ev_data_o = the value, ev_arg_o = ARG
+//                +0x24 ARG: the argument of the next EVENT
+//   other        bus_err_o is set (sticky); the access completes, reads 0
+// stall_i holds the local-RAM access (instruction fetches included) while
+// high: a harness varies the core's speed with it, as an interrupt or a slow
+// memory would, or freezes the core for good (a crash).  DPRAM accesses are
+// never held.  Reset (synchronous, active high) clears control state, never
+// the RAM.
+`default_nettype none
+
+module board_memmap #(
+    parameter CORE       = 0,     // index: the firmware plusarg is +fw<CORE>=FILE (0..3)
+    parameter ADDR_WIDTH = 10,    // word-address bits of the DPRAM port
+    parameter RAM_WORDS  = 4096,  // words of the local RAM (16 KiB)
+    parameter FW_FILE    = ""     // $readmemh program image at configuration ("": +fw<CORE>=FILE in simulation)
+) (
+    input  wire                  clk_i,
+    input  wire                  rst_i,     // synchronous, active high
+    input  wire                  stall_i,   // hold the local-RAM access this cycle
+    // native memory port (PicoRV32 mem_*)
+    input  wire                  valid_i,
+    input  wire [31:0]           addr_i,
+    input  wire [31:0]           wdata_i,
+    input  wire [3:0]            wstrb_i,   // 0: read
+    output wire                  ready_o,
+    output wire [31:0]           rdata_o,
+    // Wishbone B4 classic master to a DPRAM port
+    output wire                  wb_cyc_o,
+    output wire                  wb_stb_o,
+    output wire                  wb_we_o,
+    output wire [ADDR_WIDTH-1:0] wb_adr_o,
+    output wire [3:0]            wb_sel_o,
+    output wire [31:0]           wb_dat_o,
+    input  wire [31:0]           wb_dat_i,
+    input  wire                  wb_ack_i,
+    // board status
+    output wire                  done_o,    // the core stored to TOHOST
+    output wire [31:0]           code_o,    // the last value it stored (exit code)
+    output wire [127:0]          stat_o,    // STAT k at [k*32 +: 32]
+    output wire                  ev_valid_o,// a store to EVENT, this clock
+    output wire [31:0]           ev_data_o, // its value
+    output wire [31:0]           ev_arg_o,  // ARG at that time
+    output wire                  bus_err_o  // an access to an unmapped address
+);
+
+    localparam RAM_BITS = $clog2(RAM_WORDS);  // word-address bits, local RAM
+
+    // Address decode: bits 31:28 pick the region.
+    wire sel_ram  = valid_i && addr_i[31:28] == 4'h0;
+    wire sel_dp   = valid_i && addr_i[31:28] == 4'h1;
+    wire sel_regs = valid_i && addr_i[31:28] == 4'h2;
+    wire sel_none = valid_i && addr_i[31:28] >  4'h2;
+
+    // Local RAM: performed at the edge after the request, ready then.
+    reg [31:0] ram [0:RAM_WORDS-1];
+    reg [31:0] ram_rdata_q;
+    reg        ram_ready_q;
+    wire [RAM_BITS-1:0] ram_idx = addr_i[RAM_BITS+1:2];
+    generate
+        if (FW_FILE != "") begin : g_fw
+            initial $readmemh(FW_FILE, ram);
+        end
+    endgenerate
+`ifndef SYNTHESIS  // simulation only: Yosys has no $value$plusargs
+    reg [8*256-1:0] fw_file;
+    integer         have_fw;
+    initial if (FW_FILE == "") begin
+        case (CORE)
+            0:       have_fw = $value$plusargs("fw0=%s", fw_file);
+            1:       have_fw = $value$plusargs("fw1=%s", fw_file);
+            2:       have_fw = $value$plusargs("fw2=%s", fw_file);
+            default: have_fw = $value$plusargs("fw3=%s", fw_file);
+        endcase
+        if (have_fw != 0) $readmemh(fw_file, ram);
+        else $display("board_memmap: no +fw%0d=FILE given, core %0d has an empty RAM", CORE, CORE);
+    end
+`endif
+    always @(posedge clk_i) begin
+        ram_ready_q <= sel_ram & ~ram_ready_q & ~stall_i & ~rst_i;
+        if (sel_ram & ~ram_ready_q & ~stall_i) begin
+            ram_rdata_q <= ram[ram_idx];
+            if (wstrb_i[0]) ram[ram_idx][7:0]   <= wdata_i[7:0];
+            if (wstrb_i[1]) ram[ram_idx][15:8]  <= wdata_i[15:8];
+            if (wstrb_i[2]) ram[ram_idx][23:16] <= wdata_i[23:16];
+            if (wstrb_i[3]) ram[ram_idx][31:24] <= wdata_i[31:24];
+        end
+    end
+    wire unused_addr = &{1'b0, addr_i[27:RAM_BITS+2]};
+
+    // Board registers and unmapped addresses: one-cycle access.
+    reg        regs_ready_q, done_q, err_q, ev_valid_q;
+    reg [31:0] code_q, ev_data_q, ev_arg_q;
+    reg [31:0] stat_q [0:3];
+    wire       reg_wr = sel_regs & ~regs_ready_q & (|wstrb_i);
+    always @(posedge clk_i) begin
+        if (rst_i) begin
+            regs_ready_q <= 1'b0;
+            done_q       <= 1'b0;
+            err_q        <= 1'b0;
+            code_q       <= 32'd0;
+            ev_valid_q   <= 1'b0;
+            ev_data_q    <= 32'd0;
+            ev_arg_q     <= 32'd0;
+        end else begin
+            regs_ready_q <= (sel_regs | sel_none) & ~regs_ready_q;
+            ev_valid_q   <= reg_wr && addr_i[7:0] == 8'h20;
+            if (sel_none) err_q <= 1'b1;
+            if (reg_wr && addr_i[7:0] == 8'h00) begin
+                done_q <= 1'b1;
+                code_q <= wdata_i;
+            end
+            if (reg_wr && addr_i[7:0] == 8'h20) ev_data_q <= wdata_i;
+            if (reg_wr && addr_i[7:0] == 8'h24) ev_arg_q  <= wdata_i;
+        end
+    end
+    // STAT is data, not control: never reset.
+    always @(posedge clk_i)
+        if (reg_wr && addr_i[7:4] == 4'h1) stat_q[addr_i[3:2]] <= wdata_i;
+
+    // DPRAM window through the adapter.
+    wire        dp_ready;
+    wire [31:0] dp_rdata;
+    pico_wb_adapter #(.ADDR_WIDTH(ADDR_WIDTH)) u_adapter (
+        .valid_i (sel_dp),
+        .addr_i  (addr_i[ADDR_WIDTH+1:0]),
+        .wdata_i (wdata_i),
+        .wstrb_i (wstrb_i),
+        .ready_o (dp_ready),
+        .rdata_o (dp_rdata),
+        .wb_cyc_o(wb_cyc_o),
+        .wb_stb_o(wb_stb_o),
+        .wb_we_o (wb_we_o),
+        .wb_adr_o(wb_adr_o),
+        .wb_sel_o(wb_sel_o),
+        .wb_dat_o(wb_dat_o),
+        .wb_dat_i(wb_dat_i),
+        .wb_ack_i(wb_ack_i)
+    );
+
+    assign ready_o    = ram_ready_q | regs_ready_q | dp_ready;
+    assign rdata_o    = ram_ready_q ? ram_rdata_q : dp_ready ? dp_rdata : 32'd0;
+
+    assign done_o     = done_q;
+    assign code_o     = code_q;
+    assign stat_o     = {stat_q[3], stat_q[2], stat_q[1], stat_q[0]};
+    assign ev_valid_o = ev_valid_q;
+    assign ev_data_o  = ev_data_q;
+    assign ev_arg_o   = ev_arg_q;
+    assign bus_err_o  = err_q;
+
+endmodule
+
+`default_nettype wire
