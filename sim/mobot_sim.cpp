@@ -258,19 +258,38 @@ int main(int argc, char **argv)
 
     Verilated::commandArgs(argc, argv);
     auto m = std::make_unique<Vpico_boards>();
+    // The wave's time base: clock cycles since power-up, reset included (two
+    // time steps per cycle, one dump per step), so its times only grow; the
+    // window [trace_from, trace_from + trace_cycles) counts cycles after reset,
+    // and with trace_from 0 it also holds the reset and the state before the
+    // first edge.
+    uint64_t ticks = 0, cycle = 0;
+    bool in_reset = true;
 #if VM_TRACE
     std::unique_ptr<VerilatedVcdC> vcd;
+    bool trace_done = false;
     if (!o.trace.empty()) {
         Verilated::traceEverOn(true);
         vcd = std::make_unique<VerilatedVcdC>();
         m->trace(vcd.get(), 99);
     }
+    auto dump = [&](uint64_t time) {
+        if (!vcd || trace_done) return;
+        const bool want = in_reset ? o.trace_from == 0
+                                   : cycle >= o.trace_from && cycle < o.trace_from + o.trace_cycles;
+        if (!want) {
+            if (vcd->isOpen()) { vcd->close(); trace_done = true; }  // the window is over
+            return;
+        }
+        if (!vcd->isOpen()) vcd->open(o.trace.c_str());
+        vcd->dump(time);
+    };
 #endif
     uint64_t rng = o.seed * 0x9E3779B97F4A7C15ull + 1;
     auto next = [&]() { rng ^= rng << 13; rng ^= rng >> 7; rng ^= rng << 17; return rng; };
     const uint64_t fault_threshold = uint64_t(o.fault_rate * 18446744073709551615.0);
 
-    uint64_t cycle = 0, stall_left[NB] = {0, 0, 0, 0}, busy = 0, faults = 0, requests = 0;
+    uint64_t stall_left[NB] = {0, 0, 0, 0}, busy = 0, faults = 0, requests = 0;
     uint32_t frozen = 0;
     bool prev_stb = false, prev_answer = false;
     auto tick = [&]() {
@@ -291,18 +310,13 @@ int main(int argc, char **argv)
         busy += m->m_cyc_o;
         m->clk_i = 1; m->eval();
 #if VM_TRACE
-        if (vcd && cycle >= o.trace_from && cycle < o.trace_from + o.trace_cycles) {
-            if (!vcd->isOpen()) vcd->open(o.trace.c_str());
-            vcd->dump(2 * cycle);
-        }
+        dump(2 * ticks + 1);
 #endif
         m->clk_i = 0; m->eval();
 #if VM_TRACE
-        if (vcd && vcd->isOpen()) {
-            vcd->dump(2 * cycle + 1);
-            if (cycle + 1 >= o.trace_from + o.trace_cycles) vcd->close();  // the window is over
-        }
+        dump(2 * ticks + 2);
 #endif
+        ++ticks;
         ++cycle;
         // next clock's fault kind
         m->fi_kind_i = (fault_threshold && next() < fault_threshold) ? 1 + next() % 3u : 0;
@@ -313,9 +327,13 @@ int main(int argc, char **argv)
     m->stall_i = 0;
     m->fi_kind_i = 0;
     m->fi_dead_i = 0;
-    m->eval();
+    m->eval();  // every clock low before the first edge
+#if VM_TRACE
+    dump(0);
+#endif
     for (int i = 0; i < 8; ++i) tick();
     m->rst_i = 0;
+    in_reset = false;
     cycle = 0; busy = 0; faults = 0; requests = 0;
 
     const uint32_t all = (1u << NB) - 1u;
