@@ -228,8 +228,13 @@ void ProtocolChecker::import_end(int rc, const uint8_t *value, uint64_t now)
     // what was published when it began or than the last value read), newest
     // first; only if none matches, search every recent export to tell an old,
     // an unpublished and a torn value apart.
+    // The search reaches at most kOlderSearched exports below what was
+    // published when the Import began: with a driver that never returns a
+    // whole value, last_seq_ stays put and an unbounded search would cost
+    // every Import a pass over all exports so far (a run that seems to hang).
     uint64_t lo_seq = std::min(pub_at_start_, has_last_ ? last_seq_ : pub_at_start_);
     lo_seq = lo_seq > 8 ? lo_seq - 8 : 0;
+    lo_seq = std::max(lo_seq, pub_at_start_ > kOlderSearched ? pub_at_start_ - kOlderSearched : 0);
     uint64_t floor_seq = std::max(pub_at_start_, has_last_ ? last_seq_ : 0);
     bool found = false;
     uint64_t seq = 0;

@@ -97,6 +97,7 @@ private:
     uint64_t last_seq_ = 0;
     void note_overhead(int kind, uint64_t accesses);
     std::vector<uint8_t> expect_;
+    static const uint64_t kOlderSearched = 64;   // see import_end
     static const int kHistory = 48;
     Access history_[kHistory];
     uint64_t history_n_ = 0;

@@ -100,6 +100,7 @@ void RamBus::issue(int port)
     if (busy_[port] || !cpu[port].has_request) return;
     drive(port, &cpu[port].request);
     busy_[port] = true;
+    late_[port] = false;
     issue_cycle_[port] = cycle_;
 }
 
@@ -115,7 +116,19 @@ void RamBus::load(uint32_t addr, const uint8_t *bytes, uint32_t n)
         }
         BusRequest r{a & ~3u, word, sel, true};
         drive(0, &r);
-        while (!(tick() & 1u)) {}
+        // Bounded: a RAM that never acknowledges fails the access-time check.
+        uint64_t from = cycle_;
+        while (!(tick() & 1u)) {
+            if (cycle_ - from > 64) {
+                if (latency_violations++ == 0) {
+                    char msg[160];
+                    std::snprintf(msg, sizeof msg, "access time: loading the RAM image, port A had no acknowledge "
+                                  "for address 0x%x after 64 cycles, expected one within %d", a & ~3u, kMaxLatency);
+                    first_latency_violation = msg;
+                }
+                break;
+            }
+        }
         drive(0, nullptr);
     }
 }
@@ -133,12 +146,27 @@ unsigned RamBus::tick()
     bool ack[2] = {dut_->a_ack_o != 0, dut_->b_ack_o != 0};
     uint32_t dat[2] = {dut_->a_dat_o, dut_->b_dat_o};
     for (int p = 0; p < 2; ++p) {
-        if (!ack[p]) continue;
+        if (!ack[p]) {
+            // Not yet acknowledged: a violation as soon as it is late (a RAM
+            // that never answers is caught without waiting for an ack).
+            if (busy_[p] && !late_[p] && cycle_ - issue_cycle_[p] > kMaxLatency) {
+                late_[p] = true;
+                if (latency_violations++ == 0) {
+                    char msg[160];
+                    std::snprintf(msg, sizeof msg, "access time: port %c issued at cycle %llu had no acknowledge "
+                                  "after %llu cycles, expected one within %d", 'A' + p,
+                                  static_cast<unsigned long long>(issue_cycle_[p]),
+                                  static_cast<unsigned long long>(cycle_ - issue_cycle_[p]), kMaxLatency);
+                    first_latency_violation = msg;
+                }
+            }
+            continue;
+        }
         mask |= 1u << p;
         if (busy_[p]) {
             uint64_t latency = cycle_ - issue_cycle_[p];
             if (latency > worst_latency) worst_latency = latency;
-            if (latency > kMaxLatency && latency_violations++ == 0) {
+            if (latency > kMaxLatency && !late_[p] && latency_violations++ == 0) {
                 char msg[120];
                 std::snprintf(msg, sizeof msg, "access time: port %c acknowledged after %llu cycles, expected at most %d",
                               'A' + p, static_cast<unsigned long long>(latency), kMaxLatency);

@@ -69,5 +69,6 @@ private:
     std::unique_ptr<Tracer> tracer_;
     uint64_t cycle_ = 0, reset_cycle_ = 0;
     bool busy_[2] = {false, false};
+    bool late_[2] = {false, false};     // the request under way already counted as late
     uint64_t issue_cycle_[2] = {0, 0};
 };

@@ -1,14 +1,68 @@
 // sim_cpu.cpp -- coroutine hand-off between the driver's port layer and the
 // clock loop.
 #include "sim_cpu.h"
+#include <atomic>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
+#include <sys/time.h>
+#include <unistd.h>
 #include "port/alb_port_impl.h"
 
-static SimCpu *g_current = nullptr;
+static SimCpu *volatile g_current = nullptr;
+// Hand-off watchdog state: resumes begun so far, as the timer last saw them.
+static std::atomic<unsigned> g_handoffs{0};
+static unsigned g_handoff_limit = 0, g_handoff_seen = 0, g_handoff_stuck = 0;
+
+static void on_handoff_alarm(int)
+{
+    SimCpu *c = g_current;
+    const unsigned n = g_handoffs.load(std::memory_order_relaxed);
+    if (c == nullptr || n != g_handoff_seen) {
+        g_handoff_seen = n;
+        g_handoff_stuck = 0;
+        return;
+    }
+    if (++g_handoff_stuck < g_handoff_limit) return;
+    // Async-signal-safe: no stdio, only write and _exit.
+    char msg[300] = "tb: watchdog: simulated CPU ";
+    size_t len = std::strlen(msg);
+    auto put_uint = [&](unsigned v) {
+        char d[12];
+        int k = 0;
+        do { d[k++] = static_cast<char>('0' + v % 10); v /= 10; } while (v && k < 11);
+        while (k) msg[len++] = d[--k];
+    };
+    auto put = [&](const char *t) { while (*t && len < sizeof msg - 1) msg[len++] = *t++; };
+    put_uint(static_cast<unsigned>(c->id));
+    put(" has not handed control back to the clock loop for ");
+    put_uint(g_handoff_stuck);
+    put(" s of wall time: its C code loops without a RAM access (expected a hand-off at every access)\n");
+    ssize_t w = write(2, msg, len);
+    (void)w;
+    _exit(3);
+}
+
+void SimCpu::arm_handoff_watchdog(unsigned seconds)
+{
+    g_handoff_limit = seconds ? seconds : 1;
+    struct sigaction sa;
+    std::memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_handoff_alarm;
+    sa.sa_flags = SA_RESTART;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGALRM, &sa, nullptr);
+    struct itimerval t;
+    t.it_interval.tv_sec = 1;
+    t.it_interval.tv_usec = 0;
+    t.it_value = t.it_interval;
+    setitimer(ITIMER_REAL, &t, nullptr);
+}
 
 void SimCpu::resume()
 {
     if (faulted) return;
+    g_handoffs.store(g_handoffs.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
     SimCpu *outer = g_current;
     g_current = this;
     coro_.resume();
