@@ -13,6 +13,13 @@ TB_HDR      := $(wildcard tb/common/*.h) tb/common/port/alb_port_impl.h c-driver
 MUTANTS     := $(patsubst tb/mutants/driver/%.sed,%,$(wildcard tb/mutants/driver/*.sed))
 TB_IMPORTS  ?= 1000000
 SOAK_IMPORTS ?= 100000000
+# Wall-clock limits (seconds) around each test's command, a second line of
+# defence behind tb_dpram's watchdogs in simulated cycles (tb/dpram/bounded.sh):
+# the positive tests take about 20 s (exhaustive), 5 s and 1 s; each negative
+# one well under 10 s.
+TB_TIMEOUT     ?= 900
+TB_NEG_TIMEOUT ?= 120
+TB_BOUNDED      = tb/dpram/bounded.sh
 
 # Verilated RAM models: $(TB_DIR)/model-<module>/Vdut__ALL.a, and the
 # Verilator run-time library once.
@@ -41,12 +48,17 @@ $(TB_DIR)/verilated.o:
 	        -c $(VERILATOR_ROOT_DIR)/include/$$f.cpp -o $$f.o || exit 1; done
 	ld -r $(@D)/vlrt/verilated.o $(@D)/vlrt/verilated_threads.o -o $@
 
-# Driver sources: the real one, and each mutant made from it by sed.
+# Driver sources: the real one, and each mutant made from it by sed.  A
+# mutant changes (or removes) exactly one line of the driver: one that does
+# not apply, or applies to several lines, fails the build loudly.
 $(TB_DIR)/mutants/%.c: tb/mutants/driver/%.sed c-driver/albatross.c
 	@mkdir -p $(@D)
 	sed -f $< c-driver/albatross.c > $@
 	@if cmp -s $@ c-driver/albatross.c; then \
 	    echo "mutant $* did not apply: c-driver/albatross.c no longer has the line tb/mutants/driver/$*.sed edits"; \
+	    rm -f $@; exit 1; fi
+	@n=$$(diff c-driver/albatross.c $@ | grep -c '^<'); if [ "$$n" -ne 1 ]; then \
+	    echo "mutant $* changed $$n lines of c-driver/albatross.c, expected exactly 1 (tb/mutants/driver/$*.sed must match one line)"; \
 	    rm -f $@; exit 1; fi
 
 # tb_dpram linked against <model> and <driver source>.
@@ -75,16 +87,20 @@ $(TB_DIR)/albatross-trace/tb_dpram: $(TB_SRC) $(TB_HDR) $(TB_DIR)/model-albatros
 TESTS += tb-exhaustive tb-random tb-crash
 
 test-tb-exhaustive: $(TB)
-	@tools/run_test.sh tb-exhaustive $(TB) exhaustive --report $(REPORTS)/tb_exhaustive.json
+	@tools/run_test.sh tb-exhaustive $(TB_BOUNDED) $(TB_TIMEOUT) $(TB) exhaustive --report $(REPORTS)/tb_exhaustive.json
 test-tb-random: $(TB)
-	@tools/run_test.sh tb-random $(TB) random --imports $(TB_IMPORTS) --seed $(SEED) \
+	@tools/run_test.sh tb-random $(TB_BOUNDED) $(TB_TIMEOUT) $(TB) random --imports $(TB_IMPORTS) --seed $(SEED) \
 	    --report $(REPORTS)/tb_random.json
 test-tb-crash: $(TB)
-	@tools/run_test.sh tb-crash $(TB) crash --seed $(SEED) --report $(REPORTS)/tb_crash.json
+	@tools/run_test.sh tb-crash $(TB_BOUNDED) $(TB_TIMEOUT) $(TB) crash --seed $(SEED) --report $(REPORTS)/tb_crash.json
 
 # Negative tests: each passes only if the named checker catches the broken
-# variant (NAME VARIANT MODE CHECKER [extra options]).  Together they cover
-# every checker of the harness.
+# variant (NAME VARIANT MODE CHECKER [extra options]) before the mode's
+# watchdogs stop it, and within TB_NEG_TIMEOUT seconds.  Together they cover
+# every checker of the harness.  short_export (an Export that writes one
+# payload word too few) once made crash mode search for ever for a crash
+# point its calls never reach: it must now fail at once, by termination.
+# import_never_returns (an Import that loops for ever) checks the watchdogs themselves.
 NEGATIVE := \
   no-arbitration:no-arbitration:exhaustive:byte_atomicity \
   no-arbitration-protocol:no-arbitration:exhaustive:driver_error:--ignore,byte_atomicity \
@@ -94,11 +110,15 @@ NEGATIVE := \
   fresh_readlocked:fresh_readlocked:random:termination \
   fresh_readlocked-semantic:fresh_readlocked:random:in_channel:--ignore,termination \
   never_new:never_new:random:actuality \
-  reader_writes_actual:reader_writes_actual:random:ownership
+  reader_writes_actual:reader_writes_actual:random:ownership \
+  short_export-crash:short_export:crash:termination \
+  import_never_returns:import_never_returns:random:watchdog \
+  import_never_returns-exhaustive:import_never_returns:exhaustive:watchdog \
+  import_never_returns-crash:import_never_returns:crash:watchdog
 define negative_test
 TESTS += tb-negative-$(call neg_field,$(1),1)
 test-tb-negative-$(call neg_field,$(1),1): $(TB_DIR)/$(call neg_field,$(1),2)/tb_dpram
-	@tools/run_test.sh tb-negative-$(call neg_field,$(1),1) $$< $(call neg_field,$(1),3) \
+	@tools/run_test.sh tb-negative-$(call neg_field,$(1),1) $(TB_BOUNDED) $(TB_NEG_TIMEOUT) $$< $(call neg_field,$(1),3) \
 	    --imports 2000000 --seed $(SEED) --variant $(call neg_field,$(1),1) \
 	    --expect-caught-by $(call neg_field,$(1),4) $(subst $(comma), ,$(call neg_field,$(1),5)) \
 	    --report $(REPORTS)/tb_negative_$(call neg_field,$(1),1).json

@@ -3,7 +3,7 @@
 // proof points checked on every Import (protocol_checker.h) and byte
 // atomicity and access time checked on every RAM access (ram_bus.h).
 //
-//   tb_dpram exhaustive [--payload N] [--expect-violation]
+//   tb_dpram exhaustive [--payload N] [--max-schedules N] [--expect-violation]
 //       every interleaving of 2 Exports against 2 Imports, same-cycle
 //       collisions on one byte in both slot orders, from 6 start states
 //   tb_dpram random [--imports N] [--seed S] [--expect-violation]
@@ -13,6 +13,14 @@
 //       one side frozen or reset at every access point of Import and Export
 //   tb_dpram bench [--imports N]
 //       simulated-CPU access rate and cycles per second of wall time
+//
+// Every mode ends on its own: watchdogs in simulated cycles and RAM accesses
+// bound each Import and Export, each run (a channel's segment, a schedule, a
+// crash run) and each search (schedules, the crash point), and a wall-clock
+// hand-off watchdog (sim_cpu.h) catches C code that loops without touching
+// the RAM.  A watchdog that fires is the checker "watchdog", and its message
+// names the call or run, what it had done and what was expected; a failing
+// run ends with one line "FAIL: ..." naming the first fault.
 //
 // --trace FILE.vcd writes a wave of the first --trace-cycles cycles (binary
 // built with Verilator --trace: build/tb/albatross-trace/).
@@ -58,16 +66,47 @@ RamBus *g_bus = nullptr;
 int g_bucket = 0;
 // Checkers whose verdicts a negative test ignores (--ignore), to show that
 // the others catch the fault on their own.  Bits: the ProtocolChecker kinds,
-// then byte_atomicity, access_time, in_channel.
+// then byte_atomicity, access_time, in_channel, watchdog.
 unsigned g_ignored = 0;
-enum { IGN_ATOMICITY = ProtocolChecker::KINDS, IGN_LATENCY, IGN_IN_CHANNEL, IGN_COUNT };
+enum { IGN_ATOMICITY = ProtocolChecker::KINDS, IGN_LATENCY, IGN_IN_CHANNEL, IGN_WATCHDOG, IGN_COUNT };
 const char *ignorable_name(int k)
 {
     if (k < ProtocolChecker::KINDS) return ProtocolChecker::kind_name(k);
-    static const char *n[] = {"byte_atomicity", "access_time", "in_channel"};
+    static const char *n[] = {"byte_atomicity", "access_time", "in_channel", "watchdog"};
     return n[k - ProtocolChecker::KINDS];
 }
 bool ignored(int k) { return (g_ignored >> k) & 1u; }   // current log-ratio bucket, for the termination figures
+
+// Watchdogs, in simulated cycles or steps: every mode ends on its own, with a
+// "watchdog" verdict that says which call or run overran and what was expected.
+// The bounds sit far above anything a correct driver needs (see the figures
+// in the comments) and far below a wall-clock minute.
+struct Limits {
+    // One Import or Export of a side that is not frozen, from its call to its
+    // return.  A correct Export of 64 bytes at the slowest CPU speed (1/100)
+    // with every gap a long stall needs about 18 * 202 * 100 = 0.36 M cycles.
+    uint64_t call_cycles = 4000000;
+    // RAM accesses of one call (a driver loop that never returns).  Correct:
+    // an Export 2 + W; an Import 1 + W, plus 2 per loop pass (a few).
+    uint64_t call_accesses = 20000;
+    // exhaustive: steps of one schedule (correct: under 100) and schedules
+    // from one start state (correct: at most 1.0 M at 12 bytes, growing
+    // about tenfold per payload word: the bound is 5 M at 3 words, times 10
+    // per word beyond; --max-schedules sets it).
+    uint64_t schedule_steps = 4096;
+    uint64_t schedules = 0;
+    // crash: cycles of one crash run (correct: 300 survivor calls after the
+    // crash, under 1 M cycles at 1:100); calls of the victim after the one
+    // planned for the crash before the crash point counts as never reached
+    // (a consumer at 100:1 makes about 200 Imports without new data per
+    // Export, and only one with new data reaches the last access points).
+    uint64_t crash_run_cycles = 8000000;
+    uint64_t crash_search_calls = 20000;
+    // random and bench: cycles of one channel's segment per Import it must
+    // check (correct: under 140 per channel in 1 M Imports).
+    uint64_t segment_cycles_per_import = 2000;
+};
+Limits g_limits;
 
 struct SideCtx {
     Channel chan{};
@@ -76,6 +115,9 @@ struct SideCtx {
     uint64_t limit = ~0ull;          // calls to make
     uint64_t calls = 0;              // calls begun
     uint64_t call_start_acc = 0;     // cpu.accesses when the current call began
+    uint64_t call_start_cycle = 0;   // the bus cycle when it began
+    bool in_call = false;            // inside alb_import/alb_export
+    uint64_t worst_call_cycles = 0;  // the longest call so far (for the watchdog's margin)
     unsigned warmup_calls = 0;
     unsigned align = 0;              // local buffer misalignment 0..3
     int attach_rc = 0;
@@ -97,8 +139,12 @@ void producer_program(SimCpu &cpu)
         make_value(p.next_seq, v, p.chan.size);
         ++p.calls;
         p.call_start_acc = cpu.accesses;
+        p.call_start_cycle = g_bus->cycle();
+        p.in_call = true;
         p.chk->export_begin(p.next_seq);
         p.last_rc = alb_export(&ch, v);
+        p.in_call = false;
+        p.worst_call_cycles = std::max(p.worst_call_cycles, g_bus->cycle() - p.call_start_cycle);
         p.chk->export_end(p.last_rc);
         ++p.next_seq;
     }
@@ -118,8 +164,12 @@ void consumer_program(SimCpu &cpu)
         uint8_t *v = buf + c.align;
         ++c.calls;
         c.call_start_acc = cpu.accesses;
+        c.call_start_cycle = g_bus->cycle();
+        c.in_call = true;
         c.chk->import_begin(g_bus->cycle(), g_bucket);
         c.last_rc = alb_import(&ch, v);
+        c.in_call = false;
+        c.worst_call_cycles = std::max(c.worst_call_cycles, g_bus->cycle() - c.call_start_cycle);
         c.chk->import_end(c.last_rc, v, g_bus->cycle());
     }
 }
@@ -161,6 +211,60 @@ struct Run {
     ~Run() { g_bus->observer = nullptr; }
     SimCpu &producer() { return g_bus->cpu[chan.prod_port]; }
     SimCpu &consumer() { return g_bus->cpu[chan.cons_port]; }
+
+    // The calls under way, for a watchdog's message.
+    std::string calls_under_way() const {
+        std::string r;
+        for (int s = 0; s < 2; ++s) {
+            const SideCtx &x = s == 0 ? prod : cons;
+            const SimCpu &cpu = g_bus->cpu[s == 0 ? chan.prod_port : chan.cons_port];
+            char m[160];
+            if (x.in_call)
+                std::snprintf(m, sizeof m, "the %s's %s number %llu has made %llu accesses without returning",
+                              s == 0 ? "producer" : "consumer", s == 0 ? "Export" : "Import",
+                              static_cast<unsigned long long>(x.calls),
+                              static_cast<unsigned long long>(cpu.accesses - x.call_start_acc));
+            else
+                std::snprintf(m, sizeof m, "the %s has made %llu calls", s == 0 ? "producer" : "consumer",
+                              static_cast<unsigned long long>(x.calls));
+            r += (r.empty() ? "" : "; ") + std::string(m);
+        }
+        return r;
+    }
+
+    // The per-call watchdog: a message naming the first call of a side that
+    // is not frozen (frozen[port]) and has run past its bound, or "".
+    std::string overdue_call(const bool *frozen = nullptr) const {
+        const uint64_t now = g_bus->cycle();
+        for (int s = 0; s < 2; ++s) {
+            const SideCtx &x = s == 0 ? prod : cons;
+            const int port = s == 0 ? chan.prod_port : chan.cons_port;
+            const SimCpu &cpu = g_bus->cpu[port];
+            if (!x.in_call || (frozen && frozen[port]) || cpu.faulted) continue;
+            const uint64_t cyc = now - x.call_start_cycle, acc = cpu.accesses - x.call_start_acc;
+            if (cyc <= g_limits.call_cycles && acc <= g_limits.call_accesses) continue;
+            const unsigned w = (chan.size + 3) / 4;
+            char m[320];
+            if (s == 0)
+                std::snprintf(m, sizeof m, "watchdog: the producer's Export of seq %llu (%u-byte payload), begun at cycle %llu, "
+                              "has not returned after %llu cycles and %llu RAM accesses; expected it to return after "
+                              "exactly 2 + %u = %u accesses, within %llu cycles",
+                              static_cast<unsigned long long>(x.next_seq), chan.size,
+                              static_cast<unsigned long long>(x.call_start_cycle), static_cast<unsigned long long>(cyc),
+                              static_cast<unsigned long long>(acc), w, 2 + w,
+                              static_cast<unsigned long long>(g_limits.call_cycles));
+            else
+                std::snprintf(m, sizeof m, "watchdog: the consumer's Import number %llu (%u-byte payload), begun at cycle %llu, "
+                              "has not returned after %llu cycles and %llu RAM accesses; expected at most %llu cycles "
+                              "and %llu accesses (1 + %u, plus 2 per loop pass)",
+                              static_cast<unsigned long long>(x.calls), chan.size,
+                              static_cast<unsigned long long>(x.call_start_cycle), static_cast<unsigned long long>(cyc),
+                              static_cast<unsigned long long>(acc), static_cast<unsigned long long>(g_limits.call_cycles),
+                              static_cast<unsigned long long>(g_limits.call_accesses), w);
+            return m;
+        }
+        return "";
+    }
 };
 
 uint64_t counted_violations(const ProtocolChecker &chk)
@@ -175,8 +279,8 @@ uint64_t counted_violations(const ProtocolChecker &chk)
 struct Verdict {
     uint64_t violations[ProtocolChecker::KINDS] = {};
     std::string first[ProtocolChecker::KINDS];
-    uint64_t atomicity = 0, latency = 0, faults = 0, other = 0;
-    std::string first_atomicity, first_latency, first_fault, first_other, context;
+    uint64_t atomicity = 0, latency = 0, faults = 0, watchdog = 0, other = 0;
+    std::string first_atomicity, first_latency, first_fault, first_watchdog, first_other, context;
 
     void take(const Run &r) {
         if (context.empty() && !r.chk.first_context.empty())
@@ -199,12 +303,32 @@ struct Verdict {
         b.ref.violations = b.latency_violations = 0;
     }
     void add_other(const std::string &m) { if (!other++) first_other = m; }
+    void add_watchdog(const std::string &m) { if (!watchdog++) first_watchdog = m; }
+    // Another verdict's counts and first messages added to this one.
+    void merge(const Verdict &v) {
+        for (int k = 0; k < ProtocolChecker::KINDS; ++k) {
+            if (v.violations[k] && !violations[k]) first[k] = v.first[k];
+            violations[k] += v.violations[k];
+        }
+        if (v.atomicity && !atomicity) first_atomicity = v.first_atomicity;
+        atomicity += v.atomicity;
+        if (v.latency && !latency) first_latency = v.first_latency;
+        latency += v.latency;
+        if (v.faults && !faults) first_fault = v.first_fault;
+        faults += v.faults;
+        if (v.watchdog && !watchdog) first_watchdog = v.first_watchdog;
+        watchdog += v.watchdog;
+        if (v.other && !other) first_other = v.first_other;
+        other += v.other;
+        if (context.empty()) context = v.context;
+    }
     // Violations that count (not --ignore'd).
     uint64_t total() const {
         uint64_t t = other;
         if (!ignored(IGN_ATOMICITY)) t += atomicity;
         if (!ignored(IGN_LATENCY)) t += latency;
         if (!ignored(IGN_IN_CHANNEL)) t += faults;
+        if (!ignored(IGN_WATCHDOG)) t += watchdog;
         for (int k = 0; k < ProtocolChecker::KINDS; ++k)
             if (!ignored(k)) t += violations[k];
         return t;
@@ -212,9 +336,10 @@ struct Verdict {
     void print() const {
         for (int k = 0; k < IGN_COUNT; ++k) {
             uint64_t n = k < ProtocolChecker::KINDS ? violations[k] : k == IGN_ATOMICITY ? atomicity
-                       : k == IGN_LATENCY ? latency : faults;
+                       : k == IGN_LATENCY ? latency : k == IGN_IN_CHANNEL ? faults : watchdog;
             const std::string &m = k < ProtocolChecker::KINDS ? first[k] : k == IGN_ATOMICITY ? first_atomicity
-                                 : k == IGN_LATENCY ? first_latency : first_fault;
+                                 : k == IGN_LATENCY ? first_latency : k == IGN_IN_CHANNEL ? first_fault
+                                 : first_watchdog;
             std::printf("  %-18s %llu violations%s%s%s\n", ignorable_name(k), static_cast<unsigned long long>(n),
                         ignored(k) ? " (ignored)" : "", n ? ": " : "", n ? m.c_str() : "");
         }
@@ -229,9 +354,11 @@ struct Verdict {
                           static_cast<unsigned long long>(violations[k]));
             s += b;
         }
-        std::snprintf(b, sizeof b, "\"byte_atomicity\": %llu, \"access_time\": %llu, \"in_channel\": %llu, \"harness\": %llu}",
+        std::snprintf(b, sizeof b, "\"byte_atomicity\": %llu, \"access_time\": %llu, \"in_channel\": %llu, "
+                      "\"watchdog\": %llu, \"harness\": %llu}",
                       static_cast<unsigned long long>(atomicity), static_cast<unsigned long long>(latency),
-                      static_cast<unsigned long long>(faults), static_cast<unsigned long long>(other));
+                      static_cast<unsigned long long>(faults), static_cast<unsigned long long>(watchdog),
+                      static_cast<unsigned long long>(other));
         return s + b;
     }
     // Names of the checkers that fired.
@@ -242,24 +369,48 @@ struct Verdict {
         if (atomicity && !ignored(IGN_ATOMICITY)) s += std::string(s.empty() ? "" : ", ") + "byte_atomicity";
         if (latency && !ignored(IGN_LATENCY)) s += std::string(s.empty() ? "" : ", ") + "access_time";
         if (faults && !ignored(IGN_IN_CHANNEL)) s += std::string(s.empty() ? "" : ", ") + "in_channel";
+        if (watchdog && !ignored(IGN_WATCHDOG)) s += std::string(s.empty() ? "" : ", ") + "watchdog";
         if (other) s += std::string(s.empty() ? "" : ", ") + "harness";
         return s;
     }
 };
 
 // Tick until every port in `need` has completed; false if the RAM stops
-// answering (then the access-time checker has already fired).
-bool run_until(unsigned need)
+// answering within 64 cycles (then the access-time checker has already fired),
+// with `why` saying which port.
+bool run_until(unsigned need, std::string &why)
 {
     unsigned got = 0;
     for (int guard = 0; (got & need) != need; ++guard) {
-        if (guard > 64) return false;
+        if (guard > 64) {
+            char m[160];
+            std::snprintf(m, sizeof m, "the RAM stopped acknowledging: port%s%s%s issued at cycle %llu had no "
+                          "acknowledge after 64 cycles, expected one within %d",
+                          (need & ~got & 1u) ? " A" : "", (need & ~got & 2u) ? " B" : "",
+                          (need & ~got) == 3u ? " (both)" : "",
+                          static_cast<unsigned long long>(g_bus->cycle() - 65), RamBus::kMaxLatency);
+            why = m;
+            return false;
+        }
         got |= g_bus->tick();
     }
     return true;
 }
 
 const Options *g_opts = nullptr;
+
+// The first message of the first counted checker that fired, with its name.
+std::string first_message(const Verdict &v)
+{
+    for (int k = 0; k < ProtocolChecker::KINDS; ++k)
+        if (v.violations[k] && !ignored(k)) return std::string(ProtocolChecker::kind_name(k)) + ": " + v.first[k];
+    if (v.atomicity && !ignored(IGN_ATOMICITY)) return "byte_atomicity: " + v.first_atomicity;
+    if (v.latency && !ignored(IGN_LATENCY)) return "access_time: " + v.first_latency;
+    if (v.faults && !ignored(IGN_IN_CHANNEL)) return "in_channel: " + v.first_fault;
+    if (v.watchdog && !ignored(IGN_WATCHDOG)) return v.first_watchdog;
+    if (v.other) return "harness: " + v.first_other;
+    return "";
+}
 
 // A negative test may stop: a counted checker fired, and every expected one.
 bool negative_satisfied(const Verdict &v)
@@ -276,7 +427,12 @@ bool negative_satisfied(const Verdict &v)
 // checker named by --expect-caught-by among them.
 int verdict_status(const Options &o, const Verdict &v, const char *what, uint64_t amount)
 {
-    if (!o.expect_violation) return v.total() ? 1 : 0;
+    if (!o.expect_violation) {
+        if (!v.total()) return 0;
+        std::printf("FAIL: %llu violations in %llu %s; the first: %s\n", static_cast<unsigned long long>(v.total()),
+                    static_cast<unsigned long long>(amount), what, first_message(v).c_str());
+        return 1;
+    }
     std::string fired = ", " + v.caught_by() + ", ";
     bool ok = v.total() != 0;
     std::string missing;
@@ -358,22 +514,37 @@ bool run_schedule(Search &s, std::vector<uint8_t> &path, std::vector<uint8_t> &c
         }
         Choice ch = static_cast<Choice>(opts[pick]);
         bool ok;
+        std::string why;
         if (ch == STEP_A || ch == STEP_B) {
             int p = ch == STEP_A ? 0 : 1;
             bus.issue(p);
-            ok = run_until(1u << p);
+            ok = run_until(1u << p, why);
         } else {
             ++s.collisions;
             int first = ch == BOTH_A_FIRST ? 0 : 1;
             if (bus.next_slot() != first) bus.tick();
             bus.issue(0);
             bus.issue(1);
-            ok = run_until(3u);
+            ok = run_until(3u, why);
         }
         ++depth;
         ++s.steps;
         if (!ok) {
-            s.verdict.add_other("the RAM stopped acknowledging");
+            s.verdict.add_other(why);
+            break;
+        }
+        std::string late = run.overdue_call();
+        if (!late.empty()) {
+            s.verdict.add_watchdog(late);
+            break;
+        }
+        if (depth > g_limits.schedule_steps) {
+            char m[400];
+            std::snprintf(m, sizeof m, "watchdog: a schedule of %u Exports and %u Imports (%u-byte payload) ran past "
+                          "%llu RAM accesses, expected under 100: %s",
+                          s.warm_exports + 2, s.warm_imports + 2, s.payload,
+                          static_cast<unsigned long long>(g_limits.schedule_steps), run.calls_under_way().c_str());
+            s.verdict.add_watchdog(m);
             break;
         }
     }
@@ -393,6 +564,10 @@ int mode_exhaustive(const Options &o)
     if (o.payload < 3 || o.payload > kMaxPayload) {
         std::fprintf(stderr, "exhaustive: --payload must be 3..%u bytes, got %u\n", kMaxPayload, o.payload);
         return 2;
+    }
+    if (!g_limits.schedules) {
+        g_limits.schedules = 5000000;
+        for (unsigned w = 3; w < (o.payload + 3) / 4 && g_limits.schedules < (1ull << 60); ++w) g_limits.schedules *= 10;
     }
     std::printf("exhaustive: 2 Exports against 2 Imports of %u bytes (%u word accesses each), "
                 "every interleaving, same-cycle collisions in both orders\n",
@@ -416,6 +591,20 @@ int mode_exhaustive(const Options &o)
                     break;
                 }
                 if (o.expect_violation && negative_satisfied(s.verdict)) { stop = true; break; }
+                // A schedule that hit a watchdog would be replayed and extended
+                // in every sibling: stop at the first one.
+                if (s.verdict.watchdog) { stop = true; break; }
+                if (s.schedules >= g_limits.schedules) {
+                    char m[200];
+                    std::snprintf(m, sizeof m, "watchdog: the start state with %u warm-up Exports and %u warm-up Imports explored %llu schedules "
+                                  "without finishing, "
+                                  "expected at most %llu (--max-schedules to change)", we, wi,
+                                  static_cast<unsigned long long>(s.schedules),
+                                  static_cast<unsigned long long>(g_limits.schedules));
+                    s.verdict.add_watchdog(m);
+                    stop = true;
+                    break;
+                }
                 int d = static_cast<int>(path.size()) - 1;
                 while (d >= 0 && path[d] + 1 >= counts[d]) --d;
                 if (d < 0) break;
@@ -439,18 +628,7 @@ int mode_exhaustive(const Options &o)
             collisions += s.collisions;
             imports += s.imports;
             imports_new += s.imports_new;
-            for (int k = 0; k < ProtocolChecker::KINDS; ++k) {
-                if (s.verdict.violations[k] && !all.violations[k]) all.first[k] = s.verdict.first[k];
-                all.violations[k] += s.verdict.violations[k];
-            }
-            if (s.verdict.atomicity && !all.atomicity) all.first_atomicity = s.verdict.first_atomicity;
-            all.atomicity += s.verdict.atomicity;
-            if (s.verdict.latency && !all.latency) all.first_latency = s.verdict.first_latency;
-            all.latency += s.verdict.latency;
-            if (s.verdict.faults && !all.faults) all.first_fault = s.verdict.first_fault;
-            all.faults += s.verdict.faults;
-            if (s.verdict.other && !all.other) all.first_other = s.verdict.first_other;
-            all.other += s.verdict.other;
+            all.merge(s.verdict);
         }
     }
     std::printf("exhaustive: %llu schedules explored, %llu same-cycle same-byte collisions, "
@@ -520,6 +698,7 @@ struct Driver {
     uint64_t wait[2] = {0, 0};
     bool frozen[2] = {false, false};
     bool ram_dead = false;
+    std::string dead_why;
     explicit Driver(Timing &t) : tm(t) {}
     void cycle() {
         RamBus &bus = *g_bus;
@@ -534,7 +713,14 @@ struct Driver {
         unsigned done = bus.tick();
         for (int p = 0; p < 2; ++p) {
             if (done & (1u << p)) wait[p] = tm.gap(p);
-            if (bus.busy(p) && bus.cycle() - bus.issue_cycle(p) > 64) ram_dead = frozen[p] = true;
+            if (bus.busy(p) && bus.cycle() - bus.issue_cycle(p) > 64 && !ram_dead) {
+                ram_dead = frozen[p] = true;
+                char m[160];
+                std::snprintf(m, sizeof m, "the RAM stopped acknowledging: port %c issued at cycle %llu had no "
+                              "acknowledge after 64 cycles, expected one within %d", 'A' + p,
+                              static_cast<unsigned long long>(bus.issue_cycle(p)), RamBus::kMaxLatency);
+                dead_why = m;
+            }
         }
     }
 };
@@ -553,6 +739,7 @@ Channel random_channel(std::mt19937_64 &rng)
 struct RandomStats {
     uint64_t imports = 0, imports_new = 0, exports = 0, cycles = 0, accesses = 0, segments = 0;
     uint64_t worst_iter = 0, worst_acc = 0;
+    uint64_t worst_export_cycles = 0, worst_import_cycles = 0, worst_segment_cycles_per_import = 0;
     uint64_t b_imports[ProtocolChecker::kBuckets] = {}, b_worst_iter[ProtocolChecker::kBuckets] = {};
     uint64_t b_worst_acc[ProtocolChecker::kBuckets] = {}, b_iter_sum[ProtocolChecker::kBuckets] = {};
     uint64_t ov_min[3] = {~0ull, ~0ull, ~0ull}, ov_max[3] = {};
@@ -572,11 +759,38 @@ void run_random(uint64_t target, uint64_t seed, RandomStats &st, bool stop_on_vi
         Driver drv(tm);
         uint64_t seg = std::min<uint64_t>(target - st.imports, 5000 + rng() % 20000);
         uint64_t c0 = g_bus->cycle(), a0 = g_bus->accesses;
+        const uint64_t budget = seg * g_limits.segment_cycles_per_import;
+        char m[320];
         while (run.chk.imports < seg) {
             tm.drift(g_bus->cycle(), c.prod_port);
             drv.cycle();
             if (run.producer().faulted || run.consumer().faulted || drv.ram_dead) break;
             if (stop_on_violation && counted_violations(run.chk)) break;
+            if (run.producer().finished() || run.consumer().finished()) {
+                // Both programs call for ever: one that returned failed to attach.
+                std::snprintf(m, sizeof m, "the %s program returned after %llu calls (attach result %d), expected it "
+                              "to keep calling", run.producer().finished() ? "producer" : "consumer",
+                              static_cast<unsigned long long>(run.producer().finished() ? run.prod.calls : run.cons.calls),
+                              run.producer().finished() ? run.prod.attach_rc : run.cons.attach_rc);
+                st.verdict.add_other(m);
+                break;
+            }
+            if ((g_bus->cycle() & 1023u) == 0) {
+                std::string late = run.overdue_call();
+                if (late.empty() && g_bus->cycle() - c0 > budget) {
+                    std::snprintf(m, sizeof m, "watchdog: a channel of %u bytes checked only %llu of %llu Imports in "
+                                  "%llu cycles, expected them within %llu cycles (%llu per Import)",
+                                  c.size, static_cast<unsigned long long>(run.chk.imports),
+                                  static_cast<unsigned long long>(seg), static_cast<unsigned long long>(g_bus->cycle() - c0),
+                                  static_cast<unsigned long long>(budget),
+                                  static_cast<unsigned long long>(g_limits.segment_cycles_per_import));
+                    late = m;
+                }
+                if (!late.empty()) {
+                    st.verdict.add_watchdog(late);
+                    break;
+                }
+            }
         }
         ++st.segments;
         st.imports += run.chk.imports;
@@ -585,6 +799,11 @@ void run_random(uint64_t target, uint64_t seed, RandomStats &st, bool stop_on_vi
         st.cycles += g_bus->cycle() - c0;
         st.accesses += g_bus->accesses - a0;
         st.worst_iter = std::max(st.worst_iter, run.chk.worst_import_iterations);
+        st.worst_export_cycles = std::max(st.worst_export_cycles, run.prod.worst_call_cycles);
+        st.worst_import_cycles = std::max(st.worst_import_cycles, run.cons.worst_call_cycles);
+        if (run.chk.imports)
+            st.worst_segment_cycles_per_import = std::max(st.worst_segment_cycles_per_import,
+                                                          (g_bus->cycle() - c0) / run.chk.imports);
         st.worst_acc = std::max(st.worst_acc, run.chk.worst_import_accesses);
         for (int k = 0; k < ProtocolChecker::kBuckets; ++k) {
             st.b_imports[k] += run.chk.bucket_imports[k];
@@ -597,14 +816,19 @@ void run_random(uint64_t target, uint64_t seed, RandomStats &st, bool stop_on_vi
             st.ov_min[k] = std::min(st.ov_min[k], run.chk.overhead_min[k]);
             st.ov_max[k] = std::max(st.ov_max[k], run.chk.overhead_max[k]);
         }
-        if (drv.ram_dead) st.verdict.add_other("the RAM stopped acknowledging");
+        if (drv.ram_dead) st.verdict.add_other(drv.dead_why);
         if (run.prod.attach_rc != ALB_OK || run.cons.attach_rc != ALB_OK)
             st.verdict.add_other("attach failed on a valid RAM image");
         st.verdict.take(run);
         st.verdict.take_bus();
         if (stop_on_violation && negative_satisfied(st.verdict)) return;
+        // A watchdog or a harness failure means the run cannot go on meaningfully.
+        if (st.verdict.watchdog || st.verdict.other) return;
         if (run.chk.imports == 0 && !st.verdict.total()) {
-            st.verdict.add_other("a segment made no progress");
+            std::snprintf(m, sizeof m, "a channel of %u bytes checked no Import in %llu cycles, expected %llu",
+                          c.size, static_cast<unsigned long long>(g_bus->cycle() - c0),
+                          static_cast<unsigned long long>(seg));
+            st.verdict.add_other(m);
             return;
         }
         if (progress && st.imports >= next_report) {
@@ -680,6 +904,12 @@ int mode_random(const Options &o)
         if (st.ov_min[k] != want[k] || st.ov_max[k] != want[k]) overhead_ok = false;
     }
     print_buckets(st);
+    std::printf("  longest calls: Export %llu cycles, Import %llu cycles (watchdog %llu); "
+                "worst channel %llu cycles per Import (watchdog %llu)\n",
+                static_cast<unsigned long long>(st.worst_export_cycles), static_cast<unsigned long long>(st.worst_import_cycles),
+                static_cast<unsigned long long>(g_limits.call_cycles),
+                static_cast<unsigned long long>(st.worst_segment_cycles_per_import),
+                static_cast<unsigned long long>(g_limits.segment_cycles_per_import));
     if (!o.report.empty()) {
         JsonReport rep;
         char ov[160];
@@ -691,15 +921,17 @@ int mode_random(const Options &o)
             .num("cycles", st.cycles).num("accesses", st.accesses).num("violations_total", st.verdict.total())
             .raw("violations", st.verdict.json()).str("caught_by", st.verdict.caught_by())
             .raw("accesses_beyond_payload", ov).num("worst_import_iterations", st.worst_iter)
-            .raw("termination_by_speed_ratio", bucket_json(st)).num("seconds", sec);
+            .raw("termination_by_speed_ratio", bucket_json(st)).num("worst_export_cycles", st.worst_export_cycles)
+            .num("worst_import_cycles", st.worst_import_cycles)
+            .num("worst_channel_cycles_per_import", st.worst_segment_cycles_per_import).num("seconds", sec);
         rep.write(o.report);
     }
-    if (o.expect_violation) return verdict_status(o, st.verdict, "Imports", st.imports);
+    if (o.expect_violation || st.verdict.total()) return verdict_status(o, st.verdict, "Imports", st.imports);
     if (!overhead_ok) {
         std::printf("FAIL: accesses beyond the payload differ from the expected 1, 3, 2\n");
         return 1;
     }
-    return st.verdict.total() ? 1 : 0;
+    return 0;
 }
 
 // -------------------------------------------------------------------- crash
@@ -709,7 +941,8 @@ int mode_random(const Options &o)
 // the RAM).  The survivor keeps calling; every call must finish within its
 // fixed bound and every value stay consistent.
 struct CrashResult {
-    uint64_t runs = 0, not_reached = 0, survivor_calls = 0;
+    uint64_t runs = 0, not_reached = 0, survivor_calls = 0, cycles = 0;
+    std::string first_not_reached;   // the first crash point never reached, in words
     Verdict verdict;
 };
 
@@ -765,9 +998,24 @@ void crash_run(uint32_t size, bool victim_producer, bool reset, unsigned k, uint
     drv.gate = &plan;
     SimCpu &vcpu = g_bus->cpu[plan.vport];
     const uint64_t after = 300;
-    bool restarted = false;
+    bool restarted = false, gave_up = false;
     tm.log_ratio = static_cast<double>(rng() % 5) - 2.0;
-    for (uint64_t guard = 0; guard < 5000000; ++guard) {
+    const char *vname = victim_producer ? "producer" : "consumer", *sname = victim_producer ? "consumer" : "producer";
+    const char *vcall = victim_producer ? "Export" : "Import";
+    const uint64_t c0 = g_bus->cycle();
+    uint64_t victim_most = 0;    // the most accesses the victim made in one call before the crash
+    char m[320];
+    for (;;) {
+        if (g_bus->cycle() - c0 > g_limits.crash_run_cycles) {
+            std::snprintf(m, sizeof m, "watchdog: a crash run (%s %s at access %u of %s, %u-byte payload, seed %llu) "
+                          "went on for %llu cycles: %s; expected it within %llu cycles",
+                          vname, reset ? "reset" : "frozen", k, vcall, size, static_cast<unsigned long long>(seed),
+                          static_cast<unsigned long long>(g_bus->cycle() - c0),
+                          plan.crashed ? "the survivor had not made its calls" : "the crash point was not reached",
+                          static_cast<unsigned long long>(g_limits.crash_run_cycles));
+            cr.verdict.add_watchdog(m);
+            break;
+        }
         tm.drift(g_bus->cycle(), c.prod_port);
         // A frozen consumer's ReadLocked must be honoured by every Export that
         // begins after the freeze (the one under way may still be writing the
@@ -781,24 +1029,54 @@ void crash_run(uint32_t size, bool victim_producer, bool reset, unsigned k, uint
         if (plan.crashed && reset && !restarted && g_bus->cycle() >= plan.crash_cycle + 1 + (seed % 400)) {
             restarted = true;
             drv.frozen[plan.vport] = false;
+            plan.victim.in_call = false;   // the call under way is abandoned
             vcpu.start(victim_producer ? producer_program : consumer_program);
             if (victim_producer) run.chk.set_import_iteration_limit(-1);
         }
+        if (!plan.crashed && plan.victim.in_call)
+            victim_most = std::max(victim_most, vcpu.accesses - plan.victim.call_start_acc);
         drv.cycle();
         if (vcpu.faulted || g_bus->cpu[1 - plan.vport].faulted || drv.ram_dead) break;
         if (plan.crashed && plan.surv.calls >= plan.surv_calls_at_crash + after) break;
+        // A protocol violation already names the fault: no need to go on.
+        if (counted_violations(run.chk)) break;
+        std::string late = run.overdue_call(drv.frozen);
+        if (!late.empty()) {
+            cr.verdict.add_watchdog(late);
+            break;
+        }
+        // The crash point is searched for in the planned call and the next
+        // ones (an Import with new data is longer than one without); give up
+        // after a bounded number of calls.
+        if (!plan.crashed && plan.victim.calls > plan.crash_call + g_limits.crash_search_calls) {
+            gave_up = true;
+            break;
+        }
+        if (vcpu.finished() || g_bus->cpu[1 - plan.vport].finished()) {
+            std::snprintf(m, sizeof m, "the %s program returned (attach result %d), expected it to keep calling",
+                          vcpu.finished() ? vname : sname, vcpu.finished() ? plan.victim.attach_rc : plan.surv.attach_rc);
+            cr.verdict.add_other(m);
+            break;
+        }
     }
+    if (drv.ram_dead) cr.verdict.add_other(drv.dead_why);
+    cr.cycles += g_bus->cycle() - c0;
     ++cr.runs;
-    char m[200];
     if (!plan.crashed) {
         ++cr.not_reached;
-    } else {
+        if (gave_up && cr.first_not_reached.empty()) {
+            std::snprintf(m, sizeof m, "the %s never reached access %u of an %s in %llu calls (%u-byte payload; "
+                          "its longest call made %llu accesses, expected %u + %u)",
+                          vname, k, vcall, static_cast<unsigned long long>(g_limits.crash_search_calls), size,
+                          static_cast<unsigned long long>(victim_most), victim_producer ? 2u : 3u, (size + 3) / 4);
+            cr.first_not_reached = m;
+        }
+    } else if (!cr.verdict.watchdog && !counted_violations(run.chk)) {
         uint64_t made = plan.surv.calls - plan.surv_calls_at_crash;
         cr.survivor_calls += made;
         if (made < after) {
             std::snprintf(m, sizeof m, "after the %s crashed at access %u the %s made only %llu calls, expected %llu",
-                          victim_producer ? "producer" : "consumer", k, victim_producer ? "consumer" : "producer",
-                          static_cast<unsigned long long>(made), static_cast<unsigned long long>(after));
+                          vname, k, sname, static_cast<unsigned long long>(made), static_cast<unsigned long long>(after));
             cr.verdict.add_other(m);
         }
         if (victim_producer && !reset && run.chk.last_seq() != run.chk.newest_published_seq()) {
@@ -819,10 +1097,16 @@ void crash_run(uint32_t size, bool victim_producer, bool reset, unsigned k, uint
     cr.verdict.take_bus();
 }
 
+// The crash runs, one per (payload, victim, frozen/reset, access point, seed);
+// the enumeration stops at the first run that fails (or, for a negative test,
+// once the expected checkers have fired): every run is bounded by its
+// watchdogs, so the whole mode is too.
+
 int mode_crash(const Options &o)
 {
     CrashResult cr;
     const uint32_t sizes[2] = {12, 33};
+    bool stop = false;
     std::printf("crash: each side frozen or reset at every access point of its call, payloads 12 and 33 bytes\n");
     for (uint32_t size : sizes) {
         unsigned words = (size + 3) / 4;
@@ -830,33 +1114,48 @@ int mode_crash(const Options &o)
             unsigned points = vp ? 2 + words : 3 + words;   // Export: 2 + W; Import (new data): 3 + W
             for (int rs = 0; rs <= 1; ++rs) {
                 uint64_t before = cr.runs - cr.not_reached;
-                for (unsigned k = 0; k < points; ++k)
-                    for (uint64_t s = 0; s < 8; ++s)
+                for (unsigned k = 0; k < points && !stop; ++k)
+                    for (uint64_t s = 0; s < 8 && !stop; ++s) {
                         crash_run(size, vp != 0, rs != 0, k, o.seed * 1000 + k * 10 + s, cr);
+                        stop = o.expect_violation ? negative_satisfied(cr.verdict) : cr.verdict.total() != 0;
+                        if (stop)
+                            std::printf("  stopped at the first failing run: %s %s at access %u of %s, %u-byte payload, "
+                                        "seed %llu\n", vp ? "producer" : "consumer", rs ? "reset" : "frozen", k,
+                                        vp ? "Export" : "Import", size,
+                                        static_cast<unsigned long long>(o.seed * 1000 + k * 10 + s));
+                    }
                 std::printf("  %-8s %-6s at %2u access points of %s: %llu runs crashed as planned\n",
                             vp ? "producer" : "consumer", rs ? "reset" : "frozen", points,
                             vp ? "Export" : "Import", static_cast<unsigned long long>(cr.runs - cr.not_reached - before));
                 std::fflush(stdout);
+                if (stop) break;
             }
+            if (stop) break;
         }
+        if (stop) break;
     }
-    std::printf("crash: %llu runs, %llu crash points not reached, %llu survivor calls checked, %llu violations\n",
+    std::printf("crash: %llu runs, %llu crash points not reached, %llu survivor calls checked, %llu cycles, %llu violations\n",
                 static_cast<unsigned long long>(cr.runs), static_cast<unsigned long long>(cr.not_reached),
-                static_cast<unsigned long long>(cr.survivor_calls), static_cast<unsigned long long>(cr.verdict.total()));
+                static_cast<unsigned long long>(cr.survivor_calls), static_cast<unsigned long long>(cr.cycles),
+                static_cast<unsigned long long>(cr.verdict.total()));
     cr.verdict.print();
+    if (!cr.first_not_reached.empty()) std::printf("  first crash point not reached: %s\n", cr.first_not_reached.c_str());
     if (!o.report.empty()) {
         JsonReport rep;
         rep.str("variant", o.variant).num("runs", cr.runs).num("not_reached", cr.not_reached)
-            .num("survivor_calls", cr.survivor_calls).num("violations_total", cr.verdict.total())
-            .raw("violations", cr.verdict.json());
+            .num("survivor_calls", cr.survivor_calls).num("cycles", cr.cycles)
+            .num("violations_total", cr.verdict.total()).raw("violations", cr.verdict.json())
+            .str("caught_by", cr.verdict.caught_by());
         rep.write(o.report);
     }
+    if (o.expect_violation || cr.verdict.total()) return verdict_status(o, cr.verdict, "crash runs", cr.runs);
     if (cr.not_reached * 10 > cr.runs) {
-        std::printf("FAIL: %llu of %llu crash points were never reached, expected under 10%%\n",
-                    static_cast<unsigned long long>(cr.not_reached), static_cast<unsigned long long>(cr.runs));
+        std::printf("FAIL: %llu of %llu crash points were never reached, expected under 10%% (first: %s)\n",
+                    static_cast<unsigned long long>(cr.not_reached), static_cast<unsigned long long>(cr.runs),
+                    cr.first_not_reached.c_str());
         return 1;
     }
-    return cr.verdict.total() ? 1 : 0;
+    return 0;
 }
 
 // -------------------------------------------------------------------- bench
@@ -883,7 +1182,11 @@ int mode_bench(const Options &o)
             .num("with_cpus_over_idle", cyc_rate / idle_rate).num("imports", st.imports);
         rep.write(o.report);
     }
-    return st.verdict.total() ? 1 : 0;
+    if (st.verdict.total()) {
+        st.verdict.print();
+        return verdict_status(o, st.verdict, "Imports", st.imports);
+    }
+    return 0;
 }
 
 int usage()
@@ -891,9 +1194,9 @@ int usage()
     std::fprintf(stderr,
                  "usage: tb_dpram exhaustive|random|crash|bench [--imports N] [--seed S] [--payload N]\n"
                  "                [--expect-violation] [--expect-caught-by CHECKER]... [--ignore CHECKER]... [--report FILE] [--variant NAME]\n"
-                 "                [--trace FILE.vcd [--trace-cycles N]]\n"
+                 "                [--trace FILE.vcd [--trace-cycles N]] [--max-schedules N]\n"
                  "checkers: mutual_exclusion definite_results actuality termination ownership\n"
-                 "          driver_error byte_atomicity access_time in_channel\n");
+                 "          driver_error byte_atomicity access_time in_channel watchdog\n");
     return 2;
 }
 
@@ -924,6 +1227,7 @@ int main(int argc, char **argv)
         else if (a == "--seed") { if (!parse_u64(need("--seed"), v)) { std::fprintf(stderr, "--seed: expected an integer\n"); return 2; } o.seed = v; }
         else if (a == "--payload") { if (!parse_u64(need("--payload"), v)) { std::fprintf(stderr, "--payload: expected an integer\n"); return 2; } o.payload = static_cast<uint32_t>(v); }
         else if (a == "--report") o.report = need("--report");
+        else if (a == "--max-schedules") { if (!parse_u64(need("--max-schedules"), v) || v == 0) { std::fprintf(stderr, "--max-schedules: expected a positive integer\n"); return 2; } g_limits.schedules = v; }
         else if (a == "--trace") o.trace = need("--trace");
         else if (a == "--trace-cycles") { if (!parse_u64(need("--trace-cycles"), v) || v == 0) { std::fprintf(stderr, "--trace-cycles: expected a positive integer\n"); return 2; } o.trace_cycles = v; }
         else if (a == "--variant") o.variant = need("--variant");
@@ -946,6 +1250,7 @@ int main(int argc, char **argv)
         else { std::fprintf(stderr, "unknown option %s\n", a.c_str()); return usage(); }
     }
     g_opts = &o;
+    SimCpu::arm_handoff_watchdog(10);
     RamBus bus;
     g_bus = &bus;
     if (!o.trace.empty()) {
