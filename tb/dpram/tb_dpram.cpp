@@ -63,7 +63,7 @@ struct Channel {
 };
 
 RamBus *g_bus = nullptr;
-int g_bucket = 0;
+int g_bucket = 0;   // current log-ratio bucket, for the termination figures
 // Checkers whose verdicts a negative test ignores (--ignore), to show that
 // the others catch the fault on their own.  Bits: the ProtocolChecker kinds,
 // then byte_atomicity, access_time, in_channel, watchdog.
@@ -75,7 +75,7 @@ const char *ignorable_name(int k)
     static const char *n[] = {"byte_atomicity", "access_time", "in_channel", "watchdog"};
     return n[k - ProtocolChecker::KINDS];
 }
-bool ignored(int k) { return (g_ignored >> k) & 1u; }   // current log-ratio bucket, for the termination figures
+bool ignored(int k) { return (g_ignored >> k) & 1u; }
 
 // Watchdogs, in simulated cycles or steps: every mode ends on its own, with a
 // "watchdog" verdict that says which call or run overran and what was expected.
