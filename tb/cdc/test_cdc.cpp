@@ -585,6 +585,14 @@ int main(int argc, char **argv) {
     bool stop = false;
     uint64_t stop_time = 0;
     bool aborted = false;
+    // Progress watchdog: the per-access one above covers a request that waits
+    // for its ack, not one abandoned and retried for ever, nor CPUs that stop
+    // issuing.  Until the last access, some access must complete at least
+    // every PROGRESS_PS: an access needs at most 4 * ((2N + 4) * 10 * TM +
+    // (2N + 10) * TM) with the slowest CPU (10 * TM), a gap at most 200 of its
+    // edges, far below 100000 RAM cycles.
+    const uint64_t PROGRESS_PS = 100000 * TM;
+    uint64_t progress_t = 0, progress_n = 0;
 
     for (;;) {
         t = std::min(ram_next, std::min(cpu[0].next_edge, cpu[1].next_edge));
@@ -682,6 +690,16 @@ int main(int argc, char **argv) {
             }
             ref_prune(oldest);
             next_prune = t + 1000 * TM;
+        }
+        if (!stop && !ram_rst && ram_rise) {
+            if (g_completed != progress_n || progress_t == 0) { progress_n = g_completed; progress_t = t; }
+            else if (t - progress_t > PROGRESS_PS) {
+                fail(CHK_LAT, "expected an access to complete at least every %" PRIu64 " ps, came none from t=%"
+                     PRIu64 " to t=%" PRIu64 " (%" PRIu64 " of %" PRIu64 " accesses done; CPU A %s, CPU B %s);"
+                     " aborting", PROGRESS_PS, progress_t, t, g_completed, g_accesses,
+                     cpu[0].busy ? "waiting for an ack" : "idle", cpu[1].busy ? "waiting for an ack" : "idle");
+                aborted = true;
+            }
         }
         if (aborted) break;
         if (!stop && g_completed >= g_accesses) { stop = true; stop_time = t; }

@@ -107,6 +107,16 @@ void unit_trap(enum unit_kind kind, uintptr_t addr, const char *why)
                  (unsigned long)unit_port.win_hi);
 }
 
+/* The port's watchdog fired: a call that does not return. */
+void unit_runaway(unsigned long accesses)
+{
+    printf("FAIL %s: the driver made %lu RAM accesses since the port was last reset, expected a few per "
+           "call (at most %lu in all): a loop that never ends; stopping\n", g_ctx, accesses,
+           UNIT_MAX_ACCESSES);
+    printf("driver-unit: %lu checks, %lu failed\n", g_checks + 1u, g_fails + 1u);
+    exit(1);
+}
+
 /* Forget counts, log, traps and hook; the window becomes [lo, hi). */
 static void port_reset(uintptr_t lo, uintptr_t hi)
 {

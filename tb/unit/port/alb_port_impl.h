@@ -55,6 +55,15 @@ extern struct unit_port unit_port;
 /* Defined in test_driver.c (not inline: it formats a message). */
 void unit_trap(enum unit_kind kind, uintptr_t addr, const char *why);
 
+/* Watchdog: a driver call that loops for ever on valid control bytes never
+ * returns to the test.  More RAM accesses than this since the last reset of
+ * the port (a call takes a few, every test under 1000 between resets) end the
+ * program: unit_runaway (test_driver.c) names the test and exits with 1. */
+#ifndef UNIT_MAX_ACCESSES
+#define UNIT_MAX_ACCESSES 1000000ul
+#endif
+void unit_runaway(unsigned long accesses);
+
 /* Count, log, run the scripted partner; returns 0 if the access may go on. */
 static inline int unit_touch(enum unit_kind kind, uintptr_t addr,
                               unsigned width, uint32_t value)
@@ -64,6 +73,8 @@ static inline int unit_touch(enum unit_kind kind, uintptr_t addr,
                       p->count[UNIT_RD32] + p->count[UNIT_WR32] + 1u;
 
     p->count[kind]++;
+    if (n > UNIT_MAX_ACCESSES)
+        unit_runaway(n);
     if (p->nlog < UNIT_LOG_MAX) {
         p->log[p->nlog].kind = kind;
         p->log[p->nlog].addr = addr;
