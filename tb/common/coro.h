@@ -3,7 +3,7 @@
 // A simulated CPU runs ordinary C code (the driver) on its own stack and
 // hands control back to the clock loop at every RAM access.  The first entry
 // uses makecontext/swapcontext; every later switch is _setjmp/_longjmp (no
-// signal-mask system call: about 10x cheaper, see shared/TOOLCHAIN.md).
+// signal-mask system call: about 10x cheaper, see ../shared/TOOLCHAIN.md).
 // Files using it must be built with -U_FORTIFY_SOURCE (checked longjmp
 // aborts on a stack switch).
 #pragma once
