@@ -76,8 +76,8 @@ formal: ## the formal proofs and model checks alone (also part of make test)
 
 bench: $(BENCHES) ## run the benchmarks, figures to build/reports/
 
-figures: ## regenerate README.md's figure tables from build/reports/*.json (and the termination picture)
-	@$(PYTHON) tools/figures.py README.md
+figures: ## regenerate the figure tables of README.md and docs/*.md from build/reports/*.json (and the termination picture)
+	@$(PYTHON) tools/figures.py README.md $(sort $(wildcard docs/*.md))
 	@if [ -f $(REPORTS)/tb_random.json ]; then $(PYTHON) tb/dpram/plot_termination.py $(REPORTS)/tb_random.json \
 	    $(REPORTS)/termination.svg && echo "figures: $(REPORTS)/termination.svg"; fi
 

@@ -1,18 +1,48 @@
 #!/usr/bin/env python3
-"""figures.py [README.md] -- regenerate the README's figure tables from
-build/reports/*.json (written by make test and make bench).
+"""figures.py [FILE.md ...] -- regenerate the manual's figure tables from
+build/reports/*.json (written by make test and make bench).  Without
+arguments: README.md and docs/*.md.
 
 Each table sits between the markers
     <!-- figures:NAME -->   and   <!-- /figures:NAME -->
-and is replaced whole.  A table whose report is missing says which make
-target produces it.  No measured number is ever typed into the README by
-hand.  Standard library only.
+in any of the files, and is replaced whole.  Every NAME below must appear in
+exactly one block of the files given, and every block must name a table this
+script knows, so a table can move between pages but never get lost or
+doubled.  A table whose report is absent is kept as it is (a row whose own
+report is absent is kept from the old table); only a block that is still
+empty says which make target produces it.  No measured number is ever typed
+into the manual by hand.  Standard library only.
 """
+import glob
 import json
 import os
+import re
 import sys
 
 REPORTS = "build/reports"
+
+
+class Absent(Exception):
+    """The report a table is made from is absent: keep the table as it is."""
+
+
+# The text between the markers of the block being regenerated (its old table).
+_old = ""
+
+
+def old_rows(first):
+    """The rows of the old table whose first cell is FIRST (cells as strings)."""
+    rows = []
+    for line in _old.splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split(" | ")]
+        if line.startswith("| ") and cells[0] == first:
+            rows.append(cells)
+    return rows
+
+
+def old_lines(prefix):
+    """The lines of the old block that start with PREFIX."""
+    return [line for line in _old.splitlines() if line.startswith(prefix)]
 
 
 def load(name):
@@ -25,7 +55,7 @@ def load(name):
 
 
 def missing(name, target):
-    return f"_Not measured yet: `{target}` writes `{REPORTS}/{name}`._"
+    raise Absent(f"_Not measured yet: `{target}` writes `{REPORTS}/{name}`._")
 
 
 def table(head, rows):
@@ -44,39 +74,37 @@ def viol(rep):
 
 def tests():
     rows = []
-    ex = load("tb_exhaustive.json")
-    if ex:
-        rows.append(["exhaustive interleavings", f"{n(ex['schedules'])} schedules, "
-                     f"{n(ex['collisions'])} same-cycle same-byte collisions",
-                     n(ex["imports_checked"]), viol(ex)])
-    rnd = load("tb_random.json")
-    if rnd:
-        rows.append(["random timing, ratios 1:100..100:1", f"{n(rnd['channels'])} channels, "
-                     f"{n(rnd['cycles'])} cycles", n(rnd["imports_checked"]), viol(rnd)])
-    soak = load("tb_soak.json")
-    if soak:
-        rows.append(["soak (`make soak`), same harness", f"{n(soak['channels'])} channels, "
-                     f"{n(soak['cycles'])} cycles", n(soak["imports_checked"]), viol(soak)])
-    cr = load("tb_crash.json")
-    if cr:
-        rows.append(["crash: frozen / reset at every access point",
-                     f"{n(cr['runs'])} runs, {n(cr['survivor_calls'])} survivor calls", "-", viol(cr)])
-    cdc = load("cdc.json")
-    if cdc:
-        chk = cdc.get("checkers", {})
-        fails = sum(c.get("failures", 0) for c in chk.values())
-        rows.append(["independent clocks through albatross_wb_cdc",
-                     f"{n(cdc['accesses'])} accesses, {n(cdc['reads_contended'])} contended reads",
-                     "-", n(fails)])
-    if not rows:
-        return missing("tb_*.json", "make test")
+    labels = ("exhaustive interleavings", "random timing, ratios 1:100..100:1",
+              "soak (`make soak`), same harness", "crash: frozen / reset at every access point",
+              "independent clocks through albatross_wb_cdc")
+    ex, rnd, soak, cr, cdc = (load(f) for f in ("tb_exhaustive.json", "tb_random.json", "tb_soak.json",
+                                               "tb_crash.json", "cdc.json"))
+    if not any((ex, rnd, soak, cr, cdc)):
+        missing("tb_*.json", "make test")
+    for label, rep in zip(labels, (ex, rnd, soak, cr, cdc)):
+        if not rep:                       # this report is absent: keep its old row
+            rows += old_rows(label)
+        elif rep is ex:
+            rows.append([label, f"{n(ex['schedules'])} schedules, "
+                         f"{n(ex['collisions'])} same-cycle same-byte collisions",
+                         n(ex["imports_checked"]), viol(ex)])
+        elif rep is cr:
+            rows.append([label, f"{n(cr['runs'])} runs, {n(cr['survivor_calls'])} survivor calls", "-", viol(cr)])
+        elif rep is cdc:
+            chk = cdc.get("checkers", {})
+            fails = sum(c.get("failures", 0) for c in chk.values())
+            rows.append([label, f"{n(cdc['accesses'])} accesses, {n(cdc['reads_contended'])} contended reads",
+                         "-", n(fails)])
+        else:                             # random, soak: the same harness
+            rows.append([label, f"{n(rep['channels'])} channels, {n(rep['cycles'])} cycles",
+                         n(rep["imports_checked"]), viol(rep)])
     return table(["test", "explored", "Imports checked", "violations"], rows)
 
 
 def termination():
     rnd = load("tb_random.json")
     if not rnd:
-        return missing("tb_random.json", "make test")
+        missing("tb_random.json", "make test")
     rows = []
     for b in rnd["termination_by_speed_ratio"]:
         lo, hi = 10 ** b["log10_ratio_from"], 10 ** b["log10_ratio_to"]
@@ -89,7 +117,7 @@ def termination():
 def overhead():
     rnd = load("tb_random.json")
     if not rnd:
-        return missing("tb_random.json", "make test")
+        missing("tb_random.json", "make test")
     ov = rnd["accesses_beyond_payload"]
     return table(["call (undisturbed)", "required", "measured"],
                  [["Export", 2, ov["export"]], ["Import, no new data", 1, ov["import_old"]],
@@ -104,14 +132,14 @@ def negative():
             if rep:
                 rows.append([f"`{rep['variant']}`", rep.get("caught_by", "") or "**not caught**"])
     if not rows:
-        return missing("tb_negative_*.json", "make test")
+        missing("tb_negative_*.json", "make test")
     return table(["broken variant", "caught by"], rows)
 
 
 def driver_size():
     ds = load("driver_size.json")
     if not ds:
-        return missing("driver_size.json", "make bench")
+        missing("driver_size.json", "make bench")
     rows = []
     for level, d in ds["levels"].items():
         fn = d["functions"]
@@ -122,7 +150,7 @@ def driver_size():
 def bench():
     b = load("bench_tb.json")
     if not b:
-        return missing("bench_tb.json", "make bench")
+        missing("bench_tb.json", "make bench")
     return table(["figure", "value"], [
         ["RAM accesses by simulated CPUs per second of wall time", f"{b['accesses_per_second'] / 1e6:.2f} M"],
         ["simulated cycles per second, with CPUs", f"{b['cycles_per_second'] / 1e6:.2f} M"],
@@ -133,7 +161,7 @@ def bench():
 def cdc():
     c = load("cdc.json")
     if not c:
-        return missing("cdc.json", "make test")
+        missing("cdc.json", "make test")
     rows = []
     for cpu, d in sorted(c["cpus"].items()):
         for case, lat in d["latency"].items():
@@ -145,7 +173,7 @@ def cdc():
 def synth():
     s = load("synth_albatross_dpram.json")
     if not s:
-        return missing("synth_albatross_dpram.json", "make bench")
+        missing("synth_albatross_dpram.json", "make bench")
     rows = []
     for fam, d in s["families"].items():
         rows.append([fam, d["luts"], d["ffs"], d["brams"], "yes" if d["bram_inferred"] else "**no**"])
@@ -154,16 +182,19 @@ def synth():
 
 
 def system_latency():
+    if not (load("system_rigid.json") or load("system_possync.json")):
+        missing("system_rigid.json", "make test")
     rows = []
     for name, label in (("system_rigid.json", "time-rigid"), ("system_possync.json", "position-synchronised")):
         r = load(name)
         if not r:
+            rows += old_rows(label)
             continue
         for c in r["channels"]:
             rows.append([label, c["channel"], c["to_board"], n(c["latency_samples"]), f"{c['latency_mean']:.0f}",
                          c["latency_max"], c["latency_bound"], f"{c['max_over_bound']:.3f}"])
     if not rows:
-        return missing("system_rigid.json", "make test")
+        missing("system_rigid.json", "make test")
     return table(["mode", "channel", "to board", "values", "mean (clk)", "worst (clk)", "compiler bound",
                   "worst / bound"], rows)
 
@@ -171,10 +202,13 @@ def system_latency():
 def system_delivery():
     runs = [("system_faults-50.json", "system_faults-50-noredundancy.json", "50 % faults"),
             ("system_burst.json", "system_burst-noredundancy.json", "20 % faults, bursts of 60 clocks")]
+    if not any(load(red) and load(nored) for red, nored, _ in runs):
+        missing("system_faults-50*.json", "make test")
     rows = []
     for red, nored, label in runs:
         a, b = load(red), load(nored)
         if not a or not b:
+            rows += old_rows(label)
             continue
         other = {(c["channel"], c["to_board"]): c for c in b["channels"]}
         for c in a["channels"]:
@@ -185,7 +219,7 @@ def system_delivery():
                          f"{100 * c['delivered_within_bound']:.1f} %", c["latency_max"], f"{c['max_over_bound']:.2f}",
                          f"{100 * o['delivered_within_bound']:.1f} %", o["latency_max"], f"{o['max_over_bound']:.2f}"])
     if not rows:
-        return missing("system_faults-50*.json", "make test")
+        missing("system_faults-50*.json", "make test")
     return table(["faults", "channel", "to board", "redundant: within bound", "worst (clk)", "worst / bound",
                   "one slot a cycle: within bound", "worst (clk)", "worst / bound"], rows)
 
@@ -193,7 +227,7 @@ def system_delivery():
 def system_bus():
     r = load("system_bus_bench.json")
     if not r:
-        return missing("system_bus_bench.json", "make bench")
+        missing("system_bus_bench.json", "make bench")
     rows = [[t["bytes"], n(t["transfers"]), f"{t['mean_cycles']:.1f}", t["minimum_cycles"],
              f"{t['mean_cycles'] / t['minimum_cycles']:.3f}", f"{t['efficiency']:.3f}", f"{t['mean_idle_cycles']:.2f}"]
             for t in r["transfers"]]
@@ -204,7 +238,7 @@ def system_bus():
 def pico_cost():
     b = load("bench_pico.json")
     if not b:
-        return missing("bench_pico.json", "make bench-pico")
+        missing("bench_pico.json", "make bench-pico")
     rows = []
     for e in b["sizes"]:
         ex, new, old = e["export"]["mean"], e["import_new"]["mean"], e["import_old"]["mean"]
@@ -228,15 +262,15 @@ def pico_cost():
         out += (f"\n\nCode size, rv32i `-Os` (`{REPORTS}/driver_size.json`): `alb_import` "
                 f"{fn['alb_import']['with_helpers']} bytes, `alb_export` {fn['alb_export']['with_helpers']} bytes "
                 f"of .text.")
-    else:
-        out += "\n\n" + missing("driver_size.json", "make driver-size")
+    else:                                 # keep the old line, if any
+        out += "".join("\n\n" + line for line in old_lines("Code size"))
     return out
 
 
 def robot():
     r = load("pico_boards.json")
     if not r:
-        return missing("pico_boards.json", "make test-pico-boards")
+        missing("pico_boards.json", "make test-pico-boards")
     rows = []
     for e in r["series"]:
         a = e["age"]
@@ -254,13 +288,16 @@ def robot():
 
 
 def robot_scenarios():
+    if not any(load(f + ".json") for f in ("pico_boards", "pico_boards_faults", "pico_boards_crash", "serv_boards")):
+        missing("pico_boards*.json", "make test")
     rows = []
     for name, what in (("pico_boards", "fault-free"), ("pico_boards_faults", "bus faults"),
                        ("pico_boards_crash", "radar crashes inside an Export"),
                        ("serv_boards", "motor board on SERV")):
         r = load(name + ".json")
         if not r:
-            rows.append([what, missing(name + ".json", "make test")] + [""] * 5)
+            kept = old_rows(what)
+            rows += kept or [[what, f"_not measured yet: `make test` writes `{REPORTS}/{name}.json`_"] + [""] * 5]
             continue
         worst = max((e["age"]["max"] / e["bound"] for e in r["series"]
                      if e["bound"] and not (r.get("crash_board") and e["channel"] == "RadarMap")), default=0)
@@ -276,7 +313,7 @@ def robot_scenarios():
 def fpga():
     r = load("fpga.json")
     if not r:
-        return missing("fpga.json", "make synth")
+        missing("fpga.json", "make synth")
     names = {"dpram": "albatross_dpram (4 KiB)", "controller": "albatross_controller (NB 4, N_CHAN 16)",
              "picorv32": "one PicoRV32 (as pico_core)", "top": "board top (two boards)"}
     rows = []
@@ -313,7 +350,7 @@ def fpga():
 def controller_area():
     r = load("controller_area.json")
     if not r:
-        return missing("controller_area.json", "make area")
+        missing("controller_area.json", "make area")
     fams = list(r["picorv32_luts"])
     head = ["controller variant", "what is tied off"] + [f"{fam} LUTs (/ PicoRV32)" for fam in fams]
     rows = [["one PicoRV32 (as pico_core)", "-"] + [n(r["picorv32_luts"][f]) if r["picorv32_luts"][f] else "error"
@@ -331,7 +368,7 @@ def controller_area():
 def sim_speed():
     r = load("sim_speed.json")
     if not r:
-        return missing("sim_speed.json", "make bench-sim-speed")
+        missing("sim_speed.json", "make bench-sim-speed")
     return table(["simulator", "cycles run", "wall time (s)", "cycles per second"],
                  [["Verilator 5 (harness with every check)", n(r["verilator_cycles"]), r["verilator_wall_s"],
                    n(r["verilator_cycles_per_s"])],
@@ -341,23 +378,30 @@ def sim_speed():
 
 def formal_spin():
     rows = []
-    for name in ["formal_spin.json"] + sorted(
-            f for f in (os.listdir(REPORTS) if os.path.isdir(REPORTS) else [])
-            if f.startswith("formal_spin_negative_") and f.endswith(".json")):
+    negatives = sorted(f for f in (os.listdir(REPORTS) if os.path.isdir(REPORTS) else [])
+                       if f.startswith("formal_spin_negative_") and f.endswith(".json"))
+    if not load("formal_spin.json") and not negatives:
+        missing("formal_spin.json", "make formal")
+    if not load("formal_spin.json"):      # keep the old rows of the protocol itself
+        rows += old_rows("protocol")
+    for name in ["formal_spin.json"] + negatives:
         rep = load(name)
         for c in (rep or {}).get("checks", []):
             variant = f"`-D{rep['variant']}`" if rep.get("variant") else "protocol"
             rows.append([variant, c["check"], c["result"],
                          "yes" if c["ok"] else "**no**", n(c["states"]), n(c["depth"]),
                          f"{c['seconds']:.2f}"])
-    if not rows:
-        return missing("formal_spin.json", "make formal")
+    if not negatives:                     # keep the old rows of the broken variants
+        rows += [r for line in _old.splitlines() if line.startswith("| `-D")
+                 for r in [[c.strip() for c in line.strip().strip("|").split(" | ")]]]
     return table(["model", "check", "result", "as expected", "states stored",
                   "depth", "pan seconds"], rows)
 
 
 def formal_rtl():
     rep = load("formal_rtl.json")
+    if not rep:
+        missing("formal_rtl.json", "make formal")
     rows = []
     for c in (rep or {}).get("checks", []):
         det = c.get("detail") or {}
@@ -369,8 +413,6 @@ def formal_rtl():
             failed = det.get("failed", [])
             result = ("caught by " if c["ok"] else "**not caught**: ") + (", ".join(f"`{f}`" for f in failed) or "none")
         rows.append([c["check"], c["engine"], props, result, c["depth"], f"{c['seconds']:.1f}"])
-    if not rows:
-        return missing("formal_rtl.json", "make formal")
     return table(["check", "engine", "properties", "result", "depth (clocks)", "seconds"], rows)
 
 
@@ -382,19 +424,54 @@ SECTIONS = {"fpga": fpga, "controller-area": controller_area, "robot": robot, "r
 SECTIONS["formal-rtl"] = formal_rtl
 
 
+BLOCK = re.compile(r"<!-- figures:([A-Za-z0-9_-]+) -->\n?(.*?)<!-- /figures:\1 -->", re.S)
+
+
 def main():
-    path = sys.argv[1] if len(sys.argv) > 1 else "README.md"
-    with open(path) as f:
-        text = f.read()
-    for name, make in SECTIONS.items():
-        begin, end = f"<!-- figures:{name} -->", f"<!-- /figures:{name} -->"
-        i, j = text.find(begin), text.find(end)
-        if i < 0 or j < i:
-            sys.exit(f"figures.py: {path} has no {begin} ... {end} block")
-        text = text[:i + len(begin)] + "\n" + make() + "\n" + text[j:]
-    with open(path, "w") as f:
-        f.write(text)
-    print(f"figures: {len(SECTIONS)} tables regenerated in {path} from {REPORTS}/")
+    global _old
+    paths = sys.argv[1:] or ["README.md"] + sorted(glob.glob("docs/*.md"))
+    texts = {}
+    for path in paths:
+        with open(path) as f:
+            texts[path] = f.read()
+    # Every table in exactly one block, every block a known table.
+    where = {}
+    for path, text in texts.items():
+        for m in BLOCK.finditer(text):
+            name = m.group(1)
+            if name not in SECTIONS:
+                sys.exit(f"figures.py: {path} has a block for an unknown table '{name}'")
+            if name in where:
+                sys.exit(f"figures.py: table '{name}' is in two blocks ({where[name]} and {path})")
+            where[name] = path
+        opened = set(re.findall(r"<!-- figures:([A-Za-z0-9_-]+) -->", text))
+        for name in opened - {m.group(1) for m in BLOCK.finditer(text)}:
+            sys.exit(f"figures.py: {path}: <!-- figures:{name} --> has no matching <!-- /figures:{name} -->")
+    lost = sorted(set(SECTIONS) - set(where))
+    if lost:
+        sys.exit(f"figures.py: no <!-- figures:NAME --> ... <!-- /figures:NAME --> block for "
+                 f"{', '.join(lost)} in {', '.join(paths)}")
+    made, kept = [], []
+
+    def regenerate(m):
+        global _old
+        name, _old = m.group(1), m.group(2)
+        try:
+            body = SECTIONS[name]()
+            made.append(name)
+        except Absent as e:
+            kept.append(name)
+            body = _old.strip("\n") or str(e)   # an empty block says how to fill it
+        return f"<!-- figures:{name} -->\n{body}\n<!-- /figures:{name} -->"
+
+    for path, text in texts.items():
+        new = BLOCK.sub(regenerate, text)
+        if new != text:
+            with open(path, "w") as f:
+                f.write(new)
+    print(f"figures: {len(made)} tables regenerated from {REPORTS}/"
+          + (f", {len(kept)} kept as they were (report absent: {', '.join(kept)})" if kept else "")
+          + f" in {', '.join(sorted(set(where.values())))}")
 
 
 if __name__ == "__main__":
