@@ -1,0 +1,55 @@
+# mk/docs.mk -- the pictures committed for the manual (README.md) are
+# generated files, so a test checks that the committed copies are current:
+#   docs/img/timeline.svg  one schedule cycle of sim/mobot3.toml, drawn by the
+#                          schedule compiler (make schedule)
+#   docs/img/ages.svg      the data ages of make sim with its defaults
+#                          (2,000,000 clocks, seed 1, no faults, no crash, no stalls)
+#   make test-docs-pictures            regenerates both (the sim run into
+#                                      build/docs/, not build/sim/) and fails if a
+#                                      committed copy differs from the fresh one
+#   make test-docs-pictures-negative   the check must catch a stale picture
+#   make docs-pictures                 refreshes the committed copies
+# The simulation is deterministic for a given seed: the same tree gives the
+# same pictures bit for bit.  A change that moves any timing of the robot
+# (RTL, firmware, schedule) changes ages.svg, and this test asks for a refresh.
+
+DOCS_DIR      := $(BUILD)/docs
+DOCS_PICTURES := docs/img/timeline.svg $(BUILD)/schedule/mobot3/timeline.svg \
+                 docs/img/ages.svg $(DOCS_DIR)/sim/ages.svg
+# make sim pinned to its defaults, whatever the caller's SEED, FAULT_RATE, ...
+DOCS_SIM_ARGS := SIM_DESC=sim/mobot3.toml SIM_CYCLES=2000000 FAULT_RATE=0 CRASH= STALL=0 SEED=1 TRACE=0 \
+                 SIM_DIR=$(DOCS_DIR)/sim REPORTS=$(DOCS_DIR)/sim
+
+.PHONY: docs-pictures-build docs-pictures test-docs-pictures test-docs-pictures-negative
+# Regenerate both pictures; the simulation's output goes to build/docs/sim.log.
+docs-pictures-build:
+	@mkdir -p $(DOCS_DIR)/sim
+	@rm -f $(DOCS_DIR)/sim/ages.svg
+	@$(MAKE) -s --no-print-directory $(BUILD)/schedule/mobot3/rom.hex
+	@echo "docs-pictures: make sim (defaults, seed 1) into $(DOCS_DIR)/sim/ (log $(DOCS_DIR)/sim.log)"
+	@$(MAKE) --no-print-directory sim $(DOCS_SIM_ARGS) > $(DOCS_DIR)/sim.log 2>&1 || \
+	    { tail -n 20 $(DOCS_DIR)/sim.log; echo "docs-pictures: make sim failed"; exit 1; }
+
+docs-pictures: docs-pictures-build ## refresh the committed pictures of the manual (docs/img/) from make schedule and make sim
+	cp $(BUILD)/schedule/mobot3/timeline.svg docs/img/timeline.svg
+	cp $(DOCS_DIR)/sim/ages.svg docs/img/ages.svg
+
+TESTS += docs-pictures docs-pictures-negative
+test-docs-pictures:
+	@tools/run_test.sh docs-pictures bash -c '$(MAKE) -s --no-print-directory docs-pictures-build && \
+	    tools/docs_pictures.sh $(DOCS_PICTURES)'
+# A stale picture (one figure changed), a missing committed copy and a missing
+# fresh one must each fail the check; the current picture must pass it.
+test-docs-pictures-negative:
+	@tools/run_test.sh docs-pictures-negative bash -c 'set -u; d=$(DOCS_DIR)/negative; rm -rf $$d; mkdir -p $$d; \
+	    sed "0,/<text/s/<text\([^>]*\)>[^<]*</<text\1>stale</" docs/img/timeline.svg > $$d/timeline.svg; \
+	    cmp -s $$d/timeline.svg docs/img/timeline.svg && { echo "the stale copy equals the real one"; exit 1; }; \
+	    for c in "$$d/timeline.svg docs/img/timeline.svg" "$$d/absent.svg docs/img/timeline.svg" \
+	             "docs/img/timeline.svg $$d/absent.svg"; do \
+	        if tools/docs_pictures.sh $$c > $$d/out.txt; then \
+	            echo "expected tools/docs_pictures.sh $$c to fail, it passed"; exit 1; fi; \
+	        grep -q "FAIL" $$d/out.txt || { echo "no FAIL line for $$c"; exit 1; }; \
+	        echo "caught: $$(head -n 1 $$d/out.txt)"; done; \
+	    tools/docs_pictures.sh docs/img/timeline.svg docs/img/timeline.svg > /dev/null || \
+	        { echo "an identical copy failed the check"; exit 1; }; \
+	    echo "a stale, a missing committed and a missing fresh picture are each caught"'
