@@ -424,7 +424,8 @@ SECTIONS = {"fpga": fpga, "controller-area": controller_area, "robot": robot, "r
 SECTIONS["formal-rtl"] = formal_rtl
 
 
-BLOCK = re.compile(r"<!-- figures:([A-Za-z0-9_-]+) -->\n?(.*?)<!-- /figures:\1 -->", re.S)
+# A marker is a line of its own (a marker quoted inside a sentence is text).
+BLOCK = re.compile(r"^<!-- figures:([A-Za-z0-9_-]+) -->\n(.*?)^<!-- /figures:\1 -->$", re.S | re.M)
 
 
 def main():
@@ -444,7 +445,7 @@ def main():
             if name in where:
                 sys.exit(f"figures.py: table '{name}' is in two blocks ({where[name]} and {path})")
             where[name] = path
-        opened = set(re.findall(r"<!-- figures:([A-Za-z0-9_-]+) -->", text))
+        opened = set(re.findall(r"^<!-- figures:([A-Za-z0-9_-]+) -->$", text, re.M))
         for name in opened - {m.group(1) for m in BLOCK.finditer(text)}:
             sys.exit(f"figures.py: {path}: <!-- figures:{name} --> has no matching <!-- /figures:{name} -->")
     lost = sorted(set(SECTIONS) - set(where))
