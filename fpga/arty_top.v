@@ -1,6 +1,6 @@
 // arty_top -- the FPGA demonstration on a Digilent Arty A7 (XC7A35T or
 // XC7A100T, CSG324, 100 MHz oscillator; pins and clock in
-// constraints/arty_a7.xdc): albatross_soc with two PicoRV32 boards as on the
+// constraints/arty_a7.xdc): albatross_system with two PicoRV32 boards as on the
 // iCEBreaker (fpga/icebreaker_top.v, fpga/duo.toml).  LEDs: LD4/LD5 the
 // sensor's/actuator's heartbeat (beat_divider: a change every 2**BEAT_LOG2
 // beats, so it blinks visibly), LD6/LD7 a core stopped; RGB LED LD0 red on

@@ -1,14 +1,14 @@
 // duo_system -- the FPGA demonstration as every board top uses it: the
-// system of fpga/duo.toml (albatross_soc: two boards, 'sensor' = board 0
-// and 'actuator' = board 1, with the sizes the compiler's images are made
-// for), its reset (board_reset: power-on and the reset button) and the
+// system of fpga/duo.toml (soc/albatross_system.v: two soft-core boards,
+// 'sensor' = board 0 and 'actuator' = board 1, with the sizes the compiler's
+// images are made for; the controller drives the bus directly), its reset (board_reset: power-on and the reset button) and the
 // heartbeats divided for the eye (beat_divider).  A top adds only its pins
 // and LED mapping.
 //
 // Clocks: with CPU_CDC 0 everything runs on clk_i (cpu_clk_i unused).  With
 // CPU_CDC 1 the two cores run on cpu_clk_i and reach their DPRAMs through
 // albatross_wb_cdc, while the DPRAMs, the bus and the controller stay on
-// clk_i (albatross_soc).  The cores' reset is then the clk_i reset passed
+// clk_i (albatross_system).  The cores' reset is then the clk_i reset passed
 // through a second board_reset on cpu_clk_i: it is taken on a cpu_clk_i edge
 // at most 6 cpu_clk_i clocks after the clk_i reset rises (synchroniser, a
 // possibly metastable first capture, the hold counter's clear, its register)
@@ -58,14 +58,34 @@ module duo_system #(
     assign rst_o = rst | core_rst;
 
     // Sizes as in fpga/duo.toml (ram 1024 bytes, n_chan 4) and mk/fpga.mk (2 KiB programs).
-    albatross_soc #(
+    wire [63:0]  code;
+    wire [255:0] stat;
+    wire unused_stat = &{1'b0, stat[255:129], stat[127:1]};  // the heartbeat is STAT 0 bit 0
+    albatross_system #(
         .NB(2), .ADDR_WIDTH(8), .RAM_WORDS(512), .N_CHAN(4), .ROM_WORDS(256),
         .ROM_FILE(ROM_FILE), .FW_PREFIX(FW_PREFIX), .RAM_PREFIX(RAM_PREFIX), .SERV_MASK(SERV_MASK),
-        .CPU_CDC(CPU_CDC)
-    ) u_soc (
-        .clk_i(clk_i), .rst_i(rst), .cpu_clk_i(core_clk), .cpu_rst_i(core_rst), .done_o(done_o), .err_o(err_o), .beat_o(beat),
-        .trap_o(trap_o), .ctrl_err_o(ctrl_err_o)
+        .SMALL(1), .CPU_CDC(CPU_CDC)
+    ) u_sys (
+        .clk_i(clk_i), .rst_i(rst), .cpu_clk_i(core_clk), .cpu_rst_i(core_rst), .stall_i(2'b00),
+        .ext_cyc_i(2'b00), .ext_stb_i(2'b00), .ext_we_i(2'b00), .ext_adr_i(16'd0), .ext_sel_i(8'd0),
+        .ext_dat_i(64'd0),
+        .ctl_dat_i(32'd0), .ctl_ack_i(1'b0), .ctl_err_i(1'b0),          // BUS_HOOK 0: unused
+        .bus_cyc_i(1'b0), .bus_stb_i(1'b0), .bus_we_i(1'b0), .bus_adr_i(12'd0), .bus_sel_i(4'd0),
+        .bus_dat_i(32'd0),
+        .done_o(done_o), .code_o(code), .stat_o(stat), .trap_o(trap_o), .ctl_error_o(ctrl_err_o),
+        // Outputs for simulation harnesses: none used here.
+        /* verilator lint_off PINCONNECTEMPTY */
+        .ext_dat_o(), .ext_ack_o(),
+        .ctl_cyc_o(), .ctl_stb_o(), .ctl_we_o(), .ctl_adr_o(), .ctl_sel_o(), .ctl_dat_o(),
+        .bus_dat_o(), .bus_ack_o(), .bus_err_o(),
+        .ev_valid_o(), .ev_data_o(), .ev_arg_o(), .map_err_o(),
+        .mon_a_ack_o(), .mon_a_we_o(), .mon_a_adr_o(), .mon_a_sel_o(),
+        .mon_b_ack_o(), .mon_b_we_o(), .mon_b_adr_o(), .mon_b_sel_o(), .mon_b_wdat_o(), .mon_b_rdat_o(),
+        .ctl_time_o(), .ctl_rom_errors_o()
+        /* verilator lint_on PINCONNECTEMPTY */
     );
+    assign err_o  = done_o & {|code[63:32], |code[31:0]};  // stopped with a non-zero exit code
+    assign beat   = {stat[128], stat[0]};                     // STAT 0 bit 0: the firmware's heartbeat
 
     beat_divider #(.LOG2(BEAT_LOG2)) u_beat0 (.clk_i(core_clk), .rst_i(core_rst), .beat_i(beat[0]), .beat_o(beat_o[0]));
     beat_divider #(.LOG2(BEAT_LOG2)) u_beat1 (.clk_i(core_clk), .rst_i(core_rst), .beat_i(beat[1]), .beat_o(beat_o[1]));

@@ -1,5 +1,5 @@
 // icebreaker_top -- the FPGA demonstration on an iCEBreaker (iCE40UP5K-SG48,
-// 12 MHz oscillator; pins in constraints/icebreaker.pcf): albatross_soc with
+// 12 MHz oscillator; pins in constraints/icebreaker.pcf): albatross_system with
 // two boards, 'sensor' (board 0, a SERV core) exporting Sample and
 // 'actuator' (board 1, a PicoRV32) importing and checking it (fpga/duo.toml,
 // fpga/firmware/duo_*.c).  Two PicoRV32 and the controller do not fit the UP5K's

@@ -1,5 +1,5 @@
 // ulx3s_top -- the FPGA demonstration on a ULX3S (ECP5 LFE5U-85F/45F/25F/12F,
-// CABGA381, 25 MHz oscillator; pins in constraints/ulx3s.lpf): albatross_soc
+// CABGA381, 25 MHz oscillator; pins in constraints/ulx3s.lpf): albatross_system
 // with two PicoRV32 boards as on the iCEBreaker (fpga/icebreaker_top.v,
 // fpga/duo.toml).  LEDs: led[0]/led[1] the sensor's/actuator's heartbeat
 // (beat_divider: a change every 2**BEAT_LOG2 beats, so it blinks visibly),

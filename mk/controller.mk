@@ -1,5 +1,5 @@
 # mk/controller.mk -- smoke test of albatross_controller on the multi-board test
-# top tb/system/tb_system.v: 4 boards, albatross_bus, bus_fault_injector
+# top tb/system/tb_system.v: 4 boards (soc/albatross_system.v), albatross_bus, bus_fault_injector
 # (tb/controller/test_controller.cpp).  Outputs in build/ctrl/.
 #   make test-controller-smoke            the self-checking run (all scenarios)
 #   make test-controller-smoke-negative   the timing checker, given a formula one
@@ -9,7 +9,7 @@
 
 CTRL_DIR := $(BUILD)/ctrl
 CTRL_BIN := $(CTRL_DIR)/obj/Vtb_system
-CTRL_SRC := tb/system/tb_system.v tb/common/bus_fault_injector.v rtl/albatross_controller.v \
+CTRL_SRC := tb/system/tb_system.v soc/albatross_system.v tb/common/bus_fault_injector.v rtl/albatross_controller.v \
             rtl/albatross_bus.v rtl/albatross_dpram.v tb/controller/test_controller.cpp
 
 $(CTRL_BIN): $(CTRL_SRC) mk/controller.mk

@@ -1,5 +1,5 @@
 # mk/fpga.mk -- the FPGA flow (fpga/, constraints/): the demonstration
-# system soc/albatross_soc.v (two PicoRV32 boards, their DPRAMs, the bus and
+# system soc/albatross_system.v (two PicoRV32 boards, their DPRAMs, the bus and
 # the controller, running fpga/duo.toml's schedule and fpga/firmware/duo_*.c) in
 # a top per board: iCEBreaker (iCE40UP5K; the sensor board on SERV, as two
 # PicoRV32 and the controller do not fit), ULX3S (ECP5), Arty A7 (xc7).
@@ -37,12 +37,12 @@ FPGA_RAM    := 2048   # bytes of each core's program RAM (RAM_WORDS 512 in the t
 # PLL model fpga/EHXPLLL.v is for simulation only) and what it instantiates.
 FPGA_TOPS   := $(wildcard fpga/*_top.v)
 FPGA_OWN    := fpga/duo_system.v $(FPGA_TOPS)
-FPGA_RTL    := $(FPGA_OWN) soc/albatross_soc.v soc/board_reset.v soc/beat_divider.v \
+FPGA_RTL    := $(FPGA_OWN) soc/albatross_system.v soc/board_reset.v soc/beat_divider.v \
                rtl/albatross_dpram.v rtl/albatross_wb_cdc.v rtl/albatross_bus.v rtl/albatross_controller.v \
                soc/board_core.v soc/pico_core.v soc/serv_core.v soc/serv_bridge.v soc/board_memmap.v \
                soc/pico_wb_adapter.v
 # Files fpga-lint checks each as a top: the demonstration and the FPGA-only soc/ parts.
-FPGA_LINT   := $(FPGA_OWN) soc/albatross_soc.v soc/picorv32_ooc.v
+FPGA_LINT   := $(FPGA_OWN) soc/albatross_system.v soc/picorv32_ooc.v
 # PicoRV32 and SERV come from PyPI (mk/pico.mk, mk/serv.mk); Verilator flags.
 FPGA_VFLAGS  = -Wall --timescale 1ns/1ps $(VLIB) -y fpga -y $(SERV_CPU_RTL) tb/pico/picorv32.vlt tb/pico/serv.vlt
 # (mk/pico.mk, read after this file, defines PICO_RV32_V and FW_*: every use
@@ -149,7 +149,7 @@ $(eval $(call fpga_mutant,rgb_green,arty_top,TOP_ARTY,s/assign led0_g_o = ~bad &
 # The ULX3S's cores on their own clock but without albatross_wb_cdc: each
 # core's bus goes straight to its DPRAM on the other clock.
 $(eval $(call fpga_mutant,no_cdc,ulx3s_top,TOP_ULX3S,s/if (CPU_CDC != 0) begin : g_cdc/if (CPU_CDC == 2) begin : g_cdc/,\
-    -GBEAT_LOG2=1,soc/albatross_soc.v))
+    -GBEAT_LOG2=1,soc/albatross_system.v))
 $(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
 	@mkdir -p $(@D)
 	sed '2s/^.*$$/00000001/' $< > $@

@@ -1,7 +1,8 @@
 # mk/pico_boards.mk -- the multi-board system with real CPUs: four PicoRV32
 # boards (radar, odometry, navigation, motor of the MOBOT-III example), each
 # with its own albatross_dpram, joined by albatross_bus and
-# albatross_controller behind a bus fault injector (sim/pico_boards.v);
+# albatross_controller behind a bus fault injector (sim/pico_boards.v: the
+# shared soc/albatross_system.v, the injector and the images' plusargs);
 # harness sim/mobot_sim.cpp (make sim runs the same model, mk/sim.mk).
 # Each board's firmware is sim/firmware/mobot_<board>.c linked with the
 # compiler-generated <board>.c and the real driver; the DPRAMs start from the
@@ -23,8 +24,9 @@ PB_DIR      := $(BUILD)/pico_boards
 PB_SCHED    := $(BUILD)/schedule/mobot3
 PB_BOARDS   := radar odometry navigation motor
 PB_CYCLES   ?= 1500000
-PB_RTL      := sim/pico_boards.v soc/board_core.v soc/pico_core.v soc/board_memmap.v tb/common/bus_fault_injector.v \
-               soc/pico_wb_adapter.v rtl/albatross_dpram.v rtl/albatross_bus.v rtl/albatross_controller.v
+PB_RTL      := sim/pico_boards.v soc/albatross_system.v soc/board_core.v soc/pico_core.v soc/board_memmap.v \
+               tb/common/bus_fault_injector.v soc/pico_wb_adapter.v rtl/albatross_dpram.v rtl/albatross_wb_cdc.v \
+               rtl/albatross_bus.v rtl/albatross_controller.v
 PB_VFLAGS   := -Wall --timescale 1ns/1ps $(VLIB) --top-module pico_boards tb/pico/picorv32.vlt
 PB_SRC      := sim/mobot_sim.cpp tb/common/plan.cpp
 PB_HDR      := tb/common/report.h tb/common/plan.h

@@ -1,5 +1,6 @@
 # mk/serv_boards.mk -- the MOBOT-III robot of mk/pico_boards.mk with the motor
-# board's PicoRV32 replaced by SERV (sim/pico_boards.v, SERV_MASK = 8):
+# board's PicoRV32 replaced by SERV (sim/pico_boards.v, SERV_MASK = 8, passed
+# on to soc/albatross_system.v):
 # the navigation board (PicoRV32) exports MotorCmd, a far slower bit-serial
 # core imports it, and every check of sim/mobot_sim.cpp applies.
 #   make test-serv-boards   fault-free, PicoRV32 cores stalled in random

@@ -1,4 +1,6 @@
-# mk/system.mk -- the multi-board system (tb/system/tb_system.v, tb/system/):
+# mk/system.mk -- the multi-board system (tb/system/tb_system.v: the shared
+# soc/albatross_system.v with every board's port A driven from C++, and the
+# bus fault injector; harness in tb/system/):
 # simulated CPUs run the C driver on every board, the RTL controller executes
 # a schedule compiled from sim/mobot3*.toml, faults are injected on its bus.
 
@@ -23,7 +25,7 @@ $(SYS_DIR)/obj/driver.o: c-driver/albatross.c $(SYS_HDR)
 
 # A model and its tb_system binary: $(1) = name, $(2) = extra -y library first.
 define sys_model
-$(SYS_DIR)/$(1)/model/Vsys__ALL.a: $(RTL) $(TB_RTL) $(2)
+$(SYS_DIR)/$(1)/model/Vsys__ALL.a: $(RTL) $(TB_RTL) soc/albatross_system.v $(2)
 	@mkdir -p $$(@D)
 	verilator --cc -O3 --prefix Vsys --top-module tb_system $(if $(2),-y $(dir $(2))) $(VLIB) \
 	    -Mdir $$(@D) tb/system/tb_system.v

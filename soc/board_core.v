@@ -1,8 +1,9 @@
 // board_core -- the soft core of one board: a PicoRV32 (pico_core) or a
 // SERV (serv_core), chosen by SERV, with the ports both share (the board's
-// memory map, board_memmap, is inside each).  The tops (pico_pair,
-// pico_boards, fpga/albatross_soc) instantiate this once per board; the
-// timing and rules are those of the chosen core.
+// memory map, board_memmap, is inside each).  albatross_system (the
+// system of the FPGA tops, the robot simulation and the system test) and
+// tb/pico/pico_pair instantiate this once per board; the timing and rules
+// are those of the chosen core.
 `default_nettype none
 
 module board_core #(

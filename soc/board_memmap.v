@@ -1,4 +1,4 @@
-// board_memmap -- test fixture: the memory map of one simulated board behind
+// board_memmap -- board part: the memory map of one board (simulated or FPGA) behind
 // a PicoRV32-style native memory port (valid/addr/wdata/wstrb in,
 // ready/rdata out).  Shared by every core wrapper (pico_core, serv_core).
 //

@@ -1,5 +1,5 @@
-// pico_core -- test fixture: one PicoRV32 core on the memory map of a
-// simulated board (board_memmap: local program RAM, board registers and a
+// pico_core -- board part: one PicoRV32 core on the memory map of a
+// board (board_memmap: local program RAM, board registers and a
 // Wishbone master to one port of an albatross_dpram; the map is described
 // there and in soc/firmware/board.h).  stall_i holds the core's local-RAM
 // accesses (instruction fetches included); DPRAM accesses are never held.
@@ -43,7 +43,7 @@ module pico_core #(
     wire        mem_valid, mem_instr, mem_ready, trap;
     wire [31:0] mem_addr, mem_wdata, mem_rdata;
     wire [3:0]  mem_wstrb;
-    // PicoRV32 outputs this fixture does not use.
+    // PicoRV32 outputs this core wrapper does not use.
     wire        la_read, la_write, pcpi_valid;
     wire [31:0] la_addr, la_wdata, pcpi_insn, pcpi_rs1, pcpi_rs2, eoi;
     wire [3:0]  la_wstrb;

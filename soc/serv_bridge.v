@@ -1,4 +1,4 @@
-// serv_bridge -- test fixture: SERV's two Wishbone buses (ibus: fetch only,
+// serv_bridge -- board part: SERV's two Wishbone buses (ibus: fetch only,
 // dbus: loads and stores) onto one PicoRV32-style native memory port
 // (valid/addr/wdata/wstrb out, ready/rdata in), the port of board_memmap.
 //

@@ -1,5 +1,5 @@
-// serv_core -- test fixture: one SERV core (bit-serial RISC-V, rv32i) on the
-// memory map of a simulated board (board_memmap: local program RAM, board
+// serv_core -- board part: one SERV core (bit-serial RISC-V, rv32i) on the
+// memory map of a board (board_memmap: local program RAM, board
 // registers and a Wishbone master to one port of an albatross_dpram; the map
 // is described there and in soc/firmware/board.h).  The same parameters and ports
 // as pico_core, so a top picks either core per board with a generate-if.
@@ -56,7 +56,7 @@ module serv_core #(
     wire        mem_valid, mem_ready;
     wire [31:0] mem_addr, mem_wdata, mem_rdata;
     wire [3:0]  mem_wstrb;
-    // SERV outputs this fixture does not use (extension and MDU interface).
+    // SERV outputs this core wrapper does not use (extension and MDU interface).
     wire [31:0] ext_rs1, ext_rs2;
     wire [2:0]  ext_funct3;
     wire        mdu_valid;

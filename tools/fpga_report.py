@@ -52,7 +52,7 @@ from synth_report import FAMILIES, cell_types, count, write_json  # noqa: E402
 
 SOC_FILES = ["rtl/albatross_dpram.v", "rtl/albatross_wb_cdc.v", "rtl/albatross_bus.v", "rtl/albatross_controller.v",
              "soc/board_core.v", "soc/pico_core.v", "soc/serv_core.v", "soc/serv_bridge.v", "soc/board_memmap.v",
-             "soc/pico_wb_adapter.v", "soc/albatross_soc.v", "soc/board_reset.v", "soc/beat_divider.v",
+             "soc/pico_wb_adapter.v", "soc/albatross_system.v", "soc/board_reset.v", "soc/beat_divider.v",
              "fpga/duo_system.v"]
 TOPS = {"ice40": "icebreaker_top", "ecp5": "ulx3s_top", "xc7": "arty_top"}
 # Each placed top's clock nets and the MHz each must meet: the iCEBreaker's

@@ -3,10 +3,11 @@
 # file); the modules it instantiates come from the library folders rtl/
 # (the IP), soc/ (soft-core board parts) and tb/common/ (shared test-only
 # modules).  Each must pass Verilator's -Wall lint with no warning, compile
-# with Icarus (-g2005) and elaborate in Yosys (which reads the files given,
-# not whole library folders: test benches there may hold constructs Yosys
-# does not parse, and are linted by their own targets).  Stops at the first
-# failure.
+# with Icarus (-g2005) and elaborate in Yosys (which reads the files given
+# and, from the library folders, only the file of a module still missing,
+# e.g. soc/albatross_system.v under tb/system/tb_system.v: not whole folders,
+# as test benches there may hold constructs Yosys does not parse, and are
+# linted by their own targets).  Stops at the first failure.
 set -eu
 lib="-y rtl -y soc -y tb/common"
 for f in "$@"; do
@@ -15,6 +16,6 @@ for f in "$@"; do
     iverilog -g2005 $lib -s "$top" -o /dev/null "$f"
     others=""
     for r in "$@"; do [ "$r" -ef "$f" ] || others="$others $r"; done
-    yosys -q -p "read_verilog$others $f; hierarchy -check -top $top; proc"
+    yosys -q -p "read_verilog$others $f; hierarchy -check -libdir rtl -libdir soc -libdir tb/common -top $top; proc"
     echo "lint ok  $f"
 done

@@ -1,6 +1,6 @@
 /*
  * duo_actuator.c -- board 'actuator' of the FPGA demonstration
- * (fpga/duo.toml, soc/albatross_soc.v): imports Sample and GlobalTime and
+ * (fpga/duo.toml, fpga/duo_system.v): imports Sample and GlobalTime and
  * checks every Sample as the pair test's consumer does (pair_check,
  * soc/firmware/board.h): complete (check words), never going back, New exactly
  * when newer.  The all-zero start value of the RAM image passes once, as

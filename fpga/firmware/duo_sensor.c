@@ -1,6 +1,6 @@
 /*
  * duo_sensor.c -- board 'sensor' of the FPGA demonstration (fpga/duo.toml,
- * fpga/albatross_soc.v): exports Sample, a sequence number with check words
+ * fpga/duo_system.v): exports Sample, a sequence number with check words
  * (board.h pair_value_t), as fast as it can.  STAT 0
  * bit 0 toggles every 2**DUO_BEAT_SHIFT (256) Exports (a heartbeat LED); a failed call ends the
  * program with its code in TOHOST (an error LED): 0x1 Export error, 0x3

@@ -1,10 +1,14 @@
-// tb_system -- multi-board test top: NB boards, the system bus, the controller.
+// tb_system -- multi-board test top: albatross_system (soc/albatross_system.v)
+// with every board external, and bus_fault_injector closing its bus hook.
 //
 // Each board b is an albatross_dpram.  Its port A is the CPU port, exposed as
-// cpu_*[b]; its port B hangs on albatross_bus.  bus_fault_injector sits between
-// albatross_controller and the bus.  Everything runs on clk_i: the harness
-// drives the CPU ports, the fault inputs and the clock.  Rules:
+// cpu_*[b] (albatross_system's ext_* ports, EXT_MASK all ones); its port B
+// hangs on albatross_bus.  bus_fault_injector sits between
+// albatross_controller and the bus (BUS_HOOK 1).  Everything runs on clk_i:
+// the harness drives the CPU ports, the fault inputs and the clock.  Rules:
 //   * Flattened vectors: board b uses bits [b*w +: w] of a w-bit field.
+//   * cpu_*[b] is albatross_dpram's port A itself: its timing (an ack 1 or 2
+//     clocks after the request, one access per request while cyc & stb).
 //   * BOARD_BITS is fixed at 4: a bus address is always {board[3:0], word}.
 //   * mon_*[b] is board b's port B as the RAM sees it, wired straight through.
 //     mon_ack_o[b] is high in the clock after the RAM performed a port-B
@@ -24,38 +28,38 @@ module tb_system #(
     parameter TIMEOUT    = 8,     // controller access timeout, clocks
     parameter POLL       = 16     // controller poll interval in sync mode, clocks
 ) (
-    input  wire                       clk_i,
-    input  wire                       rst_i,
-    // CPU side of every board's port A
-    input  wire [NB-1:0]              cpu_cyc_i,
-    input  wire [NB-1:0]              cpu_stb_i,
-    input  wire [NB-1:0]              cpu_we_i,
-    input  wire [NB*ADDR_WIDTH-1:0]   cpu_adr_i,
-    input  wire [NB*4-1:0]            cpu_sel_i,
-    input  wire [NB*32-1:0]           cpu_dat_i,
-    output wire [NB*32-1:0]           cpu_dat_o,
-    output wire [NB-1:0]              cpu_ack_o,
-    // fault injection
-    input  wire [1:0]                 fi_kind_i,
-    input  wire [NB-1:0]              fi_dead_i,
+    input  wire                       clk_i,        // everything's clock
+    input  wire                       rst_i,        // synchronous, active high
+    // CPU side of every board's port A (Wishbone B4 classic slave)
+    input  wire [NB-1:0]              cpu_cyc_i,    // cycle
+    input  wire [NB-1:0]              cpu_stb_i,    // strobe
+    input  wire [NB-1:0]              cpu_we_i,     // write enable
+    input  wire [NB*ADDR_WIDTH-1:0]   cpu_adr_i,    // word address
+    input  wire [NB*4-1:0]            cpu_sel_i,    // byte lanes
+    input  wire [NB*32-1:0]           cpu_dat_i,    // write data
+    output wire [NB*32-1:0]           cpu_dat_o,    // read data
+    output wire [NB-1:0]              cpu_ack_o,    // acknowledge
+    // fault injection (tb/common/bus_fault_injector.v)
+    input  wire [1:0]                 fi_kind_i,    // fault kind for the controller's next new request
+    input  wire [NB-1:0]              fi_dead_i,    // board links that are down
     // every RAM's port B as performed (valid while mon_ack_o[b])
-    output wire [NB-1:0]              mon_ack_o,
-    output wire [NB-1:0]              mon_we_o,
-    output wire [NB*ADDR_WIDTH-1:0]   mon_adr_o,
-    output wire [NB*4-1:0]            mon_sel_o,
-    output wire [NB*32-1:0]           mon_wdat_o,
-    output wire [NB*32-1:0]           mon_rdat_o,
+    output wire [NB-1:0]              mon_ack_o,    // the RAM performed an access (previous clock)
+    output wire [NB-1:0]              mon_we_o,     // ... a write
+    output wire [NB*ADDR_WIDTH-1:0]   mon_adr_o,    // its word address
+    output wire [NB*4-1:0]            mon_sel_o,    // its byte lanes
+    output wire [NB*32-1:0]           mon_wdat_o,   // its write data
+    output wire [NB*32-1:0]           mon_rdat_o,   // the read data
     // the controller's bus as it sees it
-    output wire                       bus_cyc_o,
-    output wire                       bus_stb_o,
-    output wire                       bus_we_o,
-    output wire [ADDR_WIDTH+3:0]      bus_adr_o,   // {board[3:0], word}
-    output wire                       bus_ack_o,
-    output wire                       bus_err_o,
+    output wire                       bus_cyc_o,    // cycle
+    output wire                       bus_stb_o,    // strobe
+    output wire                       bus_we_o,     // write enable
+    output wire [ADDR_WIDTH+3:0]      bus_adr_o,    // {board[3:0], word}
+    output wire                       bus_ack_o,    // the ack it samples (after the injector)
+    output wire                       bus_err_o,    // the err it samples (after the injector)
     // controller status
-    output wire [31:0]                time_o,
-    output wire                       error_o,
-    output wire [15:0]                rom_errors_o
+    output wire [31:0]                time_o,       // global time
+    output wire                       error_o,      // invalid ROM header
+    output wire [15:0]                rom_errors_o  // invalid entries skipped (counter)
 );
 
     localparam BOARD_BITS = 4;   // board field of a bus address
@@ -71,35 +75,79 @@ module tb_system #(
     wire [BA-1:0] i_adr;
     wire [3:0]    i_sel;
     wire [31:0]   i_wdat, i_rdat;
-    // bus <-> port B of each RAM
-    wire [NB-1:0]            s_cyc, s_stb, s_we, s_ack;
-    wire [NB*ADDR_WIDTH-1:0] s_adr;
-    wire [NB*4-1:0]          s_sel;
-    wire [NB*32-1:0]         s_wdat, s_rdat;
+    // Outputs of the system this top does not use: the cores' (there are
+    // none) and port A's monitors (the harness drives port A itself).
+    wire [NB-1:0]            done, trap, map_err, ev_valid, a_ack, a_we;
+    wire [NB*32-1:0]         code, ev_data, ev_arg;
+    wire [NB*128-1:0]        stat;
+    wire [NB*ADDR_WIDTH-1:0] a_adr;
+    wire [NB*4-1:0]          a_sel;
+    wire unused = &{1'b0, done, trap, map_err, ev_valid, a_ack, a_we, code, ev_data, ev_arg,
+                    stat, a_adr, a_sel};
 
-    albatross_controller #(
+    albatross_system #(
         .NB         (NB),
         .ADDR_WIDTH (ADDR_WIDTH),
         .N_CHAN     (N_CHAN),
         .ROM_WORDS  (ROM_WORDS),
         .ROM_FILE   (ROM_FILE),
         .TIMEOUT    (TIMEOUT),
-        .POLL       (POLL)
-    ) u_ctrl (
-        .clk_i        (clk_i),
-        .rst_i        (rst_i),
-        .m_cyc_o      (c_cyc),
-        .m_stb_o      (c_stb),
-        .m_we_o       (c_we),
-        .m_adr_o      (c_adr),
-        .m_sel_o      (c_sel),
-        .m_dat_o      (c_wdat),
-        .m_dat_i      (c_rdat),
-        .m_ack_i      (c_ack),
-        .m_err_i      (c_err),
-        .time_o       (time_o),
-        .error_o      (error_o),
-        .rom_errors_o (rom_errors_o)
+        .POLL       (POLL),
+        .EXT_MASK   ((1 << NB) - 1),   // every board's port A is cpu_*
+        .BUS_HOOK   (1)                // the injector closes the controller's bus
+    ) u_sys (
+        .clk_i            (clk_i),
+        .rst_i            (rst_i),
+        .cpu_clk_i        (clk_i),
+        .cpu_rst_i        (rst_i),
+        .stall_i          ({NB{1'b0}}),
+        .ext_cyc_i        (cpu_cyc_i),
+        .ext_stb_i        (cpu_stb_i),
+        .ext_we_i         (cpu_we_i),
+        .ext_adr_i        (cpu_adr_i),
+        .ext_sel_i        (cpu_sel_i),
+        .ext_dat_i        (cpu_dat_i),
+        .ext_dat_o        (cpu_dat_o),
+        .ext_ack_o        (cpu_ack_o),
+        .ctl_cyc_o        (c_cyc),
+        .ctl_stb_o        (c_stb),
+        .ctl_we_o         (c_we),
+        .ctl_adr_o        (c_adr),
+        .ctl_sel_o        (c_sel),
+        .ctl_dat_o        (c_wdat),
+        .ctl_dat_i        (c_rdat),
+        .ctl_ack_i        (c_ack),
+        .ctl_err_i        (c_err),
+        .bus_cyc_i        (i_cyc),
+        .bus_stb_i        (i_stb),
+        .bus_we_i         (i_we),
+        .bus_adr_i        (i_adr),
+        .bus_sel_i        (i_sel),
+        .bus_dat_i        (i_wdat),
+        .bus_dat_o        (i_rdat),
+        .bus_ack_o        (i_ack),
+        .bus_err_o        (i_err),
+        .done_o           (done),
+        .code_o           (code),
+        .stat_o           (stat),
+        .ev_valid_o       (ev_valid),
+        .ev_data_o        (ev_data),
+        .ev_arg_o         (ev_arg),
+        .trap_o           (trap),
+        .map_err_o        (map_err),
+        .mon_a_ack_o      (a_ack),
+        .mon_a_we_o       (a_we),
+        .mon_a_adr_o      (a_adr),
+        .mon_a_sel_o      (a_sel),
+        .mon_b_ack_o      (mon_ack_o),
+        .mon_b_we_o       (mon_we_o),
+        .mon_b_adr_o      (mon_adr_o),
+        .mon_b_sel_o      (mon_sel_o),
+        .mon_b_wdat_o     (mon_wdat_o),
+        .mon_b_rdat_o     (mon_rdat_o),
+        .ctl_time_o       (time_o),
+        .ctl_error_o      (error_o),
+        .ctl_rom_errors_o (rom_errors_o)
     );
 
     bus_fault_injector #(
@@ -129,65 +177,6 @@ module tb_system #(
         .b_ack_i   (i_ack),
         .b_err_i   (i_err)
     );
-
-    albatross_bus #(
-        .NB         (NB),
-        .ADDR_WIDTH (ADDR_WIDTH)
-    ) u_bus (
-        .m_cyc_i (i_cyc),
-        .m_stb_i (i_stb),
-        .m_we_i  (i_we),
-        .m_adr_i (i_adr),
-        .m_sel_i (i_sel),
-        .m_dat_i (i_wdat),
-        .m_dat_o (i_rdat),
-        .m_ack_o (i_ack),
-        .m_err_o (i_err),
-        .s_cyc_o (s_cyc),
-        .s_stb_o (s_stb),
-        .s_we_o  (s_we),
-        .s_adr_o (s_adr),
-        .s_sel_o (s_sel),
-        .s_dat_o (s_wdat),
-        .s_dat_i (s_rdat),
-        .s_ack_i (s_ack),
-        .s_err_i ({NB{1'b0}})          // the RAMs have no err output
-    );
-
-    genvar b;
-    generate
-        for (b = 0; b < NB; b = b + 1) begin : g_board
-            albatross_dpram #(
-                .ADDR_WIDTH (ADDR_WIDTH)
-            ) u_ram (
-                .clk_i   (clk_i),
-                .rst_i   (rst_i),
-                .a_cyc_i (cpu_cyc_i[b]),
-                .a_stb_i (cpu_stb_i[b]),
-                .a_we_i  (cpu_we_i[b]),
-                .a_adr_i (cpu_adr_i[b*ADDR_WIDTH +: ADDR_WIDTH]),
-                .a_sel_i (cpu_sel_i[b*4 +: 4]),
-                .a_dat_i (cpu_dat_i[b*32 +: 32]),
-                .a_dat_o (cpu_dat_o[b*32 +: 32]),
-                .a_ack_o (cpu_ack_o[b]),
-                .b_cyc_i (s_cyc[b]),
-                .b_stb_i (s_stb[b]),
-                .b_we_i  (s_we[b]),
-                .b_adr_i (s_adr[b*ADDR_WIDTH +: ADDR_WIDTH]),
-                .b_sel_i (s_sel[b*4 +: 4]),
-                .b_dat_i (s_wdat[b*32 +: 32]),
-                .b_dat_o (s_rdat[b*32 +: 32]),
-                .b_ack_o (s_ack[b])
-            );
-        end
-    endgenerate
-
-    assign mon_ack_o  = s_ack;
-    assign mon_we_o   = s_we;
-    assign mon_adr_o  = s_adr;
-    assign mon_sel_o  = s_sel;
-    assign mon_wdat_o = s_wdat;
-    assign mon_rdat_o = s_rdat;
 
     assign bus_cyc_o = c_cyc;
     assign bus_stb_o = c_stb;
