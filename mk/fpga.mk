@@ -54,8 +54,8 @@ FPGA_REPORT  = $(PYTHON) tools/fpga_report.py --picorv32 $(PICO_RV32_V) --serv $
 FPGA_FW_DEPS := soc/firmware/crt0.S soc/firmware/link.ld soc/firmware/board.h c-driver/albatross.c c-driver/albatross.h \
                 c-driver/albatross_layout.h c-driver/alb_port.h c-driver/port/mmio/alb_port_impl.h
 
-$(FPGA_SCHED)/rom.hex: fpga/duo.toml $(SCHEDULE_TOOL)
-	$(PYTHON) $(SCHEDULE_TOOL) $< --out $(@D) -q
+$(FPGA_SCHED)/rom.hex: fpga/duo.toml $(SCHEDULE_SRC)
+	$(SCHEDULE) $< --out $(@D) -q
 
 # $(1) = board index, $(2) = board name.
 define fpga_board

@@ -29,8 +29,8 @@ SIM_BIN      := $(PB_DIR)/$(if $(filter 1,$(TRACE)),obj-trace,obj)/Vpico_boards
 # A description outside sim/ and compiler/examples/ (those have a pattern rule).
 ifeq ($(filter sim/% compiler/examples/%,$(SIM_DESC)),)
 ifneq ($(SIM_DESC),$(SCHEDULE_DESC))
-$(SIM_SCHED)/rom.hex: $(SIM_DESC) $(SCHEDULE_TOOL)
-	$(PYTHON) $(SCHEDULE_TOOL) $(SIM_DESC) --out $(@D)
+$(SIM_SCHED)/rom.hex: $(SIM_DESC) $(SCHEDULE_SRC)
+	$(SCHEDULE) $(SIM_DESC) --out $(@D)
 endif
 endif
 

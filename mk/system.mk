@@ -51,8 +51,8 @@ $(foreach m,$(CTRL_MUTANTS),$(eval $(call sys_model,mutant-$(m),$(SYS_DIR)/mutan
 .SECONDARY:
 $(BUILD)/schedule/%/tb_plan.txt: $(BUILD)/schedule/%/rom.hex tb/common/plan_for_tb.py
 	$(PYTHON) tb/common/plan_for_tb.py $(@D)/report.json $@
-$(BUILD)/schedule/%-noredundancy/rom.hex: sim/%.toml $(SCHEDULE_TOOL)
-	$(PYTHON) $(SCHEDULE_TOOL) $< --out $(@D) --no-redundancy -q
+$(BUILD)/schedule/%-noredundancy/rom.hex: sim/%.toml $(SCHEDULE_SRC)
+	$(SCHEDULE) $< --out $(@D) --no-redundancy -q
 
 SYS_RIGID   := $(BUILD)/schedule/mobot3
 SYS_SYNC    := $(BUILD)/schedule/mobot3_possync

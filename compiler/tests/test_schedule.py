@@ -1,4 +1,4 @@
-"""Tests of the schedule compiler (compiler/albatross_schedule.py).
+"""Tests of the schedule compiler (the package compiler/albatross_schedule/).
 
     python3 -m unittest discover -s compiler/tests -v      (from the repository root)
 
@@ -22,7 +22,9 @@ import unittest
 HERE = os.path.dirname(os.path.abspath(__file__))
 COMPILER_DIR = os.path.dirname(HERE)
 REPO = os.path.dirname(COMPILER_DIR)
-TOOL = os.path.join(COMPILER_DIR, "albatross_schedule.py")
+# The command line, as the build runs it: python3 -m albatross_schedule with compiler/ on the path.
+TOOL = [sys.executable, "-m", "albatross_schedule"]
+TOOL_ENV = dict(os.environ, PYTHONPATH=COMPILER_DIR)
 EXAMPLES = os.path.join(REPO, "sim")  # the MOBOT-III robot's descriptions
 BAD = os.path.join(HERE, "bad")
 OUT = os.path.join(REPO, "build", "compiler-tests")
@@ -176,8 +178,8 @@ def layout_problems(rep):
 
 def compile_example(name, out):
     shutil.rmtree(out, ignore_errors=True)
-    r = subprocess.run([sys.executable, TOOL, os.path.join(EXAMPLES, name), "--out", out],
-                       capture_output=True, text=True)
+    r = subprocess.run(TOOL + [os.path.join(EXAMPLES, name), "--out", out],
+                       capture_output=True, text=True, env=TOOL_ENV)
     if r.returncode != 0:
         raise AssertionError(f"{name}: exit {r.returncode}\n{r.stdout}{r.stderr}")
     with open(os.path.join(out, "report.json")) as f:
@@ -644,7 +646,8 @@ class BadDescriptionTests(unittest.TestCase):
                 self.assertIsNotNone(m, f"{f}: the first line must be '# expect: <message>'")
                 out = os.path.join(OUT, "bad", f[:-5])
                 shutil.rmtree(out, ignore_errors=True)
-                r = subprocess.run([sys.executable, TOOL, path, "--out", out], capture_output=True, text=True)
+                r = subprocess.run(TOOL + [path, "--out", out], capture_output=True, text=True,
+                                   env=TOOL_ENV)
                 self.assertEqual(r.returncode, 2, f"{f}: exit {r.returncode}\n{r.stdout}{r.stderr}")
                 self.assertIn(m.group(1), r.stderr)
                 self.assertNotIn("Traceback", r.stderr)
@@ -652,10 +655,31 @@ class BadDescriptionTests(unittest.TestCase):
                 self.assertFalse(os.path.exists(out), f"{f}: outputs written for a bad description")
 
     def test_missing_file(self):
-        r = subprocess.run([sys.executable, TOOL, os.path.join(BAD, "no-such.toml"), "--out",
-                            os.path.join(OUT, "none")], capture_output=True, text=True)
+        r = subprocess.run(TOOL + [os.path.join(BAD, "no-such.toml"), "--out",
+                            os.path.join(OUT, "none")], capture_output=True, text=True, env=TOOL_ENV)
         self.assertEqual(r.returncode, 2)
         self.assertIn("cannot read the description", r.stderr)
+
+
+class PackageTests(unittest.TestCase):
+    """The compiler is a small package run with python3 -m albatross_schedule."""
+
+    def test_modules_are_small(self):
+        pkg = os.path.join(COMPILER_DIR, "albatross_schedule")
+        for f in sorted(os.listdir(pkg)):
+            if f.endswith(".py"):
+                with open(os.path.join(pkg, f)) as fh:
+                    n = sum(1 for _ in fh)
+                self.assertLessEqual(n, 500, f"albatross_schedule/{f} has {n} lines (at most about 500)")
+
+    def test_command_line(self):
+        r = subprocess.run(TOOL + ["--help"], capture_output=True, text=True, env=TOOL_ENV)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        for flag in ("--out", "--quiet", "--no-redundancy", "description"):
+            self.assertIn(flag, r.stdout)
+        r = subprocess.run(TOOL, capture_output=True, text=True, env=TOOL_ENV)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("usage: albatross_schedule", r.stderr)
 
 
 def description(channels, boards=("a", "b", "c"), extra_system="", bus=""):
