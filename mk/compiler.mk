@@ -9,8 +9,8 @@
 
 SCHEDULE_DESC ?= sim/mobot3.toml
 # SCHEDULE runs the compiler; rules that run it depend on SCHEDULE_SRC (every module).
-SCHEDULE      := PYTHONPATH=compiler $(PYTHON) -m albatross_schedule
-SCHEDULE_SRC  := $(sort $(wildcard compiler/albatross_schedule/*.py))
+SCHEDULE      := env PYTHONPATH=compiler $(PYTHON) -m albatross_schedule
+SCHEDULE_SRC  := $(sort $(wildcard compiler/albatross_schedule/*.py)) rtl/albatross_contract.toml
 SCHEDULE_DIR  := $(BUILD)/schedule/$(basename $(notdir $(SCHEDULE_DESC)))
 
 TESTS += compiler

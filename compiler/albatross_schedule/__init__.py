@@ -68,6 +68,8 @@ Modules (standard library only):
   layout       RAM layout of every board's channel instances
   plan         slot lengths, the cycle, redundancy, placement, bounds
   rom          the schedule ROM: encoder, hex image, verify_rom
+  contract     the contract (ROM format, channel layout) from rtl/albatross_contract.toml
+  contract_gen the files generated from it (python3 -m albatross_schedule.contract_gen)
   cgen         generated C: board headers, set-up sources, RAM images
   report       report.json and report.txt
   picture      timeline.svg

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from .contract import load as load_contract
 from .model import Plan, System
 from .plan import channel_bounds
 from .rom import rom_hex
@@ -153,7 +154,8 @@ def render_board_c(system: System, b: int, desc_name: str) -> str:
 
 
 def render_ram_hex(system: System, b: int) -> str:
-    words = [0] * (system.ram_bytes[b] // 4)
+    c = load_contract()
+    words = [0] * (system.ram_bytes[b] // c.word_bytes)
     for _, _, base in board_instances(system, b):
-        words[base // 4] = 0x00000101     # Actual = ReadLocked = Buffer1
+        words[base // c.word_bytes] = c.initial_control_word()     # Actual = ReadLocked = Buffer1
     return rom_hex(words)

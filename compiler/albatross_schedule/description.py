@@ -10,7 +10,7 @@ import tomllib
 from .model import (BUS_DEFAULTS, BUS_MINIMUM, CHANNEL_KEYS, CTYPE_RE, DEFAULT_RAM_BYTES, HEADER_RE,
                     IDENT_RE, MODE_RIGID, MODE_SYNC, RESERVED_FILES, SYSTEM_KEYS, Bus, Channel,
                     ScheduleError, System)
-from .rom import MAX_BOARDS, MAX_DESTS, MAX_ENTRIES, MAX_WORDS
+from .rom import BOARD_BITS, MAX_BOARDS, MAX_CHAN_IDS, MAX_DESTS, MAX_ENTRIES, MAX_WORDS
 
 
 class Locator:
@@ -163,7 +163,7 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
         boards, board_ok = [], False
     else:
         if len(boards) > MAX_BOARDS:
-            err.system("boards", f"{len(boards)} boards, at most {MAX_BOARDS} fit the 4-bit board fields of the ROM")
+            err.system("boards", f"{len(boards)} boards, at most {MAX_BOARDS} fit the {BOARD_BITS}-bit board fields of the ROM")
             board_ok = False
         seen = {}
         for b in boards:
@@ -232,8 +232,11 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
         if not _is_int(v) or v < lo:
             err.system(key, f"{_describe(v)} is not an integer >= {lo}", table="bus")
             continue
-        if key == "n_chan" and v > 256:
-            err.system(key, f"{v} exceeds 256 (the channel id is an 8-bit ROM field)", table="bus")
+        if key == "n_chan" and v > MAX_CHAN_IDS:
+            bits = MAX_CHAN_IDS.bit_length() - 1
+            article = "an" if str(bits).startswith("8") or bits in (11, 18) else "a"
+            err.system(key, f"{v} exceeds {MAX_CHAN_IDS} (the channel id is {article} "
+                       f"{bits}-bit ROM field)", table="bus")
             continue
         setattr(bus, key, v)
 

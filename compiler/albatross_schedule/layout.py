@@ -2,13 +2,14 @@
 
 from __future__ import annotations
 
+from .contract import load as load_contract
 from .model import ScheduleError, System
 from .rom import MAX_BASE_WORD
 
 
 def channel_bytes(payload: int) -> int:
-    """ALB_CHANNEL_BYTES: 4 control bytes + 3 buffers of the word-rounded payload."""
-    return 4 + 3 * ((payload + 3) & ~3)
+    """ALB_CHANNEL_BYTES: the control bytes + the buffers of the word-rounded payload."""
+    return load_contract().channel_bytes(payload)
 
 
 def allocate_ram(system: System):
@@ -37,9 +38,11 @@ def allocate_ram(system: System):
             msgs.append(f"{system.source}: board '{system.boards[b]}': RAM overflow: its channel instances "
                         f"need {used} bytes but ram_bytes is {ram} ({detail})")
         for ch, role, base, size in layout[b]:
-            if base // 4 > MAX_BASE_WORD:
+            word = base // load_contract().word_bytes
+            if word > MAX_BASE_WORD:
                 msgs.append(f"{system.source}: board '{system.boards[b]}', channel '{ch.name}' ({role}): "
-                            f"base word {base // 4} exceeds the 12-bit ROM field (max {MAX_BASE_WORD})")
+                            f"base word {word} exceeds the {MAX_BASE_WORD.bit_length()}-bit ROM field "
+                            f"(max {MAX_BASE_WORD})")
     if msgs:
         raise ScheduleError(msgs)
     return layout

@@ -7,6 +7,8 @@ import dataclasses
 import re
 from typing import Optional
 
+from .contract import load as load_contract
+
 MODE_RIGID = "time-rigid"
 MODE_SYNC = "position-synchronised"
 DEFAULT_RAM_BYTES = 4096
@@ -111,7 +113,8 @@ class Channel:
 
     @property
     def dst_size(self) -> int:
-        return 4 * self.words + 4
+        """Destination payload bytes: the value's words, then taken_at."""
+        return load_contract().dest_payload(self.words)
 
 
 @dataclasses.dataclass

@@ -6,7 +6,7 @@ from __future__ import annotations
 import random
 
 from .model import Bus, Channel, Plan, ScheduleError, Slot, System
-from .rom import MAX_ENTRIES
+from .rom import C as CONTRACT, MAX_ENTRIES
 
 
 def transfer_accesses(ch: Channel) -> int:
@@ -255,9 +255,10 @@ def build_plan(system: System) -> Plan:
         ch.slot_len = slot_length(ch, bus)
     limiter = min(system.channels, key=lambda c: (c.period_clocks, c.index))
     cycle = limiter.period_clocks
-    if cycle > 0xFFFFFFFF:
+    h1 = CONTRACT.field("H1", "cycle")
+    if cycle > h1.max:
         raise ScheduleError(f"{system.source}: channel '{limiter.name}', field 'max_period_us': the cycle "
-                            f"of {cycle} clocks does not fit the 32-bit ROM field H1")
+                            f"of {cycle} clocks does not fit the {h1.width}-bit ROM field {h1.word}")
     cap = cycle - (bus.poll_cycles if system.sync_mode else 0)
     need = sum(ch.slot_len for ch in system.channels)
     if need > cap:

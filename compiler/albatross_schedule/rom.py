@@ -5,53 +5,64 @@ from __future__ import annotations
 
 import re
 
+from . import contract
 from .model import Plan, Slot, System
 
-ROM_MAGIC = 0xA1BA
-CHECKSUM_SEED = 0xA1BA7055
-MAX_ENTRIES = 255
-MAX_BOARDS = 16
-MAX_WORDS = 4095           # E0[11:0]
-MAX_BASE_WORD = 4095       # 12-bit base word fields
-MAX_DESTS = 4
-KIND_CODE = {"idle": 0, "copy": 1, "time": 2, "status": 3}
+# The contract (rtl/albatross_contract.toml) gives every field and constant.
+C = contract.load()
+ROM_MAGIC = C.magic
+CHECKSUM_SEED = C.checksum_seed
+MAX_ENTRIES = C.max_entries
+BOARD_BITS = C.place_board.width
+MAX_BOARDS = 1 << BOARD_BITS
+MAX_WORDS = C.field("E0", "w").max            # the W field
+MAX_BASE_WORD = C.place_base.max              # base word fields
+MAX_CHAN_IDS = 1 << C.field("E0", "id").width
+MAX_DESTS = C.max_dests
+KIND_CODE = dict(C.kind)
 KIND_NAME = {v: k for k, v in KIND_CODE.items()}
-FLAG_SYNC = 1
-
-
-def rotl32(x: int, n: int) -> int:
-    x &= 0xFFFFFFFF
-    return ((x << n) | (x >> (32 - n))) & 0xFFFFFFFF
+FLAG_SYNC = C.flag("entry", "sync")
+HFLAG_SYNC_MODE = C.flag("header", "sync_mode")
 
 
 def checksum(words) -> int:
-    """README checksum: c = 0xA1BA7055; for each w: c = rotl32(c, 5) ^ w."""
-    c = CHECKSUM_SEED
-    for w in words:
-        c = rotl32(c, 5) ^ (w & 0xFFFFFFFF)
-    return c
+    """The contract's checksum: c = seed; for each w: c = rotate_left(c, rotate) ^ w."""
+    return C.checksum(words)
 
 
 def dest_field(board: int, base_bytes: int) -> int:
-    return ((board & 0xF) << 12) | ((base_bytes // 4) & 0xFFF)
+    """A place (source or destination): the board and the channel's base word."""
+    return C.place(board, base_bytes // C.word_bytes)
+
+
+def _pack(words, values) -> list:
+    """Words of the header or an entry from {(word, field): value}, sealed with
+    the checksum word (the last)."""
+    out = [0] * len(words)
+    for (w, f), v in values.items():
+        fld = C.field(w, f)
+        out[fld.index] |= fld.put(v)
+    out[-1] = checksum(out[:-1])
+    return out
 
 
 def encode_entry(slot: Slot) -> list:
     ch = slot.channel
-    flags = FLAG_SYNC if slot.sync else 0
-    e0 = (KIND_CODE[ch.kind] << 28) | (flags << 24) | (ch.id << 16) | (len(ch.consumers) << 12) | ch.words
-    e3 = dest_field(ch.producer, ch.src_base) if ch.kind == "copy" else 0
-    d = [dest_field(b, base) for b, base in zip(ch.consumers, ch.dst_bases)] + [0] * (4 - len(ch.consumers))
-    e4 = d[0] | (d[1] << 16)
-    e5 = d[2] | (d[3] << 16)
-    words = [e0, slot.start, slot.length, e3, e4, e5, 0]
-    return words + [checksum(words)]
+    v = {("E0", "kind"): KIND_CODE[ch.kind], ("E0", "flags"): FLAG_SYNC if slot.sync else 0,
+         ("E0", "id"): ch.id, ("E0", "nd"): len(ch.consumers), ("E0", "w"): ch.words,
+         ("E1", "start"): slot.start, ("E2", "length"): slot.length}
+    if ch.kind == "copy":
+        src = C.src_field
+        v[(src.word, src.name)] = dest_field(ch.producer, ch.src_base)
+    for f, b, base in zip(C.dest_fields, ch.consumers, ch.dst_bases):
+        v[(f.word, f.name)] = dest_field(b, base)
+    return _pack(C.entry, v)
 
 
 def encode_rom(system: System, plan: Plan) -> list:
-    ne = len(plan.slots)
-    h = [(ROM_MAGIC << 16) | (ne << 8) | (1 if system.sync_mode else 0), plan.cycle, 0]
-    words = h + [checksum(h)]
+    words = _pack(C.header, {("H0", "magic"): ROM_MAGIC, ("H0", "ne"): len(plan.slots),
+                             ("H0", "flags"): HFLAG_SYNC_MODE if system.sync_mode else 0,
+                             ("H1", "cycle"): plan.cycle})
     for s in plan.slots:
         words += encode_entry(s)
     return words
@@ -74,80 +85,89 @@ def parse_rom_hex(text: str) -> list:
 
 
 def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None):
-    """Check a ROM image against the README contract (header, checksums,
-    entry validation rules).  ram_words: int or list per board.  Returns a
-    list of problems (empty: valid) and the decoded entries."""
+    """Check a ROM image against the contract (header, checksums, entry
+    validation rules).  ram_words: int or list per board.  Returns a list of
+    problems (empty: valid) and the decoded entries."""
     problems = []
     entries = []
-    if len(words) < 4:
-        return ["ROM shorter than its 4-word header"], entries
-    h0, h1, h2, h3 = words[:4]
-    if h0 >> 16 != ROM_MAGIC:
-        problems.append(f"H0 magic {h0 >> 16:#06x}, expected {ROM_MAGIC:#06x}")
-    if checksum(words[:3]) != h3:
-        problems.append(f"header checksum {h3:#010x}, expected {checksum(words[:3]):#010x}")
-    if h2 != 0:
-        problems.append("H2 (reserved) is not 0")
-    ne = (h0 >> 8) & 0xFF
-    sync_mode = bool(h0 & 1)
-    if h0 & 0xFE:
+    nh, nw = C.header_words, C.entry_words
+    if len(words) < nh:
+        return [f"ROM shorter than its {nh}-word header"], entries
+
+    def get(ws, word, field):
+        f = C.field(word, field)
+        return f.get(ws[f.index])
+
+    hdr = words[:nh]
+    magic = get(hdr, "H0", "magic")
+    if magic != ROM_MAGIC:
+        problems.append(f"H0 magic {magic:#06x}, expected {ROM_MAGIC:#06x}")
+    if checksum(hdr[:-1]) != hdr[-1]:
+        problems.append(f"header checksum {hdr[-1]:#010x}, expected {checksum(hdr[:-1]):#010x}")
+    problems += [f"{w.name} (reserved) is not 0" for w in C.header if w.reserved and hdr[w.index] != 0]
+    ne = get(hdr, "H0", "ne")
+    hflags = get(hdr, "H0", "flags")
+    sync_mode = bool(hflags & HFLAG_SYNC_MODE)
+    if hflags & ~HFLAG_SYNC_MODE:
         problems.append("H0 reserved flag bits set")
     if sync_expected is not None and sync_mode != sync_expected:
         problems.append(f"H0 sync flag {int(sync_mode)}, expected {int(sync_expected)}")
     if not 1 <= ne <= MAX_ENTRIES:
         problems.append(f"entry count {ne} outside 1..{MAX_ENTRIES}")
-    if len(words) != 4 + 8 * ne:
-        problems.append(f"ROM has {len(words)} words, header says {ne} entries = {4 + 8 * ne} words")
-    cycle = h1
+    if len(words) != C.entry_address(ne):
+        problems.append(f"ROM has {len(words)} words, header says {ne} entries = {C.entry_address(ne)} words")
+    cycle = get(hdr, "H1", "cycle")
     prev_end = 0
+    copy, time, status = KIND_CODE["copy"], KIND_CODE["time"], KIND_CODE["status"]
+    src = C.src_field
     for k in range(ne):
-        e = words[4 + 8 * k: 12 + 8 * k]
-        if len(e) < 8:
+        e = words[C.entry_address(k): C.entry_address(k + 1)]
+        if len(e) < nw:
             break
         tag = f"entry {k}"
-        kind, flags = e[0] >> 28, (e[0] >> 24) & 0xF
-        cid, nd, w = (e[0] >> 16) & 0xFF, (e[0] >> 12) & 0xF, e[0] & 0xFFF
+        kind, flags = get(e, "E0", "kind"), get(e, "E0", "flags")
+        cid, nd, w = get(e, "E0", "id"), get(e, "E0", "nd"), get(e, "E0", "w")
+        start, length = get(e, "E1", "start"), get(e, "E2", "length")
         ent = {"kind": KIND_NAME.get(kind, kind), "flags": flags, "id": cid, "nd": nd, "w": w,
-               "start": e[1], "length": e[2], "src": (e[3] >> 12 & 0xF, e[3] & 0xFFF),
-               "dst": [((f >> 12) & 0xF, f & 0xFFF) for f in (e[4] & 0xFFFF, e[4] >> 16, e[5] & 0xFFFF, e[5] >> 16)][:nd]}
+               "start": start, "length": length, "src": C.unplace(src.get(e[src.index])),
+               "dst": [C.unplace(f.get(e[f.index])) for f in C.dest_fields][:nd]}
         entries.append(ent)
-        if checksum(e[:7]) != e[7]:
-            problems.append(f"{tag}: checksum {e[7]:#010x}, expected {checksum(e[:7]):#010x}")
+        if checksum(e[:-1]) != e[-1]:
+            problems.append(f"{tag}: checksum {e[-1]:#010x}, expected {checksum(e[:-1]):#010x}")
         if kind not in KIND_NAME:
             problems.append(f"{tag}: unknown kind {kind}")
             continue
-        if e[6] != 0:
-            problems.append(f"{tag}: E6 (reserved) is not 0")
+        problems += [f"{tag}: {x.name} (reserved) is not 0" for x in C.entry if x.reserved and e[x.index] != 0]
         if flags & FLAG_SYNC and (k != 0 or not sync_mode):
             problems.append(f"{tag}: SYNC flag outside entry 0 of a position-synchronised ROM")
-        if sync_mode and k == 0 and not (flags & FLAG_SYNC and kind == 1 and e[1] == 0):
+        if sync_mode and k == 0 and not (flags & FLAG_SYNC and kind == copy and start == 0):
             problems.append(f"{tag}: a position-synchronised ROM starts with a SYNC COPY at 0")
-        if kind == 0:
+        if kind == KIND_CODE["idle"]:
             continue
-        if not 1 <= nd <= 4:
-            problems.append(f"{tag}: ND {nd} outside 1..4")
+        if not 1 <= nd <= MAX_DESTS:
+            problems.append(f"{tag}: ND {nd} outside 1..{MAX_DESTS}")
         if cid >= n_chan:
             problems.append(f"{tag}: channel id {cid} >= N_CHAN {n_chan}")
-        if kind == 2 and w != 1:
+        if kind == time and w != 1:
             problems.append(f"{tag}: TIME with W = {w}, expected 1")
-        if kind == 3 and w != 1 + 2 * n_chan:
+        if kind == status and w != 1 + 2 * n_chan:
             problems.append(f"{tag}: STATUS with W = {w}, expected {1 + 2 * n_chan}")
-        exts = [(ent["dst"][i], w + 1) for i in range(min(nd, 4))]
-        if kind == 1:
+        exts = [(ent["dst"][i], w + C.taken_at_words) for i in range(min(nd, MAX_DESTS))]
+        if kind == copy:
             exts.append((ent["src"], w))
-        elif e[3] != 0:
-            problems.append(f"{tag}: E3 (source) set on a {KIND_NAME[kind]} entry")
+        elif e[src.index] != 0:
+            problems.append(f"{tag}: {src.word} (source) set on a {KIND_NAME[kind]} entry")
         for (board, base), stride in exts:
             if board >= n_boards:
                 problems.append(f"{tag}: board {board} >= NB {n_boards}")
                 continue
             rw = ram_words[board] if isinstance(ram_words, (list, tuple)) else ram_words
-            if base + 1 + 3 * stride > rw:
+            if base + C.control_words + C.buffers * stride > rw:
                 problems.append(f"{tag}: channel at board {board} word {base} (stride {stride}) "
                                 f"ends past the RAM ({rw} words)")
-        if e[1] < prev_end:
-            problems.append(f"{tag}: starts at {e[1]}, before the previous slot ends at {prev_end}")
-        if e[1] + e[2] > cycle:
-            problems.append(f"{tag}: ends at {e[1] + e[2]}, after the cycle ({cycle})")
-        prev_end = e[1] + e[2]
+        if start < prev_end:
+            problems.append(f"{tag}: starts at {start}, before the previous slot ends at {prev_end}")
+        if start + length > cycle:
+            problems.append(f"{tag}: ends at {start + length}, after the cycle ({cycle})")
+        prev_end = start + length
     return problems, entries
