@@ -23,7 +23,7 @@ $(SYS_DIR)/obj/driver.o: c-driver/albatross.c $(SYS_HDR)
 
 # A model and its tb_system binary: $(1) = name, $(2) = extra -y library first.
 define sys_model
-$(SYS_DIR)/$(1)/model/Vsys__ALL.a: $(RTL) $(TB_RTL) $(2)
+$(SYS_DIR)/$(1)/model/Vsys__ALL.a: $(RTL) $(RTL_INC) $(TB_RTL) $(2)
 	@mkdir -p $$(@D)
 	verilator --cc -O3 --prefix Vsys --top-module tb_system $(if $(2),-y $(dir $(2))) $(VLIB) \
 	    -Mdir $$(@D) tb/system/tb_system.v
