@@ -27,7 +27,7 @@ PB_RTL      := sim/pico_boards.v soc/board_core.v soc/pico_core.v soc/board_memm
                soc/pico_wb_adapter.v rtl/albatross_dpram.v rtl/albatross_bus.v rtl/albatross_controller.v
 PB_VFLAGS   := -Wall --timescale 1ns/1ps $(VLIB) --top-module pico_boards tb/pico/picorv32.vlt
 PB_SRC      := sim/mobot_sim.cpp tb/common/plan.cpp
-PB_HDR      := tb/common/report.h tb/common/plan.h
+PB_HDR      := tb/common/report.h tb/common/plan.h tb/common/albatross_contract.h
 
 # $(1) = board: sim/firmware/mobot_<board>.c + the generated <board>.c of the
 # schedule build/schedule/<sched>/ + the driver -> $(PB_DIR)/<sched>/fw/.
