@@ -38,7 +38,15 @@ EXAMPLE_FILES = ["mobot3.toml", "mobot3_possync.toml"]
 
 
 # ---------------------------------------------------------------------------
-# Independent checkers of the README contract.
+# Independent checkers of the README contract.  They are deliberate oracles,
+# written without the compiler's contract module; compiler/tests/test_contract.py
+# checks their field positions and constants against rtl/albatross_contract.toml.
+
+# The channel layout the controller model below assumes (byte offsets from the
+# channel base; buffer index values; words after a destination value).
+ORACLE_LAYOUT = {"off_actual": 0, "off_readlocked": 1, "off_buffers": 4, "buffer1": 1, "buffers": 3,
+                 "taken_at_words": 1}
+
 
 def rotl(x, n):
     return ((x << n) | (x >> (32 - n))) & 0xFFFFFFFF
@@ -226,16 +234,18 @@ class ControllerModel:
                                                "actual": [1] * 4, "delivered": [0] * 4})
 
     def export(self, st, k, board, base_word, words, taken_at):
+        lay = ORACLE_LAYOUT
         ram = self.rams[board]
         base = 4 * base_word
-        rl = ram.rd8(base + 1)
-        buf = [b for b in (1, 2, 3) if b != st["actual"][k] and b != rl][-1]
-        stride = 4 * (len(words) + 1)
-        addr = base + 4 + (buf - 1) * stride
+        rl = ram.rd8(base + lay["off_readlocked"])
+        bufs = range(lay["buffer1"], lay["buffer1"] + lay["buffers"])
+        buf = [b for b in bufs if b != st["actual"][k] and b != rl][-1]
+        stride = 4 * (len(words) + lay["taken_at_words"])
+        addr = base + lay["off_buffers"] + (buf - lay["buffer1"]) * stride
         for i, w in enumerate(words):
             ram.wr32(addr + 4 * i, w)
         ram.wr32(addr + 4 * len(words), taken_at)
-        ram.wr8(base, buf)
+        ram.wr8(base + lay["off_actual"], buf)
         st["actual"][k] = buf
 
     def run_cycle(self):
@@ -244,19 +254,20 @@ class ControllerModel:
             self.time = c0 + e["start"]
             st = self.st(e)
             if e["kind"] == 1:                       # COPY: Import from the source
+                lay = ORACLE_LAYOUT
                 src = self.rams[e["src_board"]]
                 base = 4 * e["src_word"]
-                actual = src.rd8(base)
+                actual = src.rd8(base + lay["off_actual"])
                 new = False
                 while actual != st["rl"]:
                     st["rl"] = actual
-                    src.wr8(base + 1, actual)
-                    actual = src.rd8(base)
+                    src.wr8(base + lay["off_readlocked"], actual)
+                    actual = src.rd8(base + lay["off_actual"])
                     new = True
                 if new:
                     st["version"] += 1
                     st["taken_at"] = self.time
-                    addr = base + 4 + (st["rl"] - 1) * 4 * e["w"]
+                    addr = base + lay["off_buffers"] + (st["rl"] - lay["buffer1"]) * 4 * e["w"]
                     st["value"] = [src.rd32(addr + 4 * i) for i in range(e["w"])]
                 for k, (b, bw) in enumerate(e["dst"]):
                     if st["delivered"][k] != st["version"]:
