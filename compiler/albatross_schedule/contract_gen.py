@@ -244,7 +244,7 @@ def _md_rom(c: Contract, words) -> list:
             if f.place:
                 b, s = c.place_board, c.place_base
                 meaning += f": `{{board{b.bits}, base word{s.bits}}}`"
-            L.append(f"| {w.name if i == 0 else ''} | {f.bits} | {meaning} |")
+            L.append((f"| {w.name} |" if i == 0 else "| |") + f" {f.bits} | {meaning} |")
     return L
 
 
