@@ -2,14 +2,16 @@
  * albatross_layout.h -- memory layout of one ALBATROSS channel in a
  * dual-ported RAM (seed 3.1, figure 2).  Shared by the C driver, the
  * testbenches and the hardware controller; byte offsets from the channel base.
+ * Generated from rtl/albatross_contract.toml by make contract
+ * (compiler/albatross_schedule/contract_gen.py); do not edit.
  *
- *   offset            size  contents                   written only by
- *   0                 1     Actual       (1..3)         the producer
- *   1                 1     ReadLocked   (1..3)         the consumer
- *   2                 2     reserved, 0
- *   4                 S     Buffer1
- *   4 + S             S     Buffer2
- *   4 + 2S            S     Buffer3
+ *   offset            size  contents                           written only by
+ *   0                 1     Actual: 1, 2 or 3 (Buffer1..3)     the producer
+ *   1                 1     ReadLocked: 1, 2 or 3              the consumer
+ *   2                 2     reserved, 0                        -
+ *   4                 S     Buffer1                            the producer
+ *   4 + S             S     Buffer2                            the producer
+ *   4 + 2S            S     Buffer3                            the producer
  *
  * S = payload size rounded up to a multiple of 4, so every buffer is
  * word-aligned when the channel base is.  Buffer indices are stored as
@@ -30,7 +32,7 @@
 /* Payload size rounded up to whole words: the stride between buffers. */
 #define ALB_STRIDE(size)          (((size) + 3u) & ~3u)
 /* Byte offset of buffer b (1..3) of a channel with the given payload size. */
-#define ALB_OFF_BUFFER(b, size)   (ALB_OFF_BUFFERS + ((b) - 1u) * ALB_STRIDE(size))
+#define ALB_OFF_BUFFER(b, size)   (ALB_OFF_BUFFERS + ((b) - ALB_BUFFER1) * ALB_STRIDE(size))
 /* Bytes one channel occupies in the dual-ported RAM. */
 #define ALB_CHANNEL_BYTES(size)   (ALB_OFF_BUFFERS + 3u * ALB_STRIDE(size))
 /* A control byte value names a buffer. */

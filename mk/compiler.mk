@@ -1,4 +1,5 @@
-# mk/compiler.mk -- the schedule compiler (compiler/albatross_schedule.py):
+# mk/compiler.mk -- the schedule compiler (the package compiler/albatross_schedule/,
+# run as PYTHONPATH=compiler python3 -m albatross_schedule DESC.toml --out DIR):
 # a system description (TOML) -> schedule ROM, board headers and sources, RAM
 # images, reports and a timeline picture.  Standard-library Python only.
 #   make schedule [SCHEDULE_DESC=file.toml]   -> build/schedule/<file name>/
@@ -7,7 +8,9 @@
 #                                             descriptions, gcc, end-to-end)
 
 SCHEDULE_DESC ?= sim/mobot3.toml
-SCHEDULE_TOOL := compiler/albatross_schedule.py
+# SCHEDULE runs the compiler; rules that run it depend on SCHEDULE_SRC (every module).
+SCHEDULE      := env PYTHONPATH=compiler $(PYTHON) -m albatross_schedule
+SCHEDULE_SRC  := $(sort $(wildcard compiler/albatross_schedule/*.py)) rtl/albatross_contract.toml
 SCHEDULE_DIR  := $(BUILD)/schedule/$(basename $(notdir $(SCHEDULE_DESC)))
 
 TESTS += compiler
@@ -20,11 +23,11 @@ schedule: $(SCHEDULE_DIR)/rom.hex ## compile SCHEDULE_DESC (default: the MOBOT-I
 	@sed -n "1,/^(times/p" $(SCHEDULE_DIR)/report.txt
 	@echo "schedule: $(SCHEDULE_DIR)/ (rom.hex, <board>.h/.c, <board>_ram.hex, report.json, timeline.svg)"
 
-$(SCHEDULE_DIR)/rom.hex: $(SCHEDULE_DESC) $(SCHEDULE_TOOL)
-	$(PYTHON) $(SCHEDULE_TOOL) $(SCHEDULE_DESC) --out $(@D)
+$(SCHEDULE_DIR)/rom.hex: $(SCHEDULE_DESC) $(SCHEDULE_SRC)
+	$(SCHEDULE) $(SCHEDULE_DESC) --out $(@D)
 
 # Any example description: the robot's (sim/) or the compiler's own (compiler/examples/).
-$(BUILD)/schedule/%/rom.hex: sim/%.toml $(SCHEDULE_TOOL)
-	$(PYTHON) $(SCHEDULE_TOOL) $< --out $(@D)
-$(BUILD)/schedule/%/rom.hex: compiler/examples/%.toml $(SCHEDULE_TOOL)
-	$(PYTHON) $(SCHEDULE_TOOL) $< --out $(@D)
+$(BUILD)/schedule/%/rom.hex: sim/%.toml $(SCHEDULE_SRC)
+	$(SCHEDULE) $< --out $(@D)
+$(BUILD)/schedule/%/rom.hex: compiler/examples/%.toml $(SCHEDULE_SRC)
+	$(SCHEDULE) $< --out $(@D)

@@ -10,7 +10,8 @@
 CTRL_DIR := $(BUILD)/ctrl
 CTRL_BIN := $(CTRL_DIR)/obj/Vtb_system
 CTRL_SRC := tb/system/tb_system.v soc/albatross_system.v tb/common/bus_fault_injector.v rtl/albatross_controller.v \
-            rtl/albatross_bus.v rtl/albatross_dpram.v tb/controller/test_controller.cpp
+            rtl/albatross_bus.v rtl/albatross_dpram.v tb/controller/test_controller.cpp \
+            $(RTL_INC) tb/common/albatross_contract.h
 
 $(CTRL_BIN): $(CTRL_SRC) mk/controller.mk
 	@mkdir -p $(CTRL_DIR)

@@ -12,7 +12,7 @@
 
 FRTL_DIR   := $(BUILD)/formal/rtl
 FRTL_RUN   := $(PYTHON) formal/rtl/run_check.py
-FRTL_DEPS  := formal/rtl/run_check.py mk/formal_rtl.mk
+FRTL_DEPS  := formal/rtl/run_check.py mk/formal_rtl.mk $(RTL_INC)
 
 DPRAM_PROPS := access_time_a,access_time_b,no_spurious_a,no_spurious_b,atomicity_a,atomicity_b
 DPRAM_DEPTH := 16

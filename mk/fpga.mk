@@ -54,8 +54,8 @@ FPGA_REPORT  = $(PYTHON) tools/fpga_report.py --picorv32 $(PICO_RV32_V) --serv $
 FPGA_FW_DEPS := soc/firmware/crt0.S soc/firmware/link.ld soc/firmware/board.h c-driver/albatross.c c-driver/albatross.h \
                 c-driver/albatross_layout.h c-driver/alb_port.h c-driver/port/mmio/alb_port_impl.h
 
-$(FPGA_SCHED)/rom.hex: fpga/duo.toml $(SCHEDULE_TOOL)
-	$(PYTHON) $(SCHEDULE_TOOL) $< --out $(@D) -q
+$(FPGA_SCHED)/rom.hex: fpga/duo.toml $(SCHEDULE_SRC)
+	$(SCHEDULE) $< --out $(@D) -q
 
 # $(1) = board index, $(2) = board name.
 define fpga_board
@@ -111,7 +111,7 @@ bitstream: pnr ## pack the iCEBreaker and ULX3S tops -> build/fpga/icebreaker_to
 # by 2 (BEAT_LOG2 = 1) instead of 64 and 128: the only difference from the
 # synthesised tops, so that a few million clocks show the LEDs blink.  The
 # ULX3S model's PLL is fpga/EHXPLLL.v (its two clocks at the real 2:1).
-FPGA_SIM_DEPS := $(FPGA_RTL) fpga/EHXPLLL.v fpga/test_fpga_soc.cpp tb/common/report.h tb/pico/picorv32.vlt mk/fpga.mk
+FPGA_SIM_DEPS := $(FPGA_RTL) $(RTL_INC) fpga/EHXPLLL.v fpga/test_fpga_soc.cpp tb/common/report.h tb/pico/picorv32.vlt mk/fpga.mk
 # Recipe: the model of top $(1) from file $(4), harness define $(2), parameters $(3), into $(@D).
 FPGA_VERILATE = verilator --cc --exe --build -j 2 -O3 $(FPGA_VFLAGS) --top-module $(1) $(3) \
     -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC) -D$(2)" --Mdir $(@D) $(PICO_RV32_V) $(4) $(abspath fpga/test_fpga_soc.cpp) \

@@ -29,7 +29,7 @@ PB_RTL      := sim/pico_boards.v soc/albatross_system.v soc/board_core.v soc/pic
                rtl/albatross_bus.v rtl/albatross_controller.v
 PB_VFLAGS   := -Wall --timescale 1ns/1ps $(VLIB) --top-module pico_boards tb/pico/picorv32.vlt
 PB_SRC      := sim/mobot_sim.cpp tb/common/plan.cpp
-PB_HDR      := tb/common/report.h tb/common/plan.h
+PB_HDR      := tb/common/report.h tb/common/plan.h tb/common/albatross_contract.h
 
 # $(1) = board: sim/firmware/mobot_<board>.c + the generated <board>.c of the
 # schedule build/schedule/<sched>/ + the driver -> $(PB_DIR)/<sched>/fw/.
@@ -45,7 +45,7 @@ $(foreach b,$(PB_BOARDS),$(eval $(call pb_fw,$(b))))
 # The model, without and with waves (--trace, for make sim TRACE=1).
 # $(1) = variant dir, $(2) = extra Verilator flags.
 define pb_model
-$(PB_DIR)/$(1)/Vpico_boards: $(PB_RTL) $(PICO_RV32_V) $(PB_SRC) $(PB_HDR) tb/pico/picorv32.vlt mk/pico_boards.mk
+$(PB_DIR)/$(1)/Vpico_boards: $(PB_RTL) $(RTL_INC) $(PICO_RV32_V) $(PB_SRC) $(PB_HDR) tb/pico/picorv32.vlt mk/pico_boards.mk
 	$$(PICO_NEED)
 	@mkdir -p $$(@D)
 	verilator --cc --exe --build -j 2 -O3 $(2) $(PB_VFLAGS) -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" \

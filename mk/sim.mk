@@ -29,8 +29,8 @@ SIM_BIN      := $(PB_DIR)/$(if $(filter 1,$(TRACE)),obj-trace,obj)/Vpico_boards
 # A description outside sim/ and compiler/examples/ (those have a pattern rule).
 ifeq ($(filter sim/% compiler/examples/%,$(SIM_DESC)),)
 ifneq ($(SIM_DESC),$(SCHEDULE_DESC))
-$(SIM_SCHED)/rom.hex: $(SIM_DESC) $(SCHEDULE_TOOL)
-	$(PYTHON) $(SCHEDULE_TOOL) $(SIM_DESC) --out $(@D)
+$(SIM_SCHED)/rom.hex: $(SIM_DESC) $(SCHEDULE_SRC)
+	$(SCHEDULE) $(SIM_DESC) --out $(@D)
 endif
 endif
 
@@ -47,7 +47,7 @@ sim: $(SIM_BIN) $(foreach b,$(PB_BOARDS),$(SIM_FWDIR)/$(b).hex) $(SIM_SCHED)/tb_
 
 # Whole-system simulation speed, Verilator against Icarus Verilog (one run each).
 SIM_ICARUS  := $(PB_DIR)/icarus/pico_boards_tb.vvp
-$(SIM_ICARUS): $(PB_RTL) sim/pico_boards_tb.v $(PICO_RV32_V)
+$(SIM_ICARUS): $(PB_RTL) $(RTL_INC) sim/pico_boards_tb.v $(PICO_RV32_V)
 	$(PICO_NEED)
 	@mkdir -p $(@D)
 	iverilog -g2005 $(VLIB) -y sim -s pico_boards_tb -o $@ $(PICO_RV32_V) sim/pico_boards_tb.v

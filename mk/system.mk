@@ -25,7 +25,7 @@ $(SYS_DIR)/obj/driver.o: c-driver/albatross.c $(SYS_HDR)
 
 # A model and its tb_system binary: $(1) = name, $(2) = extra -y library first.
 define sys_model
-$(SYS_DIR)/$(1)/model/Vsys__ALL.a: $(RTL) $(TB_RTL) soc/albatross_system.v $(2)
+$(SYS_DIR)/$(1)/model/Vsys__ALL.a: $(RTL) $(RTL_INC) $(TB_RTL) soc/albatross_system.v $(2)
 	@mkdir -p $$(@D)
 	verilator --cc -O3 --prefix Vsys --top-module tb_system $(if $(2),-y $(dir $(2))) $(VLIB) \
 	    -Mdir $$(@D) tb/system/tb_system.v
@@ -53,8 +53,8 @@ $(foreach m,$(CTRL_MUTANTS),$(eval $(call sys_model,mutant-$(m),$(SYS_DIR)/mutan
 .SECONDARY:
 $(BUILD)/schedule/%/tb_plan.txt: $(BUILD)/schedule/%/rom.hex tb/common/plan_for_tb.py
 	$(PYTHON) tb/common/plan_for_tb.py $(@D)/report.json $@
-$(BUILD)/schedule/%-noredundancy/rom.hex: sim/%.toml $(SCHEDULE_TOOL)
-	$(PYTHON) $(SCHEDULE_TOOL) $< --out $(@D) --no-redundancy -q
+$(BUILD)/schedule/%-noredundancy/rom.hex: sim/%.toml $(SCHEDULE_SRC)
+	$(SCHEDULE) $< --out $(@D) --no-redundancy -q
 
 SYS_RIGID   := $(BUILD)/schedule/mobot3
 SYS_SYNC    := $(BUILD)/schedule/mobot3_possync

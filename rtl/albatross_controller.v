@@ -91,6 +91,10 @@ module albatross_controller #(
     output wire [15:0]           rom_errors_o    // entries skipped (saturating)
 );
 
+    // The contract (ROM fields and constants, channel layout): generated from
+    // rtl/albatross_contract.toml (make contract); ALB_* below come from it.
+`include "albatross_contract.vh"
+
     function integer clog2;
         input integer v;
         integer r;
@@ -136,7 +140,8 @@ module albatross_controller #(
     localparam [LB-1:0]       CYC_IDX   = CYC[LB-1:0];
     localparam [33:0]         PRE       = 34'd1 - K;                  // HDR accumulator start
     localparam [33:0]         PRE_S     = 34'd0 - K;                  // SCAN accumulator start
-    localparam [31:0]         CK_INIT   = 32'hA1BA7055;
+    localparam [31:0]         CK_INIT   = ALB_ROM_CHECKSUM_SEED;
+    localparam                CK_ROT    = ALB_ROM_CHECKSUM_ROTATE;
     localparam [11:0]         W_STATUS  = 2 * N_CHAN + 1;
     localparam [255:0]        M_FC_HOLD = ge_mask(K + 2);                  // fc >= K + 2
     localparam [255:0]        M_FC_WORD = ge_mask(1) & ~ge_mask(9);        // 1 <= fc <= 8
@@ -146,6 +151,26 @@ module albatross_controller #(
     localparam [255:0]        M_CH_BAD  = ge_mask(N_CHAN);                 // channel id >= N_CHAN
     localparam [255:0]        M_NE_BAD  = ~ge_mask(1) | ge_mask(NE_MAX + 1); // NE not in 1..NE_MAX
     localparam [255:0]        M_LE_FC   = ~ge_mask(FETCH_CYCLES + 1);      // <= FETCH_CYCLES
+    // ROM fields (ALB_ROM_*): the source place of E3 and the low destination
+    // places of E4 and E5 share one set of field checks (LO), the high places
+    // another (HI); the contract check below makes sure they line up.
+    localparam                LO_BRD    = ALB_ROM_E4_DST0_BOARD_LSB;
+    localparam                LO_BASE   = ALB_ROM_E4_DST0_BASE_LSB;
+    localparam                HI_BRD    = ALB_ROM_E4_DST1_BOARD_LSB;
+    localparam                HI_BASE   = ALB_ROM_E4_DST1_BASE_LSB;
+    localparam                BRD_W     = ALB_ROM_PLACE_BOARD_W;
+    localparam                FLAG_SYNC = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_SYNC;     // bit of E0
+    localparam                HFLAG_SYNC = ALB_ROM_H0_FLAGS_LSB + ALB_ROM_HFLAG_SYNC_MODE; // bit of H0
+    // Channel layout (ALB_CH_*): control bytes in word 0, their byte lanes;
+    // Buffer1 at word BUF_WORD; a destination buffer holds W + TAKEN words.
+    localparam integer        BUF_WORD_I = ALB_CH_OFF_BUFFERS / ALB_CH_WORD_BYTES;
+    localparam integer        TAKEN_I    = ALB_CH_TAKEN_AT_WORDS;
+    localparam [AW-1:0]       BUF_WORD   = BUF_WORD_I[AW-1:0];
+    localparam [AW-1:0]       TAKEN_W    = TAKEN_I[AW-1:0];
+    localparam                ACT_BIT    = 8 * ALB_CH_OFF_ACTUAL;       // Actual: m_dat_i[ACT_BIT +: 8]
+    localparam                RL_BIT     = 8 * ALB_CH_OFF_READLOCKED;   // ReadLocked
+    localparam [3:0]          SEL_ACT    = 4'b0001 << ALB_CH_OFF_ACTUAL;
+    localparam [3:0]          SEL_RL     = 4'b0001 << ALB_CH_OFF_READLOCKED;
 
     // States.
     localparam [4:0] S_INIT   = 5'd0,   // clear the per-channel memories
@@ -167,7 +192,8 @@ module albatross_controller #(
                      S_POLLW  = 5'd16,  // sync mode: wait for the next poll
                      S_POLL   = 5'd17;  // sync mode: load the SYNC source's Actual
 
-    localparam [1:0] K_IDLE = 2'd0, K_COPY = 2'd1, K_TIME = 2'd2, K_STATUS = 2'd3;
+    localparam [1:0] K_IDLE = ALB_KIND_IDLE[1:0], K_COPY = ALB_KIND_COPY[1:0],
+                     K_TIME = ALB_KIND_TIME[1:0], K_STATUS = ALB_KIND_STATUS[1:0];
     // counter lanes: [16*lane +: 16] of a channel's counter word
     localparam [1:0] L_CORRUPT = 2'd0, L_ABANDON = 2'd1, L_RETRY = 2'd2, L_XFER = 2'd3;
 
@@ -190,9 +216,29 @@ module albatross_controller #(
 
     // Parameter checks: stop elaboration on an unsupported value.
     generate
-        if (NB < 1 || NB > 16 || AW < 3 || AW > 12 || N_CHAN < 1 || N_CHAN > 32 ||
-            ROM_WORDS < 12 || TIMEOUT < 3 || TIMEOUT > 60 || POLL < 1) begin : g_param_check
+        if (NB < 1 || NB > (1 << BRD_W) || AW < 3 || AW > ALB_ROM_PLACE_BASE_W || N_CHAN < 1 || N_CHAN > 32 ||
+            ROM_WORDS < ALB_ROM_HEADER_WORDS + ALB_ROM_ENTRY_WORDS || TIMEOUT < 3 || TIMEOUT > 60 ||
+            POLL < 1) begin : g_param_check
             albatross_controller_parameter_out_of_range u_error ();
+        end
+    endgenerate
+
+    // Contract check: the decoder relies on these properties of
+    // rtl/albatross_contract.toml; a definition without them stops elaboration.
+    //   ewa(), the HDR/SCAN/FETCH clocks: 4 header words, 8 words an entry;
+    //   one set of place checks for E3..E5; kind codes in kind_q's 2 bits;
+    //   vidx(), pick(): buffer indices 1..3 in 2 bits; the extent check
+    //   (base + 1 + 3*stride) and the word sequence: Buffer1 at word 1, one
+    //   taken_at word, 3 buffers, both control bytes in word 0.
+    generate
+        if (ALB_ROM_HEADER_WORDS != 4 || ALB_ROM_ENTRY_WORDS != 8 ||
+            ALB_ROM_E3_SRC_BOARD_LSB != LO_BRD || ALB_ROM_E3_SRC_BASE_LSB != LO_BASE ||
+            ALB_ROM_E5_DST2_BOARD_LSB != LO_BRD || ALB_ROM_E5_DST2_BASE_LSB != LO_BASE ||
+            ALB_ROM_E5_DST3_BOARD_LSB != HI_BRD || ALB_ROM_E5_DST3_BASE_LSB != HI_BASE ||
+            ALB_KIND_IDLE > 3 || ALB_KIND_COPY > 3 || ALB_KIND_TIME > 3 || ALB_KIND_STATUS > 3 ||
+            ALB_CH_BUFFER1 != 1 || ALB_CH_BUFFER_LAST != 3 || ALB_CH_BUFFERS != 3 ||
+            BUF_WORD_I != 1 || TAKEN_I != 1 || ALB_CH_OFF_ACTUAL > 3 || ALB_CH_OFF_READLOCKED > 3) begin : g_contract_check
+            albatross_controller_contract_mismatch u_error ();
         end
     endgenerate
 
@@ -354,8 +400,8 @@ module albatross_controller #(
     wire        c1_scan;                                        // SCAN_LAST: rel >= H1
     wire [LB-1:0] lk_next = dlm_lk_q[LB+7:8];
     wire [7:0]  lk_skip  = dlm_lk_q[7:0];
-    wire [7:0]  a_byte   = m_dat_i[7:0];                     // Actual
-    wire [7:0]  r_byte   = m_dat_i[15:8];                    // ReadLocked
+    wire [7:0]  a_byte   = m_dat_i[ACT_BIT +: 8];            // Actual
+    wire [7:0]  r_byte   = m_dat_i[RL_BIT +: 8];             // ReadLocked
     wire        acc_ack  = cyc_q & m_ack_i;
     wire        acc_fail = cyc_q & ~m_ack_i & (m_err_i | (tmo_q == TMO_LAST));
     wire        wi_is_w  = {{(16-AW){1'b0}}, wi_q} == {4'd0, w_q};
@@ -832,7 +878,7 @@ module albatross_controller #(
                            (cur_op == C_INC)  ? cur_q + {{(LB-1){1'b0}}, 1'b1} : cur_q;
     wire [LB-1:0] lv_d   = lv_cyc ? CYC_IDX : lv_cur ? cur_q : lv_q;
     wire          ld_e0  = (state_q == S_SCAN || state_q == S_FETCH) && fc_q == 1;
-    wire [CH_BITS-1:0] chan_d = (state_q == S_FETCH && fc_q == 1) ? rom_q[16 +: CH_BITS] : chan_q;
+    wire [CH_BITS-1:0] chan_d = (state_q == S_FETCH && fc_q == 1) ? rom_q[ALB_ROM_E0_ID_LSB +: CH_BITS] : chan_q;
 
     // ------------------------------------------------------------ bus access parameters
     // Word address of a control byte: base; of word i of buffer b: base + 1 + (b-1)*S + i,
@@ -859,10 +905,10 @@ module albatross_controller #(
     wire [AW-1:0] a_str  = a_src ? w_q[AW-1:0] : w1_q;
     wire [AW-1:0] a_off  = (a_buf == 2'd2) ? a_str :
                            (a_buf == 2'd3) ? {a_str[AW-2:0], 1'b0} : {AW{1'b0}};
-    wire [AW-1:0] a_word = a_base + (a_data ? a_off + wi_d + {{(AW-1){1'b0}}, 1'b1} : {AW{1'b0}});
+    wire [AW-1:0] a_word = a_base + (a_data ? a_off + wi_d + BUF_WORD : {AW{1'b0}});
     wire          a_we   = state_d == S_SRL_ST || state_d == S_DW_ST || state_d == S_DA_ST;
-    wire [3:0]    a_sel  = (state_d == S_SRL_ST) ? 4'b0010 :
-                           (state_d == S_DA_ST)  ? 4'b0001 : 4'b1111;
+    wire [3:0]    a_sel  = (state_d == S_SRL_ST) ? SEL_RL :
+                           (state_d == S_DA_ST)  ? SEL_ACT : 4'b1111;
 
     reg [31:0] dat_n;
     always @* begin
@@ -1065,30 +1111,35 @@ module albatross_controller #(
 
     // Field checks: HDR fc 1; SCAN fc 1 (E0), 3 (order, length), 4 (source), 5, 6 (destinations).
     wire [13:0] e3     = {2'b00, w_q} + {1'b0, w_q, 1'b0};          // 3 * W
-    wire [13:0] ext_lo = {2'b00, rom_q[11:0]} + e3;                  // base + 3 * W
-    wire [13:0] ext_hi = {2'b00, rom_q[27:16]} + e3;
+    wire [13:0] ext_lo = {2'b00, rom_q[LO_BASE +: ALB_ROM_PLACE_BASE_W]} + e3;  // base + 3 * W
+    wire [13:0] ext_hi = {2'b00, rom_q[HI_BASE +: ALB_ROM_PLACE_BASE_W]} + e3;
     wire [15:0] brd_ok = (NB >= 16) ? 16'hFFFF : ((16'd1 << NB) - 16'd1);
-    wire        src_ok = (ext_lo >> AW) == 14'd0 && brd_ok[rom_q[15:12]];   // base + 3W < 2^AW
+    wire [3:0]  lo_brd = rom_q[LO_BRD +: BRD_W];
+    wire [3:0]  hi_brd = rom_q[HI_BRD +: BRD_W];
+    wire        src_ok = (ext_lo >> AW) == 14'd0 && brd_ok[lo_brd];      // base + 3W < 2^AW
     wire        lo_ok  = (ext_lo >> AW) == 14'd0 && ext_lo[AW-1:2] != {(AW-2){1'b1}} &&
-                         brd_ok[rom_q[15:12]];                            // base + 3(W+1) < 2^AW
+                         brd_ok[lo_brd];                                  // base + 3(W+1) < 2^AW
     wire        hi_ok  = (ext_hi >> AW) == 14'd0 && ext_hi[AW-1:2] != {(AW-2){1'b1}} &&
-                         brd_ok[rom_q[31:28]];
-    wire [3:0]  e0_kind = rom_q[31:28];
-    wire [3:0]  e0_nd   = rom_q[15:12];
+                         brd_ok[hi_brd];
+    wire [3:0]  e0_kind = rom_q[ALB_ROM_E0_KIND_LSB +: ALB_ROM_E0_KIND_W];
+    wire [3:0]  e0_nd   = rom_q[ALB_ROM_E0_ND_LSB +: ALB_ROM_E0_ND_W];
+    wire [7:0]  e0_id   = rom_q[ALB_ROM_E0_ID_LSB +: ALB_ROM_E0_ID_W];
+    wire [11:0] e0_w    = rom_q[ALB_ROM_E0_W_LSB +: ALB_ROM_E0_W_W];
     wire        e0_bad  = e0_kind[3:2] != 2'b00 ||
-                          (rom_q[24] && !(cur_q == {LB{1'b0}} && smode_q && e0_kind == {2'b00, K_COPY})) ||
+                          (rom_q[FLAG_SYNC] && !(cur_q == {LB{1'b0}} && smode_q && e0_kind == {2'b00, K_COPY})) ||
                           (e0_kind != {2'b00, K_IDLE} &&
-                           (M_ND_BAD[{4'd0, e0_nd}] || M_CH_BAD[rom_q[23:16]])) ||
-                          (e0_kind == {2'b00, K_COPY}   && rom_q[11:0] == 12'd0) ||
-                          (e0_kind == {2'b00, K_TIME}   && rom_q[11:0] != 12'd1) ||
-                          (e0_kind == {2'b00, K_STATUS} && rom_q[11:0] != W_STATUS);
+                           (M_ND_BAD[{4'd0, e0_nd}] || M_CH_BAD[e0_id])) ||
+                          (e0_kind == {2'b00, K_COPY}   && e0_w == 12'd0) ||
+                          (e0_kind == {2'b00, K_TIME}   && e0_w != 12'd1) ||
+                          (e0_kind == {2'b00, K_STATUS} && e0_w != W_STATUS);
     wire        nd_ge2  = nd_q[2] | nd_q[1];
     wire        nd_ge3  = nd_q[2] | (nd_q[1] & nd_q[0]);
     reg bad_now;
     always @* begin
         bad_now = 1'b0;
         if (state_q == S_HDR && fc_q == 1)
-            bad_now = rom_q[31:16] != 16'hA1BA || M_NE_BAD[rom_q[15:8]];
+            bad_now = rom_q[ALB_ROM_H0_MAGIC_LSB +: ALB_ROM_H0_MAGIC_W] != ALB_ROM_MAGIC ||
+                      M_NE_BAD[rom_q[ALB_ROM_H0_NE_LSB +: ALB_ROM_H0_NE_W]];
         else if (state_q == S_SCAN)
             case (fc_q)
                 1: bad_now = e0_bad;
@@ -1119,34 +1170,34 @@ module albatross_controller #(
         if (sk_op == 2'd1)      sk_q <= 8'd0;
         else if (sk_op == 2'd2) sk_q <= sk_q + 8'd1;
         if (state_q == S_HDR && fc_q == 1) begin
-            ne_q    <= rom_q[15:8];
-            smode_q <= rom_q[0];
+            ne_q    <= rom_q[ALB_ROM_H0_NE_LSB +: ALB_ROM_H0_NE_W];
+            smode_q <= rom_q[HFLAG_SYNC];
         end
         if (pmode_set)      pmode_q <= 1'b1;
         else if (pmode_clr) pmode_q <= 1'b0;
-        if (ck_acc)         ck_q    <= {ck_base[26:0], ck_base[31:27]} ^ rom_q;
+        if (ck_acc)         ck_q    <= {ck_base[31-CK_ROT:0], ck_base[31:32-CK_ROT]} ^ rom_q;
         if (ck_chk)         ck_ok_q <= ck_q == rom_q;
         if ((state_q == S_HDR || state_q == S_SCAN) && fc_q == 0) bad_q <= 1'b0;
         else if (bad_now)                                         bad_q <= 1'b1;
         // entry fields: E0 at fc 1, E3..E5 at fc 4..6
         if (ld_e0) begin
-            kind_q  <= rom_q[29:28];
-            sflag_q <= rom_q[24];
-            nd_q    <= rom_q[14:12];
-            w_q     <= rom_q[11:0];
+            kind_q  <= e0_kind[1:0];
+            sflag_q <= rom_q[FLAG_SYNC];
+            nd_q    <= e0_nd[2:0];
+            w_q     <= e0_w;
         end
         chan_q <= chan_d;
         if ((state_q == S_SCAN || state_q == S_FETCH) && fc_q == 4) begin
-            sbrd_q  <= rom_q[15:12];
-            sbase_q <= rom_q[AW-1:0];
+            sbrd_q  <= rom_q[ALB_ROM_E3_SRC_BOARD_LSB +: BRD_W];
+            sbase_q <= rom_q[ALB_ROM_E3_SRC_BASE_LSB +: AW];
         end
         if ((state_q == S_SCAN || state_q == S_FETCH) && fc_q == 5) begin
-            dbrd_q[7:0]       <= {rom_q[31:28], rom_q[15:12]};
-            dbase_q[2*AW-1:0] <= {rom_q[16 +: AW], rom_q[AW-1:0]};
+            dbrd_q[7:0]       <= {rom_q[ALB_ROM_E4_DST1_BOARD_LSB +: BRD_W], rom_q[ALB_ROM_E4_DST0_BOARD_LSB +: BRD_W]};
+            dbase_q[2*AW-1:0] <= {rom_q[ALB_ROM_E4_DST1_BASE_LSB +: AW], rom_q[ALB_ROM_E4_DST0_BASE_LSB +: AW]};
         end
         if ((state_q == S_SCAN || state_q == S_FETCH) && fc_q == 6) begin
-            dbrd_q[15:8]         <= {rom_q[31:28], rom_q[15:12]};
-            dbase_q[4*AW-1:2*AW] <= {rom_q[16 +: AW], rom_q[AW-1:0]};
+            dbrd_q[15:8]         <= {rom_q[ALB_ROM_E5_DST3_BOARD_LSB +: BRD_W], rom_q[ALB_ROM_E5_DST2_BOARD_LSB +: BRD_W]};
+            dbase_q[4*AW-1:2*AW] <= {rom_q[ALB_ROM_E5_DST3_BASE_LSB +: AW], rom_q[ALB_ROM_E5_DST2_BASE_LSB +: AW]};
         end
         // working state (held at zero in INIT, which writes it to every channel)
         if (init || rst_i || state_q == S_FETCH)                                     imp_open_q <= 1'b0;
@@ -1186,7 +1237,7 @@ module albatross_controller #(
         if (apend_ld)      apend_q <= a_byte[1:0];
         di_q <= di_d;
         wi_q <= wi_d;
-        w1_q <= w_q[AW-1:0] + {{(AW-1){1'b0}}, 1'b1};
+        w1_q <= w_q[AW-1:0] + TAKEN_W;
         case (pc_op)
             P_ZERO:  pc_q <= {PC_BITS{1'b0}};
             P_LAST:  pc_q <= PC_LAST;

@@ -47,7 +47,7 @@ EDITS = {
         ("else if (bad_now)                                         bad_q <= 1'b1;", ""),
     ]),
     "destinations": ("one destination per entry instead of up to four", [
-        ("nd_q    <= rom_q[14:12];", "nd_q    <= 3'd1;"),
+        ("nd_q    <= e0_nd[2:0];", "nd_q    <= 3'd1;"),
     ]),
 }
 

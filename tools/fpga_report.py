@@ -106,7 +106,8 @@ def synth_files(files, top, chparam, fam, stem, netlist=False):
     """Yosys on one family; the cell counts (or "error"), logs at stem*; netlist: also
     stem.json for place and route."""
     spec = FAMILIES[fam]
-    script = (f"read_verilog -DSYNTHESIS {' '.join(files)}; {chparam + '; ' if chparam else ''}"
+    # -Irtl: rtl/albatross_contract.vh, also for the controller variants of controller_area.py.
+    script = (f"read_verilog -DSYNTHESIS -Irtl {' '.join(files)}; {chparam + '; ' if chparam else ''}"
               f"{spec['synth'].format(top=top)}; tee -q -o {stem}_stat.json stat -json"
               + (f"; write_json {stem}.json" if netlist else ""))
     ok, secs = run(["yosys", "-q", "-p", script], stem + "_yosys.log")

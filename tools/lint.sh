@@ -9,13 +9,13 @@
 # as test benches there may hold constructs Yosys does not parse, and are
 # linted by their own targets).  Stops at the first failure.
 set -eu
-lib="-y rtl -y soc -y tb/common"
+lib="-Irtl -y rtl -y soc -y tb/common"   # -Irtl: rtl/albatross_contract.vh
 for f in "$@"; do
     top=$(basename "$f" .v)
     verilator --lint-only -Wall $lib --top-module "$top" "$f"
     iverilog -g2005 $lib -s "$top" -o /dev/null "$f"
     others=""
     for r in "$@"; do [ "$r" -ef "$f" ] || others="$others $r"; done
-    yosys -q -p "read_verilog$others $f; hierarchy -check -libdir rtl -libdir soc -libdir tb/common -top $top; proc"
+    yosys -q -p "verilog_defaults -add -Irtl; read_verilog$others $f; hierarchy -check -libdir rtl -libdir soc -libdir tb/common -top $top; proc"
     echo "lint ok  $f"
 done

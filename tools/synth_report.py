@@ -139,7 +139,7 @@ def warnings_of(log):
 def synth_family(fam, src, top, aw, outdir, args):
     spec = FAMILIES[fam]
     synth = spec["synth"].format(top=top)
-    head = "read_verilog -DSYNTHESIS %s; chparam -set ADDR_WIDTH %d %s; " % (
+    head = "read_verilog -DSYNTHESIS -Irtl %s; chparam -set ADDR_WIDTH %d %s; " % (
         yosys_quote(src), aw, top)
     r = {"script": head + synth, "luts": None, "ffs": None, "carries": None,
          "brams": None, "lutrams": None, "logic_ram_bits": None,

@@ -1,4 +1,4 @@
-"""Tests of the schedule compiler (compiler/albatross_schedule.py).
+"""Tests of the schedule compiler (the package compiler/albatross_schedule/).
 
     python3 -m unittest discover -s compiler/tests -v      (from the repository root)
 
@@ -22,7 +22,9 @@ import unittest
 HERE = os.path.dirname(os.path.abspath(__file__))
 COMPILER_DIR = os.path.dirname(HERE)
 REPO = os.path.dirname(COMPILER_DIR)
-TOOL = os.path.join(COMPILER_DIR, "albatross_schedule.py")
+# The command line, as the build runs it: python3 -m albatross_schedule with compiler/ on the path.
+TOOL = [sys.executable, "-m", "albatross_schedule"]
+TOOL_ENV = dict(os.environ, PYTHONPATH=COMPILER_DIR)
 EXAMPLES = os.path.join(REPO, "sim")  # the MOBOT-III robot's descriptions
 BAD = os.path.join(HERE, "bad")
 OUT = os.path.join(REPO, "build", "compiler-tests")
@@ -36,7 +38,15 @@ EXAMPLE_FILES = ["mobot3.toml", "mobot3_possync.toml"]
 
 
 # ---------------------------------------------------------------------------
-# Independent checkers of the README contract.
+# Independent checkers of the README contract.  They are deliberate oracles,
+# written without the compiler's contract module; compiler/tests/test_contract.py
+# checks their field positions and constants against rtl/albatross_contract.toml.
+
+# The channel layout the controller model below assumes (byte offsets from the
+# channel base; buffer index values; words after a destination value).
+ORACLE_LAYOUT = {"off_actual": 0, "off_readlocked": 1, "off_buffers": 4, "buffer1": 1, "buffers": 3,
+                 "taken_at_words": 1}
+
 
 def rotl(x, n):
     return ((x << n) | (x >> (32 - n))) & 0xFFFFFFFF
@@ -176,8 +186,8 @@ def layout_problems(rep):
 
 def compile_example(name, out):
     shutil.rmtree(out, ignore_errors=True)
-    r = subprocess.run([sys.executable, TOOL, os.path.join(EXAMPLES, name), "--out", out],
-                       capture_output=True, text=True)
+    r = subprocess.run(TOOL + [os.path.join(EXAMPLES, name), "--out", out],
+                       capture_output=True, text=True, env=TOOL_ENV)
     if r.returncode != 0:
         raise AssertionError(f"{name}: exit {r.returncode}\n{r.stdout}{r.stderr}")
     with open(os.path.join(out, "report.json")) as f:
@@ -224,16 +234,18 @@ class ControllerModel:
                                                "actual": [1] * 4, "delivered": [0] * 4})
 
     def export(self, st, k, board, base_word, words, taken_at):
+        lay = ORACLE_LAYOUT
         ram = self.rams[board]
         base = 4 * base_word
-        rl = ram.rd8(base + 1)
-        buf = [b for b in (1, 2, 3) if b != st["actual"][k] and b != rl][-1]
-        stride = 4 * (len(words) + 1)
-        addr = base + 4 + (buf - 1) * stride
+        rl = ram.rd8(base + lay["off_readlocked"])
+        bufs = range(lay["buffer1"], lay["buffer1"] + lay["buffers"])
+        buf = [b for b in bufs if b != st["actual"][k] and b != rl][-1]
+        stride = 4 * (len(words) + lay["taken_at_words"])
+        addr = base + lay["off_buffers"] + (buf - lay["buffer1"]) * stride
         for i, w in enumerate(words):
             ram.wr32(addr + 4 * i, w)
         ram.wr32(addr + 4 * len(words), taken_at)
-        ram.wr8(base, buf)
+        ram.wr8(base + lay["off_actual"], buf)
         st["actual"][k] = buf
 
     def run_cycle(self):
@@ -242,19 +254,20 @@ class ControllerModel:
             self.time = c0 + e["start"]
             st = self.st(e)
             if e["kind"] == 1:                       # COPY: Import from the source
+                lay = ORACLE_LAYOUT
                 src = self.rams[e["src_board"]]
                 base = 4 * e["src_word"]
-                actual = src.rd8(base)
+                actual = src.rd8(base + lay["off_actual"])
                 new = False
                 while actual != st["rl"]:
                     st["rl"] = actual
-                    src.wr8(base + 1, actual)
-                    actual = src.rd8(base)
+                    src.wr8(base + lay["off_readlocked"], actual)
+                    actual = src.rd8(base + lay["off_actual"])
                     new = True
                 if new:
                     st["version"] += 1
                     st["taken_at"] = self.time
-                    addr = base + 4 + (st["rl"] - 1) * 4 * e["w"]
+                    addr = base + lay["off_buffers"] + (st["rl"] - lay["buffer1"]) * 4 * e["w"]
                     st["value"] = [src.rd32(addr + 4 * i) for i in range(e["w"])]
                 for k, (b, bw) in enumerate(e["dst"]):
                     if st["delivered"][k] != st["version"]:
@@ -644,7 +657,8 @@ class BadDescriptionTests(unittest.TestCase):
                 self.assertIsNotNone(m, f"{f}: the first line must be '# expect: <message>'")
                 out = os.path.join(OUT, "bad", f[:-5])
                 shutil.rmtree(out, ignore_errors=True)
-                r = subprocess.run([sys.executable, TOOL, path, "--out", out], capture_output=True, text=True)
+                r = subprocess.run(TOOL + [path, "--out", out], capture_output=True, text=True,
+                                   env=TOOL_ENV)
                 self.assertEqual(r.returncode, 2, f"{f}: exit {r.returncode}\n{r.stdout}{r.stderr}")
                 self.assertIn(m.group(1), r.stderr)
                 self.assertNotIn("Traceback", r.stderr)
@@ -652,10 +666,31 @@ class BadDescriptionTests(unittest.TestCase):
                 self.assertFalse(os.path.exists(out), f"{f}: outputs written for a bad description")
 
     def test_missing_file(self):
-        r = subprocess.run([sys.executable, TOOL, os.path.join(BAD, "no-such.toml"), "--out",
-                            os.path.join(OUT, "none")], capture_output=True, text=True)
+        r = subprocess.run(TOOL + [os.path.join(BAD, "no-such.toml"), "--out",
+                            os.path.join(OUT, "none")], capture_output=True, text=True, env=TOOL_ENV)
         self.assertEqual(r.returncode, 2)
         self.assertIn("cannot read the description", r.stderr)
+
+
+class PackageTests(unittest.TestCase):
+    """The compiler is a small package run with python3 -m albatross_schedule."""
+
+    def test_modules_are_small(self):
+        pkg = os.path.join(COMPILER_DIR, "albatross_schedule")
+        for f in sorted(os.listdir(pkg)):
+            if f.endswith(".py"):
+                with open(os.path.join(pkg, f)) as fh:
+                    n = sum(1 for _ in fh)
+                self.assertLessEqual(n, 500, f"albatross_schedule/{f} has {n} lines (at most about 500)")
+
+    def test_command_line(self):
+        r = subprocess.run(TOOL + ["--help"], capture_output=True, text=True, env=TOOL_ENV)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        for flag in ("--out", "--quiet", "--no-redundancy", "description"):
+            self.assertIn(flag, r.stdout)
+        r = subprocess.run(TOOL, capture_output=True, text=True, env=TOOL_ENV)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("usage: albatross_schedule", r.stderr)
 
 
 def description(channels, boards=("a", "b", "c"), extra_system="", bus=""):

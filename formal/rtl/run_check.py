@@ -38,7 +38,8 @@ def reads(a, extra_define=None):
     # Yosys 0.23 gives a memory's for-loop zero fill a higher priority than a
     # later $readmemh of the same words (the controller's ROM would read as all
     # zero): drop the one-word $meminit cells, the $readmemh image stays.
-    return "; ".join(f"read_verilog {ds} -DSYNTHESIS -formal {s}" for s in a.src) + \
+    # -Irtl: rtl/albatross_contract.vh, also for a mutant copied outside rtl/.
+    return "; ".join(f"read_verilog {ds} -DSYNTHESIS -formal -Irtl {s}" for s in a.src) + \
         f"; hierarchy -top {a.top}; proc; delete t:$meminit_v2 r:WORDS=1 %i"
 
 

@@ -1,6 +1,6 @@
 // plan.h -- what the testbench knows of a compiled schedule: boards,
 // channels, where each instance lives, and the compiler's bounds.  Read from
-// tb_plan.txt, which tools/plan_for_tb.py writes from the compiler's
+// tb_plan.txt, which tb/common/plan_for_tb.py writes from the compiler's
 // report.json (one line per fact, so the C++ side needs no JSON parser):
 //
 //   system <boards> <cycle_clocks> <rigid|sync> <n_chan> <ram_bytes>
@@ -16,6 +16,8 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "albatross_contract.h"   // the channel layout (generated, make contract)
 
 struct PlanDest {
     int board = 0;
@@ -35,7 +37,9 @@ struct PlanChannel {
 
     bool copy() const { return kind == "copy"; }
     // Bytes of the destination payload: the value's words and taken_at.
-    uint32_t dest_size() const { return 4 * words + 4; }
+    uint32_t dest_size() const { return alb_contract::dest_bytes(words); }
+    // Byte offset of taken_at in a destination payload.
+    uint32_t taken_at_offset() const { return alb_contract::taken_at_offset(words); }
 };
 
 struct Plan {

@@ -32,6 +32,8 @@
 #include "Vtb_system.h"
 #include "verilated.h"
 
+#include "albatross_contract.h"   // generated from rtl/albatross_contract.toml (make contract)
+
 #include <algorithm>
 #include <cinttypes>
 #include <cstdarg>
@@ -92,12 +94,18 @@ static void check(unsigned group, bool ok, const char *fmt, ...) {
           what, (uint64_t)(exp), (uint64_t)(got))
 
 // ------------------------------------------------------------------ schedule ROM
-static uint32_t rotl(uint32_t x, int n) { return (x << n) | (x >> (32 - n)); }
-static uint32_t cksum(const uint32_t *w, int n) {
-    uint32_t c = 0xA1BA7055u;
-    for (int i = 0; i < n; ++i) c = rotl(c, 5) ^ w[i];
-    return c;
-}
+// The ROM format comes from the contract (tb/common/albatross_contract.h).
+namespace C = alb_contract;
+
+// The channel layout this test's own CPU-side protocol code and expected
+// access sequences assume (Producer, Consumer, the COPY access check below):
+// Actual in byte lane 0 and ReadLocked in lane 1 of the control word,
+// Buffer1..3 = 1..3 from word 1, one taken_at word after a destination value.
+// A definition that drifts from them fails to compile here.
+static_assert(C::OFF_ACTUAL == 0 && C::OFF_READLOCKED == 1, "test_controller: control byte lanes");
+static_assert(C::OFF_BUFFERS == 1 * C::WORD_BYTES && C::WORD_BYTES == 4, "test_controller: Buffer1 at word 1");
+static_assert(C::BUFFER1 == 1 && C::BUFFERS == 3 && C::INITIAL_INDEX == 1, "test_controller: buffers 1..3");
+static_assert(C::TAKEN_AT_WORDS == 1 && C::dest_bytes(3) == 16, "test_controller: one taken_at word");
 
 struct Dst { unsigned brd, base; };
 struct Entry {
@@ -106,27 +114,33 @@ struct Entry {
     unsigned sbrd, sbase;
     std::vector<Dst> dst;
 };
-enum { IDLE = 0, COPY = 1, TIME = 2, STATUS = 3 };
+enum { IDLE = C::KIND_IDLE, COPY = C::KIND_COPY, TIME = C::KIND_TIME, STATUS = C::KIND_STATUS };
 
+// Word j of entry k.
+static size_t rom_addr(size_t k, unsigned j) { return C::ROM_HEADER_WORDS + C::ROM_ENTRY_WORDS * k + j; }
+
+// hflags: the H0 flags field (C::HFLAG_SYNC_MODE: position-synchronised).
 static std::vector<uint32_t> build_rom(uint32_t h1, unsigned hflags, const std::vector<Entry> &es) {
     std::vector<uint32_t> r(ROMW, 0);
-    r[0] = 0xA1BAu << 16 | (uint32_t)es.size() << 8 | hflags;
-    r[1] = h1;
-    r[2] = 0;
-    r[3] = cksum(&r[0], 3);
+    r[C::H0_MAGIC.word] |= C::H0_MAGIC.put(C::ROM_MAGIC);
+    r[C::H0_NE.word] |= C::H0_NE.put((uint32_t)es.size());
+    r[C::H0_FLAGS.word] |= C::H0_FLAGS.put(hflags);
+    r[C::H1_CYCLE.word] |= C::H1_CYCLE.put(h1);
+    r[C::ROM_HEADER_WORDS - 1] = C::checksum(&r[0], C::ROM_HEADER_WORDS - 1);
     for (size_t k = 0; k < es.size(); ++k) {
         const Entry &e = es[k];
-        uint32_t *w = &r[4 + 8 * k];
-        uint32_t d[4] = {0, 0, 0, 0};
-        for (size_t i = 0; i < e.dst.size(); ++i) d[i] = e.dst[i].brd << 12 | e.dst[i].base;
-        w[0] = e.kind << 28 | e.flags << 24 | e.chan << 16 | (uint32_t)e.dst.size() << 12 | e.w;
-        w[1] = e.start;
-        w[2] = e.len;
-        w[3] = e.sbrd << 12 | e.sbase;
-        w[4] = d[1] << 16 | d[0];
-        w[5] = d[3] << 16 | d[2];
-        w[6] = 0;
-        w[7] = cksum(w, 7);
+        uint32_t *w = &r[rom_addr(k, 0)];
+        w[C::E0_KIND.word] |= C::E0_KIND.put(e.kind);
+        w[C::E0_FLAGS.word] |= C::E0_FLAGS.put(e.flags);
+        w[C::E0_ID.word] |= C::E0_ID.put(e.chan);
+        w[C::E0_ND.word] |= C::E0_ND.put((uint32_t)e.dst.size());
+        w[C::E0_W.word] |= C::E0_W.put(e.w);
+        w[C::E1_START.word] |= C::E1_START.put(e.start);
+        w[C::E2_LENGTH.word] |= C::E2_LENGTH.put(e.len);
+        w[C::E3_SRC.word] |= C::E3_SRC.put(C::place(e.sbrd, e.sbase));
+        for (size_t i = 0; i < e.dst.size(); ++i)
+            w[C::DST[i].word] |= C::DST[i].put(C::place(e.dst[i].brd, e.dst[i].base));
+        w[C::ROM_ENTRY_WORDS - 1] = C::checksum(w, C::ROM_ENTRY_WORDS - 1);
     }
     return r;
 }
@@ -491,7 +505,7 @@ static void scenario_corrupt() {
     std::printf("== corrupt: a flipped ROM bit is flagged and skipped; a broken header\n");
     std::vector<Entry> es = schedule();
     std::vector<uint32_t> rom = build_rom(H1, 0, es);
-    rom[4 + 8 * 1 + 1] ^= 1u << 5;   // entry 1 (TIME): E1 bit 5, checksum now wrong
+    rom[rom_addr(1, C::E1_START.word)] ^= 1u << 5;   // entry 1 (TIME): E1 bit 5, checksum now wrong
     write_rom(rom);
     {
         Sim s;
@@ -531,7 +545,7 @@ static void scenario_corrupt() {
     }
     // a broken header: error_o, and the bus stays idle
     rom = build_rom(H1, 0, es);
-    rom[1] ^= 1;   // H1 changes, H3 no longer matches
+    rom[C::H1_CYCLE.word] ^= 1;   // H1 changes, H3 no longer matches
     write_rom(rom);
     {
         Sim s;
@@ -739,9 +753,9 @@ static void scenario_sync() {
     std::printf("== sync: polls every POLL clocks, a new position starts the cycle, else H1 does\n");
     const int POLL = 16;
     std::vector<Entry> es = schedule();
-    es[0].flags = 1;                 // SYNC
+    es[0].flags = C::EFLAG_SYNC;     // SYNC
     es.pop_back();                   // COPY, TIME
-    write_rom(build_rom(H1, 1, es));
+    write_rom(build_rom(H1, C::HFLAG_SYNC_MODE, es));
     Sim s;
     Setup u(s);
     const uint64_t T0 = t0_of((int)es.size());

@@ -59,7 +59,7 @@ SystemChecker::SystemChecker(const Plan &plan, SystemSim &sim, uint64_t time_off
             DestPub p{0, 0, 0, std::vector<uint8_t>(c.dest_size(), 0)};
             const uint32_t at = in.base + ALB_OFF_BUFFER(static_cast<uint32_t>(actual), in.size);
             for (uint32_t k = 0; k < in.size; ++k) p.bytes[k] = ram.byte(at + k);
-            std::memcpy(&p.taken_at, &p.bytes[4 * c.words], 4);
+            std::memcpy(&p.taken_at, &p.bytes[c.taken_at_offset()], 4);
             dst_[i][d].pubs.push_back(p);
             dst_[i][d].pending = 1;
             dst_[i][d].last_read = actual == rl ? 0 : -1;
@@ -180,7 +180,7 @@ void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
     p.bytes.resize(in.size);
     const uint32_t at = in.base + ALB_OFF_BUFFER(static_cast<uint32_t>(buffer), in.size);
     for (uint32_t i = 0; i < in.size; ++i) p.bytes[i] = sim_.ref[in.board].byte(at + i);
-    std::memcpy(&p.taken_at, &p.bytes[4 * c.words], 4);
+    std::memcpy(&p.taken_at, &p.bytes[c.taken_at_offset()], 4);
     const DestPub &last = d.pubs.back();
     const uint64_t taken_cycle = p.taken_at + time_offset_;
     ++st.publications;

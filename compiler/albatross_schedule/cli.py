@@ -1,0 +1,38 @@
+"""The command line: python3 -m albatross_schedule DESCRIPTION.toml --out DIR."""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+
+from .model import ScheduleError, us
+from .pipeline import compile_file
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(prog="albatross_schedule", description="ALBATROSS schedule compiler: system description (TOML) "
+                                 "-> schedule ROM, board headers, RAM images, reports.")
+    ap.add_argument("description", help="system description (.toml)")
+    ap.add_argument("--out", required=True, help="output directory")
+    ap.add_argument("-q", "--quiet", action="store_true", help="print nothing on success")
+    ap.add_argument("--no-redundancy", action="store_true",
+                    help="one slot per channel and cycle (to measure what redundancy buys)")
+    args = ap.parse_args(argv)
+    try:
+        system, plan, rep, files = compile_file(args.description, args.out, args.no_redundancy)
+    except ScheduleError as e:
+        for m in e.messages:
+            print(f"error: {m}", file=sys.stderr)
+        return 2
+    except Exception as e:  # a bug of the compiler, never a bad description
+        if os.environ.get("ALB_DEBUG"):
+            raise
+        print(f"internal error of the schedule compiler (albatross_schedule): {type(e).__name__}: {e} "
+              "(set ALB_DEBUG=1 for the traceback)", file=sys.stderr)
+        return 3
+    if not args.quiet:
+        print(f"{args.description}: cycle {plan.cycle} clocks ({us(plan.cycle, system.clock_hz):g} us), "
+              f"{len(plan.slots)} entries, bus utilisation {100 * rep['bus_utilisation']:.1f} % "
+              f"-> {args.out}/ ({len(files)} files)")
+    return 0

@@ -1,0 +1,297 @@
+"""The ALBATROSS contract, defined once in rtl/albatross_contract.toml: the
+schedule ROM format and the memory layout of one channel.  This module
+loads and checks the definition; the compiler's encoder and verify_rom use
+it, and contract_gen.py generates the Verilog include, the C and C++
+headers and the markdown tables from it (see docs/contract.md):
+
+    PYTHONPATH=compiler python3 -m albatross_schedule.contract_gen [--check]
+                                  [--definition FILE] [--root DIR] [FILE.md ...]
+
+ALB_CONTRACT=FILE in the environment makes the compiler read another
+definition (the negative test of the contract uses that)."""
+
+from __future__ import annotations
+
+import dataclasses
+import os
+import tomllib
+
+PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(PACKAGE_DIR))
+DEFINITION = "rtl/albatross_contract.toml"            # relative to the repository
+DEFAULT_PATH = os.path.join(REPO, DEFINITION)
+
+
+class ContractError(Exception):
+    """The definition is unreadable or inconsistent."""
+
+
+@dataclasses.dataclass(frozen=True)
+class Field:
+    word: str           # H0..H3, E0..E7, or "place"
+    index: int          # word index within the header or the entry
+    name: str
+    lsb: int
+    width: int
+    doc: str = ""
+    place: bool = False
+
+    @property
+    def mask(self) -> int:
+        """The field's bits in place."""
+        return ((1 << self.width) - 1) << self.lsb
+
+    @property
+    def max(self) -> int:
+        return (1 << self.width) - 1
+
+    def get(self, word: int) -> int:
+        return (word >> self.lsb) & self.max
+
+    def put(self, value: int) -> int:
+        return (value & self.max) << self.lsb
+
+    @property
+    def bits(self) -> str:
+        """[msb:lsb] as in Verilog and the documentation."""
+        return f"[{self.lsb + self.width - 1}:{self.lsb}]"
+
+
+@dataclasses.dataclass
+class Word:
+    name: str
+    index: int
+    fields: list
+    reserved: bool = False
+    checksum: bool = False
+    doc: str = ""
+
+
+@dataclasses.dataclass
+class ControlByte:
+    name: str
+    offset: int
+    size: int
+    contents: str
+    writer: str
+
+
+class Contract:
+    """The loaded definition.  ROM words: header[i], entry[j]; fields by
+    word and name: c.field("E0", "kind"); the place layout: c.place_board,
+    c.place_base; constants as attributes (magic, checksum_seed, ...)."""
+
+    def __init__(self, data: dict, path: str):
+        self.path = path
+        try:
+            self._load(data)
+        except (KeyError, TypeError, ValueError) as e:
+            raise ContractError(f"{path}: malformed definition ({type(e).__name__}: {e})") from None
+        problems = self._problems()
+        if problems:
+            raise ContractError(f"{path}: " + "; ".join(problems))
+
+    # ---- loading
+    def _fields(self, word, index, items, fmt):
+        out = []
+        for f in items:
+            unknown = set(f) - {"name", "lsb", "width", "doc", "place"}
+            if unknown:
+                raise ValueError(f"{word}: unknown keys {sorted(unknown)}")
+            out.append(Field(word, index, f["name"], int(f["lsb"]), int(f["width"]),
+                             f.get("doc", "").format(**fmt), bool(f.get("place", False))))
+        return out
+
+    def _words(self, items, fmt):
+        words = []
+        for i, w in enumerate(items):
+            words.append(Word(w["word"], i, self._fields(w["word"], i, w.get("fields", []), fmt),
+                              bool(w.get("reserved", False)), bool(w.get("checksum", False)),
+                              w.get("doc", "")))
+        return words
+
+    def _load(self, data):
+        rom = data["rom"]
+        self.word_bits = int(rom["word_bits"])
+        self.header_words = int(rom["header_words"])
+        self.entry_words = int(rom["entry_words"])
+        self.magic = int(rom["magic"])
+        self.max_entries = int(rom["max_entries"])
+        self.max_dests = int(rom["max_dests"])
+        self.checksum_seed = int(rom["checksum_seed"])
+        self.checksum_rotate = int(rom["checksum_rotate"])
+        self.kind = {k: int(v) for k, v in rom["kind"].items()}
+        self.header_flags = {k: int(v) for k, v in rom["header_flags"].items()}
+        self.entry_flags = {k: int(v) for k, v in rom["entry_flags"].items()}
+        fmt = {"magic": f"0x{self.magic:04X}", "max_entries": self.max_entries, "max_dests": self.max_dests}
+        place = {f.name: f for f in self._fields("place", 0, rom["place"]["fields"], fmt)}
+        self.place_board = place["board"]
+        self.place_base = place["base"]
+        self.header = self._words(rom["header"], fmt)
+        self.entry = self._words(rom["entry"], fmt)
+        lay = data["layout"]
+        self.word_bytes = int(lay["word_bytes"])
+        self.buffers = int(lay["buffers"])
+        self.buffer1 = int(lay["buffer1"])
+        self.initial_index = int(lay["initial_index"])
+        self.buffers_offset = int(lay["buffers_offset"])
+        self.taken_at_words = int(lay["taken_at_words"])
+        self.control = {c["name"]: ControlByte(c["name"], int(c["offset"]), int(c["size"]), c["contents"],
+                                               c["writer"]) for c in lay["control"]}
+
+    def _problems(self):
+        p = []
+        wb = self.word_bits
+        if wb != 32:
+            p.append(f"word_bits {wb}: the ROM words are 32 bits")
+        for group, words, n in (("header", self.header, self.header_words), ("entry", self.entry, self.entry_words)):
+            if len(words) != n:
+                p.append(f"rom.{group} lists {len(words)} words, {group}_words is {n}")
+            for w in words:
+                used = 0
+                for f in w.fields:
+                    if f.width < 1 or f.lsb < 0 or f.lsb + f.width > wb:
+                        p.append(f"{w.name}.{f.name} {f.bits} is outside a {wb}-bit word")
+                    elif used & f.mask:
+                        p.append(f"{w.name}.{f.name} {f.bits} overlaps another field of {w.name}")
+                    used |= f.mask
+                    if f.place and f.width < self.place_board.lsb + self.place_board.width:
+                        p.append(f"{w.name}.{f.name}: {f.width} bits cannot hold a place")
+                if w.checksum and [f.width for f in w.fields] != [wb]:
+                    p.append(f"{w.name}: a checksum word is one {wb}-bit field")
+            if [w.checksum for w in words] != [False] * (len(words) - 1) + [True]:
+                p.append(f"rom.{group}: the checksum word must be the last, and the only one")
+        if self.place_board.mask & self.place_base.mask:
+            p.append("rom.place: board and base overlap")
+        for name in ("ne", "flags", "magic"):
+            self._need(p, "H0", name)
+        for name in ("kind", "flags", "id", "nd", "w"):
+            self._need(p, "E0", name)
+        if not p:
+            if self.magic > self.field("H0", "magic").max:
+                p.append(f"magic {self.magic:#x} does not fit H0.magic")
+            if self.max_entries > self.field("H0", "ne").max:
+                p.append(f"max_entries {self.max_entries} does not fit H0.ne")
+            if self.max_dests > self.field("E0", "nd").max:
+                p.append(f"max_dests {self.max_dests} does not fit E0.nd")
+            if len(self.dest_fields) != self.max_dests:
+                p.append(f"{len(self.dest_fields)} destination places (dst0..), max_dests is {self.max_dests}")
+            if len(set(self.kind.values())) != len(self.kind) or \
+                    max(self.kind.values()) > self.field("E0", "kind").max:
+                p.append("rom.kind: codes must be distinct and fit E0.kind")
+            for fl, word in ((self.header_flags, "H0"), (self.entry_flags, "E0")):
+                if any(b >= self.field(word, "flags").width for b in fl.values()):
+                    p.append(f"a flag bit outside {word}.flags")
+        if not 0 <= self.checksum_rotate < wb or not 0 <= self.checksum_seed < (1 << wb):
+            p.append("checksum_rotate or checksum_seed out of range")
+        offs = sorted((c.offset, c.offset + c.size) for c in self.control.values())
+        if any(a[1] > b[0] for a, b in zip(offs, offs[1:])) or (offs and offs[-1][1] > self.buffers_offset):
+            p.append("layout: control bytes overlap each other or the buffers")
+        if self.buffers_offset % self.word_bytes:
+            p.append("layout: buffers_offset is not word-aligned")
+        for name in ("actual", "readlocked"):
+            if name not in self.control:
+                p.append(f"layout: no control byte '{name}'")
+        return p
+
+    def _need(self, p, word, name):
+        if not any(w.name == word and any(f.name == name for f in w.fields) for w in self.header + self.entry):
+            p.append(f"{word} has no field '{name}'")
+
+    # ---- look-ups
+    def word(self, name: str) -> Word:
+        for w in self.header + self.entry:
+            if w.name == name:
+                return w
+        raise KeyError(name)
+
+    def field(self, word: str, name: str) -> Field:
+        for f in self.word(word).fields:
+            if f.name == name:
+                return f
+        raise KeyError(f"{word}.{name}")
+
+    @property
+    def dest_fields(self) -> list:
+        """The destination places dst0, dst1, ... in order."""
+        out = [f for w in self.entry for f in w.fields if f.place and f.name.startswith("dst")]
+        return sorted(out, key=lambda f: int(f.name[3:]))
+
+    @property
+    def src_field(self) -> Field:
+        return next(f for w in self.entry for f in w.fields if f.place and f.name == "src")
+
+    def place_fields(self, f: Field):
+        """The board and base fields of place f, positioned in its word."""
+        return (dataclasses.replace(self.place_board, word=f.word, index=f.index, name=f"{f.name}_board",
+                                    lsb=f.lsb + self.place_board.lsb),
+                dataclasses.replace(self.place_base, word=f.word, index=f.index, name=f"{f.name}_base",
+                                    lsb=f.lsb + self.place_base.lsb))
+
+    def place(self, board: int, base_word: int) -> int:
+        """A {board, base word} pair as its 16-bit place value."""
+        return self.place_board.put(board) | self.place_base.put(base_word)
+
+    def unplace(self, value: int):
+        return self.place_board.get(value), self.place_base.get(value)
+
+    def flag(self, group: str, name: str) -> int:
+        """The mask of a flag within its flags field (not shifted into the word)."""
+        return 1 << (self.header_flags if group == "header" else self.entry_flags)[name]
+
+    # ---- ROM arithmetic
+    def checksum(self, words) -> int:
+        wb, r = self.word_bits, self.checksum_rotate
+        m = (1 << wb) - 1
+        c = self.checksum_seed
+        for w in words:
+            c = (((c << r) | (c >> (wb - r))) & m) ^ (w & m)
+        return c
+
+    def entry_address(self, k: int) -> int:
+        return self.header_words + self.entry_words * k
+
+    # ---- channel layout
+    def stride(self, payload: int) -> int:
+        """Bytes between buffers: the payload rounded up to whole words."""
+        return (payload + self.word_bytes - 1) // self.word_bytes * self.word_bytes
+
+    def channel_bytes(self, payload: int) -> int:
+        return self.buffers_offset + self.buffers * self.stride(payload)
+
+    def dest_payload(self, words: int) -> int:
+        """Bytes of a destination payload: the value's words, then taken_at."""
+        return self.word_bytes * (words + self.taken_at_words)
+
+    @property
+    def buffer_last(self) -> int:
+        return self.buffer1 + self.buffers - 1
+
+    @property
+    def control_words(self) -> int:
+        """Words before Buffer1 (the control bytes and the reserved bytes)."""
+        return self.buffers_offset // self.word_bytes
+
+    def initial_control_word(self) -> int:
+        """The first word of a freshly initialised channel (every control byte = initial_index)."""
+        return sum(self.initial_index << (8 * c.offset) for c in self.control.values()
+                   if c.offset < self.word_bytes)
+
+
+_cache = {}
+
+
+def load(path: str | None = None) -> Contract:
+    """The definition at path (default: $ALB_CONTRACT, else rtl/albatross_contract.toml)."""
+    path = path or os.environ.get("ALB_CONTRACT") or DEFAULT_PATH
+    if path not in _cache:
+        try:
+            with open(path, "rb") as f:
+                data = tomllib.load(f)
+        except OSError as e:
+            raise ContractError(f"{path}: cannot read the contract definition: {e.strerror}") from None
+        except tomllib.TOMLDecodeError as e:
+            raise ContractError(f"{path}: invalid TOML: {e}") from None
+        _cache[path] = Contract(data, path)
+    return _cache[path]
+

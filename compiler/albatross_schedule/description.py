@@ -1,0 +1,443 @@
+"""Reading and validating the system description (TOML): every error names
+the file, line, channel and field."""
+
+from __future__ import annotations
+
+import os
+import re
+import tomllib
+
+from .model import (BUS_DEFAULTS, BUS_MINIMUM, CHANNEL_KEYS, CTYPE_RE, DEFAULT_RAM_BYTES, HEADER_RE,
+                    IDENT_RE, MODE_RIGID, MODE_SYNC, RESERVED_FILES, SYSTEM_KEYS, Bus, Channel,
+                    ScheduleError, System)
+from .rom import BOARD_BITS, MAX_BOARDS, MAX_CHAN_IDS, MAX_DESTS, MAX_ENTRIES, MAX_WORDS
+
+
+class Locator:
+    """Best-effort line numbers for [system], [bus] and the i-th [[channel]]."""
+
+    HEADER_RE = re.compile(r"^\s*\[\[?\s*([A-Za-z0-9_.\"' -]+?)\s*\]\]?\s*(#.*)?$")
+
+    def __init__(self, path: str, text: str):
+        self.path = path
+        self.lines = text.splitlines()
+        self.tables = []            # (name, is_array, line index)
+        for i, line in enumerate(self.lines):
+            m = self.HEADER_RE.match(line)
+            if m and not line.lstrip().startswith("#"):
+                self.tables.append((m.group(1).strip(), line.lstrip().startswith("[["), i))
+
+    def _table_line(self, name, nth=0):
+        k = 0
+        for tname, _, i in self.tables:
+            if tname == name:
+                if k == nth:
+                    return i
+                k += 1
+        return None
+
+    def line(self, table, nth=0, field=None):
+        start = self._table_line(table, nth)
+        if start is None:
+            return None
+        if field is not None:
+            key_re = re.compile(r"^\s*[\"']?" + re.escape(field) + r"[\"']?\s*=")
+            for i in range(start + 1, len(self.lines)):
+                if self.HEADER_RE.match(self.lines[i]) and not self.lines[i].lstrip().startswith("#"):
+                    break
+                if key_re.match(self.lines[i]):
+                    return i + 1
+        return start + 1
+
+    def where(self, table, nth=0, field=None):
+        ln = self.line(table, nth, field)
+        return f"{self.path}:{ln}" if ln else self.path
+
+
+class Errors:
+    def __init__(self, loc: Locator):
+        self.loc = loc
+        self.messages = []
+
+    def system(self, field, msg, table="system"):
+        where = self.loc.where(table, 0, field)
+        fld = f", field '{field}'" if field else ""
+        self.messages.append(f"{where}: [{table}]{fld}: {msg}")
+
+    def channel(self, i, name, field, msg):
+        where = self.loc.where("channel", i, field)
+        who = f"channel '{name}'" if isinstance(name, str) and name else f"channel #{i + 1}"
+        fld = f", field '{field}'" if field else ""
+        self.messages.append(f"{where}: {who}{fld}: {msg}")
+
+    def general(self, msg):
+        self.messages.append(f"{self.loc.path}: {msg}")
+
+    def raise_if_any(self):
+        if self.messages:
+            raise ScheduleError(self.messages)
+
+
+def _is_int(v) -> bool:
+    return isinstance(v, int) and not isinstance(v, bool)
+
+
+def _describe(v) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, str):
+        return repr(v)
+    if isinstance(v, float):
+        return f"{v:g}"
+    return repr(v) if not isinstance(v, (dict, list)) else type(v).__name__
+
+
+def load_toml(path: str):
+    """Read and decode a TOML file; errors name the file, line and column."""
+    try:
+        with open(path, "rb") as f:
+            raw = f.read()
+    except OSError as e:
+        raise ScheduleError(f"{path}: cannot read the description: {e.strerror}")
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as e:
+        raise ScheduleError(f"{path}: not UTF-8 text (byte {e.start})")
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        msg = str(e)
+        m = re.search(r"\(at line (\d+), column (\d+)\)", msg)
+        if m:
+            base = msg[:m.start()].strip()
+            raise ScheduleError(f"{path}:{m.group(1)}:{m.group(2)}: invalid TOML: {base} "
+                                f"(line {m.group(1)}, column {m.group(2)})")
+        raise ScheduleError(f"{path}: invalid TOML: {msg}")
+    return data, text
+
+
+def parse_description(data: dict, path: str = "<description>", text: str = "") -> System:
+    """Validate the decoded TOML and build the System (no plan yet)."""
+    loc = Locator(path, text)
+    err = Errors(loc)
+
+    for key in data:
+        if key not in ("system", "bus", "channel"):
+            err.general(f"unknown section [{key}] (expected [system], [bus], [[channel]])")
+
+    # ---- [system]
+    sysd = data.get("system")
+    if sysd is None:
+        err.general("missing section [system] (name, clock_hz, boards, ...)")
+        err.raise_if_any()
+    if not isinstance(sysd, dict):
+        err.general("[system] must be a table")
+        err.raise_if_any()
+    for key in sysd:
+        if key not in SYSTEM_KEYS:
+            err.system(key, f"unknown field (expected one of {', '.join(sorted(SYSTEM_KEYS))})")
+
+    name = sysd.get("name")
+    if name is None:
+        err.system("name", "missing (a C identifier naming the system)")
+        name = "system"
+    elif not isinstance(name, str) or not IDENT_RE.match(name):
+        err.system("name", f"{_describe(name)} is not a C identifier")
+        name = "system"
+
+    clock_hz = sysd.get("clock_hz")
+    if clock_hz is None:
+        err.system("clock_hz", "missing (the controller clock in Hz)")
+        clock_hz = 1
+    elif not _is_int(clock_hz) or clock_hz <= 0:
+        err.system("clock_hz", f"{_describe(clock_hz)} is not a positive integer")
+        clock_hz = 1
+
+    boards = sysd.get("boards")
+    board_ok = True
+    if boards is None:
+        err.system("boards", "missing (a list of board names)")
+        boards, board_ok = [], False
+    elif not isinstance(boards, list) or not boards:
+        err.system("boards", "must be a non-empty list of board names")
+        boards, board_ok = [], False
+    else:
+        if len(boards) > MAX_BOARDS:
+            err.system("boards", f"{len(boards)} boards, at most {MAX_BOARDS} fit the {BOARD_BITS}-bit board fields of the ROM")
+            board_ok = False
+        seen = {}
+        for b in boards:
+            if not isinstance(b, str) or not IDENT_RE.match(b):
+                err.system("boards", f"board name {_describe(b)} is not a C identifier")
+                board_ok = False
+                continue
+            if b.lower() in seen:
+                err.system("boards", f"duplicate board name '{b}'"
+                           + (f" (same file name as '{seen[b.lower()]}')" if seen[b.lower()] != b else ""))
+                board_ok = False
+            seen[b.lower()] = b
+            if b.lower() in RESERVED_FILES:
+                err.system("boards", f"board name '{b}' would overwrite the driver header {b}.h")
+                board_ok = False
+        boards = [b for b in boards if isinstance(b, str)]
+    board_index = {b: i for i, b in enumerate(boards)}
+
+    mode = sysd.get("mode", MODE_RIGID)
+    if mode not in (MODE_RIGID, MODE_SYNC):
+        err.system("mode", f"{_describe(mode)}: expected \"{MODE_RIGID}\" or \"{MODE_SYNC}\"")
+        mode = MODE_RIGID
+
+    types_header = sysd.get("types_header")
+    if types_header is not None:
+        if not isinstance(types_header, str) or not HEADER_RE.match(types_header):
+            err.system("types_header", f"{_describe(types_header)} is not a header file name (x.h)")
+            types_header = None
+        else:
+            stem = os.path.splitext(os.path.basename(types_header))[0]
+            if stem in boards:
+                err.system("types_header", f"'{types_header}' has the name of the generated header of board '{stem}'")
+
+    ram = sysd.get("ram_bytes", DEFAULT_RAM_BYTES)
+    ram_bytes = [DEFAULT_RAM_BYTES] * len(boards)
+
+    def check_ram(v, what):
+        if not _is_int(v) or v <= 0:
+            err.system("ram_bytes", f"{what}: {_describe(v)} is not a positive integer")
+            return False
+        if v & (v - 1) or v < 16:
+            err.system("ram_bytes", f"{what}: {v} is not a power of two >= 16")
+            return False
+        return True
+
+    if isinstance(ram, dict):
+        for b, v in ram.items():
+            if b not in board_index:
+                err.system("ram_bytes", f"unknown board '{b}' (boards: {', '.join(boards)})")
+            elif check_ram(v, f"board '{b}'"):
+                ram_bytes[board_index[b]] = v
+    elif check_ram(ram, "every board"):
+        ram_bytes = [ram] * len(boards)
+
+    # ---- [bus]
+    bus = Bus()
+    busd = data.get("bus", {})
+    if not isinstance(busd, dict):
+        err.general("[bus] must be a table")
+        busd = {}
+    for key, v in busd.items():
+        if key not in BUS_DEFAULTS:
+            err.system(key, f"unknown field (expected one of {', '.join(BUS_DEFAULTS)})", table="bus")
+            continue
+        lo = BUS_MINIMUM[key]
+        if not _is_int(v) or v < lo:
+            err.system(key, f"{_describe(v)} is not an integer >= {lo}", table="bus")
+            continue
+        if key == "n_chan" and v > MAX_CHAN_IDS:
+            bits = MAX_CHAN_IDS.bit_length() - 1
+            article = "an" if str(bits).startswith("8") or bits in (11, 18) else "a"
+            err.system(key, f"{v} exceeds {MAX_CHAN_IDS} (the channel id is {article} "
+                       f"{bits}-bit ROM field)", table="bus")
+            continue
+        setattr(bus, key, v)
+
+    # ---- [[channel]]
+    chans = data.get("channel")
+    if chans is None:
+        err.general("missing section [[channel]] (at least one channel)")
+        err.raise_if_any()
+    if isinstance(chans, dict):
+        err.general("[channel] must be an array of tables: write [[channel]] for every channel")
+        err.raise_if_any()
+    if not isinstance(chans, list) or not chans:
+        err.general("[[channel]] must list at least one channel")
+        err.raise_if_any()
+
+    channels = []
+    names = {}
+    n_sync = 0
+    status_words = 1 + 2 * bus.n_chan
+    for i, cd in enumerate(chans):
+        if not isinstance(cd, dict):
+            err.channel(i, None, None, "must be a table")
+            continue
+        cname = cd.get("name")
+        ok = True
+        if cname is None:
+            err.channel(i, None, "name", "missing (a C identifier)")
+            ok = False
+        elif not isinstance(cname, str) or not IDENT_RE.match(cname):
+            err.channel(i, None, "name", f"{_describe(cname)} is not a C identifier "
+                        "(a letter, then letters, digits or _)")
+            ok = False
+        else:
+            if cname.upper() in names:
+                other = names[cname.upper()]
+                err.channel(i, cname, "name", f"duplicate channel name (already used by channel #{other[1] + 1}"
+                            + (f" '{other[0]}', the same macro ALB_{cname.upper()}_*" if other[0] != cname else "")
+                            + ")")
+                ok = False
+            else:
+                names[cname.upper()] = (cname, i)
+        label = cname if isinstance(cname, str) else None
+
+        for key in cd:
+            if key not in CHANNEL_KEYS:
+                err.channel(i, label, key, f"unknown field (expected one of {', '.join(sorted(CHANNEL_KEYS))})")
+                ok = False
+
+        kind = cd.get("kind", "copy")
+        if kind not in ("copy", "time", "status"):
+            err.channel(i, label, "kind", f"{_describe(kind)}: expected \"copy\", \"time\" or \"status\"")
+            kind, ok = "copy", False
+
+        ctype = cd.get("type")
+        if ctype is not None and (not isinstance(ctype, str) or not CTYPE_RE.match(ctype.strip())):
+            err.channel(i, label, "type", f"{_describe(ctype)} is not a C type name "
+                        "(an identifier, or struct/union/enum identifier)")
+            ctype, ok = None, False
+        elif ctype is not None:
+            ctype = " ".join(ctype.split())
+
+        size = 0
+        words = 0
+        producer = None
+        if kind == "copy":
+            size = cd.get("size")
+            if size is None:
+                err.channel(i, label, "size", "missing (the value's size in bytes)")
+                ok = False
+            elif not _is_int(size) or size <= 0:
+                err.channel(i, label, "size", f"{_describe(size)} is not a positive integer number of bytes")
+                ok = False
+            elif (size + 3) // 4 > MAX_WORDS:
+                err.channel(i, label, "size", f"{size} bytes = {(size + 3) // 4} words; the ROM's W field "
+                            f"holds at most {MAX_WORDS} words ({4 * MAX_WORDS} bytes)")
+                ok = False
+            if not ok or not _is_int(size) or size <= 0:
+                size = 4
+            words = (size + 3) // 4
+            p = cd.get("producer")
+            if p is None:
+                err.channel(i, label, "producer", "missing (the board that publishes the value)")
+                ok = False
+            elif not isinstance(p, str) or p not in board_index:
+                if board_ok:
+                    err.channel(i, label, "producer", f"unknown board {_describe(p)} (boards: {', '.join(boards)})")
+                ok = False
+            else:
+                producer = board_index[p]
+        else:
+            for fld in ("producer", "size"):
+                if fld in cd:
+                    err.channel(i, label, fld, f"a {kind} channel has no {fld}: the controller "
+                                f"generates its value ({'W = 1' if kind == 'time' else f'W = 1 + 2*n_chan = {status_words}'})")
+                    ok = False
+            words = 1 if kind == "time" else status_words
+            size = 4 * words
+
+        consumers = []
+        cons = cd.get("consumers")
+        if cons is None:
+            err.channel(i, label, "consumers", "missing (a list of 1..4 boards)")
+            ok = False
+        else:
+            if cons == "all":
+                cons = [b for b in boards if producer is None or board_index[b] != producer]
+                if len(cons) > MAX_DESTS:
+                    err.channel(i, label, "consumers", f"\"all\" means {len(cons)} boards; a transfer has "
+                                f"at most {MAX_DESTS} destinations")
+                    ok = False
+            if not isinstance(cons, list) or not cons:
+                err.channel(i, label, "consumers", "must be a non-empty list of board names (or \"all\")")
+                ok = False
+            else:
+                if len(cons) > MAX_DESTS:
+                    err.channel(i, label, "consumers", f"{len(cons)} consumers; a transfer has at most "
+                                f"{MAX_DESTS} destinations (split the channel)")
+                    ok = False
+                for c in cons:
+                    if not isinstance(c, str) or c not in board_index:
+                        if board_ok:
+                            err.channel(i, label, "consumers", f"unknown board {_describe(c)} "
+                                        f"(boards: {', '.join(boards)})")
+                        ok = False
+                        continue
+                    bi = board_index[c]
+                    if producer is not None and bi == producer:
+                        err.channel(i, label, "consumers", f"board '{c}' is the producer; a consumer must be "
+                                    "another board")
+                        ok = False
+                    elif bi in consumers:
+                        err.channel(i, label, "consumers", f"board '{c}' is listed twice")
+                        ok = False
+                    else:
+                        consumers.append(bi)
+
+        mp = cd.get("max_period_us")
+        if mp is None:
+            err.channel(i, label, "max_period_us", "missing (the required maximal period between "
+                        "transfers, in whole microseconds)")
+            ok, mp = False, 1
+        elif not _is_int(mp) or mp <= 0:
+            err.channel(i, label, "max_period_us", f"{_describe(mp)} is not a positive integer number "
+                        "of microseconds")
+            ok, mp = False, 1
+
+        sync = cd.get("sync", False)
+        if not isinstance(sync, bool):
+            err.channel(i, label, "sync", f"{_describe(sync)}: expected true or false")
+            sync, ok = False, False
+        if sync:
+            n_sync += 1
+            if mode != MODE_SYNC:
+                err.channel(i, label, "sync", f"sync = true needs [system] mode = \"{MODE_SYNC}\" "
+                            f"(this system is {mode})")
+                ok = False
+            elif kind != "copy":
+                err.channel(i, label, "sync", f"the sync channel must be a copy channel (the position), "
+                            f"not {kind}")
+                ok = False
+            elif n_sync > 1:
+                err.channel(i, label, "sync", "more than one sync channel (exactly one starts the cycle)")
+                ok = False
+
+        prio = cd.get("priority", 0)
+        if not _is_int(prio) or abs(prio) > 1000000:
+            err.channel(i, label, "priority", f"{_describe(prio)} is not an integer")
+            prio, ok = 0, False
+        max_slots = cd.get("max_slots")
+        if max_slots is not None and (not _is_int(max_slots) or max_slots <= 0):
+            err.channel(i, label, "max_slots", f"{_describe(max_slots)} is not a positive integer")
+            max_slots, ok = None, False
+
+        if ok:
+            channels.append(Channel(index=i, name=cname, kind=kind, ctype=ctype, size=size,
+                                    words=words, producer=producer, consumers=consumers,
+                                    max_period_us=mp, sync=sync, priority=prio,
+                                    max_slots=max_slots))
+
+    if len(chans) > bus.n_chan:
+        err.general(f"too many channels: {len(chans)} channels but the controller has "
+                    f"n_chan = {bus.n_chan} channel ids ([bus] n_chan)")
+    if len(chans) > MAX_ENTRIES:
+        err.general(f"too many channels: {len(chans)} channels need {len(chans)} ROM entries, "
+                    f"at most {MAX_ENTRIES}")
+    if mode == MODE_SYNC and n_sync == 0:
+        err.system("mode", f"{MODE_SYNC} mode needs exactly one channel with sync = true "
+                   "(the position channel that starts the cycle)")
+    err.raise_if_any()
+
+    system = System(name=name, clock_hz=clock_hz, boards=boards, ram_bytes=ram_bytes,
+                    mode=mode, types_header=types_header, bus=bus, channels=channels, source=path)
+    for ch in channels:
+        ch.period_clocks = ch.max_period_us * clock_hz // 1_000_000
+        if ch.period_clocks < 1:
+            err.channel(ch.index, ch.name, "max_period_us", f"{ch.max_period_us} us is less than "
+                        f"one clock at clock_hz = {clock_hz}")
+    err.raise_if_any()
+    return system
+
+
+def load_description(path: str) -> System:
+    data, text = load_toml(path)
+    return parse_description(data, path, text)

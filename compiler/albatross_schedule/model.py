@@ -1,0 +1,151 @@
+"""Data model of the schedule compiler: the description's constants, the
+error type, and the Bus, Channel, System, Slot and Plan records."""
+
+from __future__ import annotations
+
+import dataclasses
+import re
+from typing import Optional
+
+from .contract import load as load_contract
+
+MODE_RIGID = "time-rigid"
+MODE_SYNC = "position-synchronised"
+DEFAULT_RAM_BYTES = 4096
+
+BUS_DEFAULTS = {
+    "access_cycles": 2,
+    "first_access_extra": 1,
+    "fetch_cycles": 10,
+    "timeout_cycles": 8,
+    "retries_per_slot": 2,
+    "guard_cycles": 6,
+    "n_chan": 16,
+    "poll_cycles": 16,
+}
+BUS_MINIMUM = {
+    "access_cycles": 1, "first_access_extra": 0, "fetch_cycles": 1,
+    "timeout_cycles": 1, "retries_per_slot": 0, "guard_cycles": 0,
+    "n_chan": 1, "poll_cycles": 1,
+}
+
+SYSTEM_KEYS = {"name", "clock_hz", "boards", "ram_bytes", "mode", "types_header"}
+CHANNEL_KEYS = {"name", "kind", "type", "size", "producer", "consumers",
+                "max_period_us", "sync", "priority", "max_slots"}
+
+IDENT_RE = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
+CTYPE_RE = re.compile(r"^((struct|union|enum)\s+)?[A-Za-z_][A-Za-z0-9_]*$")
+HEADER_RE = re.compile(r'^[A-Za-z0-9_./+-]+\.h$')
+# File names a board header must not take: the driver's own headers.
+RESERVED_FILES = {"albatross", "albatross_layout", "alb_port", "alb_port_impl"}
+
+
+class ScheduleError(Exception):
+    """Bad input: one or more messages, each naming the problem and where."""
+
+    def __init__(self, messages):
+        if isinstance(messages, str):
+            messages = [messages]
+        self.messages = list(messages)
+        super().__init__("\n".join(self.messages))
+
+
+def us(clocks: float, clock_hz: int) -> float:
+    return clocks * 1e6 / clock_hz
+
+
+# ---------------------------------------------------------------------------
+# Data model.
+
+@dataclasses.dataclass
+class Bus:
+    access_cycles: int = 2
+    first_access_extra: int = 1
+    fetch_cycles: int = 10
+    timeout_cycles: int = 8
+    retries_per_slot: int = 2
+    guard_cycles: int = 6
+    n_chan: int = 16
+    poll_cycles: int = 16
+
+    @property
+    def retry_budget(self) -> int:
+        return self.retries_per_slot * (self.timeout_cycles + self.access_cycles + 1)
+
+    @property
+    def sample_offset(self) -> int:
+        return self.fetch_cycles + self.access_cycles
+
+
+@dataclasses.dataclass
+class Channel:
+    index: int                      # position in the description = channel id
+    name: str
+    kind: str                       # copy | time | status
+    ctype: Optional[str]            # user type, or None (generated <name>_t)
+    size: int                       # value bytes (time: 4, status: 4*W)
+    words: int                      # W
+    producer: Optional[int]         # board index (copy)
+    consumers: list                 # board indices, destination order
+    max_period_us: int
+    period_clocks: int = 0
+    sync: bool = False
+    priority: int = 0
+    max_slots: Optional[int] = None
+    # filled by the plan
+    src_base: Optional[int] = None  # byte offset in the producer's RAM
+    dst_bases: list = dataclasses.field(default_factory=list)
+    accesses: int = 0               # A
+    slot_len: int = 0               # L
+    slots: list = dataclasses.field(default_factory=list)   # starts, sorted
+
+    @property
+    def id(self) -> int:
+        return self.index
+
+    @property
+    def type_name(self) -> str:
+        if self.ctype:
+            return self.ctype
+        if self.kind == "time":
+            return "uint32_t"
+        return f"{self.name}_t"
+
+    @property
+    def dst_size(self) -> int:
+        """Destination payload bytes: the value's words, then taken_at."""
+        return load_contract().dest_payload(self.words)
+
+
+@dataclasses.dataclass
+class System:
+    name: str
+    clock_hz: int
+    boards: list
+    ram_bytes: list                 # per board
+    mode: str
+    types_header: Optional[str]
+    bus: Bus
+    channels: list
+    source: str = "<description>"
+
+    @property
+    def sync_mode(self) -> bool:
+        return self.mode == MODE_SYNC
+
+
+@dataclasses.dataclass
+class Slot:
+    channel: Channel
+    start: int
+    length: int
+    redundant: bool
+    sync: bool = False
+
+
+@dataclasses.dataclass
+class Plan:
+    cycle: int                      # C = H1, clocks
+    capacity: int                   # clocks usable by slots
+    slots: list                     # Slot, in entry order (= start order)
+    limiter: Channel                # channel whose max_period sets C

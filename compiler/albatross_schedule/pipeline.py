@@ -1,0 +1,86 @@
+"""The whole compilation: plan, ROM, self-check against the contract,
+generated files, and writing them."""
+
+from __future__ import annotations
+
+import json
+import os
+from typing import Optional
+
+from .cgen import render_board_c, render_board_header, render_ram_hex
+from .description import load_description
+from .layout import allocate_ram, verify_ram_layout
+from .model import Plan, ScheduleError, System
+from .picture import render_svg
+from .plan import build_plan, channel_gaps
+from .report import build_report, render_report_txt
+from .rom import encode_rom, rom_hex, verify_rom
+
+
+def self_check(system: System, plan: Plan, rom: list, layout: dict):
+    """Verify our own output against the contract before writing anything."""
+    problems, entries = verify_rom(rom, n_chan=system.bus.n_chan, n_boards=len(system.boards),
+                                   ram_words=[r // 4 for r in system.ram_bytes],
+                                   sync_expected=system.sync_mode)
+    for b, insts in layout.items():
+        problems += verify_ram_layout([(f"{ch.name} {role}", base, size) for ch, role, base, size in insts],
+                                      system.ram_bytes[b])
+    for ch in system.channels:
+        if not ch.slots:
+            problems.append(f"channel {ch.name} has no slot")
+        elif max(channel_gaps(ch.slots, plan.cycle)) > ch.period_clocks:
+            problems.append(f"channel {ch.name}: guaranteed period exceeds max_period")
+    if system.sync_mode and plan.slots[-1].start + plan.slots[-1].length + system.bus.poll_cycles > plan.cycle:
+        problems.append("no poll window at the end of the cycle")
+    if problems:
+        raise AssertionError("internal error, the plan breaks the contract: " + "; ".join(problems))
+
+
+def compile_system(system: System):
+    layout = allocate_ram(system)
+    plan = build_plan(system)
+    rom = encode_rom(system, plan)
+    self_check(system, plan, rom, layout)
+    rep = build_report(system, plan)
+    return plan, rom, rep
+
+
+def generate(system: System, plan: Plan, rom: list, rep: dict) -> dict:
+    """All output files: {file name: text}."""
+    desc = os.path.basename(system.source)
+    files = {"rom.hex": rom_hex(rom),
+             "report.json": json.dumps(rep, indent=2) + "\n",
+             "report.txt": render_report_txt(rep),
+             "timeline.svg": render_svg(system, plan, rep)}
+    for b, name in enumerate(system.boards):
+        files[f"{name}.h"] = render_board_header(system, b, desc, plan)
+        files[f"{name}.c"] = render_board_c(system, b, desc)
+        files[f"{name}_ram.hex"] = render_ram_hex(system, b)
+    return files
+
+
+def write_outputs(files: dict, out_dir: str):
+    try:
+        os.makedirs(out_dir, exist_ok=True)
+        # rom.hex last: its time stamp (the make target) is the newest
+        for name in sorted(files, key=lambda n: n == "rom.hex"):
+            text = files[name]
+            path = os.path.join(out_dir, name)
+            tmp = path + ".tmp"
+            with open(tmp, "w", newline="\n") as f:
+                f.write(text)
+            os.replace(tmp, path)
+    except OSError as e:
+        raise ScheduleError(f"{out_dir}: cannot write the outputs: {e.strerror or e}")
+
+
+def compile_file(path: str, out_dir: Optional[str] = None, no_redundancy: bool = False):
+    system = load_description(path)
+    if no_redundancy:   # one slot per channel and cycle: the spare capacity stays idle
+        for ch in system.channels:
+            ch.max_slots = 1
+    plan, rom, rep = compile_system(system)
+    files = generate(system, plan, rom, rep)
+    if out_dir is not None:
+        write_outputs(files, out_dir)
+    return system, plan, rep, files

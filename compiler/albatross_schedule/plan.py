@@ -1,0 +1,328 @@
+"""The plan: slot lengths, the cycle, redundant slots and their placement,
+and the bounds each channel gets from it."""
+
+from __future__ import annotations
+
+import random
+
+from .model import Bus, Channel, Plan, ScheduleError, Slot, System
+from .rom import C as CONTRACT, MAX_ENTRIES
+
+
+def transfer_accesses(ch: Channel) -> int:
+    nd = len(ch.consumers)
+    if ch.kind == "copy":
+        return 3 + ch.words + nd * (ch.words + 3)
+    return nd * (ch.words + 3)
+
+
+def slot_length(ch: Channel, bus: Bus) -> int:
+    return (bus.fetch_cycles + bus.first_access_extra + bus.access_cycles * transfer_accesses(ch)
+            + bus.retry_budget + bus.guard_cycles)
+
+
+def pub_offset(ch: Channel, bus: Bus, retries: bool) -> int:
+    off = bus.fetch_cycles + bus.first_access_extra + bus.access_cycles * ch.accesses
+    return off + (bus.retry_budget if retries else 0)
+
+
+def channel_gaps(starts, cycle):
+    """Gaps between consecutive slot starts of one channel, cyclic."""
+    s = sorted(starts)
+    return [(s[(i + 1) % len(s)] + (cycle if i + 1 == len(s) else 0)) - s[i] for i in range(len(s))]
+
+
+def _score(order, starts, cycle, counts):
+    """Per channel: largest gap * slots (C = perfectly even); sorted descending
+    so tuples compare leximin-style (worst channel first)."""
+    per = {}
+    for sl, s in zip(order, starts):
+        per.setdefault(sl[0], []).append(s)
+    vals = []
+    for k, ss in per.items():
+        vals.append(max(channel_gaps(ss, cycle)) * counts[k])
+    return tuple(sorted(vals, reverse=True))
+
+
+def _place(order, targets, lengths, cap, fixed_first):
+    """Positions for slots in the given order: min-max deviation from the
+    targets (binary search), then slots as close to their targets as the
+    corridor allows.  None if the order does not fit."""
+    m = len(order)
+    total = sum(lengths)
+    if total > cap:
+        return None
+
+    def corridor(d):
+        lo = [0] * m
+        prev = 0
+        for i in range(m):
+            e = max(targets[i] - d, prev)
+            if fixed_first and i == 0:
+                e = 0
+            lo[i] = e
+            prev = e + lengths[i]
+        if prev > cap:
+            return None
+        hi = [0] * m
+        nxt = cap
+        for i in range(m - 1, -1, -1):
+            h = min(targets[i] + d, nxt - lengths[i])
+            if fixed_first and i == 0:
+                h = min(h, 0)
+            if h < lo[i]:
+                return None
+            hi[i] = h
+            nxt = h
+        return lo, hi
+
+    lo_d, hi_d = 0, cap
+    best = corridor(hi_d)
+    if best is None:
+        return None
+    while lo_d < hi_d:
+        mid = (lo_d + hi_d) // 2
+        c = corridor(mid)
+        if c is None:
+            lo_d = mid + 1
+        else:
+            hi_d, best = mid, c
+    lo, hi = best
+    pos = []
+    prev = 0
+    for i in range(m):
+        p = min(max(targets[i], lo[i], prev), hi[i])
+        pos.append(p)
+        prev = p + lengths[i]
+    return pos
+
+
+def _balance(order, pos, lengths, cap, cycle, fixed_first, sweeps=40):
+    """Coordinate descent: move each slot, within the room its neighbours in
+    the plan leave, towards the midpoint of its channel neighbours."""
+    m = len(order)
+    by_ch = {}
+    for i, sl in enumerate(order):
+        by_ch.setdefault(sl[0], []).append(i)
+    for _ in range(sweeps):
+        moved = False
+        for k, idx in by_ch.items():
+            n = len(idx)
+            if n < 2:
+                continue
+            for j, i in enumerate(idx):
+                if fixed_first and i == 0:
+                    continue
+                p = pos[idx[j - 1]] - (cycle if j == 0 else 0)
+                q = pos[idx[(j + 1) % n]] + (cycle if j + 1 == n else 0)
+                want = (p + q) // 2
+                lo = pos[i - 1] + lengths[i - 1] if i > 0 else 0
+                hi = (pos[i + 1] if i + 1 < m else cap) - lengths[i]
+                new = min(max(want, lo), hi)
+                if new != pos[i]:
+                    pos[i] = new
+                    moved = True
+        if not moved:
+            break
+    return pos
+
+
+def place_slots(items, cycle, cap, sync_key=None, seed=1, budget=2500):
+    """items: list of (key, length, count).  Returns [(key, start, j)] sorted by
+    start, where j numbers the slots of a channel.  The sync channel's first
+    slot (sync_key) is fixed at start 0."""
+    counts = {k: n for k, _, n in items}
+    length = {k: l for k, l, _ in items}
+    keys = [k for k, _, _ in items]
+    rng = random.Random(seed)
+    fixed_first = sync_key is not None
+
+    def build(phase):
+        sl = []
+        for k in keys:
+            n = counts[k]
+            for j in range(n):
+                t = (phase[k] + j) * cycle / n
+                sl.append((k, j, t))
+        # the sync slot first; the rest by target, ties by channel order
+        sl.sort(key=lambda x: (0 if (x[0] == sync_key and x[1] == 0) else 1, x[2], keys.index(x[0])))
+        order = [(k, j) for k, j, _ in sl]
+        targets = [int(t) for _, _, t in sl]
+        return order, targets
+
+    def evaluate(order, targets):
+        lengths = [length[k] for k, _ in order]
+        pos = _place(order, targets, lengths, cap, fixed_first)
+        if pos is None:
+            return None
+        pos = _balance(order, pos, lengths, cap, cycle, fixed_first)
+        return _score(order, pos, cycle, counts), pos
+
+    def perfect(order, pos):
+        """No channel's largest gap can shrink: each is ceil(C / n)."""
+        per = {}
+        for (k, _), p in zip(order, pos):
+            per.setdefault(k, []).append(p)
+        return all(max(channel_gaps(ss, cycle)) <= -(-cycle // counts[k]) for k, ss in per.items())
+
+    candidates = []
+    nk = len(keys)
+    phases = [{k: 0.0 for k in keys}]
+    phases.append({k: i / nk for i, k in enumerate(keys)})
+    phases.append({k: (i + 0.5) / nk for i, k in enumerate(keys)})
+    phases.append({k: 1 - (i + 1) / nk for i, k in enumerate(keys)})
+    by_len = sorted(keys, key=lambda k: -length[k])
+    phases.append({k: by_len.index(k) / nk for k in keys})
+    for _ in range(40):
+        phases.append({k: rng.random() for k in keys})
+    for ph in phases:
+        if sync_key is not None:
+            ph[sync_key] = 0.0
+        order, targets = build(ph)
+        r = evaluate(order, targets)
+        if r is not None:
+            candidates.append((r[0], order, targets, r[1]))
+    if not candidates:
+        # fall back: back to back in channel order (always fits if the sum fits)
+        order = [(k, j) for k in keys for j in range(counts[k])]
+        if sync_key is not None:
+            order.remove((sync_key, 0))
+            order.insert(0, (sync_key, 0))
+        pos, t = [], 0
+        for k, _ in order:
+            pos.append(t)
+            t += length[k]
+        return [(k, p, j) for (k, j), p in zip(order, pos)]
+    candidates.sort(key=lambda c: c[0])
+
+    # Local search on the order from the best few candidates: move one slot
+    # to another place in the order (or swap two neighbours), keep the move
+    # when the score improves.  A budget of evaluations keeps large plans
+    # fast; everything is deterministic.
+    m = len(candidates[0][1])
+    budget = max(200, min(budget, 150000 // max(m, 1)))
+    window = m if m <= 40 else 12
+    first = 1 if fixed_first else 0
+    best = None
+    for score0, order0, targets0, pos0 in candidates[:2]:
+        cur = (score0, list(zip(order0, targets0)), pos0)
+        evals = 0
+        done = perfect(order0, pos0)
+        while not done and evals < budget:
+            improved = False
+            for i in range(first, m):
+                for j in range(max(first, i - window), min(m, i + window + 1)):
+                    if j == i or evals >= budget:
+                        continue
+                    seq = list(cur[1])
+                    item = seq.pop(i)
+                    if abs(i - j) == 1 and item[0][0] == seq[min(j, len(seq) - 1)][0][0]:
+                        continue
+                    seq.insert(j, (item[0], cur[2][j]))   # aim at the place it moves to
+                    evals += 1
+                    r = evaluate([o for o, _ in seq], [t for _, t in seq])
+                    if r is not None and r[0] < cur[0]:
+                        seq = [(o, p) for (o, _), p in zip(seq, r[1])]
+                        cur = (r[0], seq, r[1])
+                        improved = True
+                        done = perfect([o for o, _ in seq], r[1])
+                        break
+                if done or evals >= budget:
+                    break
+            if not improved:
+                break
+        if best is None or cur[0] < best[0]:
+            best = cur
+        if perfect([o for o, _ in best[1]], best[2]):
+            break
+    best_score = best[0]
+    order = [o for o, _ in best[1]]
+    pos = best[2]
+    # renumber slots of each channel in start order
+    seen = {}
+    out = []
+    for (k, _), p in zip(order, pos):
+        j = seen.get(k, 0)
+        seen[k] = j + 1
+        out.append((k, p, j))
+    return out
+
+
+def build_plan(system: System) -> Plan:
+    bus = system.bus
+    for ch in system.channels:
+        ch.accesses = transfer_accesses(ch)
+        ch.slot_len = slot_length(ch, bus)
+    limiter = min(system.channels, key=lambda c: (c.period_clocks, c.index))
+    cycle = limiter.period_clocks
+    h1 = CONTRACT.field("H1", "cycle")
+    if cycle > h1.max:
+        raise ScheduleError(f"{system.source}: channel '{limiter.name}', field 'max_period_us': the cycle "
+                            f"of {cycle} clocks does not fit the {h1.width}-bit ROM field {h1.word}")
+    cap = cycle - (bus.poll_cycles if system.sync_mode else 0)
+    need = sum(ch.slot_len for ch in system.channels)
+    if need > cap:
+        detail = ", ".join(f"{ch.name} {ch.slot_len}" for ch in system.channels)
+        poll = (f", of which {bus.poll_cycles} stay idle for the position poll ([bus] poll_cycles)"
+                if system.sync_mode else "")
+        raise ScheduleError(
+            f"{system.source}: infeasible plan: one slot per channel needs {need} clocks per cycle but "
+            f"only {max(cap, 0)} are available: the cycle is {cycle} clocks "
+            f"({limiter.max_period_us} us, the smallest max_period_us, of channel '{limiter.name}', "
+            f"at clock_hz = {system.clock_hz}){poll}. Slot lengths in clocks: {detail}. "
+            "Relax max_period_us, shrink or merge channels, or raise clock_hz.")
+
+    # Redundant slots, round-robin by priority then shortest period.
+    counts = {ch.index: 1 for ch in system.channels}
+    used = need
+    entries = len(system.channels)
+    rr = sorted(system.channels, key=lambda c: (-c.priority, c.period_clocks, c.index))
+    progress = True
+    while progress and entries < MAX_ENTRIES:
+        progress = False
+        for ch in rr:
+            if entries >= MAX_ENTRIES:
+                break
+            if ch.max_slots is not None and counts[ch.index] >= ch.max_slots:
+                continue
+            if used + ch.slot_len <= cap:
+                counts[ch.index] += 1
+                used += ch.slot_len
+                entries += 1
+                progress = True
+
+    sync_ch = next((c for c in system.channels if c.sync), None)
+    items = [(ch.index, ch.slot_len, counts[ch.index]) for ch in system.channels]
+    placed = place_slots(items, cycle, cap, sync_key=sync_ch.index if sync_ch else None)
+    by_index = {ch.index: ch for ch in system.channels}
+    slots = []
+    for k, start, j in placed:
+        ch = by_index[k]
+        slots.append(Slot(channel=ch, start=start, length=ch.slot_len, redundant=j > 0,
+                          sync=(sync_ch is not None and ch is sync_ch and start == 0 and j == 0)))
+    slots.sort(key=lambda s: (s.start, 0 if s.sync else 1))
+    for ch in system.channels:
+        ch.slots = sorted(s.start for s in slots if s.channel is ch)
+    return Plan(cycle=cycle, capacity=cap, slots=slots, limiter=limiter)
+
+
+def channel_bounds(system: System, plan: Plan, ch: Channel) -> dict:
+    bus = system.bus
+    gaps = channel_gaps(ch.slots, plan.cycle)
+    period = max(gaps)
+    pub_ff = pub_offset(ch, bus, False)
+    pub_rt = pub_offset(ch, bus, True)
+    b = {
+        "guaranteed_period_clocks": period,
+        "min_gap_clocks": min(gaps),
+        "pub_offset_clocks": {"fault_free": pub_ff, "with_retries": pub_rt},
+    }
+    if ch.kind == "copy":
+        ff = max(g + pub_ff - bus.sample_offset for g in gaps)
+        rt = max(g + pub_rt - bus.sample_offset for g in gaps)
+        b["latency_clocks"] = {"fault_free": ff, "with_retries": rt}
+        b["age_bound_clocks"] = None
+    else:
+        b["latency_clocks"] = None
+        b["age_bound_clocks"] = {"fault_free": period + pub_ff, "with_retries": period + pub_rt}
+    return b

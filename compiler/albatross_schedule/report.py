@@ -1,0 +1,131 @@
+"""The plan's report: report.json (machine-readable) and report.txt."""
+
+from __future__ import annotations
+
+import dataclasses
+import os
+
+from .layout import channel_bytes
+from .model import Plan, System, us
+from .cgen import board_instances
+from .plan import channel_bounds, pub_offset
+
+
+def build_report(system: System, plan: Plan) -> dict:
+    hz = system.clock_hz
+    bus = system.bus
+
+    def t(c):
+        return {"clocks": c, "us": round(us(c, hz), 3)}
+
+    chans = []
+    busy_bus = busy_ctl = fill = 0
+    for ch in system.channels:
+        b = channel_bounds(system, plan, ch)
+        n = len(ch.slots)
+        busy_bus += n * bus.access_cycles * ch.accesses
+        busy_ctl += n * pub_offset(ch, bus, False)
+        fill += n * ch.slot_len
+        entry = {
+            "name": ch.name, "id": ch.id, "kind": ch.kind, "type": ch.type_name,
+            "size": ch.size, "words": ch.words,
+            "producer": ({"board": system.boards[ch.producer], "board_index": ch.producer,
+                          "base": ch.src_base} if ch.producer is not None else None),
+            "consumers": [{"board": system.boards[c], "board_index": c, "base": base}
+                          for c, base in zip(ch.consumers, ch.dst_bases)],
+            "sync": ch.sync, "priority": ch.priority,
+            "max_period": t(ch.period_clocks), "max_period_us_required": ch.max_period_us,
+            "accesses": ch.accesses, "slot_length": ch.slot_len,
+            "slots": [{"start": s.start, "length": s.length, "entry": i, "redundant": s.redundant,
+                       "sync": s.sync} for i, s in enumerate(plan.slots) if s.channel is ch],
+            "redundancy": n,
+            "guaranteed_period": t(b["guaranteed_period_clocks"]),
+            "min_gap": t(b["min_gap_clocks"]),
+            "latency": None if b["latency_clocks"] is None else {
+                "fault_free": t(b["latency_clocks"]["fault_free"]),
+                "with_retries": t(b["latency_clocks"]["with_retries"])},
+            "age_bound": None if b["age_bound_clocks"] is None else {
+                "fault_free": t(b["age_bound_clocks"]["fault_free"]),
+                "with_retries": t(b["age_bound_clocks"]["with_retries"])},
+        }
+        chans.append(entry)
+    boards = []
+    for bi, name in enumerate(system.boards):
+        insts = [{"channel": ch.name, "role": role, "base": base,
+                  "bytes": channel_bytes(ch.size if role == "source" else ch.dst_size)}
+                 for ch, role, base in board_instances(system, bi)]
+        boards.append({"name": name, "index": bi, "ram_bytes": system.ram_bytes[bi],
+                       "used_bytes": sum(i["bytes"] for i in insts), "instances": insts})
+    return {
+        "generator": "compiler/albatross_schedule.py",
+        "description": os.path.basename(system.source),
+        "system": system.name, "mode": system.mode, "clock_hz": hz,
+        "cycle": t(plan.cycle),
+        "cycle_limited_by": plan.limiter.name,
+        "capacity_clocks": plan.capacity,
+        "entries": len(plan.slots),
+        "bus": dataclasses.asdict(bus),
+        "definitions": {
+            "slot_length": "fetch + first_access_extra + access_cycles*A + retries_per_slot*(timeout+access+1) + guard",
+            "guaranteed_period": "largest gap between consecutive slot starts of the channel (cyclic)",
+            "latency": "producer's store of source Actual -> controller's store of the last destination Actual: "
+                       "max over slots of start(next)+pub_offset - (start+fetch+access)",
+            "age_bound": "TIME/STATUS: guaranteed_period + pub_offset",
+            "bus_utilisation": "sum over slots of access_cycles*A (fault-free bus-busy clocks) / cycle",
+            "controller_busy": "sum over slots of fetch + first_access_extra + access_cycles*A / cycle",
+            "schedule_fill": "sum of slot lengths / cycle",
+        },
+        "bus_utilisation": round(busy_bus / plan.cycle, 4),
+        "controller_busy": round(busy_ctl / plan.cycle, 4),
+        "schedule_fill": round(fill / plan.cycle, 4),
+        "channels": chans,
+        "boards": boards,
+        "entries_list": [{"entry": i, "channel": s.channel.name, "id": s.channel.id, "kind": s.channel.kind,
+                          "start": s.start, "length": s.length, "redundant": s.redundant, "sync": s.sync}
+                         for i, s in enumerate(plan.slots)],
+    }
+
+
+def render_report_txt(rep: dict) -> str:
+    def f(x):
+        return f"{x:.2f}"
+
+    L = []
+    L.append(f"ALBATROSS schedule of '{rep['system']}' ({rep['description']}), {rep['mode']}")
+    L.append(f"clock {rep['clock_hz']} Hz; cycle {rep['cycle']['clocks']} clocks = {f(rep['cycle']['us'])} us "
+             f"(smallest max_period: {rep['cycle_limited_by']}); {rep['entries']} ROM entries")
+    L.append(f"bus utilisation {100 * rep['bus_utilisation']:.1f} % (fault-free accesses), controller busy "
+             f"{100 * rep['controller_busy']:.1f} %, slots fill {100 * rep['schedule_fill']:.1f} % of the cycle")
+    L.append("")
+    hdr = ["id", "channel", "kind", "route", "W", "A", "L", "slots", "max period", "guar. period",
+           "latency ff", "latency retry", "age ff", "age retry"]
+    rows = []
+    for c in rep["channels"]:
+        src = c["producer"]["board"] if c["producer"] else "controller"
+        route = f"{src}->{','.join(d['board'] for d in c['consumers'])}"
+        lat = c["latency"]
+        age = c["age_bound"]
+        rows.append([str(c["id"]), c["name"] + (" (sync)" if c["sync"] else ""), c["kind"], route,
+                     str(c["words"]), str(c["accesses"]), str(c["slot_length"]), str(c["redundancy"]),
+                     f(c["max_period"]["us"]), f(c["guaranteed_period"]["us"]),
+                     f(lat["fault_free"]["us"]) if lat else "-", f(lat["with_retries"]["us"]) if lat else "-",
+                     f(age["fault_free"]["us"]) if age else "-", f(age["with_retries"]["us"]) if age else "-"])
+    widths = [max(len(r[i]) for r in rows + [hdr]) for i in range(len(hdr))]
+    L.append("  ".join(h.ljust(w) for h, w in zip(hdr, widths)))
+    L.append("  ".join("-" * w for w in widths))
+    for r in rows:
+        L.append("  ".join(v.ljust(w) if i < 4 else v.rjust(w) for i, (v, w) in enumerate(zip(r, widths))))
+    L.append("(times in us; W words, A fault-free accesses, L slot clocks; slots = redundancy factor)")
+    L.append("")
+    L.append("RAM per board (byte offsets)")
+    for b in rep["boards"]:
+        L.append(f"  {b['name']} (board {b['index']}): {b['used_bytes']} of {b['ram_bytes']} bytes")
+        for i in b["instances"]:
+            L.append(f"    0x{i['base']:04x}  {i['bytes']:5d} B  {i['channel']} ({i['role']})")
+    L.append("")
+    L.append("ROM entries")
+    L.append("  entry  start    end      channel")
+    for e in rep["entries_list"]:
+        tag = " SYNC" if e["sync"] else (" (redundant)" if e["redundant"] else "")
+        L.append(f"  {e['entry']:5d}  {e['start']:7d}  {e['start'] + e['length']:7d}  {e['channel']}{tag}")
+    return "\n".join(L) + "\n"

@@ -1,0 +1,173 @@
+"""The schedule ROM: encoding the plan, the hex image, and the check of a ROM
+image against the contract (README "Schedule ROM format")."""
+
+from __future__ import annotations
+
+import re
+
+from . import contract
+from .model import Plan, Slot, System
+
+# The contract (rtl/albatross_contract.toml) gives every field and constant.
+C = contract.load()
+ROM_MAGIC = C.magic
+CHECKSUM_SEED = C.checksum_seed
+MAX_ENTRIES = C.max_entries
+BOARD_BITS = C.place_board.width
+MAX_BOARDS = 1 << BOARD_BITS
+MAX_WORDS = C.field("E0", "w").max            # the W field
+MAX_BASE_WORD = C.place_base.max              # base word fields
+MAX_CHAN_IDS = 1 << C.field("E0", "id").width
+MAX_DESTS = C.max_dests
+KIND_CODE = dict(C.kind)
+KIND_NAME = {v: k for k, v in KIND_CODE.items()}
+FLAG_SYNC = C.flag("entry", "sync")
+HFLAG_SYNC_MODE = C.flag("header", "sync_mode")
+
+
+def checksum(words) -> int:
+    """The contract's checksum: c = seed; for each w: c = rotate_left(c, rotate) ^ w."""
+    return C.checksum(words)
+
+
+def dest_field(board: int, base_bytes: int) -> int:
+    """A place (source or destination): the board and the channel's base word."""
+    return C.place(board, base_bytes // C.word_bytes)
+
+
+def _pack(words, values) -> list:
+    """Words of the header or an entry from {(word, field): value}, sealed with
+    the checksum word (the last)."""
+    out = [0] * len(words)
+    for (w, f), v in values.items():
+        fld = C.field(w, f)
+        out[fld.index] |= fld.put(v)
+    out[-1] = checksum(out[:-1])
+    return out
+
+
+def encode_entry(slot: Slot) -> list:
+    ch = slot.channel
+    v = {("E0", "kind"): KIND_CODE[ch.kind], ("E0", "flags"): FLAG_SYNC if slot.sync else 0,
+         ("E0", "id"): ch.id, ("E0", "nd"): len(ch.consumers), ("E0", "w"): ch.words,
+         ("E1", "start"): slot.start, ("E2", "length"): slot.length}
+    if ch.kind == "copy":
+        src = C.src_field
+        v[(src.word, src.name)] = dest_field(ch.producer, ch.src_base)
+    for f, b, base in zip(C.dest_fields, ch.consumers, ch.dst_bases):
+        v[(f.word, f.name)] = dest_field(b, base)
+    return _pack(C.entry, v)
+
+
+def encode_rom(system: System, plan: Plan) -> list:
+    words = _pack(C.header, {("H0", "magic"): ROM_MAGIC, ("H0", "ne"): len(plan.slots),
+                             ("H0", "flags"): HFLAG_SYNC_MODE if system.sync_mode else 0,
+                             ("H1", "cycle"): plan.cycle})
+    for s in plan.slots:
+        words += encode_entry(s)
+    return words
+
+
+def rom_hex(words) -> str:
+    return "".join(f"{w:08x}\n" for w in words)
+
+
+def parse_rom_hex(text: str) -> list:
+    words = []
+    for ln, line in enumerate(text.splitlines(), 1):
+        line = line.split("//")[0].strip()
+        if not line:
+            continue
+        if not re.fullmatch(r"[0-9a-fA-F]{8}", line):
+            raise ValueError(f"line {ln}: {line!r} is not 8 hex digits")
+        words.append(int(line, 16))
+    return words
+
+
+def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None):
+    """Check a ROM image against the contract (header, checksums, entry
+    validation rules).  ram_words: int or list per board.  Returns a list of
+    problems (empty: valid) and the decoded entries."""
+    problems = []
+    entries = []
+    nh, nw = C.header_words, C.entry_words
+    if len(words) < nh:
+        return [f"ROM shorter than its {nh}-word header"], entries
+
+    def get(ws, word, field):
+        f = C.field(word, field)
+        return f.get(ws[f.index])
+
+    hdr = words[:nh]
+    magic = get(hdr, "H0", "magic")
+    if magic != ROM_MAGIC:
+        problems.append(f"H0 magic {magic:#06x}, expected {ROM_MAGIC:#06x}")
+    if checksum(hdr[:-1]) != hdr[-1]:
+        problems.append(f"header checksum {hdr[-1]:#010x}, expected {checksum(hdr[:-1]):#010x}")
+    problems += [f"{w.name} (reserved) is not 0" for w in C.header if w.reserved and hdr[w.index] != 0]
+    ne = get(hdr, "H0", "ne")
+    hflags = get(hdr, "H0", "flags")
+    sync_mode = bool(hflags & HFLAG_SYNC_MODE)
+    if hflags & ~HFLAG_SYNC_MODE:
+        problems.append("H0 reserved flag bits set")
+    if sync_expected is not None and sync_mode != sync_expected:
+        problems.append(f"H0 sync flag {int(sync_mode)}, expected {int(sync_expected)}")
+    if not 1 <= ne <= MAX_ENTRIES:
+        problems.append(f"entry count {ne} outside 1..{MAX_ENTRIES}")
+    if len(words) != C.entry_address(ne):
+        problems.append(f"ROM has {len(words)} words, header says {ne} entries = {C.entry_address(ne)} words")
+    cycle = get(hdr, "H1", "cycle")
+    prev_end = 0
+    copy, time, status = KIND_CODE["copy"], KIND_CODE["time"], KIND_CODE["status"]
+    src = C.src_field
+    for k in range(ne):
+        e = words[C.entry_address(k): C.entry_address(k + 1)]
+        if len(e) < nw:
+            break
+        tag = f"entry {k}"
+        kind, flags = get(e, "E0", "kind"), get(e, "E0", "flags")
+        cid, nd, w = get(e, "E0", "id"), get(e, "E0", "nd"), get(e, "E0", "w")
+        start, length = get(e, "E1", "start"), get(e, "E2", "length")
+        ent = {"kind": KIND_NAME.get(kind, kind), "flags": flags, "id": cid, "nd": nd, "w": w,
+               "start": start, "length": length, "src": C.unplace(src.get(e[src.index])),
+               "dst": [C.unplace(f.get(e[f.index])) for f in C.dest_fields][:nd]}
+        entries.append(ent)
+        if checksum(e[:-1]) != e[-1]:
+            problems.append(f"{tag}: checksum {e[-1]:#010x}, expected {checksum(e[:-1]):#010x}")
+        if kind not in KIND_NAME:
+            problems.append(f"{tag}: unknown kind {kind}")
+            continue
+        problems += [f"{tag}: {x.name} (reserved) is not 0" for x in C.entry if x.reserved and e[x.index] != 0]
+        if flags & FLAG_SYNC and (k != 0 or not sync_mode):
+            problems.append(f"{tag}: SYNC flag outside entry 0 of a position-synchronised ROM")
+        if sync_mode and k == 0 and not (flags & FLAG_SYNC and kind == copy and start == 0):
+            problems.append(f"{tag}: a position-synchronised ROM starts with a SYNC COPY at 0")
+        if kind == KIND_CODE["idle"]:
+            continue
+        if not 1 <= nd <= MAX_DESTS:
+            problems.append(f"{tag}: ND {nd} outside 1..{MAX_DESTS}")
+        if cid >= n_chan:
+            problems.append(f"{tag}: channel id {cid} >= N_CHAN {n_chan}")
+        if kind == time and w != 1:
+            problems.append(f"{tag}: TIME with W = {w}, expected 1")
+        if kind == status and w != 1 + 2 * n_chan:
+            problems.append(f"{tag}: STATUS with W = {w}, expected {1 + 2 * n_chan}")
+        exts = [(ent["dst"][i], w + C.taken_at_words) for i in range(min(nd, MAX_DESTS))]
+        if kind == copy:
+            exts.append((ent["src"], w))
+        elif e[src.index] != 0:
+            problems.append(f"{tag}: {src.word} (source) set on a {KIND_NAME[kind]} entry")
+        for (board, base), stride in exts:
+            if board >= n_boards:
+                problems.append(f"{tag}: board {board} >= NB {n_boards}")
+                continue
+            rw = ram_words[board] if isinstance(ram_words, (list, tuple)) else ram_words
+            if base + C.control_words + C.buffers * stride > rw:
+                problems.append(f"{tag}: channel at board {board} word {base} (stride {stride}) "
+                                f"ends past the RAM ({rw} words)")
+        if start < prev_end:
+            problems.append(f"{tag}: starts at {start}, before the previous slot ends at {prev_end}")
+        if start + length > cycle:
+            problems.append(f"{tag}: ends at {start + length}, after the cycle ({cycle})")
+        prev_end = start + length
+    return problems, entries

@@ -1,0 +1,82 @@
+// Generated from rtl/albatross_contract.toml by make contract (compiler/albatross_schedule/contract_gen.py); do not edit.
+// The ALBATROSS contract for the C++ testbenches: schedule ROM fields (word index
+// in the header or entry, lsb, width), constants, the checksum, and the channel
+// layout.  See docs/contract.md.
+#pragma once
+#include <cstdint>
+
+namespace alb_contract {
+
+struct Field {
+    unsigned word, lsb, width;  // word: index within the header or within an entry
+    constexpr uint32_t max() const { return width >= 32 ? 0xFFFFFFFFu : (1u << width) - 1u; }
+    constexpr uint32_t put(uint32_t v) const { return (v & max()) << lsb; }
+    constexpr uint32_t get(uint32_t w) const { return (w >> lsb) & max(); }
+};
+
+constexpr unsigned ROM_HEADER_WORDS = 4, ROM_ENTRY_WORDS = 8;
+constexpr unsigned ROM_MAX_ENTRIES = 255, ROM_MAX_DESTS = 4;
+constexpr uint32_t ROM_MAGIC = 0xA1BAu;
+constexpr uint32_t ROM_CHECKSUM_SEED = 0xA1BA7055u;
+constexpr unsigned ROM_CHECKSUM_ROTATE = 5;
+
+constexpr Field H0_MAGIC{0, 16, 16};
+constexpr Field H0_NE{0, 8, 8};
+constexpr Field H0_FLAGS{0, 0, 8};
+constexpr Field H1_CYCLE{1, 0, 32};
+constexpr Field H3_CHECKSUM{3, 0, 32};
+constexpr Field E0_KIND{0, 28, 4};
+constexpr Field E0_FLAGS{0, 24, 4};
+constexpr Field E0_ID{0, 16, 8};
+constexpr Field E0_ND{0, 12, 4};
+constexpr Field E0_W{0, 0, 12};
+constexpr Field E1_START{1, 0, 32};
+constexpr Field E2_LENGTH{2, 0, 32};
+constexpr Field E3_SRC{3, 0, 16};
+constexpr Field E3_SRC_BOARD{3, 12, 4};
+constexpr Field E3_SRC_BASE{3, 0, 12};
+constexpr Field E4_DST0{4, 0, 16};
+constexpr Field E4_DST0_BOARD{4, 12, 4};
+constexpr Field E4_DST0_BASE{4, 0, 12};
+constexpr Field E4_DST1{4, 16, 16};
+constexpr Field E4_DST1_BOARD{4, 28, 4};
+constexpr Field E4_DST1_BASE{4, 16, 12};
+constexpr Field E5_DST2{5, 0, 16};
+constexpr Field E5_DST2_BOARD{5, 12, 4};
+constexpr Field E5_DST2_BASE{5, 0, 12};
+constexpr Field E5_DST3{5, 16, 16};
+constexpr Field E5_DST3_BOARD{5, 28, 4};
+constexpr Field E5_DST3_BASE{5, 16, 12};
+constexpr Field E7_CHECKSUM{7, 0, 32};
+constexpr Field PLACE_BOARD{0, 12, 4};
+constexpr Field PLACE_BASE{0, 0, 12};
+// destination places of an entry, in order
+constexpr Field DST[] = {E4_DST0, E4_DST1, E5_DST2, E5_DST3};
+
+constexpr unsigned KIND_IDLE = 0;
+constexpr unsigned KIND_COPY = 1;
+constexpr unsigned KIND_TIME = 2;
+constexpr unsigned KIND_STATUS = 3;
+constexpr unsigned HFLAG_SYNC_MODE = 1u << 0;  // in H0.flags
+constexpr unsigned EFLAG_SYNC = 1u << 0;  // in E0.flags
+
+inline uint32_t checksum(const uint32_t *w, int n) {
+    uint32_t c = ROM_CHECKSUM_SEED;
+    for (int i = 0; i < n; ++i)
+        c = ((c << ROM_CHECKSUM_ROTATE) | (c >> (32 - ROM_CHECKSUM_ROTATE))) ^ w[i];
+    return c;
+}
+constexpr uint32_t place(uint32_t board, uint32_t base_word) {
+    return PLACE_BOARD.put(board) | PLACE_BASE.put(base_word);
+}
+
+// channel layout: byte offsets from the channel base
+constexpr uint32_t OFF_ACTUAL = 0, OFF_READLOCKED = 1, OFF_BUFFERS = 4;
+constexpr uint32_t WORD_BYTES = 4, BUFFERS = 3, BUFFER1 = 1, INITIAL_INDEX = 1;
+constexpr uint32_t TAKEN_AT_WORDS = 1;
+// Bytes of a destination payload: the value's words, then taken_at.
+constexpr uint32_t dest_bytes(uint32_t words) { return WORD_BYTES * (words + TAKEN_AT_WORDS); }
+// Byte offset of taken_at in a destination payload.
+constexpr uint32_t taken_at_offset(uint32_t words) { return WORD_BYTES * words; }
+
+}  // namespace alb_contract
