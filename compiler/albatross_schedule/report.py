@@ -57,7 +57,7 @@ def build_report(system: System, plan: Plan) -> dict:
         boards.append({"name": name, "index": bi, "ram_bytes": system.ram_bytes[bi],
                        "used_bytes": sum(i["bytes"] for i in insts), "instances": insts})
     return {
-        "generator": "compiler/albatross_schedule.py",
+        "generator": "albatross_schedule (compiler/)",
         "description": os.path.basename(system.source),
         "system": system.name, "mode": system.mode, "clock_hz": hz,
         "cycle": t(plan.cycle),
