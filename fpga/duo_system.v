@@ -57,7 +57,7 @@ module duo_system #(
     endgenerate
     assign rst_o = rst | core_rst;
 
-    // Sizes as in fpga/duo.toml (ram 1024 bytes, n_chan 4) and mk/fpga.mk (2 KiB programs).
+    // Sizes as in fpga/duo.toml (ram 1024 bytes, n_chan 4) and tools/mk/fpga.mk (2 KiB programs).
     wire [63:0]  code;
     wire [255:0] stat;
     wire unused_stat = &{1'b0, stat[255:129], stat[127:1]};  // the heartbeat is STAT 0 bit 0

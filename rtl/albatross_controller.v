@@ -2,7 +2,7 @@
 //
 // The only master of the system bus (Wishbone B4 classic, address {board[3:0],
 // word}).  It runs the cyclic schedule of a ROM ($readmemh ROM_FILE; in
-// simulation +rom=FILE overrides it) as README.md "Communication controller"
+// simulation +rom=FILE overrides it) as docs/controller.md
 // specifies.  COPY runs the source's Import (seed figure 3) and each
 // destination's Export (figure 4) in hardware, and streams every source word
 // once to all destinations that need it.  TIME and STATUS publish the

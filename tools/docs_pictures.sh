@@ -3,7 +3,7 @@
 # committed for the manual (docs/img/) are generated files: each COMMITTED copy
 # must equal, byte for byte, the FRESH one the build has just made.  Fails
 # naming every stale or missing picture and the command that refreshes them
-# (make docs-pictures).  Used by test-docs-pictures (mk/docs.mk).
+# (make docs-pictures).  Used by test-docs-pictures (tools/mk/docs.mk).
 set -u
 if [ $# -eq 0 ] || [ $(($# % 2)) -ne 0 ]; then
     echo "usage: $0 COMMITTED FRESH [COMMITTED FRESH ...]"; exit 2

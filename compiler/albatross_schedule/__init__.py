@@ -60,7 +60,7 @@ position-synchronised mode the sync channel is entry 0 at start 0 (SYNC
 flag) and poll_cycles stay idle at the end of the cycle.
 
 Outputs in DIR: rom.hex, <board>.h, <board>.c, <board>_ram.hex,
-report.json, report.txt, timeline.svg (see compiler/README.md).
+report.json, report.txt, timeline.svg (see docs/compiler.md).
 
 Modules (standard library only):
   model        the description's constants, ScheduleError, Bus/Channel/System/Slot/Plan

@@ -1,5 +1,5 @@
 """The schedule ROM: encoding the plan, the hex image, and the check of a ROM
-image against the contract (README "Schedule ROM format")."""
+image against the contract (rtl/albatross_contract.toml; docs/controller.md "Schedule ROM")."""
 
 from __future__ import annotations
 

@@ -10,7 +10,7 @@ definition, its checksum, magic, kind codes and entry addressing are checked
 by behaviour, and its layout constants by value, so a definition changed
 without the oracle (or an oracle changed without the definition) fails.
 ALB_CONTRACT=FILE checks the oracles against another definition (the
-negative test in mk/contract.mk).  The controller smoke test's layout
+negative test in tools/mk/contract.mk).  The controller smoke test's layout
 assumptions are static_asserts against the generated C++ header instead."""
 
 import os

@@ -2,7 +2,7 @@
 
     python3 -m unittest discover -s compiler/tests -v      (from the repository root)
 
-The checkers below re-implement the README contract independently of the
+The checkers below re-implement the ROM contract (docs/controller.md) independently of the
 compiler (ROM format, checksum, validation rules, memory map) and are
 themselves checked on deliberately corrupted ROMs and plans.  The
 end-to-end test runs the generated C (board headers, set-up functions, RAM
@@ -38,7 +38,7 @@ EXAMPLE_FILES = ["mobot3.toml", "mobot3_possync.toml"]
 
 
 # ---------------------------------------------------------------------------
-# Independent checkers of the README contract.  They are deliberate oracles,
+# Independent checkers of the ROM contract (docs/controller.md).  They are deliberate oracles,
 # written without the compiler's contract module; compiler/tests/test_contract.py
 # checks their field positions and constants against rtl/albatross_contract.toml.
 
@@ -89,7 +89,7 @@ def decode(words):
 
 
 def rom_problems(words, n_chan, ram_words):
-    """Every violation of the README's ROM format and validation rules."""
+    """Every violation of the ROM format (docs/controller.md) and validation rules."""
     p = []
     if len(words) < 4:
         return ["shorter than the header"]
@@ -196,7 +196,7 @@ def compile_example(name, out):
 
 # ---------------------------------------------------------------------------
 # A small model of the controller executing rom.hex on the boards' RAM
-# images (fault-free, README "Execution"), for the end-to-end test.
+# images (fault-free, docs/controller.md "Execution"), for the end-to-end test.
 
 class RamImage:
     def __init__(self, words):
@@ -419,7 +419,7 @@ class ExampleTests(unittest.TestCase):
                 self.assertTrue(first["sync"] and first["start"] == 0 and first["channel"] == "Position")
 
     def test_slot_lengths_and_bounds(self):
-        """Recompute A, L, the latency and age bounds from the README formulas."""
+        """Recompute A, L, the latency and age bounds from the formulas of docs/compiler.md "Plan"."""
         for name, out, rep in self.each():
             bus = rep["bus"]
             budget = bus["retries_per_slot"] * (bus["timeout_cycles"] + bus["access_cycles"] + 1)

@@ -1,5 +1,5 @@
 // formal_controller -- black-box property harness of albatross_controller for
-// the bounded proofs (mk/formal_rtl.mk, README "Formal proofs (RTL)").
+// the bounded proofs (tools/mk/formal_rtl.mk, docs/verification.md "Formal proofs (RTL)").
 //
 // Only the controller's ports are used, never its internal signals.  The
 // configuration is the smallest that exercises an Export: one board (NB = 1),
@@ -27,7 +27,7 @@
 //   slot_idle         the bus is idle before the first slot's first access,
 //                     and in clocks S..S+9 of every planned slot;
 //   slot_start        the first access is on the bus in clock S+10
-//                     (README "Timing": FETCH_CYCLES = 10) for the slots at
+//                     (docs/controller.md "Timing": FETCH_CYCLES = 10) for the slots at
 //                     S = T0 and S = T0 + H1; T0 = 2*N_CHAN + TIMEOUT + 8 +
 //                     NE*max(TIMEOUT+6, 10) = 23.
 //   time_step         time_o counts clocks since reset (binds time_o to the

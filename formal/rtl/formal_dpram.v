@@ -1,5 +1,5 @@
 // formal_dpram -- property wrapper of albatross_dpram for the bounded proofs
-// (mk/formal_rtl.mk, README "Formal proofs (RTL)").
+// (tools/mk/formal_rtl.mk, docs/verification.md "Formal proofs (RTL)").
 //
 // Both ports are driven by unconstrained Wishbone B4 classic masters: the only
 // assumptions are reset in the first clock with no request during it, and the
@@ -8,14 +8,14 @@
 // is the module named by the macro DUT (default albatross_dpram), so the same
 // wrapper proves the deliberately broken fixtures tb/rtl/dpram_*.v.
 // Properties (assertion labels, each reported by name on failure):
-//   access_time  README "Never blocked": a new request (cyc & stb in a clock
+//   access_time  docs/rtl.md "Never blocked": a new request (cyc & stb in a clock
 //                whose previous clock had no pending request, or had its ack)
 //                is acknowledged exactly 1 or 2 clocks later, whatever the
 //                other port does.  Asserted as: a pending request never waits
 //                a third clock.
 //   no_spurious  ack is high only in the clock after a clock with a pending
 //                request of that port (one ack per request).
-//   atomicity    README "Byte atomicity", as a shadow model of one symbolic
+//   atomicity    docs/rtl.md "Byte atomicity", as a shadow model of one symbolic
 //                word (address fa, chosen freely by the solver; each byte
 //                lane checked on its own):
 //                the byte's value is the data of the last write to it

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""run_check.py -- one bounded proof of an RTL property wrapper (mk/formal_rtl.mk).
+"""run_check.py -- one bounded proof of an RTL property wrapper (tools/mk/formal_rtl.mk).
 
     run_check.py NAME --engine smtbmc|abc --top TOP --src FILE... [--define D]
                  --depth N --props P1,P2 [--reach R1,R2] --expect pass|LABEL

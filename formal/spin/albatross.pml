@@ -22,7 +22,7 @@
  *     finished writing after stamp s's) give the order of values without
  *     unbounded counters.
  *
- * The properties (each a separate run of pan; see mk/formal_spin.mk):
+ * The properties (each a separate run of pan; see tools/mk/formal_spin.mk):
  *   CHECK_MUTEX      mutual exclusion (seed proof point "Mutual exclusion")
  *   CHECK_DEFINITE   definite results (seed proof point "Definite results")
  *   CHECK_ACTUALITY  actuality (seed proof point "Actuality", demand b)

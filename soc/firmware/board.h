@@ -89,7 +89,7 @@ typedef struct {
 
 #define PAIR_SALT   0x5A5A5A5Au
 /* Values the producer exports (and the consumer waits for): override with
- * -DPAIR_VALUES=n for a slow core (mk/serv.mk). */
+ * -DPAIR_VALUES=n for a slow core (tools/mk/serv.mk). */
 #ifndef PAIR_VALUES
 #define PAIR_VALUES 2000u
 #endif

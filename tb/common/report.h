@@ -1,5 +1,5 @@
 // report.h -- a tiny JSON writer for build/reports/*.json (figures that the
-// README tables are generated from).
+// tables of README.md and docs/*.md are generated from).
 #pragma once
 #include <cstdio>
 #include <string>

@@ -48,7 +48,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-// The model is built with tb_system's ROM_FILE = "ctrl_rom.hex" (mk/controller.mk):
+// The model is built with tb_system's ROM_FILE = "ctrl_rom.hex" (tools/mk/controller.mk):
 // a path relative to the working directory, which --dir sets for each run.
 static const char *const ROM_PATH = "ctrl_rom.hex";
 

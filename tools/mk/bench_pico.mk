@@ -1,11 +1,11 @@
-# mk/bench_pico.mk -- cost of the real driver on PicoRV32 against a plain copy.
+# tools/mk/bench_pico.mk -- cost of the real driver on PicoRV32 against a plain copy.
 #   make bench-pico   tb/pico/firmware/bench.c on one PicoRV32 core (tb/pico/pico_bench.v,
 #                     harness tb/pico/bench_pico.cpp): cycles per alb_export,
 #                     alb_import (New, Old) and a plain volatile word copy for
 #                     payloads of 4, 16, 64 and 256 bytes -> build/reports/bench_pico.json;
-#                     it runs driver-size (mk/driver.mk) too, for the rv32i
+#                     it runs driver-size (tools/mk/driver.mk) too, for the rv32i
 #                     code size of alb_import / alb_export (build/reports/driver_size.json)
-# This file is read before mk/driver.mk and mk/pico.mk (mk/*.mk in sorted
+# This file is read before tools/mk/driver.mk and tools/mk/pico.mk (tools/mk/*.mk in sorted
 # order), so their variables (PICO_RV32_V, PICO_NEED, FW_CFLAGS, FW_LDFLAGS,
 # DRV_RV_CC, ...) are used in recipes only, which make expands late; the
 # prerequisites name files directly (picorv32.v, an installed package, is left
@@ -28,7 +28,7 @@ $(PBN_DIR)/bench.elf: tb/pico/firmware/bench.c c-driver/albatross.c soc/firmware
 $(PBN_DIR)/bench.dis: $(PBN_DIR)/bench.elf
 	$(DRV_RV_PREFIX)objdump -d $< > $@
 
-$(PBN_BIN): $(PBN_RTL) tb/pico/bench_pico.cpp tb/pico/picorv32.vlt tb/common/report.h mk/bench_pico.mk
+$(PBN_BIN): $(PBN_RTL) tb/pico/bench_pico.cpp tb/pico/picorv32.vlt tb/common/report.h tools/mk/bench_pico.mk
 	$(PICO_NEED)
 	@mkdir -p $(PBN_DIR)
 	verilator --cc --exe --build -j 2 -O3 $(PBN_VFLAGS) -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" \

@@ -1,5 +1,5 @@
-# mk/formal_rtl.mk -- bounded proofs of the RTL properties (formal/rtl/,
-# README "Formal proofs (RTL)").  formal/rtl/run_check.py runs one check,
+# tools/mk/formal_rtl.mk -- bounded proofs of the RTL properties (formal/rtl/,
+# docs/verification.md "Formal proofs (RTL)").  formal/rtl/run_check.py runs one check,
 # names the failed assertions and writes build/reports/formal_rtl.json.
 #   formal-dpram                  albatross_dpram: access time, byte atomicity
 #                                 (yosys-smtbmc + z3)
@@ -12,7 +12,7 @@
 
 FRTL_DIR   := $(BUILD)/formal/rtl
 FRTL_RUN   := $(PYTHON) formal/rtl/run_check.py
-FRTL_DEPS  := formal/rtl/run_check.py mk/formal_rtl.mk $(RTL_INC)
+FRTL_DEPS  := formal/rtl/run_check.py tools/mk/formal_rtl.mk $(RTL_INC)
 
 DPRAM_PROPS := access_time_a,access_time_b,no_spurious_a,no_spurious_b,atomicity_a,atomicity_b
 DPRAM_DEPTH := 16

@@ -1,4 +1,4 @@
-# mk/controller.mk -- smoke test of albatross_controller on the multi-board test
+# tools/mk/controller.mk -- smoke test of albatross_controller on the multi-board test
 # top tb/system/tb_system.v: 4 boards (soc/albatross_system.v), albatross_bus, bus_fault_injector
 # (tb/controller/test_controller.cpp).  Outputs in build/ctrl/.
 #   make test-controller-smoke            the self-checking run (all scenarios)
@@ -13,7 +13,7 @@ CTRL_SRC := tb/system/tb_system.v soc/albatross_system.v tb/common/bus_fault_inj
             rtl/albatross_bus.v rtl/albatross_dpram.v tb/controller/test_controller.cpp \
             $(RTL_INC) tb/common/albatross_contract.h
 
-$(CTRL_BIN): $(CTRL_SRC) mk/controller.mk
+$(CTRL_BIN): $(CTRL_SRC) tools/mk/controller.mk
 	@mkdir -p $(CTRL_DIR)
 	verilator --cc --exe --build -j 2 -O3 -Wall --top-module tb_system \
 	    -GROM_FILE='"ctrl_rom.hex"' -CFLAGS "-O2 -std=c++17 -Wall -Wextra $(TB_COMMON_INC)" \

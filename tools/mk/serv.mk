@@ -1,4 +1,4 @@
-# mk/serv.mk -- the pair test with a SERV core (bit-serial RISC-V, 32+ clocks
+# tools/mk/serv.mk -- the pair test with a SERV core (bit-serial RISC-V, 32+ clocks
 # per instruction) on one side of the channel and PicoRV32 on the other: the
 # same tb/pico/pico_pair.v with SERV_MASK set (soc/serv_core.v,
 # soc/serv_bridge.v) and the same harness tb/pico/test_pico_pair.cpp.
@@ -23,7 +23,7 @@
 # SERV firmware is built with -DBOARD_NO_COUNTERS: SERV has no cycle/instret
 # CSRs, serv_bridge provides them as board registers (soc/firmware/board.h).
 # Reuses PICO_VFLAGS, PICO_RTL, PICO_NEED, FW_CFLAGS, FW_LDFLAGS, FW_DEPS of
-# mk/pico.mk (included before this file: mk/*.mk are read in sorted order).
+# tools/mk/pico.mk (included before this file: tools/mk/*.mk are read in sorted order).
 # SERV comes from PyPI (pythondata-cpu-serv, make deps); its rtl/ folder is
 # located through the package at build time, never copied here.  serv_core.v
 # needs it: it is kept out of make lint here and linted by test-serv-lint.
@@ -45,7 +45,7 @@ SERV_PRODUCER_VALUES ?= 300
 
 # $(1) = image name, $(2) = program, $(3) = driver source, $(4) = extra flags.
 define serv_fw
-$(SERV_DIR)/fw/$(1).elf: tb/pico/firmware/$(2).c $(3) $(FW_DEPS) mk/serv.mk
+$(SERV_DIR)/fw/$(1).elf: tb/pico/firmware/$(2).c $(3) $(FW_DEPS) tools/mk/serv.mk
 	@$$(DRV_RV_NEED)
 	@mkdir -p $$(@D)
 	$(DRV_RV_CC) $(FW_CFLAGS) $(4) -o $$@ soc/firmware/crt0.S tb/pico/firmware/$(2).c $(3) $(FW_LDFLAGS)
@@ -62,7 +62,7 @@ $(eval $(call serv_fw,consumer-pico,consumer,c-driver/albatross.c,-DPAIR_VALUES=
 # Vpico_pair, so the harness is the PicoRV32 pair's.
 define serv_model
 $(SERV_DIR)/mask$(1)/Vpico_pair: $(SERV_RTL) tb/pico/test_pico_pair.cpp tb/pico/picorv32.vlt tb/pico/serv.vlt \
-        tb/common/report.h mk/pico.mk mk/serv.mk
+        tb/common/report.h tools/mk/pico.mk tools/mk/serv.mk
 	$$(SERV_NEED)
 	$$(PICO_NEED)
 	@mkdir -p $$(@D)

@@ -1,4 +1,4 @@
-# mk/synth_check.mk -- Yosys synthesis of the RAM on iCE40, ECP5 and Xilinx 7-series
+# tools/mk/synth_check.mk -- Yosys synthesis of the RAM on iCE40, ECP5 and Xilinx 7-series
 # (tools/synth_report.py, ADDR_WIDTH=10, 4 KiB): the array must infer block RAM
 # on every family.  The negative test proves the check can fail: the broken
 # two-write-port RAM (tb/dpram/dpram_no_arbitration.v) must not map on iCE40.

@@ -1,4 +1,4 @@
-# mk/contract.mk -- the contract, defined once (docs/contract.md): the schedule
+# tools/mk/contract.mk -- the contract, defined once (docs/contract.md): the schedule
 # ROM format and the channel memory layout in rtl/albatross_contract.toml.
 # compiler/albatross_schedule/contract_gen.py generates from it
 #   rtl/albatross_contract.vh  c-driver/albatross_layout.h  tb/common/albatross_contract.h

@@ -1,5 +1,5 @@
-# mk/sim.mk -- make sim: the main demonstration.  The MOBOT-III-inspired
-# robot of mk/pico_boards.mk: four PicoRV32 boards (radar, odometry,
+# tools/mk/sim.mk -- make sim: the main demonstration.  The MOBOT-III-inspired
+# robot of tools/mk/pico_boards.mk: four PicoRV32 boards (radar, odometry,
 # navigation, motor) run the real driver on their own dual-ported RAMs, and
 # albatross_controller moves the channels between them by the schedule the
 # compiler made from SIM_DESC.  Prints progress and a report; leaves

@@ -1,16 +1,16 @@
-# mk/serv_boards.mk -- the MOBOT-III robot of mk/pico_boards.mk with the motor
+# tools/mk/serv_boards.mk -- the MOBOT-III robot of tools/mk/pico_boards.mk with the motor
 # board's PicoRV32 replaced by SERV (sim/pico_boards.v, SERV_MASK = 8, passed
 # on to soc/albatross_system.v):
 # the navigation board (PicoRV32) exports MotorCmd, a far slower bit-serial
 # core imports it, and every check of sim/mobot_sim.cpp applies.
 #   make test-serv-boards   fault-free, PicoRV32 cores stalled in random
 #                           bursts; build/reports/serv_boards.json
-# Reuses PB_* (mk/pico_boards.mk) and SERV_* (mk/serv.mk), read before this
-# file (mk/*.mk are included in sorted order).
+# Reuses PB_* (tools/mk/pico_boards.mk) and SERV_* (tools/mk/serv.mk), read before this
+# file (tools/mk/*.mk are included in sorted order).
 
 SB_BIN := $(PB_DIR)/obj-serv-motor/Vpico_boards
 $(SB_BIN): $(PB_RTL) $(RTL_INC) soc/serv_core.v soc/serv_bridge.v $(PICO_RV32_V) $(PB_SRC) $(PB_HDR) \
-        tb/pico/picorv32.vlt tb/pico/serv.vlt mk/pico_boards.mk mk/serv_boards.mk
+        tb/pico/picorv32.vlt tb/pico/serv.vlt tools/mk/pico_boards.mk tools/mk/serv_boards.mk
 	$(SERV_NEED)
 	$(PICO_NEED)
 	@mkdir -p $(@D)

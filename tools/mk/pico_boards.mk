@@ -1,9 +1,9 @@
-# mk/pico_boards.mk -- the multi-board system with real CPUs: four PicoRV32
+# tools/mk/pico_boards.mk -- the multi-board system with real CPUs: four PicoRV32
 # boards (radar, odometry, navigation, motor of the MOBOT-III example), each
 # with its own albatross_dpram, joined by albatross_bus and
 # albatross_controller behind a bus fault injector (sim/pico_boards.v: the
 # shared soc/albatross_system.v, the injector and the images' plusargs);
-# harness sim/mobot_sim.cpp (make sim runs the same model, mk/sim.mk).
+# harness sim/mobot_sim.cpp (make sim runs the same model, tools/mk/sim.mk).
 # Each board's firmware is sim/firmware/mobot_<board>.c linked with the
 # compiler-generated <board>.c and the real driver; the DPRAMs start from the
 # compiler's RAM images, the controller runs the compiler's rom.hex; every
@@ -14,11 +14,11 @@
 #   make test-pico-boards-negative-*  one per check of the harness, each
 #                                   with a firmware/driver mutant
 #                                   (sim/mutants/) or an option
-# Reuses PICO_RV32_V, PICO_NEED, FW_CFLAGS, FW_LDFLAGS, FW_DEPS of mk/pico.mk
-# (included before this file: mk/*.mk are read in sorted order).
+# Reuses PICO_RV32_V, PICO_NEED, FW_CFLAGS, FW_LDFLAGS, FW_DEPS of tools/mk/pico.mk
+# (included before this file: tools/mk/*.mk are read in sorted order).
 # pico_boards.v needs picorv32.v from PyPI: it is kept out of make lint and
 # linted (Verilator -Wall, Icarus, Yosys) by test-pico-boards-lint, with
-# its Icarus bench sim/pico_boards_tb.v (make bench-sim-speed, mk/sim.mk).
+# its Icarus bench sim/pico_boards_tb.v (make bench-sim-speed, tools/mk/sim.mk).
 
 PB_DIR      := $(BUILD)/pico_boards
 PB_SCHED    := $(BUILD)/schedule/mobot3
@@ -45,7 +45,7 @@ $(foreach b,$(PB_BOARDS),$(eval $(call pb_fw,$(b))))
 # The model, without and with waves (--trace, for make sim TRACE=1).
 # $(1) = variant dir, $(2) = extra Verilator flags.
 define pb_model
-$(PB_DIR)/$(1)/Vpico_boards: $(PB_RTL) $(RTL_INC) $(PICO_RV32_V) $(PB_SRC) $(PB_HDR) tb/pico/picorv32.vlt mk/pico_boards.mk
+$(PB_DIR)/$(1)/Vpico_boards: $(PB_RTL) $(RTL_INC) $(PICO_RV32_V) $(PB_SRC) $(PB_HDR) tb/pico/picorv32.vlt tools/mk/pico_boards.mk
 	$$(PICO_NEED)
 	@mkdir -p $$(@D)
 	verilator --cc --exe --build -j 2 -O3 $(2) $(PB_VFLAGS) -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" \

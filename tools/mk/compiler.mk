@@ -1,4 +1,4 @@
-# mk/compiler.mk -- the schedule compiler (the package compiler/albatross_schedule/,
+# tools/mk/compiler.mk -- the schedule compiler (the package compiler/albatross_schedule/,
 # run as PYTHONPATH=compiler python3 -m albatross_schedule DESC.toml --out DIR):
 # a system description (TOML) -> schedule ROM, board headers and sources, RAM
 # images, reports and a timeline picture.  Standard-library Python only.

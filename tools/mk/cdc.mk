@@ -1,4 +1,4 @@
-# mk/cdc.mk -- albatross_wb_cdc: albatross_dpram behind two clock-domain-crossing
+# tools/mk/cdc.mk -- albatross_wb_cdc: albatross_dpram behind two clock-domain-crossing
 # bridges, RAM clock fixed, the two CPU clocks drifting (tb/cdc/test_cdc.cpp).
 #   make test-cdc            the self-checking run, report build/reports/cdc.json
 #   make test-cdc-negative   proves each checker fails on an injected fault
@@ -15,7 +15,7 @@ CDC_ADDR_WIDTH  := 8
 CDC_SRC         := tb/cdc/tb_dpram_async.v rtl/albatross_wb_cdc.v rtl/albatross_dpram.v \
                    tb/cdc/test_cdc.cpp
 
-$(CDC_BIN): $(CDC_SRC) mk/cdc.mk
+$(CDC_BIN): $(CDC_SRC) tools/mk/cdc.mk
 	@mkdir -p $(CDC_DIR)
 	verilator --cc --exe --build -j 2 -O3 -Wall --top-module tb_dpram_async \
 	    -GSYNC_STAGES=$(CDC_SYNC_STAGES) -GADDR_WIDTH=$(CDC_ADDR_WIDTH) \

@@ -1,4 +1,4 @@
-# mk/formal_spin.mk -- SPIN model check of the three-buffer protocol
+# tools/mk/formal_spin.mk -- SPIN model check of the three-buffer protocol
 # (formal/spin/albatross.pml, run by formal/spin/check.py).
 #   make test-formal-spin       every property: mutual exclusion, definite results,
 #                               actuality, New/Old, retries; writer wait-free and

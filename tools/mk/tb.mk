@@ -1,4 +1,4 @@
-# mk/tb.mk -- the Verilator co-simulation testbench (tb/dpram/tb_dpram.cpp):
+# tools/mk/tb.mk -- the Verilator co-simulation testbench (tb/dpram/tb_dpram.cpp):
 # simulated CPUs run the real C driver against the RTL RAM.
 #
 # Variants: the real RAM and driver, a RAM without byte arbitration, and the

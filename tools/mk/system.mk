@@ -1,4 +1,4 @@
-# mk/system.mk -- the multi-board system (tb/system/tb_system.v: the shared
+# tools/mk/system.mk -- the multi-board system (tb/system/tb_system.v: the shared
 # soc/albatross_system.v with every board's port A driven from C++, and the
 # bus fault injector; harness in tb/system/):
 # simulated CPUs run the C driver on every board, the RTL controller executes

@@ -1,4 +1,4 @@
-# mk/driver.mk -- the C driver (c-driver/): host unit tests against a
+# tools/mk/driver.mk -- the C driver (c-driver/): host unit tests against a
 # counting, trapping port (tb/unit/), the checker's negative test, the
 # warning-free rv32i cross build and host build, and the code-size figure.
 # Outputs under $(BUILD)/ only.

@@ -1,4 +1,4 @@
-# mk/docs.mk -- the pictures committed for the manual (README.md) are
+# tools/mk/docs.mk -- the pictures committed for the manual (README.md) are
 # generated files, so a test checks that the committed copies are current:
 #   docs/img/timeline.svg  one schedule cycle of sim/mobot3.toml, drawn by the
 #                          schedule compiler (make schedule)

@@ -1,4 +1,4 @@
-# mk/fpga.mk -- the FPGA flow (fpga/, constraints/): the demonstration
+# tools/mk/fpga.mk -- the FPGA flow (fpga/, constraints/): the demonstration
 # system soc/albatross_system.v (two PicoRV32 boards, their DPRAMs, the bus and
 # the controller, running fpga/duo.toml's schedule and fpga/firmware/duo_*.c) in
 # a top per board: iCEBreaker (iCE40UP5K; the sensor board on SERV, as two
@@ -26,7 +26,7 @@
 #   make test-fpga-lint   Verilator -Wall, Icarus and Yosys on FPGA_LINT (fpga/ and soc/ tops)
 # Images: build/fpga/duo/{rom,fw0,fw1,ram0,ram1}.hex, the names the tops'
 # parameters give (board 0 = sensor, 1 = actuator).  PicoRV32 from PyPI
-# and SERV from PyPI (PICO_RV32_V, mk/pico.mk; SERV_CPU_RTL, mk/serv.mk).
+# and SERV from PyPI (PICO_RV32_V, tools/mk/pico.mk; SERV_CPU_RTL, tools/mk/serv.mk).
 
 FPGA_DIR    := $(BUILD)/fpga
 FPGA_IMG    := $(FPGA_DIR)/duo
@@ -43,9 +43,9 @@ FPGA_RTL    := $(FPGA_OWN) soc/albatross_system.v soc/board_reset.v soc/beat_div
                soc/pico_wb_adapter.v
 # Files fpga-lint checks each as a top: the demonstration and the FPGA-only soc/ parts.
 FPGA_LINT   := $(FPGA_OWN) soc/albatross_system.v soc/picorv32_ooc.v
-# PicoRV32 and SERV come from PyPI (mk/pico.mk, mk/serv.mk); Verilator flags.
+# PicoRV32 and SERV come from PyPI (tools/mk/pico.mk, tools/mk/serv.mk); Verilator flags.
 FPGA_VFLAGS  = -Wall --timescale 1ns/1ps $(VLIB) -y fpga -y $(SERV_CPU_RTL) tb/pico/picorv32.vlt tb/pico/serv.vlt
-# (mk/pico.mk, read after this file, defines PICO_RV32_V and FW_*: every use
+# (tools/mk/pico.mk, read after this file, defines PICO_RV32_V and FW_*: every use
 # below is deferred, in recipes or with = / $$.)
 # ecppack from PyPI (YoWASP, like nextpnr-ecp5): it works under the current
 # directory only, so its paths are relative.
@@ -59,7 +59,7 @@ $(FPGA_SCHED)/rom.hex: fpga/duo.toml $(SCHEDULE_SRC)
 
 # $(1) = board index, $(2) = board name.
 define fpga_board
-$(FPGA_DIR)/fw/$(2).elf: fpga/firmware/duo_$(2).c $(FPGA_SCHED)/rom.hex $(FPGA_FW_DEPS) mk/fpga.mk
+$(FPGA_DIR)/fw/$(2).elf: fpga/firmware/duo_$(2).c $(FPGA_SCHED)/rom.hex $(FPGA_FW_DEPS) tools/mk/fpga.mk
 	@$$(DRV_RV_NEED)
 	@mkdir -p $$(@D)
 	$$(DRV_RV_CC) $$(FW_CFLAGS) -ffunction-sections -fdata-sections -I$(FPGA_SCHED) -o $$@ soc/firmware/crt0.S \
@@ -111,7 +111,7 @@ bitstream: pnr ## pack the iCEBreaker and ULX3S tops -> build/fpga/icebreaker_to
 # by 2 (BEAT_LOG2 = 1) instead of 64 and 128: the only difference from the
 # synthesised tops, so that a few million clocks show the LEDs blink.  The
 # ULX3S model's PLL is fpga/EHXPLLL.v (its two clocks at the real 2:1).
-FPGA_SIM_DEPS := $(FPGA_RTL) $(RTL_INC) fpga/EHXPLLL.v fpga/test_fpga_soc.cpp tb/common/report.h tb/pico/picorv32.vlt mk/fpga.mk
+FPGA_SIM_DEPS := $(FPGA_RTL) $(RTL_INC) fpga/EHXPLLL.v fpga/test_fpga_soc.cpp tb/common/report.h tb/pico/picorv32.vlt tools/mk/fpga.mk
 # Recipe: the model of top $(1) from file $(4), harness define $(2), parameters $(3), into $(@D).
 FPGA_VERILATE = verilator --cc --exe --build -j 2 -O3 $(FPGA_VFLAGS) --top-module $(1) $(3) \
     -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC) -D$(2)" --Mdir $(@D) $(PICO_RV32_V) $(4) $(abspath fpga/test_fpga_soc.cpp) \

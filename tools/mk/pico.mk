@@ -1,4 +1,4 @@
-# mk/pico.mk -- two PicoRV32 soft cores run the real C driver (firmware/)
+# tools/mk/pico.mk -- two PicoRV32 soft cores run the real C driver (firmware/)
 # against one albatross_dpram (tb/pico/pico_pair.v, harness tb/pico/).
 #   make test-pico-pair           producer and consumer firmware, every import
 #                                 checked on the core; build/reports/pico_pair.json
@@ -47,7 +47,7 @@ $(eval $(call pico_fw,consumer,consumer,c-driver/albatross.c))
 $(eval $(call pico_fw,producer-ignore_readlocked,producer,$(TB_DIR)/mutants/ignore_readlocked.c))
 
 PICO_BIN := $(PICO_DIR)/obj/Vpico_pair
-$(PICO_BIN): $(PICO_RTL) $(PICO_RV32_V) tb/pico/test_pico_pair.cpp tb/pico/picorv32.vlt tb/common/report.h mk/pico.mk
+$(PICO_BIN): $(PICO_RTL) $(PICO_RV32_V) tb/pico/test_pico_pair.cpp tb/pico/picorv32.vlt tb/common/report.h tools/mk/pico.mk
 	$(PICO_NEED)
 	@mkdir -p $(PICO_DIR)
 	verilator --cc --exe --build -j 2 -O3 $(PICO_VFLAGS) -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" \
