@@ -1,0 +1,62 @@
+# tools/mk/endpoint.mk -- the hardware endpoints (rtl/albatross_export_endpoint.v,
+# rtl/albatross_import_endpoint.v, engines rtl/albatross_export.v and
+# rtl/albatross_import.v) against a PicoRV32 running the real C driver, with
+# the protocol checker watching both ports of the RAM (tb/endpoint/):
+#   make test-endpoint-export            pair_source + export endpoint on port A,
+#                                        PicoRV32 consumer (tb/pico/firmware/consumer.c)
+#                                        on port B; build/reports/endpoint_export.json
+#   make test-endpoint-import            PicoRV32 producer (tb/pico/firmware/producer.c)
+#                                        on port A, import endpoint on port B checked
+#                                        by the harness; build/reports/endpoint_import.json
+#   make test-endpoint-<dir>-negative-<mutant>
+#                                        a sed mutant of an engine (below): passes only
+#                                        if the named checker fails
+#   make test-endpoint-lint              Verilator -Wall, Icarus, Yosys of the test tops
+#   make endpoint-report                 build/reports/endpoint.json from both runs
+# Every run is bounded by a watchdog in simulated cycles (EP_MAX_CYCLES).
+# PicoRV32 and the firmware rules come from tools/mk/pico.mk.
+
+EP_DIR        := $(BUILD)/endpoint
+EP_VALUES     ?= 20000
+EP_MAX_CYCLES ?= 20000000
+EP_VFLAGS     := -Wall --timescale 1ns/1ps $(VLIB) -y tb/endpoint/export -y tb/endpoint/import tb/pico/picorv32.vlt
+EP_CXXFLAGS   := -O2 -std=c++17 -U_FORTIFY_SOURCE $(TB_COMMON_INC) -I$(abspath c-driver)
+EP_ENGINES    := rtl/albatross_export.v rtl/albatross_import.v rtl/albatross_export_endpoint.v \
+                 rtl/albatross_import_endpoint.v rtl/albatross_dpram.v $(RTL_INC)
+EP_CORE       := soc/board_core.v soc/pico_core.v soc/board_memmap.v soc/pico_wb_adapter.v
+EP_CHECK      := tb/common/protocol_checker.cpp tb/common/protocol_checker.h tb/endpoint/channel_watch.h \
+                 tb/common/report.h
+TB_RTL        += tb/endpoint/export/pair_source.v
+
+# The consumer firmware of the export test: consumer.c waiting for seq EP_VALUES.
+$(EP_DIR)/fw/consumer.elf: tb/pico/firmware/consumer.c c-driver/albatross.c $(FW_DEPS) tools/mk/endpoint.mk
+	@$(DRV_RV_NEED)
+	@mkdir -p $(@D)
+	$(DRV_RV_CC) $(FW_CFLAGS) -DPAIR_VALUES=$(EP_VALUES)u -o $@ soc/firmware/crt0.S \
+	    tb/pico/firmware/consumer.c c-driver/albatross.c $(FW_LDFLAGS)
+
+$(EP_DIR)/export_image.hex: tb/endpoint/export/channel_image.py rtl/albatross_contract.toml
+	@mkdir -p $(@D)
+	$(PYTHON) tb/endpoint/export/channel_image.py $@
+
+# $(1) = model name (export / import / a mutant's name), $(2) = test top,
+# $(3) = engine file list (the mutant's copy in place of the engine).
+define ep_model
+$(EP_DIR)/$(1)/V$(2): $(3) $(EP_CORE) $(PICO_RV32_V) tb/endpoint/$(2:_pico=)/$(2).v \
+        tb/endpoint/$(2:_pico=)/test_$(2).cpp $(EP_CHECK) $(EP_DIR)/export_image.hex tools/mk/endpoint.mk
+	$$(PICO_NEED)
+	@mkdir -p $$(@D)
+	verilator --cc --exe --build -j 2 -O3 $$(EP_VFLAGS) $(if $(4),-y $(4)) --top-module $(2) \
+	    -GVALUES=$$(EP_VALUES) -GINIT_FILE='"$$(abspath $$(EP_DIR)/export_image.hex)"' \
+	    -CFLAGS "$$(EP_CXXFLAGS)" --Mdir $$(@D)/obj -o ../V$(2) \
+	    $$(PICO_RV32_V) tb/endpoint/$(2:_pico=)/$(2).v $$(abspath tb/endpoint/$(2:_pico=)/test_$(2).cpp) \
+	    $$(abspath tb/common/protocol_checker.cpp) > $$(@D)/build.log 2>&1 || { cat $$(@D)/build.log; exit 1; }
+endef
+$(eval $(call ep_model,export,export_pico,$(EP_ENGINES)))
+
+TESTS += endpoint-export
+.PHONY: test-endpoint-export
+test-endpoint-export: $(EP_DIR)/export/Vexport_pico $(EP_DIR)/fw/consumer.hex
+	@tools/run_test.sh endpoint-export $(EP_DIR)/export/Vexport_pico +fw1=$(EP_DIR)/fw/consumer.hex \
+	    --values $(EP_VALUES) --max-cycles $(EP_MAX_CYCLES) --seed $(SEED) --label endpoint-export \
+	    --report $(REPORTS)/endpoint_export.json
