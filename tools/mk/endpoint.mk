@@ -14,7 +14,11 @@
 #   make test-endpoint-lint              Verilator -Wall, Icarus, Yosys of the test tops
 #   make endpoint-report                 build/reports/endpoint.json from both runs
 # Every run is bounded by a watchdog in simulated cycles (EP_MAX_CYCLES).
-# PicoRV32 and the firmware rules come from tools/mk/pico.mk.
+# PicoRV32 and the firmware rules come from tools/mk/pico.mk, which is read
+# after this file: prerequisites that name its variables are written $$(...)
+# and expanded a second time (.SECONDEXPANSION; no prerequisite in the tree
+# holds a literal '$', so the other fragments are unaffected).
+.SECONDEXPANSION:
 
 EP_DIR        := $(BUILD)/endpoint
 EP_VALUES     ?= 20000
@@ -29,7 +33,7 @@ EP_CHECK      := tb/common/protocol_checker.cpp tb/common/protocol_checker.h tb/
 TB_RTL        += tb/endpoint/export/pair_source.v
 
 # The consumer firmware of the export test: consumer.c waiting for seq EP_VALUES.
-$(EP_DIR)/fw/consumer.elf: tb/pico/firmware/consumer.c c-driver/albatross.c $(FW_DEPS) tools/mk/endpoint.mk
+$(EP_DIR)/fw/consumer.elf: tb/pico/firmware/consumer.c c-driver/albatross.c $$(FW_DEPS) tools/mk/endpoint.mk
 	@$(DRV_RV_NEED)
 	@mkdir -p $(@D)
 	$(DRV_RV_CC) $(FW_CFLAGS) -DPAIR_VALUES=$(EP_VALUES)u -o $@ soc/firmware/crt0.S \
@@ -39,20 +43,22 @@ $(EP_DIR)/export_image.hex: tb/endpoint/export/channel_image.py rtl/albatross_co
 	@mkdir -p $(@D)
 	$(PYTHON) tb/endpoint/export/channel_image.py $@
 
-# $(1) = model name (export / import / a mutant's name), $(2) = test top,
-# $(3) = engine file list (the mutant's copy in place of the engine).
+# $(1) = model folder (export, import, or a mutant's name), $(2) = test top,
+# $(3) = extra prerequisites (a mutant's copy), $(4) = folder searched before
+# rtl/ (a mutant's copy of an engine), $(5) = -G parameters.
 define ep_model
-$(EP_DIR)/$(1)/V$(2): $(3) $(EP_CORE) $(PICO_RV32_V) tb/endpoint/$(2:_pico=)/$(2).v \
-        tb/endpoint/$(2:_pico=)/test_$(2).cpp $(EP_CHECK) $(EP_DIR)/export_image.hex tools/mk/endpoint.mk
+$(EP_DIR)/$(1)/V$(2): $(EP_ENGINES) $(3) $(EP_CORE) $$$$(PICO_RV32_V) tb/endpoint/$(2:_pico=)/$(2).v \
+        tb/endpoint/$(2:_pico=)/test_$(2).cpp $(EP_CHECK) tools/mk/endpoint.mk
 	$$(PICO_NEED)
 	@mkdir -p $$(@D)
-	verilator --cc --exe --build -j 2 -O3 $$(EP_VFLAGS) $(if $(4),-y $(4)) --top-module $(2) \
-	    -GVALUES=$$(EP_VALUES) -GINIT_FILE='"$$(abspath $$(EP_DIR)/export_image.hex)"' \
+	verilator --cc --exe --build -j 2 -O3 $(if $(4),-y $(4)) $$(EP_VFLAGS) --top-module $(2) $(5) \
 	    -CFLAGS "$$(EP_CXXFLAGS)" --Mdir $$(@D)/obj -o ../V$(2) \
 	    $$(PICO_RV32_V) tb/endpoint/$(2:_pico=)/$(2).v $$(abspath tb/endpoint/$(2:_pico=)/test_$(2).cpp) \
 	    $$(abspath tb/common/protocol_checker.cpp) > $$(@D)/build.log 2>&1 || { cat $$(@D)/build.log; exit 1; }
 endef
-$(eval $(call ep_model,export,export_pico,$(EP_ENGINES)))
+EP_EXPORT_G := -GVALUES=$(EP_VALUES) -GINIT_FILE='"$(abspath $(EP_DIR)/export_image.hex)"'
+$(eval $(call ep_model,export,export_pico,$(EP_DIR)/export_image.hex,,$(EP_EXPORT_G)))
+$(eval $(call ep_model,import,import_pico,,,))
 
 TESTS += endpoint-export
 .PHONY: test-endpoint-export
@@ -60,3 +66,10 @@ test-endpoint-export: $(EP_DIR)/export/Vexport_pico $(EP_DIR)/fw/consumer.hex
 	@tools/run_test.sh endpoint-export $(EP_DIR)/export/Vexport_pico +fw1=$(EP_DIR)/fw/consumer.hex \
 	    --values $(EP_VALUES) --max-cycles $(EP_MAX_CYCLES) --seed $(SEED) --label endpoint-export \
 	    --report $(REPORTS)/endpoint_export.json
+
+TESTS += endpoint-import
+.PHONY: test-endpoint-import
+test-endpoint-import: $(EP_DIR)/import/Vimport_pico $$(PICO_DIR)/fw/producer.hex
+	@tools/run_test.sh endpoint-import $(EP_DIR)/import/Vimport_pico +fw0=$(BUILD)/pico/fw/producer.hex \
+	    --max-cycles $(EP_MAX_CYCLES) --seed $(SEED) --label endpoint-import \
+	    --report $(REPORTS)/endpoint_import.json
