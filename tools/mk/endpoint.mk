@@ -73,3 +73,32 @@ test-endpoint-import: $(EP_DIR)/import/Vimport_pico $$(PICO_DIR)/fw/producer.hex
 	@tools/run_test.sh endpoint-import $(EP_DIR)/import/Vimport_pico +fw0=$(BUILD)/pico/fw/producer.hex \
 	    --max-cycles $(EP_MAX_CYCLES) --seed $(SEED) --label endpoint-import \
 	    --report $(REPORTS)/endpoint_import.json
+
+# Negative tests: a sed mutant of an engine (tb/mutants/engines/NAME.sed, its
+# header says what it breaks) built into the test top in place of the engine;
+# the test passes only if the named checker of the protocol checker fails.
+# name : engine file : test top : checker
+EP_NEGATIVES := export_writes_locked:albatross_export:export_pico:mutual_exclusion \
+                export_early_publish:albatross_export:export_pico:definite_results \
+                import_no_readlocked:albatross_import:import_pico:mutual_exclusion
+EP_FW_export_pico := +fw1=$(EP_DIR)/fw/consumer.hex --values $(EP_VALUES)
+EP_FW_export_pico_DEP := $(EP_DIR)/fw/consumer.hex
+EP_FW_import_pico := +fw0=$(BUILD)/pico/fw/producer.hex
+EP_FW_import_pico_DEP := $(BUILD)/pico/fw/producer.hex
+EP_G_export_pico := $(EP_EXPORT_G)
+EP_G_export_pico_DEP := $(EP_DIR)/export_image.hex
+
+# $(1) = mutant name, $(2) = engine, $(3) = test top, $(4) = checker
+define ep_negative
+$(EP_DIR)/mut-$(1)/src/$(2).v: rtl/$(2).v tb/mutants/engines/$(1).sed
+	@mkdir -p $$(@D)
+	sed -f tb/mutants/engines/$(1).sed $$< > $$@
+	@if cmp -s $$< $$@; then echo "mutant $(1): the sed script changed nothing in rtl/$(2).v"; rm -f $$@; exit 1; fi
+$(call ep_model,mut-$(1),$(3),$(EP_DIR)/mut-$(1)/src/$(2).v $(EP_G_$(3)_DEP),$(EP_DIR)/mut-$(1)/src,-Wno-fatal $(EP_G_$(3)))
+TESTS += endpoint-negative-$(1)
+.PHONY: test-endpoint-negative-$(1)
+test-endpoint-negative-$(1): $(EP_DIR)/mut-$(1)/V$(3) $(EP_FW_$(3)_DEP)
+	@tools/run_test.sh endpoint-negative-$(1) $(EP_DIR)/mut-$(1)/V$(3) $(EP_FW_$(3)) \
+	    --max-cycles $(EP_MAX_CYCLES) --seed $(SEED) --label endpoint-negative-$(1) --expect-checker $(4)
+endef
+$(foreach n,$(EP_NEGATIVES),$(eval $(call ep_negative,$(call neg_field,$(n),1),$(call neg_field,$(n),2),$(call neg_field,$(n),3),$(call neg_field,$(n),4))))

@@ -15,9 +15,9 @@
 // The harness starts Imports once the producer has stored the start flag,
 // as often as the endpoint takes them, with random gaps (each free clock
 // starts one with probability 1/16, 1..32 clocks); it takes the words with
-// word_ready_i low one clock in 8 and in rare long holds (1/256, 1..300
-// clocks), so an Import can stay in its buffer while the producer exports
-// many times; the core's local RAM is held in bursts (1/2048, 1..2048).
+// word_ready_i low one clock in 8 and in rare holds (1/256, 1..300 clocks;
+// 1/4096, 1..4096 clocks: longer than one of the producer's Exports), so an
+// Import can stay in its buffer while the producer exports again; the core's local RAM is held in bursts (1/2048, 1..2048).
 // Runs until the endpoint has handed out seq N (default 2000, producer.c's
 // PAIR_VALUES) and the core stored to TOHOST, or the watchdog of --max-cycles
 // simulated cycles fires.  --expect-checker KIND (a negative test with a
@@ -103,6 +103,7 @@ int main(int argc, char **argv)
         if (core_left) --core_left;
         if (gap_left == 0 && (next() & 15u) == 0) gap_left = 1 + next() % 32u;
         if (hold_left == 0 && (next() & 255u) == 0) hold_left = 1 + next() % 300u;
+        if (hold_left == 0 && (next() & 4095u) == 0) hold_left = 1 + next() % 4096u;   // past an Export or two
         m.import_i = started && !m.imp_busy_o && gap_left == 0;
         m.word_ready_i = hold_left == 0 && (next() & 7u) != 0;
         if (gap_left) --gap_left;
