@@ -102,3 +102,28 @@ test-endpoint-negative-$(1): $(EP_DIR)/mut-$(1)/V$(3) $(EP_FW_$(3)_DEP)
 	    --max-cycles $(EP_MAX_CYCLES) --seed $(SEED) --label endpoint-negative-$(1) --expect-checker $(4)
 endef
 $(foreach n,$(EP_NEGATIVES),$(eval $(call ep_negative,$(call neg_field,$(n),1),$(call neg_field,$(n),2),$(call neg_field,$(n),3),$(call neg_field,$(n),4))))
+
+# The test tops hold picorv32.v (from PyPI), so make lint does not reach them.
+TESTS += endpoint-lint
+.PHONY: test-endpoint-lint
+test-endpoint-lint:
+	@tools/run_test.sh endpoint-lint bash -c '$(PICO_NEED:@%=%) && for top in export_pico import_pico; do \
+	    d=tb/endpoint/$${top%_pico}; \
+	    verilator --lint-only $(EP_VFLAGS) --top-module $$top $(PICO_RV32_V) $$d/$$top.v && \
+	    iverilog -g2005 $(VLIB) -y tb/endpoint/export -s $$top -o /dev/null $(PICO_RV32_V) $$d/$$top.v && \
+	    yosys -q -p "verilog_defaults -add -Irtl; read_verilog $(PICO_RV32_V) $$d/$$top.v; \
+	        hierarchy -check -libdir rtl -libdir soc -libdir tb/endpoint/export -top $$top; proc" && \
+	    echo "lint ok  $$d/$$top.v" || exit 1; done'
+
+# Figures of both runs (values, clocks and accesses per transfer) in one file.
+BENCHES += endpoint-report
+.PHONY: endpoint-report
+endpoint-report: test-endpoint-export test-endpoint-import
+	@$(PYTHON) -c 'import json,sys; e=json.load(open(sys.argv[1])); i=json.load(open(sys.argv[2])); \
+	    json.dump({"export": e, "import": i}, open(sys.argv[3], "w"), indent=2); \
+	    print("endpoint: export %d values, %d accesses and %.2f clocks per undisturbed Export (W=%d); " \
+	          "import %d Imports (%d New), %d/%d accesses and %.2f/%.2f clocks per undisturbed Old/New Import" % \
+	          (e["values"], e["accesses_per_export"], e["clocks_per_export_mean"], e["words"], i["imports"], \
+	           i["imports_new"], i["accesses_per_import_old"], i["accesses_per_import_new"], \
+	           i["clocks_per_import_old_mean"], i["clocks_per_import_new_mean"]))' \
+	    $(REPORTS)/endpoint_export.json $(REPORTS)/endpoint_import.json $(REPORTS)/endpoint.json
