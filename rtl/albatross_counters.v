@@ -1,0 +1,153 @@
+// albatross_counters -- the controller's per-channel counters and the STATUS
+// words they make (docs/controller.md, "STATUS").
+// Rules:
+//   * Per channel, four 16-bit saturating counters: transfers (values
+//     published), retries (failed accesses), abandoned (destinations that
+//     still needed the value at the slot's end) and corrupt (control bytes
+//     that named no buffer).  They live in one RAM of 2*N_CHAN 32-bit words
+//     laid out as the STATUS words 1..2*N_CHAN: word 2c = {transfers,
+//     retries}, word 2c+1 = {abandoned, corrupt}.  The RAM has one write and
+//     one read port, is never reset, and is cleared by writing zeros after
+//     reset (2*N_CHAN clocks; ready_o then goes high).
+//   * During a slot the events of its channel are counted in small delta
+//     registers (one retry per clock at most; transfers, abandoned and
+//     corrupt arrive as counts).  commit_i (one clock, chan_i valid) adds the
+//     deltas to the channel's two words in three clocks (read, write + read,
+//     write) and clears them; no event may arrive in those three clocks (the
+//     next slot's fetch is longer).  busy_o is high while a commit runs.
+//   * STATUS word 0 is {rom_errors_i, cycles_i}; word k >= 1 is RAM word
+//     k - 1.  status_index_i selects the word; status_o is that word and
+//     status_valid_o is high once the read of that index has completed (the
+//     clock after the index was presented, if no commit uses the read port).
+`default_nettype none
+
+module albatross_counters #(
+    parameter N_CHAN      = 32, // channels with counters, 1..32
+    parameter INDEX_WIDTH = 12  // bits of status_index_i
+) (
+    input  wire                   clk_i,
+    input  wire                   rst_i,          // synchronous, active high
+    output wire                   ready_o,        // the RAM is cleared
+    // events of the current slot's channel
+    input  wire                   retry_i,        // a failed access
+    input  wire [2:0]             transfers_i,    // values published now (0..4)
+    input  wire [2:0]             abandoned_i,    // destinations abandoned now (0..4)
+    input  wire [2:0]             corrupt_i,      // corrupt control bytes now (0..5)
+    input  wire                   commit_i,       // the slot is over: add its deltas to chan_i
+    input  wire [4:0]             chan_i,         // channel of the slot (held through the commit)
+    output wire                   busy_o,         // a commit is running
+    // STATUS words
+    input  wire [15:0]            rom_errors_i,
+    input  wire [15:0]            cycles_i,
+    input  wire [INDEX_WIDTH-1:0] status_index_i, // 0..2*N_CHAN
+    output wire [31:0]            status_o,
+    output wire                   status_valid_o
+);
+
+    localparam CB = $clog2(2 * N_CHAN);            // RAM address bits
+    localparam integer    LAST_I = 2 * N_CHAN - 1;
+    localparam [CB-1:0]   LAST   = LAST_I[CB-1:0];
+
+    generate
+        if (N_CHAN < 1 || N_CHAN > 32 || INDEX_WIDTH < CB + 1) begin : g_param_check
+            albatross_counters_parameter_out_of_range u_error ();
+        end
+    endgenerate
+
+    reg [31:0]   ram [0:2*N_CHAN-1];
+    reg [31:0]   rd_q;
+    reg [CB-1:0] rd_adr_q;
+    reg          rd_done_q;     // rd_q holds the STATUS word of rd_adr_q
+    reg          ready_q;
+    reg [CB-1:0] clear_q;
+    reg [1:0]    phase_q;       // commit: 0 none, 1 read word 2c, 2 write it + read 2c+1, 3 write that
+    reg [15:0]   d_retry_q;
+    reg [3:0]    d_xfer_q, d_aband_q, d_corrupt_q;
+    reg          zero_q;        // status index 0 was presented
+
+    function [15:0] sat_add;
+        input [15:0] a;
+        input [15:0] b;
+        reg [16:0] s;
+        begin
+            s = {1'b0, a} + {1'b0, b};
+            sat_add = s[16] ? 16'hFFFF : s[15:0];
+        end
+    endfunction
+
+    // Channel words; the commit uses the read port in phases 1 and 2.
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [5:0]    w_wide = {chan_i, 1'b0};
+    wire [CB-1:0] w0 = w_wide[CB-1:0];
+    wire [CB-1:0] w1 = w0 | {{(CB-1){1'b0}}, 1'b1};
+    wire [INDEX_WIDTH-1:0] idx_m1 = status_index_i - 1'b1;   // RAM word of STATUS word k
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [CB-1:0] rd_adr = (phase_q == 2'd1) ? w0 : (phase_q == 2'd2) ? w1 : idx_m1[CB-1:0];
+    wire          wr     = !ready_q || phase_q == 2'd2 || phase_q == 2'd3;
+    wire [CB-1:0] wr_adr = !ready_q ? clear_q : (phase_q == 2'd2) ? w0 : w1;
+    wire [31:0]   wr_dat = !ready_q ? 32'd0 :
+                           (phase_q == 2'd2) ? {sat_add(rd_q[31:16], {12'd0, d_xfer_q}), sat_add(rd_q[15:0], d_retry_q)}
+                                             : {sat_add(rd_q[31:16], {12'd0, d_aband_q}), sat_add(rd_q[15:0], {12'd0, d_corrupt_q})};
+
+    always @(posedge clk_i) begin
+        if (wr) ram[wr_adr] <= wr_dat;
+        rd_q     <= ram[rd_adr];
+        rd_adr_q <= rd_adr;
+    end
+
+    always @(posedge clk_i) begin
+        if (rst_i) begin
+            ready_q   <= 1'b0;
+            clear_q   <= {CB{1'b0}};
+            phase_q   <= 2'd0;
+            rd_done_q <= 1'b0;
+            d_retry_q <= 16'd0;
+            d_xfer_q  <= 4'd0;
+            d_aband_q <= 4'd0;
+            d_corrupt_q <= 4'd0;
+        end else begin
+            if (!ready_q) begin
+                clear_q <= clear_q + 1'b1;
+                if (clear_q == LAST) ready_q <= 1'b1;
+            end
+            rd_done_q <= phase_q == 2'd0;
+            case (phase_q)
+                2'd0: if (commit_i) phase_q <= 2'd1;
+                2'd1: phase_q <= 2'd2;
+                2'd2: phase_q <= 2'd3;
+                default: begin
+                    phase_q     <= 2'd0;
+                    d_retry_q   <= 16'd0;
+                    d_xfer_q    <= 4'd0;
+                    d_aband_q   <= 4'd0;
+                    d_corrupt_q <= 4'd0;
+                end
+            endcase
+            if (phase_q != 2'd3) begin
+                if (retry_i && d_retry_q != 16'hFFFF) d_retry_q <= d_retry_q + 16'd1;
+                d_xfer_q    <= d_xfer_q + {1'b0, transfers_i};
+                d_aband_q   <= d_aband_q + {1'b0, abandoned_i};
+                d_corrupt_q <= d_corrupt_q + {1'b0, corrupt_i};
+            end
+        end
+    end
+
+`ifndef SYNTHESIS
+    always @(posedge clk_i) begin
+        if (!rst_i && phase_q != 2'd0 && (retry_i || transfers_i != 3'd0 || abandoned_i != 3'd0 || corrupt_i != 3'd0)) begin
+            $display("albatross_counters: an event during a commit (lost)");
+            $stop;
+        end
+    end
+`endif
+
+    always @(posedge clk_i) zero_q <= status_index_i == {INDEX_WIDTH{1'b0}};
+
+    assign ready_o        = ready_q;
+    assign busy_o         = phase_q != 2'd0;
+    assign status_o       = zero_q ? {rom_errors_i, cycles_i} : rd_q;
+    assign status_valid_o = (zero_q && status_index_i == {INDEX_WIDTH{1'b0}}) || (rd_done_q && rd_adr_q == idx_m1[CB-1:0] && status_index_i != {INDEX_WIDTH{1'b0}});
+
+endmodule
+
+`default_nettype wire

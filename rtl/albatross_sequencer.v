@@ -1,0 +1,463 @@
+// albatross_sequencer -- the controller's schedule sequencer: the schedule
+// ROM, the cycle and slot timing, the deadline and the global time
+// (docs/controller.md "Execution", issue 12 section 1).
+// Rules:
+//   * Global time: time_o counts clocks since reset (32 bits).  Time within a
+//     cycle (rel) is TIME_BITS wide and counts from the cycle start; the
+//     header's cycle length and every slot's start and length must fit in
+//     TIME_BITS bits (higher bits set: the header, or the entry, is invalid).
+//   * ROM format (rtl/albatross_contract.toml): header H0..H3, entry k at
+//     word 4 + 8k; H3 is the CRC of the whole ROM image (words 0 .. 4+8*NE-1,
+//     H3 read as 0); no per-entry checksum.  CRC: c = CRC_SEED; for each word
+//     w in address order c = (c * x^32 + w) mod P, P = x^32 + CRC_POLY.
+//   * Start-up (after enable_i): read the header (5 clocks), then one CRC
+//     pass over the image, one word a clock, storing the CRC after the header
+//     and after each entry (their prefix CRCs).  A bad magic, NE outside
+//     1..NE_MAX, a cycle that does not fit, or a CRC other than H3 raises
+//     error_o for good: the sequencer never starts a slot or a poll.
+//   * Background check: in every clock the ROM is not fetching, one word is
+//     re-read and the CRC carried on from the stored prefix of the previous
+//     part; at the end of each part (header, entry) it is compared with that
+//     part's stored prefix.  The first mismatch of a part adds 1 to
+//     rom_errors and marks it bad: an entry so marked is skipped (no bus
+//     access, and rom_errors + 1 once per cycle as for any invalid entry).
+//   * Slot timing: S = cycle start + start (E1).  The entry is fetched in
+//     clocks S .. S+FETCH_CYCLES-2 (FETCH_CYCLES = 7) and go_o is high in
+//     clock S+FETCH_CYCLES-1 with its fields: an engine started by go_o puts its
+//     first access on the bus in clock S+FETCH_CYCLES.  slot_time_o = S
+//     (global time): TIME publishes it.  An entry found invalid while it is
+//     fetched (fields as docs/controller.md "Validation" lists, the slot
+//     order, the cycle end, a bad mark) gets no go_o and adds 1 to
+//     rom_errors, once per cycle; an IDLE entry gets no go_o.
+//   * Deadline D = cycle start + start + length.  may_access_o is high in a
+//     clock c of a slot when an access put on the bus in clock c+1 ends
+//     before D even if it times out: c + 1 <= D - TIMEOUT - 2.
+//   * The slot ends at slot_done_i; the next entry waits for its start.
+//     After the last entry: time-rigid, the next cycle starts at cycle start
+//     + H1; position-synchronised (H0 flag, entry 0 a valid SYNC COPY), the
+//     sequencer loads the SYNC source's control word every POLL clocks on the
+//     poll port, and the next cycle starts in the clock after a poll's ack
+//     that shows a valid Actual other than sync_rl_i, or at cycle start + H1
+//     (a poll still on the bus is then dropped).  cycle_o pulses at each cycle
+//     start; cycles_o counts them (16-bit, saturating).
+//   * Reset (synchronous) clears control state; RAMs are never reset.
+`default_nettype none
+
+module albatross_sequencer #(
+    parameter NB         = 4,    // boards on the system bus, 1..16
+    parameter ADDR_WIDTH = 10,   // word-address bits of a board RAM, 3..12
+    parameter N_CHAN     = 32,   // channel ids, 1..32
+    parameter ROM_WORDS  = 1024, // schedule ROM depth in 32-bit words, >= 12
+    parameter ROM_FILE   = "",   // $readmemh image; simulation: +rom=FILE overrides
+    parameter TIME_BITS  = 16,   // bits of time within a cycle, 4..31
+    parameter TIMEOUT    = 8,    // clocks before a silent access fails (the deadline margin)
+    parameter POLL       = 16    // sync mode: clocks from one poll's start to the next, >= 2
+) (
+    input  wire                    clk_i,
+    input  wire                    rst_i,          // synchronous, active high
+    input  wire                    enable_i,       // the channel state is cleared: start up
+    // slot command
+    output wire                    go_o,           // one clock: start the entry's transfer
+    output wire [1:0]              kind_o,         // ALB_KIND_* (low bits)
+    output wire [4:0]              chan_o,         // channel id (valid from FETCH clock 2 on)
+    output wire [2:0]              nd_o,           // destinations 1..4
+    output wire [11:0]             words_o,        // W
+    output wire [3:0]              src_board_o,
+    output wire [ADDR_WIDTH-1:0]   src_base_o,
+    output wire [15:0]             dst_board_o,    // destination d at [4d +: 4]
+    output wire [4*ADDR_WIDTH-1:0] dst_base_o,     // destination d at [d*ADDR_WIDTH +: ADDR_WIDTH]
+    output wire [31:0]             slot_time_o,    // S, the slot's nominal start
+    output wire                    may_access_o,   // an access begun next clock ends before D
+    input  wire                    slot_done_i,    // one clock: the transfer is over
+    // sync-mode poll: a Wishbone B4 classic read of the SYNC source's control word
+    output wire                    poll_cyc_o,
+    output wire [3:0]              poll_board_o,
+    output wire [ADDR_WIDTH-1:0]   poll_adr_o,
+    /* verilator lint_off UNUSEDSIGNAL */
+    input  wire [31:0]             poll_dat_i,     // only the Actual byte is read
+    /* verilator lint_on UNUSEDSIGNAL */
+    input  wire                    poll_ack_i,
+    input  wire                    poll_err_i,
+    input  wire [1:0]              sync_rl_i,      // the SYNC channel's ReadLocked copy (0: unknown)
+    // status
+    output wire [31:0]             time_o,
+    output wire                    cycle_o,        // one clock: a cycle starts
+    output wire                    error_o,        // the ROM is invalid: idle for good
+    output wire [15:0]             rom_errors_o,   // skipped entries and background mismatches
+    output wire [15:0]             cycles_o
+);
+
+`include "albatross_contract.vh"
+
+    // CRC of the ROM image (to be given by the contract, rtl/albatross_contract.toml).
+    localparam [31:0] CRC_POLY = 32'h000000AF;  // P = x^32 + x^7 + x^5 + x^3 + x^2 + x + 1
+    localparam [31:0] CRC_SEED = 32'hFFFFFFFF;  // c before the first word
+    localparam FETCH_CYCLES = 7;                // slot start to the first access on the bus
+    localparam MARGIN       = TIMEOUT + 2;      // an access on the bus in clock p needs p <= D - MARGIN
+    localparam NE_FIT  = (ROM_WORDS - 4) / 8;
+    localparam NE_MAX  = (NE_FIT > 255) ? 255 : NE_FIT;
+    localparam ROM_AW  = $clog2(ROM_WORDS);
+    localparam RG_BITS = $clog2(NE_MAX + 1);    // parts: 0 header, k+1 entry k
+    localparam TB      = TIME_BITS;
+    localparam PC_BITS = $clog2(POLL);
+    localparam integer        POLL_LAST_I = POLL - 1;
+    localparam [PC_BITS-1:0]  POLL_LAST   = POLL_LAST_I[PC_BITS-1:0];
+    localparam [11:0]         W_STATUS    = 2 * N_CHAN + 1;
+    localparam integer        MIN_LEN_I   = FETCH_CYCLES + MARGIN;
+    localparam [TB:0]         MIN_LEN     = MIN_LEN_I[TB:0];
+    localparam [TB:0]         MARGIN_T    = MARGIN[TB:0];
+    localparam [ROM_AW-1:0]   A1 = 1, A2 = 2, A3 = 3, A4 = 4, A5 = 5, A8 = 8, A9 = 9;
+    localparam [7:0]          NE_MAX8     = NE_MAX[7:0];
+    localparam                HFLAG_SYNC  = ALB_ROM_H0_FLAGS_LSB + ALB_ROM_HFLAG_SYNC_MODE;
+    localparam                EFLAG_SYNC  = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_SYNC;
+
+    generate
+        if (NB < 1 || NB > 16 || ADDR_WIDTH < 3 || ADDR_WIDTH > ALB_ROM_PLACE_BASE_W || N_CHAN < 1 ||
+            N_CHAN > 32 || ROM_WORDS < 12 || TIME_BITS < 4 || TIME_BITS > 31 || TIMEOUT < 2 || POLL < 2 ||
+            ALB_ROM_HEADER_WORDS != 4 || ALB_ROM_ENTRY_WORDS != 8) begin : g_param_check
+            albatross_sequencer_parameter_out_of_range u_error ();
+        end
+    endgenerate
+
+    // States of the sequencer.
+    localparam [2:0] ST_HEADER    = 3'd0,  // read H0, H1, H3 and entry 0's start
+                     ST_CHECK     = 3'd1,  // start-up CRC pass over the image
+                     ST_ERROR     = 3'd2,  // the ROM is invalid: idle for good
+                     ST_WAIT      = 3'd3,  // wait for the start of entry ent_q
+                     ST_FETCH     = 3'd4,  // fetch entry ent_q (step_q = clock of the fetch)
+                     ST_TRANSFER  = 3'd5,  // the engines run the entry's transfer
+                     ST_CYCLE_END = 3'd6;  // after the last entry: wait (or poll) for the next cycle
+
+    reg [2:0]          state_q;
+    reg [2:0]          step_q;        // clock within ST_HEADER, ST_FETCH
+    reg [31:0]         time_q;
+    reg [TB-1:0]       rel_q;         // clocks since the cycle start
+    reg [TB-1:0]       cycle_q;       // H1
+    reg [7:0]          ne_q;
+    reg                smode_q;
+    reg                sync_ok_q;     // entry 0 is a valid SYNC COPY (this cycle)
+    reg [31:0]         h3_q;
+    reg [TB-1:0]       first_start_q; // E1 of entry 0
+    reg [TB-1:0]       start_q;       // E1 of entry ent_q
+    reg                start_bad_q;   // ... did not fit in TIME_BITS
+    reg [TB-1:0]       next_start_q;  // E1 of entry ent_q + 1
+    reg                next_bad_q;
+    reg [TB:0]         end_q;         // start + length: the deadline D in rel
+    reg [TB:0]         prev_end_q;    // the previous valid slot's end
+    reg [7:0]          ent_q;
+    reg [ROM_AW-1:0]   ent_adr_q;     // 4 + 8 * ent_q
+    reg                bad_q;         // the entry being fetched is invalid
+    reg [1:0]          kind_q;
+    reg                sflag_q;
+    reg [4:0]          chan_q;
+    reg [2:0]          nd_q;
+    reg [11:0]         w_q;
+    reg [13:0]         e3_q;          // 3 * W
+    reg [3:0]          sbrd_q;
+    reg [ADDR_WIDTH-1:0] sbase_q;
+    reg [15:0]         dbrd_q;
+    reg [4*ADDR_WIDTH-1:0] dbase_q;
+    reg [3:0]          sync_brd_q;
+    reg [ADDR_WIDTH-1:0] sync_base_q;
+    reg [31:0]         slot_time_q;
+    reg                err_q;
+    reg [15:0]         rerr_q;
+    reg [15:0]         cycles_q;
+    reg                cycle_q1;      // cycle_o
+    reg [PC_BITS-1:0]  pc_q;
+    reg                poll_q;
+    // background check
+    reg [ROM_AW-1:0]   bg_adr_q;      // next word to read
+    reg [ROM_AW-1:0]   bg_dadr_q;     // word in rom_q when bg_data_q
+    reg                bg_data_q;
+    reg [31:0]         crc_q;
+
+    // ------------------------------------------------------------ memories (never reset)
+    reg [31:0] rom [0:ROM_WORDS-1];
+    reg [31:0] rom_q;
+    reg [32:0] sig [0:NE_MAX];        // {part r found bad, prefix CRC after part r}
+    reg [32:0] sig_q;
+    reg        bad_mem [0:NE_MAX];    // part r failed the background check
+    reg        bad_mem_q;
+
+    integer ri;
+`ifndef SYNTHESIS
+    reg [8*1024-1:0] rom_arg;
+`endif
+    initial begin
+        for (ri = 0; ri < ROM_WORDS; ri = ri + 1) rom[ri] = 32'd0;
+        if (ROM_FILE != "") $readmemh(ROM_FILE, rom);
+`ifndef SYNTHESIS
+        if ($value$plusargs("rom=%s", rom_arg)) $readmemh(rom_arg, rom);
+`endif
+    end
+
+    function [31:0] crc_step;            // (c * x^32 + w) mod P
+        input [31:0] c;
+        input [31:0] w;
+        integer i;
+        reg [31:0] x;
+        begin
+            x = c;
+            for (i = 0; i < 32; i = i + 1) x = {x[30:0], 1'b0} ^ (x[31] ? CRC_POLY : 32'd0);
+            crc_step = x ^ w;
+        end
+    endfunction
+
+    // ------------------------------------------------------------ ROM port
+    wire               start_now = state_q == ST_WAIT && rel_q == start_q;   // clock S
+    wire               fetch_rom = state_q == ST_FETCH && step_q <= 3'd5;
+    wire               main_rom  = state_q == ST_HEADER || start_now || fetch_rom;
+    wire               bg_on     = state_q == ST_CHECK || state_q == ST_WAIT ||
+                                   state_q == ST_TRANSFER || state_q == ST_CYCLE_END;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [ROM_AW+11:0] last_wide = {{ROM_AW{1'b0}}, 1'b0, ne_q, 3'b011}; // 4 + 8*NE - 1
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [ROM_AW-1:0]  last_word = last_wide[ROM_AW-1:0];
+    wire               bg_issue  = bg_on && !main_rom && !(state_q == ST_CHECK && bg_adr_q > last_word);
+    // Main reads: header H0, H1, H3, E1 of entry 0; fetch E0 (clock S), E2..E5, E1 of the next.
+    reg [ROM_AW-1:0] main_adr;
+    always @* begin
+        main_adr = ent_adr_q;                                       // E0 (start_now)
+        if (state_q == ST_HEADER)
+            case (step_q)
+                3'd0:    main_adr = {ROM_AW{1'b0}};
+                3'd1:    main_adr = A1;
+                3'd2:    main_adr = A3;
+                default: main_adr = A5;                              // E1 of entry 0
+            endcase
+        else if (state_q == ST_FETCH)
+            case (step_q)
+                3'd1:    main_adr = ent_adr_q | A2;               // E2
+                3'd2:    main_adr = ent_adr_q | A3;               // E3
+                3'd3:    main_adr = ent_adr_q + A4;               // E4
+                3'd4:    main_adr = ent_adr_q + A5;               // E5
+                default: main_adr = ent_adr_q + A9;               // E1 of the next entry
+            endcase
+    end
+    always @(posedge clk_i) rom_q <= rom[main_rom ? main_adr : bg_adr_q];
+
+    // ------------------------------------------------------------ background check
+    wire [RG_BITS-1:0] part   = bg_dadr_q[RG_BITS+2:3];              // 0 header, k+1 entry k
+    wire               p_end  = bg_data_q && bg_dadr_q[2:0] == 3'b011;
+    wire               p_last = bg_data_q && bg_dadr_q == last_word;
+    wire [31:0]        crc_n  = crc_step(crc_q, bg_dadr_q == 3 ? 32'd0 : rom_q);
+    wire               learn  = state_q == ST_CHECK;
+    wire               mism   = p_end && !learn && crc_n != sig_q[31:0];
+    wire               mism_new = mism && !sig_q[32];                 // counted once
+    always @(posedge clk_i) begin
+        if ((p_end && learn) || mism) sig[part] <= learn ? {1'b0, crc_n} : {1'b1, sig_q[31:0]};
+        sig_q <= sig[bg_adr_q[RG_BITS+2:3]];
+    end
+    wire [RG_BITS-1:0] fetch_part = ent_q[RG_BITS-1:0] + 1'b1;
+    always @(posedge clk_i) begin
+        if ((p_end && learn) || mism) bad_mem[part] <= !learn;
+        bad_mem_q <= bad_mem[fetch_part];
+    end
+
+    // ------------------------------------------------------------ field checks at fetch
+    wire [3:0]  e0_kind = rom_q[ALB_ROM_E0_KIND_LSB +: 4];
+    wire [3:0]  e0_nd   = rom_q[ALB_ROM_E0_ND_LSB +: 4];
+    wire [7:0]  e0_id   = rom_q[ALB_ROM_E0_ID_LSB +: 8];
+    wire [11:0] e0_w    = rom_q[ALB_ROM_E0_W_LSB +: 12];
+    wire        e0_idle = e0_kind == ALB_KIND_IDLE;
+    wire        e0_bad  = e0_kind > 4'd3 ||
+                          (rom_q[EFLAG_SYNC] && !(ent_q == 8'd0 && smode_q && e0_kind == ALB_KIND_COPY)) ||
+                          (!e0_idle && (e0_nd == 4'd0 || e0_nd > 4'd4 || e0_id >= N_CHAN)) ||
+                          (e0_kind == ALB_KIND_COPY && e0_w == 12'd0) ||
+                          (e0_kind == ALB_KIND_TIME && e0_w != 12'd1) ||
+                          (e0_kind == ALB_KIND_STATUS && e0_w != W_STATUS);
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [31:0] len_w   = rom_q;
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [TB:0] e2_end  = {1'b0, start_q} + {1'b0, len_w[TB-1:0]};
+    wire        e2_bad  = start_bad_q || len_w[31:TB] != 0 || {1'b0, len_w[TB-1:0]} < MIN_LEN ||
+                          e2_end > {1'b0, cycle_q} || {1'b0, start_q} < prev_end_q;
+    function place_ok;                 // board < NB and base + 3*stride < 2^ADDR_WIDTH
+        input [15:0] p;
+        input [13:0] s3;
+        reg [14:0] ext;
+        begin
+            ext = {3'd0, p[ALB_ROM_PLACE_BASE_LSB +: 12]} + {1'b0, s3};
+            place_ok = p[ALB_ROM_PLACE_BOARD_LSB +: 4] < NB && (ext >> ADDR_WIDTH) == 15'd0;
+        end
+    endfunction
+    wire [13:0] e3d    = e3_q + 14'd3;                               // 3 * (W + 1)
+    wire        lo_ok  = place_ok(rom_q[15:0], e3d);
+    wire        hi_ok  = place_ok(rom_q[31:16], e3d);
+    reg bad_now;
+    always @* begin
+        case (step_q)
+            3'd1:    bad_now = e0_bad || bad_mem_q;
+            3'd2:    bad_now = e2_bad;
+            3'd3:    bad_now = kind_q == ALB_KIND_COPY[1:0] && !place_ok(rom_q[15:0], e3_q);
+            3'd4:    bad_now = !lo_ok || (nd_q >= 3'd2 && !hi_ok);
+            3'd5:    bad_now = (nd_q >= 3'd3 && !lo_ok) || (nd_q == 3'd4 && !hi_ok);
+            default: bad_now = 1'b0;
+        endcase
+    end
+
+    // ------------------------------------------------------------ control
+    wire cycle_end  = rel_q == cycle_q - 1'b1;
+    wire last_ent   = ent_q + 8'd1 == ne_q;
+    wire poll_hit   = poll_q && poll_ack_i && poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 8] != 8'd0 &&
+                      poll_dat_i[8*ALB_CH_OFF_ACTUAL + 2 +: 6] == 6'd0 &&
+                      poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 2] != sync_rl_i;
+    wire new_cycle  = (state_q == ST_CYCLE_END && (cycle_end || poll_hit)) ||
+                      (state_q == ST_CHECK && p_last && crc_n == h3_q);
+    wire entry_over = (state_q == ST_FETCH && step_q == 3'd6 && (bad_q || kind_q == ALB_KIND_IDLE[1:0])) ||
+                      (state_q == ST_TRANSFER && slot_done_i);
+    wire [TB:0] rel_next = {1'b0, rel_q} + 1'b1;
+    wire        go_now   = state_q == ST_FETCH && step_q == 3'd6 && !bad_q && kind_q != ALB_KIND_IDLE[1:0];
+
+    always @(posedge clk_i) begin
+        cycle_q1 <= 1'b0;
+        if (rst_i) begin
+            state_q   <= ST_HEADER;
+            step_q    <= 3'd0;
+            time_q    <= 32'd0;
+            err_q     <= 1'b0;
+            rerr_q    <= 16'd0;
+            cycles_q  <= 16'd0;
+            poll_q    <= 1'b0;
+            bg_data_q <= 1'b0;
+            bg_adr_q  <= {ROM_AW{1'b0}};
+            crc_q     <= CRC_SEED;
+            sync_ok_q <= 1'b0;
+        end else begin
+            time_q    <= time_q + 32'd1;
+            rel_q     <= rel_next[TB-1:0];
+            bg_data_q <= bg_issue;
+            bg_dadr_q <= bg_adr_q;
+            if (bg_issue) bg_adr_q <= (bg_adr_q == last_word) ? {ROM_AW{1'b0}} : bg_adr_q + 1'b1;
+            if (bg_data_q) crc_q <= p_last ? CRC_SEED : (p_end && !learn) ? sig_q[31:0] : crc_n;
+            if (rerr_q != 16'hFFFF)
+                rerr_q <= rerr_q + {15'd0, mism_new | (entry_over && state_q == ST_FETCH && bad_q)};
+            case (state_q)
+                ST_HEADER: if (enable_i || step_q != 3'd0) begin
+                    step_q <= step_q + 3'd1;
+                    case (step_q)
+                        3'd1: begin                                             // H0
+                            ne_q    <= rom_q[ALB_ROM_H0_NE_LSB +: 8];
+                            smode_q <= rom_q[HFLAG_SYNC];
+                            if (rom_q[ALB_ROM_H0_MAGIC_LSB +: 16] != ALB_ROM_MAGIC ||
+                                rom_q[ALB_ROM_H0_NE_LSB +: 8] == 8'd0 || rom_q[ALB_ROM_H0_NE_LSB +: 8] > NE_MAX8)
+                                err_q <= 1'b1;
+                        end
+                        3'd2: begin                                             // H1
+                            cycle_q <= rom_q[TB-1:0];
+                            if (rom_q[31:TB] != 0 || rom_q[TB-1:0] == {TB{1'b0}}) err_q <= 1'b1;
+                        end
+                        3'd3: h3_q <= rom_q;                                    // H3
+                        default: ;
+                    endcase
+                    if (step_q == 3'd4) begin                                   // E1 of entry 0
+                        first_start_q <= rom_q[TB-1:0];
+                        state_q       <= err_q ? ST_ERROR : ST_CHECK;
+                    end
+                end
+                ST_CHECK: if (p_last) begin
+                    if (crc_n != h3_q) begin                                    // else new_cycle
+                        state_q <= ST_ERROR;
+                        err_q   <= 1'b1;
+                    end
+                end
+                ST_WAIT: if (start_now) begin
+                    state_q     <= ST_FETCH;
+                    step_q      <= 3'd1;
+                    slot_time_q <= time_q;
+                    bad_q       <= 1'b0;
+                end
+                ST_FETCH: begin
+                    step_q <= step_q + 3'd1;
+                    if (bad_now) bad_q <= 1'b1;
+                    case (step_q)
+                        3'd1: begin                                             // E0
+                            kind_q  <= e0_kind[1:0];
+                            sflag_q <= rom_q[EFLAG_SYNC];
+                            chan_q  <= e0_id[4:0];
+                            nd_q    <= e0_nd[2:0];
+                            w_q     <= e0_w;
+                            e3_q    <= {2'b00, e0_w} + {1'b0, e0_w, 1'b0};
+                        end
+                        3'd2: end_q <= e2_end;                                  // E2
+                        3'd3: begin                                             // E3
+                            sbrd_q  <= rom_q[ALB_ROM_E3_SRC_BOARD_LSB +: 4];
+                            sbase_q <= rom_q[ALB_ROM_E3_SRC_BASE_LSB +: ADDR_WIDTH];
+                        end
+                        3'd4: begin                                             // E4
+                            dbrd_q[7:0] <= {rom_q[ALB_ROM_E4_DST1_BOARD_LSB +: 4], rom_q[ALB_ROM_E4_DST0_BOARD_LSB +: 4]};
+                            dbase_q[2*ADDR_WIDTH-1:0] <= {rom_q[ALB_ROM_E4_DST1_BASE_LSB +: ADDR_WIDTH],
+                                                          rom_q[ALB_ROM_E4_DST0_BASE_LSB +: ADDR_WIDTH]};
+                        end
+                        3'd5: begin                                             // E5
+                            dbrd_q[15:8] <= {rom_q[ALB_ROM_E5_DST3_BOARD_LSB +: 4], rom_q[ALB_ROM_E5_DST2_BOARD_LSB +: 4]};
+                            dbase_q[4*ADDR_WIDTH-1:2*ADDR_WIDTH] <= {rom_q[ALB_ROM_E5_DST3_BASE_LSB +: ADDR_WIDTH],
+                                                                     rom_q[ALB_ROM_E5_DST2_BASE_LSB +: ADDR_WIDTH]};
+                        end
+                        default: begin                                          // E1 of the next entry
+                            next_start_q <= rom_q[TB-1:0];
+                            next_bad_q   <= rom_q[31:TB] != 0;
+                            if (!bad_q) prev_end_q <= end_q;
+                            if (ent_q == 8'd0) begin
+                                sync_ok_q   <= !bad_q && sflag_q;
+                                sync_brd_q  <= sbrd_q;
+                                sync_base_q <= sbase_q;
+                            end
+                            if (go_now) state_q <= ST_TRANSFER;
+                        end
+                    endcase
+                end
+                ST_CYCLE_END: begin
+                    pc_q <= (pc_q == POLL_LAST) ? {PC_BITS{1'b0}} : pc_q + 1'b1;
+                    if (smode_q && sync_ok_q && pc_q == POLL_LAST) poll_q <= 1'b1;
+                    if (poll_q && (poll_ack_i || poll_err_i)) poll_q <= 1'b0;
+                end
+                default: ;
+            endcase
+            if (entry_over) begin
+                ent_q       <= ent_q + 8'd1;
+                ent_adr_q   <= ent_adr_q + A8;
+                start_q     <= (state_q == ST_FETCH) ? rom_q[TB-1:0] : next_start_q;
+                start_bad_q <= (state_q == ST_FETCH) ? rom_q[31:TB] != 0 : next_bad_q;
+                state_q     <= last_ent ? ST_CYCLE_END : ST_WAIT;
+                pc_q        <= POLL_LAST;
+            end
+            if (new_cycle) begin
+                rel_q       <= {TB{1'b0}};
+                ent_q       <= 8'd0;
+                ent_adr_q   <= A4;
+                start_q     <= first_start_q;
+                start_bad_q <= 1'b0;
+                prev_end_q  <= {(TB+1){1'b0}};
+                poll_q      <= 1'b0;
+                state_q     <= ST_WAIT;
+                cycle_q1    <= 1'b1;
+                if (cycles_q != 16'hFFFF) cycles_q <= cycles_q + 16'd1;
+            end
+        end
+    end
+
+    assign go_o         = go_now;
+    assign kind_o       = kind_q;
+    assign chan_o       = chan_q;
+    assign nd_o         = nd_q;
+    assign words_o      = w_q;
+    assign src_board_o  = sbrd_q;
+    assign src_base_o   = sbase_q;
+    assign dst_board_o  = dbrd_q;
+    assign dst_base_o   = dbase_q;
+    assign slot_time_o  = slot_time_q;
+    assign may_access_o = (state_q == ST_TRANSFER || go_now) && rel_next + MARGIN_T <= end_q;
+    assign poll_cyc_o   = poll_q;
+    assign poll_board_o = sync_brd_q;
+    assign poll_adr_o   = sync_base_q;
+    assign time_o       = time_q;
+    assign cycle_o      = cycle_q1;
+    assign error_o      = err_q;
+    assign rom_errors_o = rerr_q;
+    assign cycles_o     = cycles_q;
+
+endmodule
+
+`default_nettype wire

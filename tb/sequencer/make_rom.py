@@ -1,0 +1,31 @@
+#!/usr/bin/env python3
+"""Test ROM for tb_sequencer.v in the new format (no per-entry checksum, H3 =
+CRC of the whole image with H3 read as 0): three entries (COPY, TIME,
+STATUS) in a cycle of 400 clocks.  Usage: make_rom.py OUT.hex"""
+import sys
+
+POLY, SEED = 0x000000AF, 0xFFFFFFFF
+
+
+def crc(words):
+    c = SEED
+    for w in words:
+        for _ in range(32):
+            c = ((c << 1) & 0xFFFFFFFF) ^ (POLY if c >> 31 else 0)
+        c ^= w
+    return c
+
+
+def entry(kind, cid, nd, w, start, length, src, dsts):
+    e = [(kind << 28) | (cid << 16) | (nd << 12) | w, start, length, src, 0, 0, 0, 0]
+    for i, d in enumerate(dsts):
+        e[4 + i // 2] |= d << (16 * (i % 2))
+    return e
+
+
+ents = [entry(1, 0, 2, 4, 10, 100, (0 << 12) | 16, [(1 << 12) | 16, (2 << 12) | 16]),
+        entry(2, 1, 1, 1, 120, 60, 0, [(3 << 12) | 64]),
+        entry(3, 2, 1, 2 * 4 + 1, 200, 150, 0, [(2 << 12) | 128])]
+rom = [(0xA1BA << 16) | (len(ents) << 8), 400, 0, 0] + sum(ents, [])
+rom[3] = crc(rom)
+open(sys.argv[1], "w").write("".join(f"{w:08x}\n" for w in rom))

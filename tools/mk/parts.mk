@@ -1,0 +1,30 @@
+# tools/mk/parts.mk -- the controller's new parts (issue 12): albatross_sequencer,
+# albatross_bus_master, albatross_counters.  Not yet composed into
+# rtl/albatross_controller.v (that is still the monolith).
+#   make test-parts-lint        Verilator -Wall, Icarus -g2005 and Yosys of each part
+#   make test-sequencer         tb/sequencer/tb_sequencer.v on the ROM of
+#                               tb/sequencer/make_rom.py (new format: whole-ROM
+#                               CRC, no per-entry checksum): slot starts, the
+#                               deadline, cycle length, a ROM upset found by the
+#                               background check and its entry skipped
+# Outputs in build/parts/.
+
+PARTS_DIR := $(BUILD)/parts
+PARTS     := albatross_sequencer albatross_bus_master albatross_counters
+
+TESTS += parts-lint sequencer
+.PHONY: test-parts-lint test-sequencer
+
+test-parts-lint: $(addprefix rtl/,$(addsuffix .v,$(PARTS))) $(RTL_INC)
+	@mkdir -p $(PARTS_DIR)
+	@tools/run_test.sh parts-lint bash -c 'set -e; for m in $(PARTS); do \
+	    verilator --lint-only -Wall -Irtl rtl/$$m.v; \
+	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/$$m.vvp rtl/$$m.v; \
+	    yosys -q -p "read_verilog -Irtl rtl/$$m.v; synth -top $$m" > $(PARTS_DIR)/$$m.yosys.log; \
+	    echo "$$m: lint, Icarus and Yosys clean"; done'
+
+test-sequencer: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v $(RTL_INC)
+	@mkdir -p $(PARTS_DIR)/seq
+	@tools/run_test.sh sequencer bash -c 'set -e; $(PYTHON) tb/sequencer/make_rom.py $(PARTS_DIR)/seq/seq_rom.hex; \
+	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/seq/tb tb/sequencer/tb_sequencer.v rtl/albatross_sequencer.v; \
+	    cd $(PARTS_DIR)/seq && vvp -n tb | grep -v readmemh | tee tb.log; grep -q "^PASS" tb.log'
