@@ -7,23 +7,25 @@
 localparam ALB_ROM_HEADER_WORDS    = 4;
 localparam ALB_ROM_ENTRY_WORDS     = 8;
 localparam [15:0] ALB_ROM_MAGIC      = 16'hA1BA;
-localparam [31:0] ALB_ROM_CHECKSUM_SEED = 32'hA1BA7055;  // c = rotate_left(c, ROTATE) ^ word
-localparam ALB_ROM_CHECKSUM_ROTATE = 5;
+localparam [31:0] ALB_ROM_CRC_POLY = 32'h000000AF;  // P = x^32 + POLY; c = (c * x^32 + word) mod P
+localparam [31:0] ALB_ROM_CRC_SEED = 32'hFFFFFFFF;
+localparam ALB_ROM_CRC_WORD        = 3;  // read as 0 by the CRC
+localparam ALB_ROM_TIME_BITS       = 16;  // widest time within a cycle
 localparam ALB_ROM_MAX_ENTRIES     = 255;
 localparam ALB_ROM_MAX_DESTS       = 4;
 // fields
 localparam ALB_ROM_H0_MAGIC_LSB      = 16, ALB_ROM_H0_MAGIC_W      = 16;
 localparam ALB_ROM_H0_NE_LSB         =  8, ALB_ROM_H0_NE_W         =  8;
 localparam ALB_ROM_H0_FLAGS_LSB      =  0, ALB_ROM_H0_FLAGS_W      =  8;
-localparam ALB_ROM_H1_CYCLE_LSB      =  0, ALB_ROM_H1_CYCLE_W      = 32;
-localparam ALB_ROM_H3_CHECKSUM_LSB   =  0, ALB_ROM_H3_CHECKSUM_W   = 32;
+localparam ALB_ROM_H1_CYCLE_LSB      =  0, ALB_ROM_H1_CYCLE_W      = 16;
+localparam ALB_ROM_H3_CRC_LSB        =  0, ALB_ROM_H3_CRC_W        = 32;
 localparam ALB_ROM_E0_KIND_LSB       = 28, ALB_ROM_E0_KIND_W       =  4;
 localparam ALB_ROM_E0_FLAGS_LSB      = 24, ALB_ROM_E0_FLAGS_W      =  4;
 localparam ALB_ROM_E0_ID_LSB         = 16, ALB_ROM_E0_ID_W         =  8;
 localparam ALB_ROM_E0_ND_LSB         = 12, ALB_ROM_E0_ND_W         =  4;
 localparam ALB_ROM_E0_W_LSB          =  0, ALB_ROM_E0_W_W          = 12;
-localparam ALB_ROM_E1_START_LSB      =  0, ALB_ROM_E1_START_W      = 32;
-localparam ALB_ROM_E2_LENGTH_LSB     =  0, ALB_ROM_E2_LENGTH_W     = 32;
+localparam ALB_ROM_E1_START_LSB      =  0, ALB_ROM_E1_START_W      = 16;
+localparam ALB_ROM_E2_LENGTH_LSB     =  0, ALB_ROM_E2_LENGTH_W     = 16;
 localparam ALB_ROM_E3_SRC_LSB        =  0, ALB_ROM_E3_SRC_W        = 16;
 localparam ALB_ROM_E3_SRC_BOARD_LSB  = 12, ALB_ROM_E3_SRC_BOARD_W  =  4;
 localparam ALB_ROM_E3_SRC_BASE_LSB   =  0, ALB_ROM_E3_SRC_BASE_W   = 12;
@@ -39,7 +41,6 @@ localparam ALB_ROM_E5_DST2_BASE_LSB  =  0, ALB_ROM_E5_DST2_BASE_W  = 12;
 localparam ALB_ROM_E5_DST3_LSB       = 16, ALB_ROM_E5_DST3_W       = 16;
 localparam ALB_ROM_E5_DST3_BOARD_LSB = 28, ALB_ROM_E5_DST3_BOARD_W =  4;
 localparam ALB_ROM_E5_DST3_BASE_LSB  = 16, ALB_ROM_E5_DST3_BASE_W  = 12;
-localparam ALB_ROM_E7_CHECKSUM_LSB   =  0, ALB_ROM_E7_CHECKSUM_W   = 32;
 localparam ALB_ROM_PLACE_BOARD_LSB = 12, ALB_ROM_PLACE_BOARD_W = 4;
 localparam ALB_ROM_PLACE_BASE_LSB  = 0, ALB_ROM_PLACE_BASE_W  = 12;
 // E0.kind codes; flag bits within H0.flags and E0.flags

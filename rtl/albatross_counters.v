@@ -12,9 +12,10 @@
 //   * During a slot the events of its channel are counted in small delta
 //     registers (one retry per clock at most; transfers, abandoned and
 //     corrupt arrive as counts).  commit_i (one clock, chan_i valid) adds the
-//     deltas to the channel's two words in three clocks (read, write + read,
-//     write) and clears them; no event may arrive in those three clocks (the
-//     next slot's fetch is longer).  busy_o is high while a commit runs.
+//     deltas to the channel's two words in three clocks (read; write
+//     {transfers, retries} + read; write {abandoned, corrupt}); an event in
+//     those clocks is never lost: it goes into the word still to be written,
+//     or counts towards the next commit.  busy_o is high meanwhile.
 //   * STATUS word 0 is {rom_errors_i, cycles_i}; word k >= 1 is RAM word
 //     k - 1.  status_index_i selects the word; status_o is that word and
 //     status_valid_o is high once the read of that index has completed (the
@@ -34,7 +35,7 @@ module albatross_counters #(
     input  wire [2:0]             abandoned_i,    // destinations abandoned now (0..4)
     input  wire [2:0]             corrupt_i,      // corrupt control bytes now (0..5)
     input  wire                   commit_i,       // the slot is over: add its deltas to chan_i
-    input  wire [4:0]             chan_i,         // channel of the slot (held through the commit)
+    input  wire [4:0]             chan_i,         // channel of the slot (sampled with commit_i)
     output wire                   busy_o,         // a commit is running
     // STATUS words
     input  wire [15:0]            rom_errors_i,
@@ -64,6 +65,7 @@ module albatross_counters #(
     reg [15:0]   d_retry_q;
     reg [3:0]    d_xfer_q, d_aband_q, d_corrupt_q;
     reg          zero_q;        // status index 0 was presented
+    reg [4:0]    chan_q;        // the channel being committed
 
     function [15:0] sat_add;
         input [15:0] a;
@@ -75,9 +77,15 @@ module albatross_counters #(
         end
     endfunction
 
+    // The deltas with this clock's events.
+    wire [15:0] retry_n   = (retry_i && d_retry_q != 16'hFFFF) ? d_retry_q + 16'd1 : d_retry_q;
+    wire [3:0]  xfer_n    = d_xfer_q + {1'b0, transfers_i};
+    wire [3:0]  aband_n   = d_aband_q + {1'b0, abandoned_i};
+    wire [3:0]  corrupt_n = d_corrupt_q + {1'b0, corrupt_i};
+
     // Channel words; the commit uses the read port in phases 1 and 2.
     /* verilator lint_off UNUSEDSIGNAL */
-    wire [5:0]    w_wide = {chan_i, 1'b0};
+    wire [5:0]    w_wide = {chan_q, 1'b0};
     wire [CB-1:0] w0 = w_wide[CB-1:0];
     wire [CB-1:0] w1 = w0 | {{(CB-1){1'b0}}, 1'b1};
     wire [INDEX_WIDTH-1:0] idx_m1 = status_index_i - 1'b1;   // RAM word of STATUS word k
@@ -86,8 +94,8 @@ module albatross_counters #(
     wire          wr     = !ready_q || phase_q == 2'd2 || phase_q == 2'd3;
     wire [CB-1:0] wr_adr = !ready_q ? clear_q : (phase_q == 2'd2) ? w0 : w1;
     wire [31:0]   wr_dat = !ready_q ? 32'd0 :
-                           (phase_q == 2'd2) ? {sat_add(rd_q[31:16], {12'd0, d_xfer_q}), sat_add(rd_q[15:0], d_retry_q)}
-                                             : {sat_add(rd_q[31:16], {12'd0, d_aband_q}), sat_add(rd_q[15:0], {12'd0, d_corrupt_q})};
+                           (phase_q == 2'd2) ? {sat_add(rd_q[31:16], {12'd0, xfer_n}), sat_add(rd_q[15:0], retry_n)}
+                                             : {sat_add(rd_q[31:16], {12'd0, aband_n}), sat_add(rd_q[15:0], {12'd0, corrupt_n})};
 
     always @(posedge clk_i) begin
         if (wr) ram[wr_adr] <= wr_dat;
@@ -111,35 +119,24 @@ module albatross_counters #(
                 if (clear_q == LAST) ready_q <= 1'b1;
             end
             rd_done_q <= phase_q == 2'd0;
+            // Word 0's deltas go into the RAM in phase 2, word 1's in phase 3
+            // (with that clock's events); later events count from zero.
+            d_retry_q   <= (phase_q == 2'd2) ? 16'd0 : retry_n;
+            d_xfer_q    <= (phase_q == 2'd2) ? 4'd0 : xfer_n;
+            d_aband_q   <= (phase_q == 2'd3) ? 4'd0 : aband_n;
+            d_corrupt_q <= (phase_q == 2'd3) ? 4'd0 : corrupt_n;
             case (phase_q)
-                2'd0: if (commit_i) phase_q <= 2'd1;
+                2'd0: if (commit_i) begin
+                    phase_q <= 2'd1;
+                    chan_q  <= chan_i;
+                end
                 2'd1: phase_q <= 2'd2;
                 2'd2: phase_q <= 2'd3;
-                default: begin
-                    phase_q     <= 2'd0;
-                    d_retry_q   <= 16'd0;
-                    d_xfer_q    <= 4'd0;
-                    d_aband_q   <= 4'd0;
-                    d_corrupt_q <= 4'd0;
-                end
+                default: phase_q <= 2'd0;
             endcase
-            if (phase_q != 2'd3) begin
-                if (retry_i && d_retry_q != 16'hFFFF) d_retry_q <= d_retry_q + 16'd1;
-                d_xfer_q    <= d_xfer_q + {1'b0, transfers_i};
-                d_aband_q   <= d_aband_q + {1'b0, abandoned_i};
-                d_corrupt_q <= d_corrupt_q + {1'b0, corrupt_i};
-            end
         end
     end
 
-`ifndef SYNTHESIS
-    always @(posedge clk_i) begin
-        if (!rst_i && phase_q != 2'd0 && (retry_i || transfers_i != 3'd0 || abandoned_i != 3'd0 || corrupt_i != 3'd0)) begin
-            $display("albatross_counters: an event during a commit (lost)");
-            $stop;
-        end
-    end
-`endif
 
     always @(posedge clk_i) zero_q <= status_index_i == {INDEX_WIDTH{1'b0}};
 

@@ -32,8 +32,17 @@
 //     ReadLocked load, or the last store of the previous word) or, if
 //     word_valid_i was low then, every clock until it is high.  The word's
 //     first store is on the bus in the next clock.
-//   * Failures: an access answered with err counts in fails_o and is tried
-//     again.  may_access_i gates every access: an access begins in the clock
+//   * Failures: an access answered with err counts in fails_o; cyc/stb drop
+//     for one clock, and in that clock may_access_i decides: the same access
+//     again in the next clock, or the cut-off.  DROP = 1: a destination whose
+//     accesses fail twice in one Export is dropped for the rest of it (in
+//     that clock the engine goes on as if the access had been acked, without
+//     its effect), so a dead board never blocks the others.  A failed store
+//     of Actual makes d's copy unknown and remembers the buffer it tried
+//     (tried_o[2d +: 2], 0 = none); the next Export's read-back of Actual
+//     (tried_i) then shows whether it landed: if so the value counts as
+//     published at d (published_o[d]) and is not written again.
+//     may_access_i gates every access: an access begins in the clock
 //     after an edge where it is 1; an access due at an edge where it is 0
 //     ends the Export there with cut_o.  A destination whose store of Actual
 //     failed and was not repeated gets an unknown copy (act_known_o[d] = 0):
@@ -50,7 +59,8 @@ module albatross_export #(
     parameter WORDS_WIDTH = 12, // bits of words_i: W from 1 to 2**WORDS_WIDTH - 1
     parameter COUNT_WIDTH = 8,  // bits of fails_o (saturating)
     parameter TAKEN_AT    = 0,  // 1: store taken_at_i after the value (stride W + 1)
-    parameter DESTS       = 1   // destination channels in lockstep, 1..4
+    parameter DESTS       = 1,  // destination channels in lockstep, 1..4
+    parameter DROP        = 0   // 1: drop a destination after its second failed access
 ) (
     input  wire                    clk_i,
     input  wire                    rst_i,        // synchronous, active high
@@ -62,6 +72,7 @@ module albatross_export #(
     input  wire [31:0]             taken_at_i,   // TAKEN_AT = 1: the word stored after the value
     input  wire [DESTS-1:0]        act_known_i,  // destination d's Actual copy is known ...
     input  wire [2*DESTS-1:0]      act_i,        // ... and is this buffer (1..3), at [2d +: 2]
+    input  wire [2*DESTS-1:0]      tried_i,      // buffer of d's failed Actual store (0: none), at [2d +: 2]
     input  wire                    may_access_i, // 1: an access may begin (deadline); tie 1 if none
     output wire                    idle_o,       // no Export under way: start_i is taken
     // the value, one word per take
@@ -77,6 +88,8 @@ module albatross_export #(
     output wire [COUNT_WIDTH-1:0]  fails_o,      // accesses answered with err in this Export
     output wire [DESTS-1:0]        act_known_o,  // the copies after the Export (live)
     output wire [2*DESTS-1:0]      act_o,
+    output wire [2*DESTS-1:0]      tried_o,
+    output wire [1:0]              dest_o,       // destination of the current access
     // Wishbone B4 classic master
     output wire                    wb_cyc_o,
     output wire                    wb_stb_o,
@@ -146,12 +159,26 @@ module albatross_export #(
     reg                        cut_q;
     reg                        done_q;
     reg [COUNT_WIDTH-1:0]      fails_q;
+    reg [2*DESTS-1:0]          tried_q;
+    reg [DESTS-1:0]            fail1_q;        // d had a failed access in this Export
+    reg                        retry_q;        // the clock after a failed access: cyc low
+    reg                        drop_q;         // ... and its destination is dropped
+
+    // d_q leaves the Export now: dropped (second failure) or found published (read-back).
+    wire       drop_now;
+    wire       landed;
+    wire       leave;
+    wire       adv;
+    wire       ctrl_end;
+    wire [DESTS-1:0] d_bit0 = {{(DESTS-1){1'b0}}, 1'b1} << d_q;
 
     // The current destination's fields.
     reg [ADDR_WIDTH-1:0] base_d;
     reg [1:0]            buf_d;
     reg [1:0]            copy_d;               // its Actual copy, 0 when unknown
+    reg [1:0]            tried_d;              // its tried buffer
     reg                  known_d;
+    reg [DESTS-1:0]      need_m;               // need_q without d_q if it leaves now
     reg                  has_next;             // a destination after d_q takes part
     reg [1:0]            next_d;
     reg [1:0]            first_d;              // the first destination that takes part
@@ -166,6 +193,8 @@ module albatross_export #(
         buf_d    = buf_q[1:0];
         copy_d   = act_q[1:0];
         known_d  = act_known_q[0];
+        tried_d  = tried_q[1:0];
+        need_m   = need_q & ~(leave ? d_bit0 : {DESTS{1'b0}});
         has_next = 1'b0;
         next_d   = 2'd0;
         first_d  = 2'd0;
@@ -180,6 +209,7 @@ module albatross_export #(
                 base_d  = base_q[i*ADDR_WIDTH +: ADDR_WIDTH];
                 buf_d   = buf_q[2*i +: 2];
                 copy_d  = act_q[2*i +: 2];
+                tried_d = tried_q[2*i +: 2];
                 known_d = act_known_q[i];
             end
             if (need_q[i] && i[1:0] > d_q) begin
@@ -187,7 +217,7 @@ module albatross_export #(
                 next_d     = i[1:0];
                 known_next = act_known_q[i];
             end
-            if (need_q[i]) first_d = i[1:0];
+            if (need_m[i]) first_d = i[1:0];
             if (need_i[i]) begin
                 first_in = i[1:0];
                 known_in = act_known_i[i];
@@ -206,9 +236,15 @@ module albatross_export #(
                            (copy_d != BUFFER2 && rl_lock != BUFFER2) ? BUFFER2 : BUFFER1;
     wire       last_word = store_k_q == words_q - 1'b1;
     wire       ack       = wb_ack_i && stb_q;
+    assign drop_now = retry_q && drop_q;
+    assign landed   = ack && state_q == S_LOAD_ACTUAL && act_valid && act_byte[1:0] == tried_d && tried_d != 2'd0;
+    assign leave    = drop_now || landed;
+    assign adv      = ack || drop_now;             // go on to the next access
+    assign ctrl_end = adv && (state_q == S_LOAD_RL || (state_q == S_LOAD_ACTUAL && leave));
     // The clock where the engine takes a word from the stream.
     wire       want_word = state_q == S_WAIT_WORD ||
-                           (ack && !has_next && (state_q == S_LOAD_RL || (state_q == S_STORE_WORD && !last_word)));
+                           (!has_next && need_m != {DESTS{1'b0}} &&
+                            (ctrl_end || (adv && state_q == S_STORE_WORD && !last_word)));
 
     // Address of the current access: a control word, or word k of d's buffer
     // base + BUF_WORD + (buf - 1) * S + k, S = W + TAKEN_WORDS (no multiplier).
@@ -254,23 +290,55 @@ module albatross_export #(
             corrupt_q   <= {DESTS{1'b0}};
             cut_q       <= 1'b0;
             fails_q     <= {COUNT_WIDTH{1'b0}};
+            tried_q     <= {2*DESTS{1'b0}};
+            retry_q     <= 1'b0;
+            drop_q      <= 1'b0;
         end else if (wb_err_i && stb_q) begin
-            // A failed access: count it, try it again if an access may begin.
+            // A failed access: count it, drop cyc for a clock.  The store of
+            // Actual may have landed: the copy is unknown, the buffer tried.
             if (~&fails_q) fails_q <= fails_q + 1'b1;
-            if (!may_access_i) begin
-                stb_q   <= 1'b0;
+            stb_q   <= 1'b0;
+            retry_q <= 1'b1;
+            drop_q  <= DROP != 0 && |(fail1_q & d_bit);
+            fail1_q <= fail1_q | d_bit;
+            if (state_q == S_STORE_ACTUAL) begin
+                act_known_q <= act_known_q & ~d_bit;
+                tried_q[2*d_q +: 2] <= buf_d;
+            end
+        end else if (retry_q && !drop_q) begin
+            // The same access again if one may begin, else the cut-off.
+            retry_q <= 1'b0;
+            if (may_access_i) stb_q <= 1'b1;
+            else begin
                 state_q <= S_IDLE;
                 cut_q   <= 1'b1;
                 done_q  <= 1'b1;
-                // The store of Actual may have landed: the copy is unknown.
-                if (state_q == S_STORE_ACTUAL) act_known_q <= act_known_q & ~d_bit;
             end
+        end else if (adv && need_m == {DESTS{1'b0}}) begin
+            // The last destination left: the Export is over.
+            retry_q <= 1'b0;
+            need_q  <= need_m;
+            if (landed) begin
+                act_q[2*d_q +: 2]   <= act_byte[1:0];
+                act_known_q         <= act_known_q | d_bit;
+                tried_q[2*d_q +: 2] <= 2'd0;
+                published_q         <= published_q | d_bit;
+            end
+            stb_q   <= 1'b0;
+            state_q <= S_IDLE;
+            done_q  <= 1'b1;
         end else begin
+            retry_q <= 1'b0;
+            need_q  <= need_m;
             if (want_word && word_valid_i) begin          // take a word: store it to the first d
                 word_q    <= word_i;
                 store_k_q <= take_k_q;
                 take_k_q  <= take_k_q + 1'b1;
                 begin_access(S_STORE_WORD, first_d);
+            end else if (want_word && state_q == S_WAIT_WORD && !may_access_i) begin
+                state_q <= S_IDLE;                        // no store could follow: cut off
+                cut_q   <= 1'b1;
+                done_q  <= 1'b1;
             end else if (want_word) begin                 // wait for it, bus idle
                 state_q <= S_WAIT_WORD;
                 stb_q   <= 1'b0;
@@ -283,6 +351,9 @@ module albatross_export #(
                     taken_q     <= taken_at_i;
                     act_known_q <= act_known_i;
                     act_q       <= act_i;
+                    tried_q     <= tried_i;
+                    fail1_q     <= {DESTS{1'b0}};
+                    drop_q      <= 1'b0;
                     published_q <= {DESTS{1'b0}};
                     corrupt_q   <= {DESTS{1'b0}};
                     cut_q       <= 1'b0;
@@ -291,32 +362,38 @@ module albatross_export #(
                     if (!any_in) done_q <= 1'b1;          // no destination: nothing to do
                     else begin_access(known_in ? S_LOAD_RL : S_LOAD_ACTUAL, first_in);
                 end
-                S_LOAD_ACTUAL: if (ack) begin
-                    if (act_valid) begin
+                S_LOAD_ACTUAL: if (adv) begin
+                    if (ack) tried_q[2*d_q +: 2] <= 2'd0;            // read back
+                    if (ack && act_valid) begin
                         act_q[2*d_q +: 2]  <= act_byte[1:0];
                         act_known_q <= act_known_q | d_bit;
-                    end else begin
+                    end else if (ack) begin
                         corrupt_q   <= corrupt_q | d_bit;
                     end
-                    begin_access(S_LOAD_RL, d_q);
+                    if (landed) published_q <= published_q | d_bit;  // the failed store had landed
+                    if (!leave) begin_access(S_LOAD_RL, d_q);
+                    else if (has_next) begin_access(known_next ? S_LOAD_RL : S_LOAD_ACTUAL, next_d);
                 end
-                S_LOAD_RL: if (ack) begin
+                S_LOAD_RL: if (adv) begin
                     buf_q[2*d_q +: 2] <= pick;
-                    if (!rl_valid) corrupt_q <= corrupt_q | d_bit;
+                    if (ack && !rl_valid) corrupt_q <= corrupt_q | d_bit;
                     if (has_next) begin_access(known_next ? S_LOAD_RL : S_LOAD_ACTUAL, next_d);
                 end
-                S_STORE_WORD: if (ack) begin
+                S_STORE_WORD: if (adv) begin
                     if (has_next) begin_access(S_STORE_WORD, next_d);
                     else if (last_word) begin_access(TAKEN_AT ? S_STORE_TAKEN : S_STORE_ACTUAL, first_d);
                 end
-                S_STORE_TAKEN: if (ack) begin
+                S_STORE_TAKEN: if (adv) begin
                     if (has_next) begin_access(S_STORE_TAKEN, next_d);
                     else begin_access(S_STORE_ACTUAL, first_d);
                 end
-                S_STORE_ACTUAL: if (ack) begin
-                    act_q[2*d_q +: 2] <= buf_d;
-                    act_known_q <= act_known_q | d_bit;
-                    published_q <= published_q | d_bit;
+                S_STORE_ACTUAL: if (adv) begin
+                    if (ack) begin
+                        act_q[2*d_q +: 2]   <= buf_d;
+                        act_known_q         <= act_known_q | d_bit;
+                        published_q         <= published_q | d_bit;
+                        tried_q[2*d_q +: 2] <= 2'd0;
+                    end
                     if (has_next) begin_access(S_STORE_ACTUAL, next_d);
                     else begin
                         stb_q   <= 1'b0;
@@ -339,6 +416,8 @@ module albatross_export #(
     assign fails_o      = fails_q;
     assign act_known_o  = act_known_q;
     assign act_o        = act_q;
+    assign tried_o      = tried_q;
+    assign dest_o       = d_q;
     assign wb_cyc_o     = stb_q;
     assign wb_stb_o     = stb_q;
     assign wb_we_o      = state_q == S_STORE_WORD || state_q == S_STORE_TAKEN || state_q == S_STORE_ACTUAL;

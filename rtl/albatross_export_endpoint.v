@@ -67,9 +67,9 @@ module albatross_export_endpoint #(
     endgenerate
 
     wire       idle, act_known, published, cut;
-    wire [1:0] act;
+    wire [1:0] act, tried, dest;
     wire [7:0] fails;
-    wire       unused = &{1'b0, published, cut, fails};
+    wire       unused = &{1'b0, published, cut, fails, dest};
 
     albatross_export #(.ADDR_WIDTH(ADDR_WIDTH), .WORDS_WIDTH(16), .COUNT_WIDTH(8), .TAKEN_AT(TAKEN_AT),
                        .DESTS(1)) u_export (
@@ -77,11 +77,12 @@ module albatross_export_endpoint #(
         .start_i(publish_i), .base_i(BASE_W), .need_i(1'b1), .words_i(WORDS_W),
         .taken_at_i(taken_at_i),
         .act_known_i(act_known), .act_i(act),       // the copy stays in the engine
+        .tried_i(tried),
         .may_access_i(1'b1), .idle_o(idle),
         .word_i(word_i), .word_valid_i(word_valid_i), .word_ready_o(word_ready_o),
         .word_index_o(word_index_o),
         .done_o(done_o), .published_o(published), .corrupt_o(corrupt_o), .cut_o(cut), .fails_o(fails),
-        .act_known_o(act_known), .act_o(act),
+        .act_known_o(act_known), .act_o(act), .tried_o(tried), .dest_o(dest),
         .wb_cyc_o(wb_cyc_o), .wb_stb_o(wb_stb_o), .wb_we_o(wb_we_o), .wb_adr_o(wb_adr_o),
         .wb_sel_o(wb_sel_o), .wb_dat_o(wb_dat_o), .wb_dat_i(wb_dat_i), .wb_ack_i(wb_ack_i),
         .wb_err_i(wb_err_i)

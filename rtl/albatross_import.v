@@ -12,7 +12,8 @@
 //     stored in this Import, else Old.  An Actual that names no buffer ends
 //     the Import with corrupt_o (nothing is read, the copy is kept).  Then
 //     selected_o: the caller answers stream_i (read the value) or skip_i
-//     (end without reading).  Phase 2: load the W words of buffer ReadLocked
+//     (end without reading).  skip_i while a word waits to be taken (or, with
+//     PULL, to be asked for) ends the Import there; so does may_access_i low.  Phase 2: load the W words of buffer ReadLocked
 //     in address order, one load per word handed out on word_o.
 //   * Accesses: one at a time; cyc = stb from request to ack.  With no fault
 //     and a consumer that takes every word in its ack clock (word_ready_i),
@@ -25,8 +26,13 @@
 //     wb_dat_i) or, if word_ready_i was low then, from the next clock on with
 //     the held word, until word_ready_i.  The next load begins in the clock
 //     after the word is taken.  word_index_o is the word's index 0..W-1.
-//   * Failures: an access answered with err counts in fails_o and is tried
-//     again.  may_access_i gates every access: an access begins in the clock
+//   * PULL = 1 (the controller, where both engines share one bus): a word
+//     load begins only in the clock after one where word_ready_i is high
+//     while the engine waits for it (after stream_i, and after each word is
+//     taken), so the consumer's own accesses never overlap the loads.
+//   * Failures: an access answered with err counts in fails_o; cyc/stb drop
+//     for one clock, and in that clock may_access_i decides: the same access
+//     again in the next clock, or the cut-off.  may_access_i gates every access: an access begins in the clock
 //     after an edge where it is 1; an access due at an edge where it is 0
 //     ends the Import there with cut_o.  An Import cut off between its store
 //     of ReadLocked and the confirming load of Actual forgets its copy
@@ -42,7 +48,8 @@
 module albatross_import #(
     parameter ADDR_WIDTH  = 10, // word-address bits of the port (wb_adr_o)
     parameter WORDS_WIDTH = 12, // bits of words_i: W from 1 to 2**WORDS_WIDTH - 1
-    parameter COUNT_WIDTH = 8   // bits of fails_o (saturating)
+    parameter COUNT_WIDTH = 8,  // bits of fails_o (saturating)
+    parameter PULL        = 0   // 1: load the next word only when word_ready_i asks for it
 ) (
     input  wire                   clk_i,
     input  wire                   rst_i,        // synchronous, active high
@@ -113,7 +120,8 @@ module albatross_import #(
                      S_STORE_RL    = 3'd2,  // store ReadLocked := the Actual just loaded
                      S_SELECTED    = 3'd3,  // phase 1 over: waiting for stream_i or skip_i
                      S_LOAD_WORD   = 3'd4,  // load word k of buffer ReadLocked
-                     S_HOLD_WORD   = 3'd5;  // word k loaded, not yet taken by the consumer
+                     S_HOLD_WORD   = 3'd5,  // word k loaded, not yet taken by the consumer
+                     S_WAIT_PULL   = 3'd6;  // PULL: word k is next, waiting for word_ready_i
 
     reg [2:0]             state_q;
     reg                   stb_q;        // cyc = stb: an access is on the bus
@@ -130,6 +138,7 @@ module albatross_import #(
     reg                   corrupt_q;
     reg                   cut_q;
     reg                   done_q;
+    reg                   retry_q;      // the clock after a failed access: cyc low
     reg [COUNT_WIDTH-1:0] fails_q;
     reg [31:0]            word_q;       // a loaded word the consumer has not taken yet
 
@@ -162,11 +171,17 @@ module albatross_import #(
             corrupt_q  <= 1'b0;
             cut_q      <= 1'b0;
             fails_q    <= {COUNT_WIDTH{1'b0}};
+            retry_q    <= 1'b0;
         end else if (wb_err_i && stb_q) begin
-            // A failed access: count it, try it again if an access may begin.
+            // A failed access: count it, drop cyc for a clock.
             if (~&fails_q) fails_q <= fails_q + 1'b1;
-            if (!may_access_i) begin
-                stb_q   <= 1'b0;
+            stb_q   <= 1'b0;
+            retry_q <= 1'b1;
+        end else if (retry_q) begin
+            // The same access again if one may begin, else the cut-off.
+            retry_q <= 1'b0;
+            if (may_access_i) stb_q <= 1'b1;
+            else begin
                 state_q <= S_IDLE;
                 cut_q   <= 1'b1;
                 done_q  <= 1'b1;
@@ -215,6 +230,12 @@ module albatross_import #(
                         stb_q   <= 1'b0;
                         state_q <= S_IDLE;
                         done_q  <= 1'b1;
+                    end else if (stream_i && PULL != 0) begin
+                        adr_q   <= buf_first;
+                        k_q     <= {WORDS_WIDTH{1'b0}};
+                        sel_q   <= 4'hF;
+                        stb_q   <= 1'b0;
+                        state_q <= S_WAIT_PULL;
                     end else if (stream_i) begin
                         adr_q   <= buf_first;
                         k_q     <= {WORDS_WIDTH{1'b0}};
@@ -243,23 +264,32 @@ module albatross_import #(
                     adr_q   <= buf_first;
                     k_q     <= {WORDS_WIDTH{1'b0}};
                     sel_q   <= 4'hF;
-                    stb_q   <= may_access_i;
-                    state_q <= may_access_i ? S_LOAD_WORD : S_IDLE;
-                    cut_q   <= !may_access_i;
-                    done_q  <= !may_access_i;
+                    stb_q   <= may_access_i && PULL == 0;
+                    state_q <= PULL != 0 ? S_WAIT_PULL : may_access_i ? S_LOAD_WORD : S_IDLE;
+                    cut_q   <= !may_access_i && PULL == 0;
+                    done_q  <= !may_access_i && PULL == 0;
                 end else if (skip_i) begin
                     state_q <= S_IDLE;
                     done_q  <= 1'b1;
                 end
                 S_LOAD_WORD, S_HOLD_WORD: if (word_ack || state_q == S_HOLD_WORD) begin
                     if (word_ack) word_q <= wb_dat_i;
-                    if (!taken) begin                      // the consumer is not ready
+                    if (!taken && state_q == S_HOLD_WORD && (skip_i || !may_access_i)) begin
+                        state_q <= S_IDLE;                 // abandoned, or past the deadline
+                        cut_q   <= !may_access_i;
+                        done_q  <= 1'b1;
+                    end else if (!taken) begin             // the consumer is not ready
                         stb_q   <= 1'b0;
                         state_q <= S_HOLD_WORD;
                     end else if (last_word) begin
                         stb_q   <= 1'b0;
                         state_q <= S_IDLE;
                         done_q  <= 1'b1;
+                    end else if (PULL != 0) begin
+                        adr_q   <= adr_q + 1'b1;
+                        k_q     <= k_q + 1'b1;
+                        stb_q   <= 1'b0;
+                        state_q <= S_WAIT_PULL;
                     end else begin
                         adr_q   <= adr_q + 1'b1;
                         k_q     <= k_q + 1'b1;
@@ -268,6 +298,12 @@ module albatross_import #(
                         cut_q   <= !may_access_i;
                         done_q  <= !may_access_i;
                     end
+                end
+                S_WAIT_PULL: if (word_ready_i || skip_i || !may_access_i) begin
+                    stb_q   <= word_ready_i && !skip_i && may_access_i;
+                    state_q <= (word_ready_i && !skip_i && may_access_i) ? S_LOAD_WORD : S_IDLE;
+                    cut_q   <= !may_access_i;
+                    done_q  <= skip_i || !may_access_i;
                 end
                 default: begin
                     stb_q   <= 1'b0;

@@ -67,6 +67,7 @@ module albatross_sequencer #(
     output wire [15:0]             dst_board_o,    // destination d at [4d +: 4]
     output wire [4*ADDR_WIDTH-1:0] dst_base_o,     // destination d at [d*ADDR_WIDTH +: ADDR_WIDTH]
     output wire [31:0]             slot_time_o,    // S, the slot's nominal start
+    output wire                    sync_entry_o,   // the entry is the SYNC COPY (entry 0, sync mode)
     output wire                    may_access_o,   // an access begun next clock ends before D
     input  wire                    slot_done_i,    // one clock: the transfer is over
     // sync-mode poll: a Wishbone B4 classic read of the SYNC source's control word
@@ -448,6 +449,7 @@ module albatross_sequencer #(
     assign dst_board_o  = dbrd_q;
     assign dst_base_o   = dbase_q;
     assign slot_time_o  = slot_time_q;
+    assign sync_entry_o = sflag_q;
     assign may_access_o = (state_q == ST_TRANSFER || go_now) && rel_next + MARGIN_T <= end_q;
     assign poll_cyc_o   = poll_q;
     assign poll_board_o = sync_brd_q;

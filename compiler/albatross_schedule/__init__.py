@@ -86,18 +86,18 @@ from .pipeline import compile_file, compile_system, generate, self_check, write_
 from .picture import render_svg
 from .plan import build_plan, channel_bounds, channel_gaps, place_slots, slot_length, transfer_accesses
 from .report import build_report, render_report_txt
-from .rom import (CHECKSUM_SEED, FLAG_SYNC, KIND_CODE, KIND_NAME, MAX_BASE_WORD, MAX_BOARDS, MAX_DESTS,
-                  MAX_ENTRIES, MAX_WORDS, ROM_MAGIC, checksum, encode_entry, encode_rom, parse_rom_hex,
-                  rom_hex, verify_rom)
+from .rom import (CRC_POLY, CRC_SEED, FLAG_SYNC, KIND_CODE, KIND_NAME, MAX_BASE_WORD, MAX_BOARDS, MAX_DESTS,
+                  MAX_ENTRIES, MAX_WORDS, ROM_MAGIC, encode_entry, encode_rom, parse_rom_hex,
+                  rom_crc, rom_hex, verify_rom)
 from .cli import main
 
 __all__ = [
-    "Bus", "CHECKSUM_SEED", "Channel", "DEFAULT_RAM_BYTES", "FLAG_SYNC", "KIND_CODE", "KIND_NAME",
+    "Bus", "CRC_POLY", "CRC_SEED", "Channel", "DEFAULT_RAM_BYTES", "FLAG_SYNC", "KIND_CODE", "KIND_NAME",
     "MAX_BASE_WORD", "MAX_BOARDS", "MAX_DESTS", "MAX_ENTRIES", "MAX_WORDS", "MODE_RIGID", "MODE_SYNC",
     "Plan", "ROM_MAGIC", "ScheduleError", "Slot", "System", "allocate_ram", "board_instances",
-    "build_plan", "build_report", "channel_bounds", "channel_bytes", "channel_gaps", "checksum",
+    "build_plan", "build_report", "channel_bounds", "channel_bytes", "channel_gaps",
     "compile_file", "compile_system", "encode_entry", "encode_rom", "generate", "load_description",
     "load_toml", "main", "parse_description", "parse_rom_hex", "place_slots", "render_board_c",
-    "render_board_header", "render_ram_hex", "render_report_txt", "render_svg", "rom_hex", "self_check",
+    "render_board_header", "render_ram_hex", "render_report_txt", "render_svg", "rom_crc", "rom_hex", "self_check",
     "slot_length", "transfer_accesses", "verify_ram_layout", "verify_rom", "write_outputs",
 ]

@@ -63,7 +63,7 @@ class Word:
     index: int
     fields: list
     reserved: bool = False
-    checksum: bool = False
+    crc: bool = False
     doc: str = ""
 
 
@@ -106,7 +106,7 @@ class Contract:
         words = []
         for i, w in enumerate(items):
             words.append(Word(w["word"], i, self._fields(w["word"], i, w.get("fields", []), fmt),
-                              bool(w.get("reserved", False)), bool(w.get("checksum", False)),
+                              bool(w.get("reserved", False)), bool(w.get("crc", False)),
                               w.get("doc", "")))
         return words
 
@@ -118,8 +118,9 @@ class Contract:
         self.magic = int(rom["magic"])
         self.max_entries = int(rom["max_entries"])
         self.max_dests = int(rom["max_dests"])
-        self.checksum_seed = int(rom["checksum_seed"])
-        self.checksum_rotate = int(rom["checksum_rotate"])
+        self.crc_poly = int(rom["crc_poly"])
+        self.crc_seed = int(rom["crc_seed"])
+        self.time_bits = int(rom["time_bits"])
         self.kind = {k: int(v) for k, v in rom["kind"].items()}
         self.header_flags = {k: int(v) for k, v in rom["header_flags"].items()}
         self.entry_flags = {k: int(v) for k, v in rom["entry_flags"].items()}
@@ -157,10 +158,10 @@ class Contract:
                     used |= f.mask
                     if f.place and f.width < self.place_board.lsb + self.place_board.width:
                         p.append(f"{w.name}.{f.name}: {f.width} bits cannot hold a place")
-                if w.checksum and [f.width for f in w.fields] != [wb]:
-                    p.append(f"{w.name}: a checksum word is one {wb}-bit field")
-            if [w.checksum for w in words] != [False] * (len(words) - 1) + [True]:
-                p.append(f"rom.{group}: the checksum word must be the last, and the only one")
+                if w.crc and [f.width for f in w.fields] != [wb]:
+                    p.append(f"{w.name}: the CRC word is one {wb}-bit field")
+        if [w.crc for w in self.header + self.entry].count(True) != 1 or any(w.crc for w in self.entry):
+            p.append("rom: exactly one CRC word, in the header")
         if self.place_board.mask & self.place_base.mask:
             p.append("rom.place: board and base overlap")
         for name in ("ne", "flags", "magic"):
@@ -182,8 +183,12 @@ class Contract:
             for fl, word in ((self.header_flags, "H0"), (self.entry_flags, "E0")):
                 if any(b >= self.field(word, "flags").width for b in fl.values()):
                     p.append(f"a flag bit outside {word}.flags")
-        if not 0 <= self.checksum_rotate < wb or not 0 <= self.checksum_seed < (1 << wb):
-            p.append("checksum_rotate or checksum_seed out of range")
+        if not 0 <= self.crc_poly < (1 << wb) or not self.crc_poly & 1 or not 0 <= self.crc_seed < (1 << wb):
+            p.append("crc_poly (odd) or crc_seed out of range")
+        if not p:
+            for word, name in (("H1", "cycle"), ("E1", "start"), ("E2", "length")):
+                if self.field(word, name).width != self.time_bits:
+                    p.append(f"{word}.{name} is not time_bits ({self.time_bits}) wide")
         offs = sorted((c.offset, c.offset + c.size) for c in self.control.values())
         if any(a[1] > b[0] for a, b in zip(offs, offs[1:])) or (offs and offs[-1][1] > self.buffers_offset):
             p.append("layout: control bytes overlap each other or the buffers")
@@ -240,12 +245,21 @@ class Contract:
         return 1 << (self.header_flags if group == "header" else self.entry_flags)[name]
 
     # ---- ROM arithmetic
-    def checksum(self, words) -> int:
-        wb, r = self.word_bits, self.checksum_rotate
+    @property
+    def crc_index(self) -> int:
+        """Address of the CRC word (in the header)."""
+        return next(w.index for w in self.header if w.crc)
+
+    def crc(self, words) -> int:
+        """CRC of a ROM image: c = crc_seed; for each word w in address order
+        (the CRC word read as 0): c = (c * x^32 + w) mod (x^32 + crc_poly)."""
+        wb = self.word_bits
         m = (1 << wb) - 1
-        c = self.checksum_seed
-        for w in words:
-            c = (((c << r) | (c >> (wb - r))) & m) ^ (w & m)
+        c = self.crc_seed
+        for i, w in enumerate(words):
+            for _ in range(wb):
+                c = ((c << 1) & m) ^ (self.crc_poly if c >> (wb - 1) else 0)
+            c ^= 0 if i == self.crc_index else (w & m)
         return c
 
     def entry_address(self, k: int) -> int:

@@ -60,9 +60,11 @@ def render_vh(c: Contract) -> str:
          f"localparam ALB_ROM_ENTRY_WORDS     = {c.entry_words};"]
     mw = c.field("H0", "magic").width
     L.append(f"localparam [{mw - 1}:0] ALB_ROM_MAGIC      = {mw}'h{c.magic:0{(mw + 3) // 4}X};")
-    L.append(f"localparam [{c.word_bits - 1}:0] ALB_ROM_CHECKSUM_SEED = {c.word_bits}'h{c.checksum_seed:08X};"
-             "  // c = rotate_left(c, ROTATE) ^ word")
-    L.append(f"localparam ALB_ROM_CHECKSUM_ROTATE = {c.checksum_rotate};")
+    L.append(f"localparam [{c.word_bits - 1}:0] ALB_ROM_CRC_POLY = {c.word_bits}'h{c.crc_poly:08X};"
+             "  // P = x^32 + POLY; c = (c * x^32 + word) mod P")
+    L.append(f"localparam [{c.word_bits - 1}:0] ALB_ROM_CRC_SEED = {c.word_bits}'h{c.crc_seed:08X};")
+    L.append(f"localparam ALB_ROM_CRC_WORD        = {c.crc_index};  // read as 0 by the CRC")
+    L.append(f"localparam ALB_ROM_TIME_BITS       = {c.time_bits};  // widest time within a cycle")
     L.append(f"localparam ALB_ROM_MAX_ENTRIES     = {c.max_entries};")
     L.append(f"localparam ALB_ROM_MAX_DESTS       = {c.max_dests};")
     L.append("// fields")
@@ -171,7 +173,7 @@ def render_c_layout(c: Contract) -> str:
 def render_cxx(c: Contract) -> str:
     L = [_stamp("//"),
          "// The ALBATROSS contract for the C++ testbenches: schedule ROM fields (word index",
-         "// in the header or entry, lsb, width), constants, the checksum, and the channel",
+         "// in the header or entry, lsb, width), constants, the CRC, and the channel",
          "// layout.  See docs/contract.md.",
          "#pragma once",
          "#include <cstdint>",
@@ -188,8 +190,8 @@ def render_cxx(c: Contract) -> str:
          f"constexpr unsigned ROM_HEADER_WORDS = {c.header_words}, ROM_ENTRY_WORDS = {c.entry_words};",
          f"constexpr unsigned ROM_MAX_ENTRIES = {c.max_entries}, ROM_MAX_DESTS = {c.max_dests};",
          f"constexpr uint32_t ROM_MAGIC = 0x{c.magic:04X}u;",
-         f"constexpr uint32_t ROM_CHECKSUM_SEED = 0x{c.checksum_seed:08X}u;",
-         f"constexpr unsigned ROM_CHECKSUM_ROTATE = {c.checksum_rotate};",
+         f"constexpr uint32_t ROM_CRC_POLY = 0x{c.crc_poly:08X}u, ROM_CRC_SEED = 0x{c.crc_seed:08X}u;",
+         f"constexpr unsigned ROM_CRC_WORD = {c.crc_index}, ROM_TIME_BITS = {c.time_bits};",
          ""]
     for n, f in _fields(c):
         L.append(f"constexpr Field {n}{{{f.index}, {f.lsb}, {f.width}}};")
@@ -205,10 +207,13 @@ def render_cxx(c: Contract) -> str:
     for k, v in c.entry_flags.items():
         L.append(f"constexpr unsigned EFLAG_{k.upper()} = 1u << {v};  // in E0.flags")
     L += ["",
-          "inline uint32_t checksum(const uint32_t *w, int n) {",
-          "    uint32_t c = ROM_CHECKSUM_SEED;",
-          "    for (int i = 0; i < n; ++i)",
-          "        c = ((c << ROM_CHECKSUM_ROTATE) | (c >> (32 - ROM_CHECKSUM_ROTATE))) ^ w[i];",
+          "// CRC of a ROM image of n words (word ROM_CRC_WORD read as 0).",
+          "inline uint32_t rom_crc(const uint32_t *w, int n) {",
+          "    uint32_t c = ROM_CRC_SEED;",
+          "    for (int i = 0; i < n; ++i) {",
+          "        for (int b = 0; b < 32; ++b) c = (c << 1) ^ ((c >> 31) ? ROM_CRC_POLY : 0u);",
+          "        c ^= (unsigned)i == ROM_CRC_WORD ? 0u : w[i];",
+          "    }",
           "    return c;",
           "}",
           "constexpr uint32_t place(uint32_t board, uint32_t base_word) {",

@@ -11,6 +11,9 @@ from .model import (BUS_DEFAULTS, BUS_MINIMUM, CHANNEL_KEYS, CTYPE_RE, DEFAULT_R
                     IDENT_RE, MODE_RIGID, MODE_SYNC, RESERVED_FILES, SYSTEM_KEYS, Bus, Channel,
                     ScheduleError, System)
 from .rom import BOARD_BITS, MAX_BOARDS, MAX_CHAN_IDS, MAX_DESTS, MAX_ENTRIES, MAX_WORDS
+from .contract import load as _load_contract
+
+CONTRACT_TIME_BITS = _load_contract().time_bits
 
 
 class Locator:
@@ -237,6 +240,10 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
             article = "an" if str(bits).startswith("8") or bits in (11, 18) else "a"
             err.system(key, f"{v} exceeds {MAX_CHAN_IDS} (the channel id is {article} "
                        f"{bits}-bit ROM field)", table="bus")
+            continue
+        if key == "time_bits" and v > CONTRACT_TIME_BITS:
+            err.system(key, f"{v} exceeds {CONTRACT_TIME_BITS} (the ROM's time fields are "
+                       f"{CONTRACT_TIME_BITS} bits wide)", table="bus")
             continue
         setattr(bus, key, v)
 

@@ -16,17 +16,18 @@ DEFAULT_RAM_BYTES = 4096
 BUS_DEFAULTS = {
     "access_cycles": 2,
     "first_access_extra": 1,
-    "fetch_cycles": 10,
+    "fetch_cycles": 7,
     "timeout_cycles": 8,
     "retries_per_slot": 2,
     "guard_cycles": 6,
     "n_chan": 16,
     "poll_cycles": 16,
+    "time_bits": 16,
 }
 BUS_MINIMUM = {
     "access_cycles": 1, "first_access_extra": 0, "fetch_cycles": 1,
     "timeout_cycles": 1, "retries_per_slot": 0, "guard_cycles": 0,
-    "n_chan": 1, "poll_cycles": 1,
+    "n_chan": 1, "poll_cycles": 1, "time_bits": 4,
 }
 
 SYSTEM_KEYS = {"name", "clock_hz", "boards", "ram_bytes", "mode", "types_header"}
@@ -61,12 +62,13 @@ def us(clocks: float, clock_hz: int) -> float:
 class Bus:
     access_cycles: int = 2
     first_access_extra: int = 1
-    fetch_cycles: int = 10
+    fetch_cycles: int = 7
     timeout_cycles: int = 8
     retries_per_slot: int = 2
     guard_cycles: int = 6
     n_chan: int = 16
     poll_cycles: int = 16
+    time_bits: int = 16             # the controller's TIME_BITS: time within a cycle
 
     @property
     def retry_budget(self) -> int:

@@ -255,10 +255,12 @@ def build_plan(system: System) -> Plan:
         ch.slot_len = slot_length(ch, bus)
     limiter = min(system.channels, key=lambda c: (c.period_clocks, c.index))
     cycle = limiter.period_clocks
-    h1 = CONTRACT.field("H1", "cycle")
-    if cycle > h1.max:
+    tb = bus.time_bits
+    if cycle > (1 << tb) - 1:
         raise ScheduleError(f"{system.source}: channel '{limiter.name}', field 'max_period_us': the cycle "
-                            f"of {cycle} clocks does not fit the {h1.width}-bit ROM field {h1.word}")
+                            f"of {cycle} clocks does not fit time_bits = {tb} (time within a cycle is "
+                            f"{tb} bits in the controller, TIME_BITS; longest cycle {(1 << tb) - 1} clocks): "
+                            f"shorten max_period_us or raise [bus] time_bits (at most {CONTRACT.time_bits})")
     cap = cycle - (bus.poll_cycles if system.sync_mode else 0)
     need = sum(ch.slot_len for ch in system.channels)
     if need > cap:

@@ -11,7 +11,8 @@ from .model import Plan, Slot, System
 # The contract (rtl/albatross_contract.toml) gives every field and constant.
 C = contract.load()
 ROM_MAGIC = C.magic
-CHECKSUM_SEED = C.checksum_seed
+CRC_SEED = C.crc_seed
+CRC_POLY = C.crc_poly
 MAX_ENTRIES = C.max_entries
 BOARD_BITS = C.place_board.width
 MAX_BOARDS = 1 << BOARD_BITS
@@ -25,9 +26,9 @@ FLAG_SYNC = C.flag("entry", "sync")
 HFLAG_SYNC_MODE = C.flag("header", "sync_mode")
 
 
-def checksum(words) -> int:
-    """The contract's checksum: c = seed; for each w: c = rotate_left(c, rotate) ^ w."""
-    return C.checksum(words)
+def rom_crc(words) -> int:
+    """The contract's CRC of a whole ROM image (the CRC word H3 read as 0)."""
+    return C.crc(words)
 
 
 def dest_field(board: int, base_bytes: int) -> int:
@@ -36,13 +37,14 @@ def dest_field(board: int, base_bytes: int) -> int:
 
 
 def _pack(words, values) -> list:
-    """Words of the header or an entry from {(word, field): value}, sealed with
-    the checksum word (the last)."""
+    """Words of the header or an entry from {(word, field): value} (a value
+    that does not fit its field is an error, never cut)."""
     out = [0] * len(words)
     for (w, f), v in values.items():
         fld = C.field(w, f)
+        if not 0 <= v <= fld.max:
+            raise ValueError(f"{w}.{f} = {v} does not fit {fld.width} bits")
         out[fld.index] |= fld.put(v)
-    out[-1] = checksum(out[:-1])
     return out
 
 
@@ -65,6 +67,7 @@ def encode_rom(system: System, plan: Plan) -> list:
                              ("H1", "cycle"): plan.cycle})
     for s in plan.slots:
         words += encode_entry(s)
+    words[C.crc_index] = rom_crc(words)
     return words
 
 
@@ -85,7 +88,7 @@ def parse_rom_hex(text: str) -> list:
 
 
 def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None):
-    """Check a ROM image against the contract (header, checksums, entry
+    """Check a ROM image against the contract (header, CRC, entry
     validation rules).  ram_words: int or list per board.  Returns a list of
     problems (empty: valid) and the decoded entries."""
     problems = []
@@ -102,9 +105,11 @@ def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None
     magic = get(hdr, "H0", "magic")
     if magic != ROM_MAGIC:
         problems.append(f"H0 magic {magic:#06x}, expected {ROM_MAGIC:#06x}")
-    if checksum(hdr[:-1]) != hdr[-1]:
-        problems.append(f"header checksum {hdr[-1]:#010x}, expected {checksum(hdr[:-1]):#010x}")
+    if rom_crc(words) != words[C.crc_index]:
+        problems.append(f"CRC {words[C.crc_index]:#010x}, expected {rom_crc(words):#010x}")
     problems += [f"{w.name} (reserved) is not 0" for w in C.header if w.reserved and hdr[w.index] != 0]
+    problems += [f"{w.name}: bits outside its fields are not 0" for w in C.header
+                 if not w.reserved and hdr[w.index] & ~sum(f.mask for f in w.fields) & 0xFFFFFFFF]
     ne = get(hdr, "H0", "ne")
     hflags = get(hdr, "H0", "flags")
     sync_mode = bool(hflags & HFLAG_SYNC_MODE)
@@ -132,8 +137,10 @@ def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None
                "start": start, "length": length, "src": C.unplace(src.get(e[src.index])),
                "dst": [C.unplace(f.get(e[f.index])) for f in C.dest_fields][:nd]}
         entries.append(ent)
-        if checksum(e[:-1]) != e[-1]:
-            problems.append(f"{tag}: checksum {e[-1]:#010x}, expected {checksum(e[:-1]):#010x}")
+        for x in (1, 2):
+            wd = C.entry[x]
+            if e[x] & ~sum(f.mask for f in wd.fields) & 0xFFFFFFFF:
+                problems.append(f"{tag}: {wd.name} has bits set above its {C.time_bits}-bit time field")
         if kind not in KIND_NAME:
             problems.append(f"{tag}: unknown kind {kind}")
             continue

@@ -6,7 +6,7 @@ contract (rtl/albatross_contract.toml), and the definition's own checks.
 compiler/tests/test_schedule.py decodes ROMs and models the controller
 without the compiler's contract module, on purpose.  Here every field of its
 decoder is located by probing it bit by bit and compared with the
-definition, its checksum, magic, kind codes and entry addressing are checked
+definition, its ROM CRC, magic, kind codes and entry addressing are checked
 by behaviour, and its layout constants by value, so a definition changed
 without the oracle (or an oracle changed without the definition) fails.
 ALB_CONTRACT=FILE checks the oracles against another definition (the
@@ -110,19 +110,19 @@ class RomDecoderOracle(unittest.TestCase):
                 with self.subTest(field=k):
                     self.assertEqual(found[k], mask_of([sub]), f"the oracle's {k} sits elsewhere than {f.word}")
 
-    def test_checksum(self):
+    def test_crc(self):
         rng = random.Random(1)
-        self.assertEqual(O.csum([]), C.checksum_seed, "checksum seed")
-        for n in (1, 3, 7):
+        self.assertEqual(O.crc([]), C.crc_seed, "CRC seed")
+        self.assertEqual(C.crc_index, 3, "the oracle reads H3 (word 3) as 0")
+        for n in (1, 3, 4, 12, 20):
             words = [rng.getrandbits(32) for _ in range(n)]
-            self.assertEqual(O.csum(words), C.checksum(words), f"checksum of {n} words")
+            self.assertEqual(O.crc(words), C.crc(words), f"CRC of {n} words")
 
     def valid_rom(self, kind="copy", w=1):
         """A one-entry ROM built from the definition alone."""
         hdr = header(1)
         hdr[C.field("H0", "magic").index] |= C.field("H0", "magic").put(C.magic)
         hdr[C.field("H1", "cycle").index] |= C.field("H1", "cycle").put(1000)
-        hdr[-1] = C.checksum(hdr[:-1])
         e = [0] * C.entry_words
         vals = {("E0", "kind"): C.kind[kind], ("E0", "id"): 0, ("E0", "nd"): 1, ("E0", "w"): w,
                 ("E1", "start"): 0, ("E2", "length"): 100}
@@ -132,12 +132,13 @@ class RomDecoderOracle(unittest.TestCase):
         e[dst.index] |= dst.put(C.place(1, 64))
         if kind == "copy":
             e[C.src_field.index] |= C.src_field.put(C.place(0, 16))
-        e[-1] = C.checksum(e[:-1])
-        return hdr + e
+        rom = hdr + e
+        rom[C.crc_index] = C.crc(rom)
+        return rom
 
     def test_magic_kinds_and_addressing(self):
         self.assertEqual(O.rom_problems(self.valid_rom(), 16, [1024] * 2), [],
-                         "the oracle rejects a ROM built from the definition (magic, checksums, positions)")
+                         "the oracle rejects a ROM built from the definition (magic, CRC, positions)")
         self.assertEqual(O.rom_problems(self.valid_rom("time", 1), 16, [1024] * 2), [])
         self.assertEqual(O.rom_problems(self.valid_rom("status", 33), 16, [1024] * 2), [])
         self.assertIn("entry 0: TIME W", O.rom_problems(self.valid_rom("time", 2), 16, [1024] * 2))
@@ -185,6 +186,16 @@ class DefinitionChecks(unittest.TestCase):
         with self.assertRaises(contract.ContractError) as cm:
             self.load_edited("magic          = 0xA1BA", "magic          = 0x1A1BA")
         self.assertIn("does not fit H0.magic", str(cm.exception))
+
+    def test_time_fields_follow_time_bits(self):
+        with self.assertRaises(contract.ContractError) as cm:
+            self.load_edited("time_bits      = 16", "time_bits      = 20")
+        self.assertIn("H1.cycle is not time_bits (20) wide", str(cm.exception))
+
+    def test_one_crc_word(self):
+        with self.assertRaises(contract.ContractError) as cm:
+            self.load_edited('word = "H3"\ncrc = true', 'word = "H3"\ncrc = false')
+        self.assertIn("exactly one CRC word", str(cm.exception))
 
     def test_markdown_block(self):
         text = "intro\n<!-- contract:rom-entry -->\nold table\n<!-- /contract:rom-entry -->\nend\n"

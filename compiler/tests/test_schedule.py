@@ -48,15 +48,18 @@ ORACLE_LAYOUT = {"off_actual": 0, "off_readlocked": 1, "off_buffers": 4, "buffer
                  "taken_at_words": 1}
 
 
-def rotl(x, n):
-    return ((x << n) | (x >> (32 - n))) & 0xFFFFFFFF
-
-
-def csum(words):
-    c = 0xA1BA7055
-    for w in words:
-        c = rotl(c, 5) ^ w
-    return c
+def crc(words):
+    """CRC of a ROM image, H3 (word 3) read as 0: polynomial division over
+    GF(2) by P = x^32 + x^7 + x^5 + x^3 + x^2 + x + 1, written as the
+    remainder of the image's polynomial (seed 0xFFFFFFFF prepended)."""
+    p = (1 << 32) | 0xAF
+    r = 0xFFFFFFFF
+    for i, w in enumerate(words):
+        r = (r << 32) | (0 if i == 3 else w)
+        for b in range(63, 31, -1):          # reduce the degree below 32
+            if r >> b & 1:
+                r ^= p << (b - 32)
+    return r
 
 
 def read_hex(path):
@@ -82,10 +85,12 @@ def decode(words):
         dst = [e[4] & 0xFFFF, e[4] >> 16, e[5] & 0xFFFF, e[5] >> 16]
         entries.append({
             "raw": e, "kind": e[0] >> 28, "flags": (e[0] >> 24) & 0xF, "id": (e[0] >> 16) & 0xFF,
-            "nd": nd, "w": e[0] & 0xFFF, "start": e[1], "length": e[2],
+            "nd": nd, "w": e[0] & 0xFFF, "start": e[1] & 0xFFFF, "length": e[2] & 0xFFFF,
+            "time_high": (e[1] | e[2]) >> 16,
             "src_board": (e[3] >> 12) & 0xF, "src_word": e[3] & 0xFFF,
             "dst": [((d >> 12) & 0xF, d & 0xFFF) for d in dst[:nd]], "unused_dst": dst[nd:]})
-    return {"magic": h0 >> 16, "ne": ne, "flags": h0 & 0xFF, "cycle": words[1]}, entries
+    return {"magic": h0 >> 16, "ne": ne, "flags": h0 & 0xFF, "cycle": words[1] & 0xFFFF,
+            "cycle_high": words[1] >> 16}, entries
 
 
 def rom_problems(words, n_chan, ram_words):
@@ -96,8 +101,10 @@ def rom_problems(words, n_chan, ram_words):
     hdr, entries = decode(words)
     if hdr["magic"] != 0xA1BA:
         p.append("bad magic")
-    if csum(words[0:3]) != words[3]:
-        p.append("header checksum")
+    if crc(words) != words[3]:
+        p.append("ROM CRC")
+    if hdr["cycle_high"]:
+        p.append("H1 above 16 bits")
     if words[2] != 0:
         p.append("H2 not 0")
     if not 1 <= hdr["ne"] <= 255:
@@ -107,8 +114,10 @@ def rom_problems(words, n_chan, ram_words):
     sync = hdr["flags"] & 1
     prev_end = 0
     for k, e in enumerate(entries):
-        if csum(e["raw"][:7]) != e["raw"][7]:
-            p.append(f"entry {k}: checksum")
+        if e["time_high"]:
+            p.append(f"entry {k}: time above 16 bits")
+        if e["raw"][7] != 0:
+            p.append(f"entry {k}: E7 not 0")
         if e["kind"] not in (1, 2, 3):
             p.append(f"entry {k}: kind {e['kind']}")
         if not 1 <= e["nd"] <= 4:
@@ -715,7 +724,7 @@ class PlanTests(unittest.TestCase):
 
     def test_entry_cap(self):
         """Huge spare capacity: redundancy stops at 255 entries, ROM valid."""
-        chans = [{"name": f"C{i}", "size": 4, "producer": "a", "consumers": ["b"], "max_period_us": 10000}
+        chans = [{"name": f"C{i}", "size": 4, "producer": "a", "consumers": ["b"], "max_period_us": 1000}
                  for i in range(3)]
         system, plan, rom, rep = self.compile_text(description(chans))
         self.assertEqual(len(plan.slots), 255)
@@ -795,9 +804,9 @@ class CheckerNegativeTests(unittest.TestCase):
         return rom_problems(rom, 16, self.ram_words)
 
     def reseal(self, rom, k):
-        rom[4 + 8 * k + 7] = csum(rom[4 + 8 * k: 4 + 8 * k + 7])
+        rom[3] = crc(rom)
 
-    def test_flipped_bit_fails_checksum(self):
+    def test_flipped_bit_fails_crc(self):
         for word in (1, 4 + 8 * 3 + 1, 4 + 8 * 7 + 4):
             rom = list(self.rom)
             rom[word] ^= 1 << 9
@@ -838,7 +847,7 @@ class CheckerNegativeTests(unittest.TestCase):
 
     def test_model_detects_a_wrong_destination(self):
         """The end-to-end path depends on the ROM: a destination moved by one
-        word (checksum resealed) gives the consumer no new value."""
+        word (CRC resealed) gives the consumer no new value."""
         rom = list(self.rom)
         ch = next(c for c in self.rep["channels"] if c["name"] == "MotorCmd")
         k = ch["slots"][0]["entry"]

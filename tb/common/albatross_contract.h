@@ -1,6 +1,6 @@
 // Generated from rtl/albatross_contract.toml by make contract (compiler/albatross_schedule/contract_gen.py); do not edit.
 // The ALBATROSS contract for the C++ testbenches: schedule ROM fields (word index
-// in the header or entry, lsb, width), constants, the checksum, and the channel
+// in the header or entry, lsb, width), constants, the CRC, and the channel
 // layout.  See docs/contract.md.
 #pragma once
 #include <cstdint>
@@ -17,21 +17,21 @@ struct Field {
 constexpr unsigned ROM_HEADER_WORDS = 4, ROM_ENTRY_WORDS = 8;
 constexpr unsigned ROM_MAX_ENTRIES = 255, ROM_MAX_DESTS = 4;
 constexpr uint32_t ROM_MAGIC = 0xA1BAu;
-constexpr uint32_t ROM_CHECKSUM_SEED = 0xA1BA7055u;
-constexpr unsigned ROM_CHECKSUM_ROTATE = 5;
+constexpr uint32_t ROM_CRC_POLY = 0x000000AFu, ROM_CRC_SEED = 0xFFFFFFFFu;
+constexpr unsigned ROM_CRC_WORD = 3, ROM_TIME_BITS = 16;
 
 constexpr Field H0_MAGIC{0, 16, 16};
 constexpr Field H0_NE{0, 8, 8};
 constexpr Field H0_FLAGS{0, 0, 8};
-constexpr Field H1_CYCLE{1, 0, 32};
-constexpr Field H3_CHECKSUM{3, 0, 32};
+constexpr Field H1_CYCLE{1, 0, 16};
+constexpr Field H3_CRC{3, 0, 32};
 constexpr Field E0_KIND{0, 28, 4};
 constexpr Field E0_FLAGS{0, 24, 4};
 constexpr Field E0_ID{0, 16, 8};
 constexpr Field E0_ND{0, 12, 4};
 constexpr Field E0_W{0, 0, 12};
-constexpr Field E1_START{1, 0, 32};
-constexpr Field E2_LENGTH{2, 0, 32};
+constexpr Field E1_START{1, 0, 16};
+constexpr Field E2_LENGTH{2, 0, 16};
 constexpr Field E3_SRC{3, 0, 16};
 constexpr Field E3_SRC_BOARD{3, 12, 4};
 constexpr Field E3_SRC_BASE{3, 0, 12};
@@ -47,7 +47,6 @@ constexpr Field E5_DST2_BASE{5, 0, 12};
 constexpr Field E5_DST3{5, 16, 16};
 constexpr Field E5_DST3_BOARD{5, 28, 4};
 constexpr Field E5_DST3_BASE{5, 16, 12};
-constexpr Field E7_CHECKSUM{7, 0, 32};
 constexpr Field PLACE_BOARD{0, 12, 4};
 constexpr Field PLACE_BASE{0, 0, 12};
 // destination places of an entry, in order
@@ -60,10 +59,13 @@ constexpr unsigned KIND_STATUS = 3;
 constexpr unsigned HFLAG_SYNC_MODE = 1u << 0;  // in H0.flags
 constexpr unsigned EFLAG_SYNC = 1u << 0;  // in E0.flags
 
-inline uint32_t checksum(const uint32_t *w, int n) {
-    uint32_t c = ROM_CHECKSUM_SEED;
-    for (int i = 0; i < n; ++i)
-        c = ((c << ROM_CHECKSUM_ROTATE) | (c >> (32 - ROM_CHECKSUM_ROTATE))) ^ w[i];
+// CRC of a ROM image of n words (word ROM_CRC_WORD read as 0).
+inline uint32_t rom_crc(const uint32_t *w, int n) {
+    uint32_t c = ROM_CRC_SEED;
+    for (int i = 0; i < n; ++i) {
+        for (int b = 0; b < 32; ++b) c = (c << 1) ^ ((c >> 31) ? ROM_CRC_POLY : 0u);
+        c ^= (unsigned)i == ROM_CRC_WORD ? 0u : w[i];
+    }
     return c;
 }
 constexpr uint32_t place(uint32_t board, uint32_t base_word) {

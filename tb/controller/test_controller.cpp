@@ -1,7 +1,7 @@
 // test_controller -- smoke test of albatross_controller on tb/system/tb_system.v.
 //
 // A small, self-checking test, not the system harness (tb/system/).  Each
-// scenario writes its own schedule ROM (with checksums) to ctrl_rom.hex, the
+// scenario writes its own schedule ROM (with its CRC) to ctrl_rom.hex, the
 // file the model was built to $readmemh, then builds a fresh model.  The
 // schedule runs on boards 0 and 1:
 //   entry 0  COPY   channel 0: board 0 @0x010 (W = 3) -> board 1 @0x020
@@ -14,8 +14,9 @@
 //            TIME and STATUS slots (every access against the formula in the
 //            controller's header, start-up time T0 included); the access
 //            sequence of a COPY; TIME value and STATUS counters
-//   corrupt  a bit flipped in entry 1: rom_errors counts it each cycle, the other
-//            entries still run on time; a broken header: error_o, bus idle
+//   corrupt  entry 1 invalid (TIME with W = 2, CRC resealed): rom_errors counts
+//            it each cycle, the other entries still run on time; a bit flipped
+//            in an entry or the header (CRC not resealed): error_o, bus idle
 //   faults   fault kinds 1, 2, 3 on single accesses are retried; an Actual store
 //            that landed but timed out is not published twice
 //   sync     position-synchronised mode: polls every POLL clocks after the last
@@ -54,14 +55,13 @@ static const char *const ROM_PATH = "ctrl_rom.hex";
 
 // tb_system parameters (fixed by the port contract) and controller constants.
 static const int NB = 4, AW = 10, NCH = 16, TMO = 8, ROMW = 1024;
-static const int F = 10;                                  // FETCH_CYCLES
-static const int K = TMO + 3;
-static const int HDR_LAST = K + 1;
-static const int SCAN_LAST = (K + 2 > 9) ? K + 2 : 9;
+static const int F = 7;                                   // FETCH_CYCLES
 static const uint32_t AMASK = (1u << AW) - 1;
 
-// Cycle 0 starts (rel 0) at this time_o (controller header: INIT, HDR, SCAN, RING).
-static uint64_t t0_of(int ne) { return 2 * NCH + HDR_LAST + (uint64_t)ne * (SCAN_LAST + 1) + 4; }
+// Cycle 0 starts (rel 0) at this time_o (albatross_sequencer: the counters
+// cleared in 2*N_CHAN clocks, the header read in 5, the CRC pass over the
+// 4 + 8*NE words one a clock, then the check).
+static uint64_t t0_of(int ne) { return 2 * NCH + 10 + 8 * (uint64_t)ne; }
 
 // ------------------------------------------------------------------ checks
 enum { G_TIMING = 1, G_DATA = 2, G_ROM = 4, G_FAULT = 8, G_DEAD = 16 };
@@ -119,6 +119,11 @@ enum { IDLE = C::KIND_IDLE, COPY = C::KIND_COPY, TIME = C::KIND_TIME, STATUS = C
 // Word j of entry k.
 static size_t rom_addr(size_t k, unsigned j) { return C::ROM_HEADER_WORDS + C::ROM_ENTRY_WORDS * k + j; }
 
+// The CRC word of a ROM of ne entries.
+static void reseal(std::vector<uint32_t> &r, size_t ne) {
+    r[C::ROM_CRC_WORD] = C::rom_crc(&r[0], (int)rom_addr(ne, 0));
+}
+
 // hflags: the H0 flags field (C::HFLAG_SYNC_MODE: position-synchronised).
 static std::vector<uint32_t> build_rom(uint32_t h1, unsigned hflags, const std::vector<Entry> &es) {
     std::vector<uint32_t> r(ROMW, 0);
@@ -126,7 +131,6 @@ static std::vector<uint32_t> build_rom(uint32_t h1, unsigned hflags, const std::
     r[C::H0_NE.word] |= C::H0_NE.put((uint32_t)es.size());
     r[C::H0_FLAGS.word] |= C::H0_FLAGS.put(hflags);
     r[C::H1_CYCLE.word] |= C::H1_CYCLE.put(h1);
-    r[C::ROM_HEADER_WORDS - 1] = C::checksum(&r[0], C::ROM_HEADER_WORDS - 1);
     for (size_t k = 0; k < es.size(); ++k) {
         const Entry &e = es[k];
         uint32_t *w = &r[rom_addr(k, 0)];
@@ -140,8 +144,8 @@ static std::vector<uint32_t> build_rom(uint32_t h1, unsigned hflags, const std::
         w[C::E3_SRC.word] |= C::E3_SRC.put(C::place(e.sbrd, e.sbase));
         for (size_t i = 0; i < e.dst.size(); ++i)
             w[C::DST[i].word] |= C::DST[i].put(C::place(e.dst[i].brd, e.dst[i].base));
-        w[C::ROM_ENTRY_WORDS - 1] = C::checksum(w, C::ROM_ENTRY_WORDS - 1);
     }
+    reseal(r, es.size());
     return r;
 }
 
@@ -502,10 +506,11 @@ static void scenario_basic() {
 }
 
 static void scenario_corrupt() {
-    std::printf("== corrupt: a flipped ROM bit is flagged and skipped; a broken header\n");
+    std::printf("== corrupt: an invalid entry is flagged and skipped; a flipped ROM bit stops the controller\n");
     std::vector<Entry> es = schedule();
     std::vector<uint32_t> rom = build_rom(H1, 0, es);
-    rom[rom_addr(1, C::E1_START.word)] ^= 1u << 5;   // entry 1 (TIME): E1 bit 5, checksum now wrong
+    rom[rom_addr(1, C::E0_W.word)] ^= C::E0_W.put(3);   // entry 1 (TIME): W = 2, CRC resealed
+    reseal(rom, es.size());
     write_rom(rom);
     {
         Sim s;
@@ -543,15 +548,18 @@ static void scenario_corrupt() {
               "no hang: 3 more cycles of COPY (1 access) and STATUS (%u): expected >= %zu accesses, got %zu",
               W_STAT + 3, (size_t)(3 * (W_STAT + 3 + 1)), s.att.size() - n0);
     }
-    // a broken header: error_o, and the bus stays idle
-    rom = build_rom(H1, 0, es);
-    rom[C::H1_CYCLE.word] ^= 1;   // H1 changes, H3 no longer matches
-    write_rom(rom);
-    {
+    // a flipped bit in the header, or in an entry: the CRC fails, error_o, and the bus stays idle
+    for (size_t word : {(size_t)C::H1_CYCLE.word, rom_addr(1, C::E1_START.word), rom_addr(2, 7)}) {
+        rom = build_rom(H1, 0, es);
+        rom[word] ^= 1u << 5;   // the CRC (H3) no longer matches
+        write_rom(rom);
         Sim s;
         s.run_until(4 * H1);
-        CHECK_EQ(G_ROM, "broken header: error_o", 1, s.top->error_o);
-        CHECK_EQ(G_ROM, "broken header: bus accesses", 0, s.att.size() + (s.in_att ? 1 : 0));
+        char m[96];
+        std::snprintf(m, sizeof m, "bit flipped in ROM word %zu: error_o", word);
+        CHECK_EQ(G_ROM, m, 1, s.top->error_o);
+        std::snprintf(m, sizeof m, "bit flipped in ROM word %zu: bus accesses", word);
+        CHECK_EQ(G_ROM, m, 0, s.att.size() + (s.in_att ? 1 : 0));
     }
 }
 
