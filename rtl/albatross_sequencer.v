@@ -206,7 +206,7 @@ module albatross_sequencer #(
     endfunction
 
     // ------------------------------------------------------------ ROM port
-    wire               start_now = state_q == ST_WAIT && rel_q == start_q;   // clock S
+    wire               start_now = state_q == ST_WAIT && rel_q >= start_q;   // clock S (late only after an overrun)
     wire               fetch_rom = state_q == ST_FETCH && step_q <= 3'd5;
     wire               main_rom  = state_q == ST_HEADER || start_now || fetch_rom;
     wire               bg_on     = state_q == ST_CHECK || state_q == ST_WAIT ||
@@ -299,15 +299,16 @@ module albatross_sequencer #(
     end
 
     // ------------------------------------------------------------ control
-    wire cycle_end  = rel_q == cycle_q - 1'b1;
+    wire cycle_end  = rel_q >= cycle_q - 1'b1;      // (late only if a slot overran: recover)
     wire last_ent   = ent_q + 8'd1 == ne_q;
     wire poll_hit   = poll_q && poll_ack_i && poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 8] != 8'd0 &&
                       poll_dat_i[8*ALB_CH_OFF_ACTUAL + 2 +: 6] == 6'd0 &&
                       poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 2] != sync_rl_i;
-    wire new_cycle  = (state_q == ST_CYCLE_END && (cycle_end || poll_hit)) ||
-                      (state_q == ST_CHECK && p_last && crc_n == h3_q);
     wire entry_over = (state_q == ST_FETCH && step_q == 3'd6 && (bad_q || kind_q == ALB_KIND_IDLE[1:0])) ||
                       (state_q == ST_TRANSFER && slot_done_i);
+    wire new_cycle  = (state_q == ST_CYCLE_END && (cycle_end || poll_hit)) ||
+                      (entry_over && last_ent && cycle_end) ||       // the last slot ends at H1 - 1
+                      (state_q == ST_CHECK && p_last && crc_n == h3_q);
     wire [TB:0] rel_next = {1'b0, rel_q} + 1'b1;
     wire        go_now   = state_q == ST_FETCH && step_q == 3'd6 && !bad_q && kind_q != ALB_KIND_IDLE[1:0];
 

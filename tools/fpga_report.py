@@ -50,7 +50,10 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from synth_report import FAMILIES, cell_types, count, write_json  # noqa: E402
 
-SOC_FILES = ["rtl/albatross_dpram.v", "rtl/albatross_wb_cdc.v", "rtl/albatross_bus.v", "rtl/albatross_controller.v",
+# The controller: its thin top and the parts it composes.
+CTRL_FILES = ["rtl/albatross_controller.v", "rtl/albatross_sequencer.v", "rtl/albatross_import.v",
+             "rtl/albatross_export.v", "rtl/albatross_bus_master.v", "rtl/albatross_counters.v"]
+SOC_FILES = ["rtl/albatross_dpram.v", "rtl/albatross_wb_cdc.v", "rtl/albatross_bus.v"] + CTRL_FILES + [
              "soc/board_core.v", "soc/pico_core.v", "soc/serv_core.v", "soc/serv_bridge.v", "soc/board_memmap.v",
              "soc/pico_wb_adapter.v", "soc/albatross_system.v", "soc/board_reset.v", "soc/beat_divider.v",
              "fpga/duo_system.v"]
@@ -70,7 +73,7 @@ def design(name, fam, picorv32, serv):
     if name == "dpram":
         return ["rtl/albatross_dpram.v"], "albatross_dpram", "chparam -set ADDR_WIDTH 10 albatross_dpram"
     if name == "controller":
-        return (["rtl/albatross_controller.v"], "albatross_controller",
+        return (CTRL_FILES, "albatross_controller",
                 "chparam -set NB 4 -set ADDR_WIDTH 10 -set N_CHAN 16 -set ROM_WORDS 1024 albatross_controller")
     if name == "picorv32":
         return [picorv32, "soc/picorv32_ooc.v"], "picorv32_ooc", ""

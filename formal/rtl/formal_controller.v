@@ -25,11 +25,11 @@
 //   no_locked_write   no store into a word of buffer r lands while the
 //                     consumer holds a confirmed lock on r.
 //   slot_idle         the bus is idle before the first slot's first access,
-//                     and in clocks S..S+9 of every planned slot;
-//   slot_start        the first access is on the bus in clock S+10
-//                     (docs/controller.md "Timing": FETCH_CYCLES = 10) for the slots at
-//                     S = T0 and S = T0 + H1; T0 = 2*N_CHAN + TIMEOUT + 8 +
-//                     NE*max(TIMEOUT+6, 10) = 23.
+//                     and in clocks S..S+6 of every planned slot;
+//   slot_start        the first access is on the bus in clock S+7
+//                     (docs/controller.md "Timing": FETCH_CYCLES = 7) for the slots at
+//                     S = T0 and S = T0 + H1; T0 = 2*N_CHAN + 10 + 8*NE = 20
+//                     (counters cleared, header read, the start-up CRC pass).
 //   time_step         time_o counts clocks since reset (binds time_o to the
 //                     harness's clock count).
 //   rom_valid         the ROM was read and is valid (error_o low, no entry
@@ -49,7 +49,7 @@ module formal_controller (
     input  wire        init_conf
 );
     localparam NB = 1, AW = 3, N_CHAN = 1, TIMEOUT = 3;
-    localparam [31:0] T0 = 32'd23, H1 = 32'd24, E1 = 32'd0, FETCH = 32'd10;
+    localparam [31:0] T0 = 32'd20, H1 = 32'd24, E1 = 32'd0, FETCH = 32'd7;
 
     wire                m_cyc_o, m_stb_o, m_we_o;
     wire [AW+3:0]       m_adr_o;

@@ -43,7 +43,7 @@ test-contract-negative:
 	        echo "FAIL: the oracle tests passed against a drifted definition"; fail=1; \
 	    else grep -m 4 "^FAIL:\|^AssertionError" $(CONTRACT_NEG)/oracles.log | sed "s/^/  caught by the oracle tests: /"; fi; \
 	    $(CONTRACT) --definition $(CONTRACT_NEG)/contract.toml --root $(CONTRACT_NEG) > /dev/null && \
-	    cp rtl/albatross_controller.v $(CONTRACT_NEG)/rtl/ && \
+	    cp $(CTRL_RTL) $(CONTRACT_NEG)/rtl/ && \
 	    if verilator --lint-only -Wall -y $(CONTRACT_NEG)/rtl --top-module albatross_controller \
 	        $(CONTRACT_NEG)/rtl/albatross_controller.v > $(CONTRACT_NEG)/lint.log 2>&1; then \
 	        echo "FAIL: the controller linted clean with the drifted include"; fail=1; \

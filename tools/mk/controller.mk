@@ -9,7 +9,7 @@
 
 CTRL_DIR := $(BUILD)/ctrl
 CTRL_BIN := $(CTRL_DIR)/obj/Vtb_system
-CTRL_SRC := tb/system/tb_system.v soc/albatross_system.v tb/common/bus_fault_injector.v rtl/albatross_controller.v \
+CTRL_SRC := tb/system/tb_system.v soc/albatross_system.v tb/common/bus_fault_injector.v $(CTRL_RTL) \
             rtl/albatross_bus.v rtl/albatross_dpram.v tb/controller/test_controller.cpp \
             $(RTL_INC) tb/common/albatross_contract.h
 

@@ -15,8 +15,14 @@ FRTL_DEPS  := formal/rtl/run_check.py tools/mk/formal_rtl.mk $(RTL_INC)
 
 CTRL_PROPS := complete_publish,no_locked_write,slot_idle,slot_start,time_step,rom_valid
 CTRL_REACH := reach_publish0,reach_publish1
-# Two slots: cycle 0 starts at time 23, the second slot's first access is at 57.
-CTRL_DEPTH := 62
+# Two slots: cycle 0 starts at time 20, the second slot's first access is at 51.
+CTRL_DEPTH := 56
+# The controller's files; a mutant replaces the one its .sed names ('# target:').
+CTRL_PARTS := $(CTRL_RTL)
+ctrl_mutant_sed    = $(firstword $(wildcard formal/rtl/mutants/$(1).sed tb/mutants/controller/$(1).sed))
+ctrl_mutant_target = $(shell sed -n 's/^# target: *//p' $(call ctrl_mutant_sed,$(1)))
+ctrl_mutant_file   = $(FRTL_DIR)/mutant-src/$(1)/$(notdir $(call ctrl_mutant_target,$(1)))
+ctrl_mutant_srcs   = $(call ctrl_mutant_file,$(1)) $(filter-out $(call ctrl_mutant_target,$(1)),$(CTRL_PARTS))
 frtl_ctrl    = $(FRTL_RUN) $(1) --engine abc --top formal_controller --depth $(CTRL_DEPTH) \
                --src $(2) formal/rtl/formal_controller.v --props $(3) --expect $(4)
 
@@ -26,20 +32,21 @@ TESTS        += $(FORMAL_RTL_TESTS)
 FORMAL_TESTS += $(FORMAL_RTL_TESTS)
 .PHONY: $(addprefix test-,$(FORMAL_RTL_TESTS))
 
-test-formal-controller: $(FRTL_DEPS) formal/rtl/ctrl_time.hex rtl/albatross_controller.v
-	@tools/run_test.sh formal-controller $(call frtl_ctrl,formal-controller,rtl/albatross_controller.v,$(CTRL_PROPS),pass) --reach $(CTRL_REACH)
+test-formal-controller: $(FRTL_DEPS) formal/rtl/ctrl_time.hex $(CTRL_PARTS)
+	@tools/run_test.sh formal-controller $(call frtl_ctrl,formal-controller,$(CTRL_PARTS),$(CTRL_PROPS),pass) --reach $(CTRL_REACH)
 
 # Controller mutants: tb/mutants/controller/ignore_readlocked.sed (shared with
-# the system tests) and formal/rtl/mutants/*.sed (formal only).
-$(FRTL_DIR)/mutant-src/%/albatross_controller.v: rtl/albatross_controller.v
-	@mkdir -p $(@D)
-	sed -f $(firstword $(wildcard formal/rtl/mutants/$*.sed tb/mutants/controller/$*.sed)) $< > $@
-	@if cmp -s $@ $<; then echo "controller mutant $* did not apply: rtl/albatross_controller.v no longer has the line its .sed edits"; \
-	    rm -f $@; exit 1; fi
+# the system tests) and formal/rtl/mutants/*.sed (formal only); each names the
+# file it edits on its '# target:' line.
 .SECONDARY:
 FRTL_CTRL_NEG := ignore_readlocked:no_locked_write publish_early:complete_publish slot_late:slot_start
 define frtl_ctrl_negative
-test-formal-controller-negative-$(call neg_field,$(1),1): $(FRTL_DEPS) $(FRTL_DIR)/mutant-src/$(call neg_field,$(1),1)/albatross_controller.v
-	@tools/run_test.sh formal-controller-negative-$(call neg_field,$(1),1) $$(call frtl_ctrl,formal-controller-negative-$(call neg_field,$(1),1),$(FRTL_DIR)/mutant-src/$(call neg_field,$(1),1)/albatross_controller.v,$(call neg_field,$(1),2),$(call neg_field,$(1),2))
+$(call ctrl_mutant_file,$(call neg_field,$(1),1)): $(call ctrl_mutant_sed,$(call neg_field,$(1),1)) $(call ctrl_mutant_target,$(call neg_field,$(1),1))
+	@mkdir -p $$(@D)
+	sed -f $$< $(call ctrl_mutant_target,$(call neg_field,$(1),1)) > $$@
+	@if cmp -s $$@ $(call ctrl_mutant_target,$(call neg_field,$(1),1)); then echo "controller mutant $(call neg_field,$(1),1) did not apply: its target no longer has the line its .sed edits"; \
+	    rm -f $$@; exit 1; fi
+test-formal-controller-negative-$(call neg_field,$(1),1): $(FRTL_DEPS) formal/rtl/ctrl_time.hex $(CTRL_PARTS) $(call ctrl_mutant_file,$(call neg_field,$(1),1))
+	@tools/run_test.sh formal-controller-negative-$(call neg_field,$(1),1) $$(call frtl_ctrl,formal-controller-negative-$(call neg_field,$(1),1),$(call ctrl_mutant_srcs,$(call neg_field,$(1),1)),$(call neg_field,$(1),2),$(call neg_field,$(1),2))
 endef
 $(foreach n,$(FRTL_CTRL_NEG),$(eval $(call frtl_ctrl_negative,$(n))))

@@ -39,14 +39,20 @@ $(eval $(call sys_model,real,))
 
 # Controller mutants (tb/mutants/controller/*.sed applied to the real RTL):
 # each system checker has a negative test that must catch one.
+# Each .sed names the controller file it edits on its '# target:' line; the
+# mutated copy keeps the file name, so the model's -y finds it first.
 CTRL_MUTANTS := $(patsubst tb/mutants/controller/%.sed,%,$(wildcard tb/mutants/controller/*.sed))
-$(SYS_DIR)/mutant-src/%/albatross_controller.v: tb/mutants/controller/%.sed rtl/albatross_controller.v
-	@mkdir -p $(@D)
-	sed -f $< rtl/albatross_controller.v > $@
-	@if cmp -s $@ rtl/albatross_controller.v; then \
-	    echo "controller mutant $* did not apply: rtl/albatross_controller.v no longer has the line tb/mutants/controller/$*.sed edits"; \
-	    rm -f $@; exit 1; fi
-$(foreach m,$(CTRL_MUTANTS),$(eval $(call sys_model,mutant-$(m),$(SYS_DIR)/mutant-src/$(m)/albatross_controller.v)))
+sys_mutant_target = $(shell sed -n 's/^# target: *//p' tb/mutants/controller/$(1).sed)
+define sys_mutant
+$(SYS_DIR)/mutant-src/$(1)/$(notdir $(call sys_mutant_target,$(1))): tb/mutants/controller/$(1).sed $(call sys_mutant_target,$(1))
+	@mkdir -p $$(@D)
+	sed -f $$< $(call sys_mutant_target,$(1)) > $$@
+	@if cmp -s $$@ $(call sys_mutant_target,$(1)); then \
+	    echo "controller mutant $(1) did not apply: $(call sys_mutant_target,$(1)) no longer has the line tb/mutants/controller/$(1).sed edits"; \
+	    rm -f $$@; exit 1; fi
+$(call sys_model,mutant-$(1),$(SYS_DIR)/mutant-src/$(1)/$(notdir $(call sys_mutant_target,$(1))))
+endef
+$(foreach m,$(CTRL_MUTANTS),$(eval $(call sys_mutant,$(m))))
 
 # The testbench's view of a compiled schedule; a plan without redundancy.  The
 # compiler outputs are kept (make would delete them as intermediate files).

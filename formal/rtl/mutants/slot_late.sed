@@ -1,3 +1,4 @@
+# target: rtl/albatross_sequencer.v
 # Controller mutant (formal only): the entry fetch takes one clock more, so
 # every slot's first access is one clock after its planned time.
-s/localparam FETCH_CYCLES = 10; /localparam FETCH_CYCLES = 11; /
+s/wire        go_now   = state_q == ST_FETCH \&\& step_q == 3'd6 \&\& !bad_q/wire        go_now   = state_q == ST_FETCH \&\& step_q == 3'd7 \&\& !bad_q/

@@ -1,2 +1,3 @@
-# Controller mutant: the buffer choice can yield index 0, an invalid Actual.
-s/pick = (a != 2'd3 \&\& r != 2'd3) ? 2'd3 : (a != 2'd2 \&\& r != 2'd2) ? 2'd2 : 2'd1;/pick = (a != 2'd3 \&\& r != 2'd3) ? 2'd3 : (a != 2'd2 \&\& r != 2'd2) ? 2'd2 : 2'd0;/
+# target: rtl/albatross_export.v
+# Controller mutant: the Export's buffer choice can yield index 0, an invalid Actual.
+s/(copy_d != BUFFER2 \&\& rl_lock != BUFFER2) ? BUFFER2 : BUFFER1;/(copy_d != BUFFER2 \&\& rl_lock != BUFFER2) ? BUFFER2 : 2'd0;/

@@ -1,3 +1,4 @@
-# Controller mutant: the store of a destination's Actual uses the ReadLocked
-# byte lane, a byte only the consumer may write.
-s/(state_d == S_DA_ST)  ? SEL_ACT : 4'b1111;/(state_d == S_DA_ST)  ? (SEL_ACT | SEL_RL) : 4'b1111;/
+# target: rtl/albatross_export.v
+# Controller mutant: the store of a destination's Actual also selects the
+# ReadLocked byte lane, a byte only the consumer may write.
+s/assign wb_sel_o     = state_q == S_LOAD_ACTUAL || state_q == S_STORE_ACTUAL ? SEL_ACT :/assign wb_sel_o     = state_q == S_LOAD_ACTUAL ? SEL_ACT : state_q == S_STORE_ACTUAL ? (SEL_ACT | SEL_RL) :/
