@@ -185,11 +185,18 @@ module albatross_sequencer #(
 `ifndef SYNTHESIS
     reg [8*1024-1:0] rom_arg;
 `endif
+`ifndef SYNTHESIS
+    // Simulation only: +rom_upset_word=N +rom_upset_at=T flips bit 16 of ROM
+    // word N at global time T (a run-time upset for the background check).
+    integer upset_word, upset_at;
+`endif
     initial begin
         for (ri = 0; ri < ROM_WORDS; ri = ri + 1) rom[ri] = 32'd0;
         if (ROM_FILE != "") $readmemh(ROM_FILE, rom);
 `ifndef SYNTHESIS
         if ($value$plusargs("rom=%s", rom_arg)) $readmemh(rom_arg, rom);
+        if (!$value$plusargs("rom_upset_word=%d", upset_word)) upset_word = -1;
+        if (!$value$plusargs("rom_upset_at=%d", upset_at)) upset_at = 0;
 `endif
     end
 
@@ -236,7 +243,13 @@ module albatross_sequencer #(
                 default: main_adr = ent_adr_q + A9;               // E1 of the next entry
             endcase
     end
-    always @(posedge clk_i) rom_q <= rom[main_rom ? main_adr : bg_adr_q];
+    always @(posedge clk_i) begin
+        rom_q <= rom[main_rom ? main_adr : bg_adr_q];
+`ifndef SYNTHESIS
+        if (upset_word >= 0 && upset_word < ROM_WORDS && time_q == upset_at[31:0])
+            rom[upset_word] <= rom[upset_word] ^ 32'h00010000;
+`endif
+    end
 
     // ------------------------------------------------------------ background check
     wire [RG_BITS-1:0] part   = bg_dadr_q[RG_BITS+2:3];              // 0 header, k+1 entry k

@@ -22,12 +22,16 @@ uint64_t get(const T &port, int lsb, int width)
 
 }  // namespace
 
-SystemSim::SystemSim(const std::string &rom_file) : ref(kBoards, RefRam(kRamBytes)), dut_()
+SystemSim::SystemSim(const std::string &rom_file, const std::vector<std::string> &extra_plusargs)
+    : ref(kBoards, RefRam(kRamBytes)), dut_()
 {
-    static std::string plusarg;
-    plusarg = "+rom=" + rom_file;
-    const char *argv[2] = {"tb_system", plusarg.c_str()};
-    Verilated::commandArgs(2, argv);
+    static std::vector<std::string> args;
+    args = {"tb_system", "+rom=" + rom_file};
+    args.insert(args.end(), extra_plusargs.begin(), extra_plusargs.end());
+    static std::vector<const char *> argv;
+    argv.clear();
+    for (const std::string &a : args) argv.push_back(a.c_str());
+    Verilated::commandArgs(static_cast<int>(argv.size()), argv.data());
     dut_.reset(new Vsys);
     for (int b = 0; b < kBoards; ++b) cpu[b].id = b;
     dut_->clk_i = 0;
@@ -71,10 +75,10 @@ void SystemSim::load(int b, uint32_t addr, const uint8_t *bytes, uint32_t n)
     for (uint32_t i = 0; i < n;) {
         uint32_t a = addr + i, word = 0;
         uint8_t sel = 0;
+        uint32_t first = i;
         for (uint32_t lane = a & 3u; lane < 4 && i < n; ++lane, ++i) {
             word |= static_cast<uint32_t>(bytes[i]) << (8 * lane);
             sel |= static_cast<uint8_t>(1u << lane);
-            ref[b].preload((a & ~3u) + lane, bytes[i]);
         }
         BusRequest r{a & ~3u, word, sel, true};
         loading_[b] = true;
@@ -86,6 +90,11 @@ void SystemSim::load(int b, uint32_t addr, const uint8_t *bytes, uint32_t n)
         loading_[b] = false;
         drive(b, nullptr);
         busy_[b] = false;
+        // The reference learns the bytes once the RAM holds them: the
+        // controller runs meanwhile, and a read of port B between the two
+        // would otherwise be compared with bytes not yet written.
+        for (uint32_t lane = a & 3u, k = first; lane < 4 && k < n; ++lane, ++k)
+            ref[b].preload((a & ~3u) + lane, bytes[k]);
     }
 }
 

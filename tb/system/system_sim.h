@@ -30,7 +30,8 @@ public:
     static const uint32_t kRamBytes = 4u << kAddrWidth;
     static const int kMaxLatency = 2;           // CPU port access time, as for the RAM alone
 
-    explicit SystemSim(const std::string &rom_file);
+    // extra_plusargs: more +name=value arguments for the model (e.g. the ROM upset).
+    explicit SystemSim(const std::string &rom_file, const std::vector<std::string> &extra_plusargs = {});
     ~SystemSim();
 
     SimCpu cpu[kBoards];

@@ -8,7 +8,9 @@
 //             [--fault-rate R] [--burst L]        faulted share of the controller's
 //                                                 accesses, mean burst length (clocks)
 //             [--dead-board B --dead-at C]        board B's link fails for good at cycle C
-//             [--corrupt-entry K]                 flip a bit of schedule ROM entry K
+//             [--corrupt-entry K]                 a run-time upset: flip a bit of schedule ROM
+//                                                 entry K's reserved word E6 at time 20000
+//                                                 (the background CRC check must find it)
 //             [--corrupt-actual CH:C]             channel CH's producer stores Actual = 7 at cycle C
 //             [--rom FILE] [--report FILE] [--label NAME]
 //             [--latency-scale F] [--expect-caught-by CHECKER]...   negative tests
@@ -227,21 +229,14 @@ void load_images(const Plan &plan)
     }
 }
 
-// A copy of the ROM with one bit of entry k's first word flipped.
-std::string corrupt_rom(const std::string &rom, int k, const std::string &out)
+// The ROM image holds entry k (its header's entry count is above k).
+bool entry_exists(const std::string &rom, int k)
 {
     std::ifstream in(rom);
-    std::vector<std::string> lines;
-    for (std::string l; std::getline(in, l);) lines.push_back(l);
-    size_t word = 4 + 8 * static_cast<size_t>(k);
-    if (word >= lines.size()) return "";
-    uint32_t w = static_cast<uint32_t>(std::strtoul(lines[word].c_str(), nullptr, 16)) ^ 0x00010000u;
-    char hex[16];
-    std::snprintf(hex, sizeof hex, "%08x", w);
-    lines[word] = hex;
-    std::ofstream o(out);
-    for (const std::string &l : lines) o << l << "\n";
-    return o ? out : "";
+    std::string h0;
+    if (!std::getline(in, h0)) return false;
+    uint32_t ne = (static_cast<uint32_t>(std::strtoul(h0.c_str(), nullptr, 16)) >> 8) & 0xFFu;
+    return k >= 0 && static_cast<uint32_t>(k) < ne;
 }
 
 bool parse_num(const char *s, double &out)
@@ -312,10 +307,17 @@ int main(int argc, char **argv)
         return 2;
     }
     std::string rom = o.rom.empty() ? o.plan_dir + "/rom.hex" : o.rom;
+    // A ROM upset after start-up (the start-up CRC would refuse a corrupted
+    // image outright): entry K's E6, a reserved word, so that the entry does the
+    // same until the background check finds it and skips it from then on.
+    std::vector<std::string> plusargs;
     if (o.corrupt_entry >= 0) {
-        std::string out = o.report.empty() ? "build/rom_corrupt.hex" : o.report + ".rom.hex";
-        rom = corrupt_rom(rom, o.corrupt_entry, out);
-        if (rom.empty()) { std::fprintf(stderr, "tb_system: cannot corrupt entry %d\n", o.corrupt_entry); return 2; }
+        if (!entry_exists(rom, o.corrupt_entry)) {
+            std::fprintf(stderr, "tb_system: cannot corrupt entry %d\n", o.corrupt_entry);
+            return 2;
+        }
+        plusargs.push_back("+rom_upset_word=" + std::to_string(4 + 8 * o.corrupt_entry + 6));
+        plusargs.push_back("+rom_upset_at=20000");
     }
     std::printf("%s: %d boards, %zu channels, cycle %llu clocks (%s), %llu clocks, fault rate %.2f burst %.0f%s\n",
                 o.label.c_str(), plan.boards, plan.channels.size(), static_cast<unsigned long long>(plan.cycle),
@@ -323,7 +325,7 @@ int main(int argc, char **argv)
                 o.fault_rate, o.burst, o.dead_board >= 0 ? ", one board dies" : "");
     std::fflush(stdout);
 
-    SystemSim sim(rom);
+    SystemSim sim(rom, plusargs);
     g_sim = &sim;
     g_opts = &o;
     g_plan = &plan;
