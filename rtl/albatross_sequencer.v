@@ -90,9 +90,9 @@ module albatross_sequencer #(
 
 `include "albatross_contract.vh"
 
-    // CRC of the ROM image (to be given by the contract, rtl/albatross_contract.toml).
-    localparam [31:0] CRC_POLY = 32'h000000AF;  // P = x^32 + x^7 + x^5 + x^3 + x^2 + x + 1
-    localparam [31:0] CRC_SEED = 32'hFFFFFFFF;  // c before the first word
+    // CRC of the ROM image (rtl/albatross_contract.toml).
+    localparam [31:0] CRC_POLY = ALB_ROM_CRC_POLY;  // P = x^32 + CRC_POLY
+    localparam [31:0] CRC_SEED = ALB_ROM_CRC_SEED;  // c before the first word
     localparam FETCH_CYCLES = 7;                // slot start to the first access on the bus
     localparam MARGIN       = TIMEOUT + 2;      // an access on the bus in clock p needs p <= D - MARGIN
     localparam NE_FIT  = (ROM_WORDS - 4) / 8;
@@ -117,6 +117,22 @@ module albatross_sequencer #(
             N_CHAN > 32 || ROM_WORDS < 12 || TIME_BITS < 4 || TIME_BITS > 31 || TIMEOUT < 2 || POLL < 2 ||
             ALB_ROM_HEADER_WORDS != 4 || ALB_ROM_ENTRY_WORDS != 8) begin : g_param_check
             albatross_sequencer_parameter_out_of_range u_error ();
+        end
+    endgenerate
+
+    // Contract check: the decoder takes these widths and positions from
+    // rtl/albatross_contract.toml as literals (12-bit W, 8-bit id, 4-bit kind
+    // and ND, places of {board[3:0], base[11:0]} in the low and high halves,
+    // time fields at least TIME_BITS wide); a definition without them stops
+    // elaboration.
+    generate
+        if (ALB_ROM_E0_W_W != 12 || ALB_ROM_E0_ID_W != 8 || ALB_ROM_E0_KIND_W != 4 || ALB_ROM_E0_ND_W != 4 ||
+            ALB_ROM_PLACE_BOARD_W != 4 || ALB_ROM_PLACE_BASE_W != 12 || ALB_ROM_E3_SRC_LSB != 0 ||
+            ALB_ROM_E4_DST0_LSB != 0 || ALB_ROM_E4_DST1_LSB != 16 || ALB_ROM_E5_DST2_LSB != 0 ||
+            ALB_ROM_E5_DST3_LSB != 16 || ALB_ROM_H0_MAGIC_W != 16 || ALB_ROM_H0_NE_W != 8 ||
+            ALB_ROM_TIME_BITS < TIME_BITS || ALB_ROM_CRC_WORD != 3 || ALB_ROM_E1_START_LSB != 0 ||
+            ALB_ROM_E2_LENGTH_LSB != 0 || ALB_ROM_H1_CYCLE_LSB != 0) begin : g_contract_check
+            albatross_sequencer_contract_mismatch u_error ();
         end
     endgenerate
 
