@@ -3,12 +3,12 @@
 optional feature taken out, against one PicoRV32, per FPGA family.
 
     tools/controller_area.py --picorv32 FILE [--families ice40,ecp5,xc7]
-                             [--rtl rtl/albatross_controller.v] [--out DIR]
+                             [--out DIR]
                              [--report JSON] [--jobs N]
 
-Each variant is rtl/albatross_controller.v with a few source lines tied off
-(EDITS below: exact text, found exactly once, or the tool stops and names
-it), synthesised like the controller of `make synth` (NB 4, ADDR_WIDTH 10,
+Each variant is the controller's files (tools/fpga_report.py CTRL_FILES) with
+a few source lines tied off (EDITS below: file and exact text, found exactly
+once, or the tool stops and names it), synthesised like the controller of `make synth` (NB 4, ADDR_WIDTH 10,
 N_CHAN 16, ROM_WORDS 1024; tools/fpga_report.py).  A tie-off lets Yosys drop
 the feature's data path; the FSM keeps its states, so a row is an upper bound
 of what is left without the feature.  PicoRV32 (as pico_core configures it)
@@ -26,28 +26,36 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from fpga_report import design, synth_files  # noqa: E402
+from fpga_report import CTRL_FILES, design, synth_files  # noqa: E402
 from synth_report import FAMILIES, write_json  # noqa: E402
 
-# name: (what is tied off, [(exact text, replacement), ...])
+# name: (what is tied off, [(file, exact text, replacement), ...])
 EDITS = {
     # The counters are read only through STATUS words, so Yosys drops them too.
     "status": ("STATUS entries send zeros: no per-channel counters, no STATUS word 0", [
-        ("DS_ST0:    dat_n = {rerr_q, cycles_q};", "DS_ST0:    dat_n = 32'd0;"),
-        ("DS_CTRB:   dat_n = ctrb_q;", "DS_CTRB:   dat_n = 32'd0;"),
+        ("rtl/albatross_counters.v", "assign status_o       = zero_q ? {rom_errors_i, cycles_i} : rd_q;",
+         "assign status_o       = 32'd0;"),
     ]),
-    "sync": ("position-synchronised mode never starts (no polling)", [
-        ("if (sync_set) sync_ok_q <= 1'b1;", ""),
+    "sync": ("position-synchronised mode never polls", [
+        ("rtl/albatross_sequencer.v", "if (smode_q && sync_ok_q && pc_q == POLL_LAST) poll_q <= 1'b1;", ""),
     ]),
-    "fetch_check": ("a fetched entry's checksum is not checked again at run time", [
-        ("((state_q == S_SCAN || state_q == S_FETCH) && M_FC_E7[fc_q8]);", "(state_q == S_SCAN && M_FC_E7[fc_q8]);"),
-        ("((state_q == S_SCAN || state_q == S_FETCH) && fc_q == 8);", "(state_q == S_SCAN && fc_q == 8);"),
+    "background": ("no background re-check of the ROM (the start-up CRC kept)", [
+        ("rtl/albatross_sequencer.v", "wire               bg_on     = state_q == ST_CHECK || state_q == ST_WAIT ||\n"
+         "                                   state_q == ST_TRANSFER || state_q == ST_CYCLE_END;",
+         "wire               bg_on     = state_q == ST_CHECK;"),
     ]),
-    "rom_checks": ("no field checks of the header and entries at start-up (checksums kept)", [
-        ("else if (bad_now)                                         bad_q <= 1'b1;", ""),
+    "rom_checks": ("no field checks of the entries at fetch (the CRC kept)", [
+        ("rtl/albatross_sequencer.v", "3'd1:    bad_now = e0_bad || bad_mem_q;", "3'd1:    bad_now = bad_mem_q;"),
+        ("rtl/albatross_sequencer.v", "3'd2:    bad_now = e2_bad;", "3'd2:    bad_now = 1'b0;"),
+        ("rtl/albatross_sequencer.v", "3'd3:    bad_now = kind_q == ALB_KIND_COPY[1:0] && !place_ok(rom_q[15:0], e3_q);",
+         "3'd3:    bad_now = 1'b0;"),
+        ("rtl/albatross_sequencer.v", "3'd4:    bad_now = !lo_ok || (nd_q >= 3'd2 && !hi_ok);", "3'd4:    bad_now = 1'b0;"),
+        ("rtl/albatross_sequencer.v", "3'd5:    bad_now = (nd_q >= 3'd3 && !lo_ok) || (nd_q == 3'd4 && !hi_ok);",
+         "3'd5:    bad_now = 1'b0;"),
     ]),
     "destinations": ("one destination per entry instead of up to four", [
-        ("nd_q    <= e0_nd[2:0];", "nd_q    <= 3'd1;"),
+        ("rtl/albatross_sequencer.v", "nd_q    <= e0_nd[2:0];", "nd_q    <= 3'd1;"),
+        ("rtl/albatross_controller.v", ".TAKEN_AT(1), .DESTS(4), .DROP(1)", ".TAKEN_AT(1), .DESTS(1), .DROP(1)"),
     ]),
 }
 
@@ -56,23 +64,25 @@ VARIANTS = [
     ("full", "the controller as it is", []),
     ("no counters, STATUS", EDITS["status"][0], ["status"]),
     ("no sync mode", EDITS["sync"][0], ["sync"]),
-    ("no run-time checksum", EDITS["fetch_check"][0], ["fetch_check"]),
+    ("no background check", EDITS["background"][0], ["background"]),
     ("no ROM field checks", EDITS["rom_checks"][0], ["rom_checks"]),
     ("one destination", EDITS["destinations"][0], ["destinations"]),
-    ("none of these", "every tie-off above at once: the Import/Export engine, retries and timing",
-     ["status", "sync", "fetch_check", "rom_checks", "destinations"]),
+    ("none of these", "every tie-off above at once: the engines, retries, timing and the start-up CRC",
+     ["status", "sync", "background", "rom_checks", "destinations"]),
 ]
 
 
-def variant_source(text, edits, rtl):
+def variant_sources(texts, edits):
+    """The controller's files with the edits applied: {path: text}."""
+    out = dict(texts)
     for e in edits:
-        for old, new in EDITS[e][1]:
-            n = text.count(old)
+        for path, old, new in EDITS[e][1]:
+            n = out[path].count(old)
             if n != 1:
-                raise ValueError(f"edit {e!r}: expected the text {old!r} once in {rtl}, found it {n} times "
+                raise ValueError(f"edit {e!r}: expected the text {old!r} once in {path}, found it {n} times "
                                  f"(update EDITS in tools/controller_area.py)")
-            text = text.replace(old, new)
-    return text
+            out[path] = out[path].replace(old, new)
+    return out
 
 
 def slug(name):
@@ -83,7 +93,6 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--picorv32", required=True, help="picorv32.v of the PyPI package")
     ap.add_argument("--families", default="ice40,ecp5,xc7")
-    ap.add_argument("--rtl", default="rtl/albatross_controller.v")
     ap.add_argument("--out", default="build/fpga/area")
     ap.add_argument("--report", default="build/reports/controller_area.json")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
@@ -97,10 +106,12 @@ def main():
     if a.jobs < 1:
         ap.error("--jobs must be at least 1")
     try:
-        with open(a.rtl) as f:
-            text = f.read()
+        texts = {}
+        for path in CTRL_FILES:
+            with open(path) as f:
+                texts[path] = f.read()
     except OSError as e:
-        ap.error(f"--rtl {a.rtl}: {e.strerror}")
+        ap.error(f"{e.filename}: {e.strerror}")
     os.makedirs(a.out, exist_ok=True)
 
     _, ctop, chparam = design("controller", "ice40", a.picorv32, [])
@@ -110,15 +121,20 @@ def main():
         jobs.append((("PicoRV32", fam), pfiles, ptop, pchp, fam, os.path.join(a.out, f"picorv32_{fam}")))
     for name, _, edits in VARIANTS:
         try:
-            src = variant_source(text, edits, a.rtl)
+            srcs = variant_sources(texts, edits)
         except ValueError as e:
             print(f"controller_area: FAIL: {e}")
             return 1
-        path = os.path.join(a.out, f"{slug(name)}.v")
-        with open(path, "w") as f:
-            f.write(src)
+        vdir = os.path.join(a.out, slug(name))
+        os.makedirs(vdir, exist_ok=True)
+        paths = []
+        for path in CTRL_FILES:
+            out = os.path.join(vdir, os.path.basename(path))
+            with open(out, "w") as f:
+                f.write(srcs[path])
+            paths.append(out)
         for fam in fams:
-            jobs.append(((name, fam), [path], ctop, chparam, fam, os.path.join(a.out, f"{slug(name)}_{fam}")))
+            jobs.append(((name, fam), paths, ctop, chparam, fam, os.path.join(a.out, f"{slug(name)}_{fam}")))
 
     res = {}
     with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as pool:
@@ -154,7 +170,7 @@ def main():
         print(line)
     write_json(a.report, {"picorv32_luts": pico, "rows": rows, "goal_over_picorv32": 0.25,
                           "note": "LUTs: SB_LUT4 / LUT4 / LUT1-6; variants are tie-offs of "
-                                  "rtl/albatross_controller.v (tools/controller_area.py), measurements only"})
+                                  "the controller's files (tools/controller_area.py), measurements only"})
     print(f"controller_area: {a.report}")
     if errors:
         print("controller_area: FAIL: " + "; ".join(errors))

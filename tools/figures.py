@@ -200,10 +200,10 @@ def system_latency():
 
 
 def system_delivery():
-    runs = [("system_faults-50.json", "system_faults-50-noredundancy.json", "50 % faults"),
+    runs = [("system_faults-5.json", "system_faults-5-noredundancy.json", "5 % faults"),
             ("system_burst.json", "system_burst-noredundancy.json", "20 % faults, bursts of 60 clocks")]
     if not any(load(red) and load(nored) for red, nored, _ in runs):
-        missing("system_faults-50*.json", "make test")
+        missing("system_faults-5*.json", "make test")
     rows = []
     for red, nored, label in runs:
         a, b = load(red), load(nored)
@@ -219,7 +219,7 @@ def system_delivery():
                          f"{100 * c['delivered_within_bound']:.1f} %", c["latency_max"], f"{c['max_over_bound']:.2f}",
                          f"{100 * o['delivered_within_bound']:.1f} %", o["latency_max"], f"{o['max_over_bound']:.2f}"])
     if not rows:
-        missing("system_faults-50*.json", "make test")
+        missing("system_faults-5*.json", "make test")
     return table(["faults", "channel", "to board", "redundant: within bound", "worst (clk)", "worst / bound",
                   "one slot a cycle: within bound", "worst (clk)", "worst / bound"], rows)
 

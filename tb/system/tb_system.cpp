@@ -159,6 +159,14 @@ struct FaultModel {
     unsigned next() {
         if (rate <= 0) return 0;
         std::uniform_real_distribution<double> u(0, 1);
+        if (burst <= 1) {
+            // Independent clocks.  (The two-state chain below degenerates at
+            // burst 1 and rate 0.5 into strict alternation: a controller whose
+            // accesses all take 2 clocks back to back then sees every access
+            // faulted, or none, depending only on the phase of its first one.)
+            bad = u(rng) < rate;
+            return bad ? 1 + static_cast<unsigned>(rng() % 3) : 0;
+        }
         double enter = rate / (burst * (1 - std::min(rate, 0.999)));
         if (bad) { if (u(rng) < 1 / burst) bad = false; }
         else if (u(rng) < enter) bad = true;

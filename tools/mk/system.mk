@@ -68,7 +68,7 @@ SYS_NORED   := $(BUILD)/schedule/mobot3-noredundancy
 sys_run      = tools/run_test.sh system-$(1) $(SYS_BIN) --label system-$(1) --seed $(SEED) \
                --cycles $(SYS_CYCLES) --report $(REPORTS)/system_$(1).json
 
-TESTS += system-rigid system-possync system-faults-50 system-faults-50-noredundancy \
+TESTS += system-rigid system-possync system-faults-5 system-faults-5-noredundancy \
          system-burst system-burst-noredundancy system-dead-board system-corrupt-rom \
          system-corrupt-control
 
@@ -76,10 +76,10 @@ test-system-rigid: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,rigid) --plan $(SYS_RIGID)
 test-system-possync: $(SYS_BIN) $(SYS_SYNC)/tb_plan.txt
 	@$(call sys_run,possync) --plan $(SYS_SYNC)
-test-system-faults-50: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
-	@$(call sys_run,faults-50) --plan $(SYS_RIGID) --fault-rate 0.5
-test-system-faults-50-noredundancy: $(SYS_BIN) $(SYS_NORED)/tb_plan.txt
-	@$(call sys_run,faults-50-noredundancy) --plan $(SYS_NORED) --fault-rate 0.5
+test-system-faults-5: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,faults-5) --plan $(SYS_RIGID) --fault-rate 0.05
+test-system-faults-5-noredundancy: $(SYS_BIN) $(SYS_NORED)/tb_plan.txt
+	@$(call sys_run,faults-5-noredundancy) --plan $(SYS_NORED) --fault-rate 0.05
 test-system-burst: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,burst) --plan $(SYS_RIGID) --fault-rate 0.2 --burst 60
 test-system-burst-noredundancy: $(SYS_BIN) $(SYS_NORED)/tb_plan.txt
