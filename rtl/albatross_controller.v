@@ -70,6 +70,11 @@ module albatross_controller #(
     localparam AW      = ADDR_WIDTH;
     localparam CH_BITS = (N_CHAN > 1) ? $clog2(N_CHAN) : 1;
     localparam ST_W    = 8 + 8 + 4 + 2 + 32;            // {tried, act, need, rl, taken}
+    // The state RAM has 32 words from N_CHAN = 4 up (Yosys maps a RAM of only
+    // a few words to flip-flops; 32 x 54 bits is block RAM); fewer channels
+    // (the formal harness) keep N_CHAN words.
+    localparam ST_DEPTH = (N_CHAN >= 4) ? 32 : N_CHAN;
+    localparam ST_AW    = (ST_DEPTH > 1) ? $clog2(ST_DEPTH) : 1;
     localparam integer       LAST_CH_I = N_CHAN - 1;
     localparam [CH_BITS-1:0] LAST_CH   = LAST_CH_I[CH_BITS-1:0];
 
@@ -118,13 +123,19 @@ module albatross_controller #(
     wire               k_time = kind == ALB_KIND_TIME[1:0];
 
     // ------------------------------------------------------------ per-channel state
-    reg [ST_W-1:0]    st_mem [0:N_CHAN-1];
+    reg [ST_W-1:0]    st_mem [0:ST_DEPTH-1];
     reg [ST_W-1:0]    st_q;
     reg [CH_BITS-1:0] clr_q;
     reg [ST_W-1:0]    st_d;                               // written back at slot_end
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [31:0]       ch32   = {{(32-CH_BITS){1'b0}}, chan};
+    wire [31:0]       clr32  = {{(32-CH_BITS){1'b0}}, clr_q};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [ST_AW-1:0]  st_ix  = ch32[ST_AW-1:0];
+    wire [ST_AW-1:0]  clr_ix = clr32[ST_AW-1:0];
     always @(posedge clk_i) begin
-        if (!ready_q || slot_end) st_mem[ready_q ? chan : clr_q] <= ready_q ? st_d : {ST_W{1'b0}};
-        else                      st_q <= st_mem[chan];
+        if (!ready_q || slot_end) st_mem[ready_q ? st_ix : clr_ix] <= ready_q ? st_d : {ST_W{1'b0}};
+        else                      st_q <= st_mem[st_ix];
     end
     wire [7:0]  st_tried = st_q[53:46];
     wire [7:0]  st_act   = st_q[45:38];

@@ -103,7 +103,10 @@ module albatross_sequencer #(
     localparam PC_BITS = $clog2(POLL);
     localparam integer        POLL_LAST_I = POLL - 1;
     localparam [PC_BITS-1:0]  POLL_LAST   = POLL_LAST_I[PC_BITS-1:0];
-    localparam [11:0]         W_STATUS    = 2 * N_CHAN + 1;
+    localparam integer        W_STATUS_I  = 2 * N_CHAN + 1;
+    localparam [11:0]         W_STATUS    = W_STATUS_I[11:0];
+    localparam integer        N_CHAN_I    = N_CHAN;
+    localparam [8:0]          N_CHAN_9    = N_CHAN_I[8:0];
     localparam integer        MIN_LEN_I   = FETCH_CYCLES + MARGIN;
     localparam [TB:0]         MIN_LEN     = MIN_LEN_I[TB:0];
     localparam [TB:0]         MARGIN_T    = MARGIN[TB:0];
@@ -194,8 +197,6 @@ module albatross_sequencer #(
     reg [31:0] rom_q;
     reg [32:0] sig [0:NE_MAX];        // {part r found bad, prefix CRC after part r}
     reg [32:0] sig_q;
-    reg        bad_mem [0:NE_MAX];    // part r failed the background check
-    reg        bad_mem_q;
 
     integer ri;
 `ifndef SYNTHESIS
@@ -275,15 +276,15 @@ module albatross_sequencer #(
     wire               learn  = state_q == ST_CHECK;
     wire               mism   = p_end && !learn && crc_n != sig_q[31:0];
     wire               mism_new = mism && !sig_q[32];                 // counted once
-    always @(posedge clk_i) begin
-        if ((p_end && learn) || mism) sig[part] <= learn ? {1'b0, crc_n} : {1'b1, sig_q[31:0]};
-        sig_q <= sig[bg_adr_q[RG_BITS+2:3]];
-    end
+    // One read port: the background check's part, except in the clock S of
+    // a fetch (no background read is issued then), which reads the fetched
+    // entry's mark for FETCH clock 1.
     wire [RG_BITS-1:0] fetch_part = ent_q[RG_BITS-1:0] + 1'b1;
     always @(posedge clk_i) begin
-        if ((p_end && learn) || mism) bad_mem[part] <= !learn;
-        bad_mem_q <= bad_mem[fetch_part];
+        if ((p_end && learn) || mism) sig[part] <= learn ? {1'b0, crc_n} : {1'b1, sig_q[31:0]};
+        sig_q <= sig[start_now ? fetch_part : bg_adr_q[RG_BITS+2:3]];
     end
+    wire bad_mem_q = sig_q[32];
 
     // ------------------------------------------------------------ field checks at fetch
     wire [3:0]  e0_kind = rom_q[ALB_ROM_E0_KIND_LSB +: 4];
@@ -293,7 +294,7 @@ module albatross_sequencer #(
     wire        e0_idle = e0_kind == ALB_KIND_IDLE;
     wire        e0_bad  = e0_kind > 4'd3 ||
                           (rom_q[EFLAG_SYNC] && !(ent_q == 8'd0 && smode_q && e0_kind == ALB_KIND_COPY)) ||
-                          (!e0_idle && (e0_nd == 4'd0 || e0_nd > 4'd4 || e0_id >= N_CHAN)) ||
+                          (!e0_idle && (e0_nd == 4'd0 || e0_nd > 4'd4 || {1'b0, e0_id} >= N_CHAN_9)) ||
                           (e0_kind == ALB_KIND_COPY && e0_w == 12'd0) ||
                           (e0_kind == ALB_KIND_TIME && e0_w != 12'd1) ||
                           (e0_kind == ALB_KIND_STATUS && e0_w != W_STATUS);
