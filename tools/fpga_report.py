@@ -7,7 +7,8 @@
 
 Designs (files are read with -DSYNTHESIS; parameters as the systems use them):
   dpram       rtl/albatross_dpram.v, ADDR_WIDTH 10 (4 KiB)
-  controller  rtl/albatross_controller.v, NB 4, ADDR_WIDTH 10, N_CHAN 16, ROM_WORDS 1024
+  controller  rtl/albatross_controller.v and its parts, NB 4, ADDR_WIDTH 10, N_CHAN 16, ROM_WORDS 1024,
+              ROM_FILE the robot's schedule (build/schedule/mobot3/rom.hex)
               (the four-board robot's configuration)
   picorv32    one PicoRV32 as soc/pico_core.v configures it (rv32i, counters),
               behind soc/picorv32_ooc.v (only its memory port on pins)
@@ -58,6 +59,8 @@ SOC_FILES = ["rtl/albatross_dpram.v", "rtl/albatross_wb_cdc.v", "rtl/albatross_b
              "soc/pico_wb_adapter.v", "soc/albatross_system.v", "soc/board_reset.v", "soc/beat_divider.v",
              "fpga/duo_system.v"]
 TOPS = {"ice40": "icebreaker_top", "ecp5": "ulx3s_top", "xc7": "arty_top"}
+# The ROM image of the controller measured alone (the robot, sim/mobot3.toml).
+ROBOT_ROM = "build/schedule/mobot3/rom.hex"
 # Each placed top's clock nets and the MHz each must meet: the iCEBreaker's
 # one 12 MHz clock; the ULX3S PLL's 50 MHz for the cores and 25 MHz for the
 # DPRAMs, the bus and the controller (nextpnr derives both from the 25 MHz
@@ -73,8 +76,11 @@ def design(name, fam, picorv32, serv):
     if name == "dpram":
         return ["rtl/albatross_dpram.v"], "albatross_dpram", "chparam -set ADDR_WIDTH 10 albatross_dpram"
     if name == "controller":
+        # The robot's schedule (make schedule): with no ROM image the ROM is all
+        # zero, Yosys folds it to a constant and drops much of the controller.
         return (CTRL_FILES, "albatross_controller",
-                "chparam -set NB 4 -set ADDR_WIDTH 10 -set N_CHAN 16 -set ROM_WORDS 1024 albatross_controller")
+                "chparam -set NB 4 -set ADDR_WIDTH 10 -set N_CHAN 16 -set ROM_WORDS 1024 "
+                f"-set ROM_FILE \"{ROBOT_ROM}\" albatross_controller")
     if name == "picorv32":
         return [picorv32, "soc/picorv32_ooc.v"], "picorv32_ooc", ""
     top = TOPS[fam]

@@ -80,7 +80,7 @@ $(FPGA_IMG)/rom.hex: $(FPGA_SCHED)/rom.hex
 FPGA_IMAGES := $(FPGA_IMG)/rom.hex $(foreach i,0 1,$(FPGA_IMG)/fw$(i).hex $(FPGA_IMG)/ram$(i).hex)
 
 .PHONY: synth pnr bitstream area
-synth: $(FPGA_IMAGES) ## Yosys on iCE40, ECP5, xc7: DPRAM, controller, PicoRV32, board top (+ iCE40, ECP5 Fmax) -> build/reports/fpga.json
+synth: $(FPGA_IMAGES) $(BUILD)/schedule/mobot3/rom.hex ## Yosys on iCE40, ECP5, xc7: DPRAM, controller, PicoRV32, board top (+ iCE40, ECP5 Fmax) -> build/reports/fpga.json
 	$(PICO_NEED)
 	$(FPGA_REPORT) --pnr --report $(REPORTS)/fpga.json
 
@@ -91,7 +91,7 @@ pnr: $(FPGA_IMAGES) ## place and route the iCEBreaker and ULX3S tops, timing aga
 
 # Where the controller's logic goes: each optional feature tied off, against
 # one PicoRV32 in the same run (tools/controller_area.py).
-area: ## the controller's LUTs without each optional feature, per family -> build/reports/controller_area.json
+area: $(BUILD)/schedule/mobot3/rom.hex ## the controller's LUTs without each optional feature, per family -> build/reports/controller_area.json
 	$(PICO_NEED)
 	$(PYTHON) tools/controller_area.py --picorv32 $(PICO_RV32_V) --out $(FPGA_DIR)/area \
 	    --report $(REPORTS)/controller_area.json
