@@ -1,6 +1,6 @@
-# tools/mk/parts.mk -- the controller's new parts (issue 12): albatross_sequencer,
-# albatross_bus_master, albatross_counters.  Not yet composed into
-# rtl/albatross_controller.v (that is still the monolith).
+# tools/mk/parts.mk -- the controller's parts (issue 12): albatross_sequencer,
+# albatross_bus_master, albatross_counters, each on its own (the engines have
+# tools/mk/endpoint.mk; rtl/albatross_controller.v composes them all).
 #   make test-parts-lint        Verilator -Wall, Icarus -g2005 and Yosys of each part
 #   make test-sequencer         tb/sequencer/tb_sequencer.v on the ROM of
 #                               tb/sequencer/make_rom.py (new format: whole-ROM
