@@ -244,7 +244,7 @@ void ProtocolChecker::import_end(int rc, const uint8_t *value, uint64_t now)
                 auto p = publish_cycle_.find(s);
                 if (s < floor_seq || p == publish_cycle_.end() || p->second > imp_last_actual_) continue;
             }
-            make_value(s, expect_.data(), size_);
+            value_fn(s, expect_.data(), size_);
             if (std::memcmp(expect_.data(), value, size_) == 0) { found = true; seq = s; break; }
         }
     }

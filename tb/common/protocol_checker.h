@@ -34,6 +34,12 @@ public:
 
     ProtocolChecker(uint32_t base, uint32_t size, int producer_port, int consumer_port);
 
+    // The bytes of the seq-th exported value (make_value unless a bench's
+    // producer exports other values, e.g. the pair test's sequence number
+    // and check words: tb/endpoint/).
+    typedef void (*ValueFn)(uint64_t seq, uint8_t *out, uint32_t size);
+    ValueFn value_fn = make_value;
+
     void on_access(const Access &a) override;
 
     // Called by the programs on the simulated CPUs.

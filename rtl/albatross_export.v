@@ -1,0 +1,353 @@
+// albatross_export -- the Export engine: the producer's side of the
+// three-buffer protocol (seed 3.1, figure 4) in hardware, on one Wishbone
+// B4 classic master port, to DESTS destination channels in lockstep.  It
+// takes the value as a word stream and never holds more than one word; it
+// keeps no per-channel state beyond the transfer (each destination's copy of
+// Actual comes in with start_i and goes out on act_known_o/act_o), so a
+// controller can run many channels through one engine and
+// albatross_export_endpoint can keep one channel in registers.
+// Rules:
+//   * Access order, for the destinations d set in need_i, in index order:
+//     1. per d: if its Actual copy is unknown, load Actual (read back; one
+//        that names no buffer sets corrupt_o[d] and excludes no buffer); then
+//        load ReadLocked (one that names no buffer sets corrupt_o[d] and
+//        locks nothing); pick the last buffer of 1..3 that is neither the
+//        Actual copy nor that ReadLocked (figure 4's For loop);
+//     2. per word k = 0..W-1: take word k from the stream, store it to word k
+//        of each d's picked buffer;
+//     3. TAKEN_AT = 1: store taken_at_i (sampled at start) after the value of
+//        each d (word W of the buffer; the buffer stride is then W + 1);
+//     4. per d: store Actual := its picked buffer: published_o[d].
+//     A buffer is published only after its last word was stored (and acked),
+//     and the buffer ReadLocked named at step 1 is never written.
+//   * Accesses: one at a time; cyc = stb from request to ack.  With no fault
+//     and a stream that offers every word when asked (word_valid_i), the
+//     next access is on the bus in the clock after the previous ack: no idle
+//     bus clock inside an Export.  Undisturbed, an Export to ND destinations
+//     takes ND * (W + TAKEN_AT + 2) accesses, plus 1 per unknown Actual copy;
+//     with albatross_dpram each is 2 clocks back to back.  Control accesses
+//     select their byte lane only (sel), word stores all four.
+//   * Word stream: word_ready_o is high in a clock where the engine takes
+//     word word_index_o: the ack clock of the access before it (the last
+//     ReadLocked load, or the last store of the previous word) or, if
+//     word_valid_i was low then, every clock until it is high.  The word's
+//     first store is on the bus in the next clock.
+//   * Failures: an access answered with err counts in fails_o and is tried
+//     again.  may_access_i gates every access: an access begins in the clock
+//     after an edge where it is 1; an access due at an edge where it is 0
+//     ends the Export there with cut_o.  A destination whose store of Actual
+//     failed and was not repeated gets an unknown copy (act_known_o[d] = 0):
+//     the store may have landed, and the next Export reads Actual back.
+//   * Timing: start_i is taken when idle_o; the first access is on the bus in
+//     the next clock.  done_o is high for one clock after the last ack (or
+//     the cut-off edge); published_o, corrupt_o, cut_o, fails_o and the
+//     state outputs hold until the next start.  Reset clears control state
+//     (every copy becomes unknown), never a data register.
+`default_nettype none
+
+module albatross_export #(
+    parameter ADDR_WIDTH  = 10, // word-address bits of the port (wb_adr_o)
+    parameter WORDS_WIDTH = 12, // bits of words_i: W from 1 to 2**WORDS_WIDTH - 1
+    parameter COUNT_WIDTH = 8,  // bits of fails_o (saturating)
+    parameter TAKEN_AT    = 0,  // 1: store taken_at_i after the value (stride W + 1)
+    parameter DESTS       = 1   // destination channels in lockstep, 1..4
+) (
+    input  wire                    clk_i,
+    input  wire                    rst_i,        // synchronous, active high
+    // command and the destinations' state
+    input  wire                    start_i,      // begin an Export (taken when idle_o)
+    input  wire [DESTS*ADDR_WIDTH-1:0] base_i,   // destination d's base at [d*ADDR_WIDTH +: ADDR_WIDTH]
+    input  wire [DESTS-1:0]        need_i,       // destinations that take this value
+    input  wire [WORDS_WIDTH-1:0]  words_i,      // W, the value's words (>= 1)
+    input  wire [31:0]             taken_at_i,   // TAKEN_AT = 1: the word stored after the value
+    input  wire [DESTS-1:0]        act_known_i,  // destination d's Actual copy is known ...
+    input  wire [2*DESTS-1:0]      act_i,        // ... and is this buffer (1..3), at [2d +: 2]
+    input  wire                    may_access_i, // 1: an access may begin (deadline); tie 1 if none
+    output wire                    idle_o,       // no Export under way: start_i is taken
+    // the value, one word per take
+    input  wire [31:0]             word_i,
+    input  wire                    word_valid_i,
+    output wire                    word_ready_o,
+    output wire [WORDS_WIDTH-1:0]  word_index_o, // index of the word taken next, 0..W-1
+    // results
+    output wire                    done_o,       // one clock: the Export is over
+    output wire [DESTS-1:0]        published_o,  // Actual stored: the value is published at d
+    output wire [DESTS-1:0]        corrupt_o,    // d's Actual or ReadLocked named no buffer
+    output wire                    cut_o,        // ended by may_access_i
+    output wire [COUNT_WIDTH-1:0]  fails_o,      // accesses answered with err in this Export
+    output wire [DESTS-1:0]        act_known_o,  // the copies after the Export (live)
+    output wire [2*DESTS-1:0]      act_o,
+    // Wishbone B4 classic master
+    output wire                    wb_cyc_o,
+    output wire                    wb_stb_o,
+    output wire                    wb_we_o,
+    output wire [ADDR_WIDTH-1:0]   wb_adr_o,     // word address
+    output wire [3:0]              wb_sel_o,
+    output wire [31:0]             wb_dat_o,
+    /* verilator lint_off UNUSEDSIGNAL */
+    input  wire [31:0]             wb_dat_i,     // only the control bytes are read
+    /* verilator lint_on UNUSEDSIGNAL */
+    input  wire                    wb_ack_i,
+    input  wire                    wb_err_i
+);
+
+`include "albatross_contract.vh"
+
+    // Channel layout: both control bytes in one word, buffers from BUF_WORD.
+    localparam integer          CTRL_WORD_I = ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES;
+    localparam integer          BUF_WORD_I  = ALB_CH_OFF_BUFFERS / ALB_CH_WORD_BYTES;
+    localparam [ADDR_WIDTH-1:0] CTRL_WORD   = CTRL_WORD_I[ADDR_WIDTH-1:0];
+    localparam [ADDR_WIDTH-1:0] BUF_WORD    = BUF_WORD_I[ADDR_WIDTH-1:0];
+    localparam                  ACT_BIT     = 8 * (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
+    localparam                  RL_BIT      = 8 * (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
+    localparam [3:0]            SEL_ACT     = 4'b0001 << (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
+    localparam [3:0]            SEL_RL      = 4'b0001 << (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
+    localparam [1:0]            BUFFER1     = ALB_CH_BUFFER1[1:0];
+    localparam [1:0]            BUFFER2     = BUFFER1 + 2'd1;
+    localparam [1:0]            BUFFER3     = ALB_CH_BUFFER_LAST[1:0];
+    localparam integer          TAKEN_WORDS = TAKEN_AT ? ALB_CH_TAKEN_AT_WORDS : 0;
+
+    // The engine relies on: both control bytes in one word, three buffers
+    // numbered 1..3 (2 bits), one taken_at word.
+    generate
+        if (ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES != ALB_CH_OFF_READLOCKED / ALB_CH_WORD_BYTES ||
+            ALB_CH_BUFFER1 != 1 || ALB_CH_BUFFER_LAST != 3 || ALB_CH_BUFFERS != 3 ||
+            ALB_CH_WORD_BYTES != 4 || ALB_CH_TAKEN_AT_WORDS != 1 || ADDR_WIDTH < 2 ||
+            WORDS_WIDTH < 1 || COUNT_WIDTH < 1 || DESTS < 1 || DESTS > 4 ||
+            (TAKEN_AT != 0 && TAKEN_AT != 1)) begin : g_contract_check
+            albatross_export_contract_mismatch u_error ();
+        end
+    endgenerate
+
+    // States.
+    localparam [2:0] S_IDLE         = 3'd0,  // waiting for start_i
+                     S_LOAD_ACTUAL  = 3'd1,  // read back destination d's Actual (copy unknown)
+                     S_LOAD_RL      = 3'd2,  // load destination d's ReadLocked, pick its buffer
+                     S_WAIT_WORD    = 3'd3,  // waiting for word word_index_o of the stream
+                     S_STORE_WORD   = 3'd4,  // store word store_k_q to destination d
+                     S_STORE_TAKEN  = 3'd5,  // store taken_at to destination d
+                     S_STORE_ACTUAL = 3'd6;  // store destination d's Actual := its buffer
+
+    reg [2:0]                  state_q;
+    reg                        stb_q;          // cyc = stb: an access is on the bus
+    reg [1:0]                  d_q;            // current destination
+    reg [DESTS*ADDR_WIDTH-1:0] base_q;
+    reg [DESTS-1:0]            need_q;
+    reg [WORDS_WIDTH-1:0]      words_q;
+    reg [WORDS_WIDTH-1:0]      take_k_q;       // index of the next word to take
+    reg [WORDS_WIDTH-1:0]      store_k_q;      // index of the word being stored
+    reg [31:0]                 word_q;         // the word being stored
+    reg [31:0]                 taken_q;
+    reg [DESTS-1:0]            act_known_q;
+    reg [2*DESTS-1:0]          act_q;
+    reg [2*DESTS-1:0]          buf_q;          // d's picked buffer
+    reg [DESTS-1:0]            published_q;
+    reg [DESTS-1:0]            corrupt_q;
+    reg                        cut_q;
+    reg                        done_q;
+    reg [COUNT_WIDTH-1:0]      fails_q;
+
+    // The current destination's fields.
+    reg [ADDR_WIDTH-1:0] base_d;
+    reg [1:0]            buf_d;
+    reg [1:0]            copy_d;               // its Actual copy, 0 when unknown
+    reg                  known_d;
+    reg                  has_next;             // a destination after d_q takes part
+    reg [1:0]            next_d;
+    reg [1:0]            first_d;              // the first destination that takes part
+    reg [DESTS-1:0]      d_bit;                // d_q as a mask
+    reg                  known_next;           // next_d's Actual copy is known
+    reg                  any_in;               // at start: need_i names a destination,
+    reg [1:0]            first_in;             // the first one,
+    reg                  known_in;             // and its Actual copy is known
+    integer i;
+    always @* begin
+        base_d   = base_q[0 +: ADDR_WIDTH];
+        buf_d    = buf_q[1:0];
+        copy_d   = act_q[1:0];
+        known_d  = act_known_q[0];
+        has_next = 1'b0;
+        next_d   = 2'd0;
+        first_d  = 2'd0;
+        known_next = 1'b0;
+        d_bit    = {DESTS{1'b0}};
+        any_in   = |need_i;
+        first_in = 2'd0;
+        known_in = act_known_i[0];
+        for (i = DESTS - 1; i >= 0; i = i - 1) begin
+            if (d_q == i[1:0]) begin
+                d_bit[i] = 1'b1;
+                base_d  = base_q[i*ADDR_WIDTH +: ADDR_WIDTH];
+                buf_d   = buf_q[2*i +: 2];
+                copy_d  = act_q[2*i +: 2];
+                known_d = act_known_q[i];
+            end
+            if (need_q[i] && i[1:0] > d_q) begin
+                has_next   = 1'b1;
+                next_d     = i[1:0];
+                known_next = act_known_q[i];
+            end
+            if (need_q[i]) first_d = i[1:0];
+            if (need_i[i]) begin
+                first_in = i[1:0];
+                known_in = act_known_i[i];
+            end
+        end
+        if (!known_d) copy_d = 2'd0;
+    end
+
+    wire [7:0] act_byte  = wb_dat_i[ACT_BIT +: 8];
+    wire [7:0] rl_byte   = wb_dat_i[RL_BIT +: 8];
+    wire       act_valid = act_byte[7:2] == 6'd0 && act_byte[1:0] != 2'd0;
+    wire       rl_valid  = rl_byte[7:2] == 6'd0 && rl_byte[1:0] != 2'd0;
+    wire [1:0] rl_lock   = rl_valid ? rl_byte[1:0] : 2'd0;
+    // Figure 4: the last of Buffer1..3 that is neither Actual nor ReadLocked.
+    wire [1:0] pick      = (copy_d != BUFFER3 && rl_lock != BUFFER3) ? BUFFER3 :
+                           (copy_d != BUFFER2 && rl_lock != BUFFER2) ? BUFFER2 : BUFFER1;
+    wire       last_word = store_k_q == words_q - 1'b1;
+    wire       ack       = wb_ack_i && stb_q;
+    // The clock where the engine takes a word from the stream.
+    wire       want_word = state_q == S_WAIT_WORD ||
+                           (ack && !has_next && (state_q == S_LOAD_RL || (state_q == S_STORE_WORD && !last_word)));
+
+    // Address of the current access: a control word, or word k of d's buffer
+    // base + BUF_WORD + (buf - 1) * S + k, S = W + TAKEN_WORDS (no multiplier).
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [ADDR_WIDTH+WORDS_WIDTH-1:0] w_wide = {{ADDR_WIDTH{1'b0}}, words_q};
+    wire [ADDR_WIDTH+WORDS_WIDTH-1:0] k_wide = {{ADDR_WIDTH{1'b0}}, store_k_q};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [ADDR_WIDTH-1:0] w_ext   = w_wide[ADDR_WIDTH-1:0];
+    wire [ADDR_WIDTH-1:0] stride  = w_ext + TAKEN_WORDS[ADDR_WIDTH-1:0];
+    wire [ADDR_WIDTH-1:0] buf_off = buf_d == BUFFER1 ? {ADDR_WIDTH{1'b0}} : buf_d == BUFFER2 ? stride : (stride << 1);
+    wire [ADDR_WIDTH-1:0] word_k  = state_q == S_STORE_TAKEN ? w_ext : k_wide[ADDR_WIDTH-1:0];
+    wire                  ctrl    = state_q == S_LOAD_ACTUAL || state_q == S_LOAD_RL || state_q == S_STORE_ACTUAL;
+    wire [ADDR_WIDTH-1:0] adr     = base_d + (ctrl ? CTRL_WORD : BUF_WORD + buf_off + word_k);
+
+    // Put the next access (state s, destination d) on the bus, or end the
+    // Export here if no access may begin.
+    task begin_access;
+        input [2:0] s;
+        input [1:0] d;
+        begin
+            d_q <= d;
+            if (may_access_i) begin
+                state_q <= s;
+                stb_q   <= 1'b1;
+            end else begin
+                state_q <= S_IDLE;
+                stb_q   <= 1'b0;
+                cut_q   <= 1'b1;
+                done_q  <= 1'b1;
+            end
+        end
+    endtask
+
+    always @(posedge clk_i) begin
+        done_q <= 1'b0;
+        if (rst_i) begin
+            state_q     <= S_IDLE;
+            stb_q       <= 1'b0;
+            d_q         <= 2'd0;
+            need_q      <= {DESTS{1'b0}};
+            act_known_q <= {DESTS{1'b0}};
+            published_q <= {DESTS{1'b0}};
+            corrupt_q   <= {DESTS{1'b0}};
+            cut_q       <= 1'b0;
+            fails_q     <= {COUNT_WIDTH{1'b0}};
+        end else if (wb_err_i && stb_q) begin
+            // A failed access: count it, try it again if an access may begin.
+            if (~&fails_q) fails_q <= fails_q + 1'b1;
+            if (!may_access_i) begin
+                stb_q   <= 1'b0;
+                state_q <= S_IDLE;
+                cut_q   <= 1'b1;
+                done_q  <= 1'b1;
+                // The store of Actual may have landed: the copy is unknown.
+                if (state_q == S_STORE_ACTUAL) act_known_q <= act_known_q & ~d_bit;
+            end
+        end else begin
+            if (want_word && word_valid_i) begin          // take a word: store it to the first d
+                word_q    <= word_i;
+                store_k_q <= take_k_q;
+                take_k_q  <= take_k_q + 1'b1;
+                begin_access(S_STORE_WORD, first_d);
+            end else if (want_word) begin                 // wait for it, bus idle
+                state_q <= S_WAIT_WORD;
+                stb_q   <= 1'b0;
+            end
+            case (state_q)
+                S_IDLE: if (start_i) begin
+                    base_q      <= base_i;
+                    need_q      <= need_i;
+                    words_q     <= words_i;
+                    taken_q     <= taken_at_i;
+                    act_known_q <= act_known_i;
+                    act_q       <= act_i;
+                    published_q <= {DESTS{1'b0}};
+                    corrupt_q   <= {DESTS{1'b0}};
+                    cut_q       <= 1'b0;
+                    fails_q     <= {COUNT_WIDTH{1'b0}};
+                    take_k_q    <= {WORDS_WIDTH{1'b0}};
+                    if (!any_in) done_q <= 1'b1;          // no destination: nothing to do
+                    else begin_access(known_in ? S_LOAD_RL : S_LOAD_ACTUAL, first_in);
+                end
+                S_LOAD_ACTUAL: if (ack) begin
+                    if (act_valid) begin
+                        act_q[2*d_q +: 2]  <= act_byte[1:0];
+                        act_known_q <= act_known_q | d_bit;
+                    end else begin
+                        corrupt_q   <= corrupt_q | d_bit;
+                    end
+                    begin_access(S_LOAD_RL, d_q);
+                end
+                S_LOAD_RL: if (ack) begin
+                    buf_q[2*d_q +: 2] <= pick;
+                    if (!rl_valid) corrupt_q <= corrupt_q | d_bit;
+                    if (has_next) begin_access(known_next ? S_LOAD_RL : S_LOAD_ACTUAL, next_d);
+                end
+                S_STORE_WORD: if (ack) begin
+                    if (has_next) begin_access(S_STORE_WORD, next_d);
+                    else if (last_word) begin_access(TAKEN_AT ? S_STORE_TAKEN : S_STORE_ACTUAL, first_d);
+                end
+                S_STORE_TAKEN: if (ack) begin
+                    if (has_next) begin_access(S_STORE_TAKEN, next_d);
+                    else begin_access(S_STORE_ACTUAL, first_d);
+                end
+                S_STORE_ACTUAL: if (ack) begin
+                    act_q[2*d_q +: 2] <= buf_d;
+                    act_known_q <= act_known_q | d_bit;
+                    published_q <= published_q | d_bit;
+                    if (has_next) begin_access(S_STORE_ACTUAL, next_d);
+                    else begin
+                        stb_q   <= 1'b0;
+                        state_q <= S_IDLE;
+                        done_q  <= 1'b1;
+                    end
+                end
+                default: ;
+            endcase
+        end
+    end
+
+    assign idle_o       = state_q == S_IDLE;
+    assign word_ready_o = want_word;
+    assign word_index_o = take_k_q;
+    assign done_o       = done_q;
+    assign published_o  = published_q;
+    assign corrupt_o    = corrupt_q;
+    assign cut_o        = cut_q;
+    assign fails_o      = fails_q;
+    assign act_known_o  = act_known_q;
+    assign act_o        = act_q;
+    assign wb_cyc_o     = stb_q;
+    assign wb_stb_o     = stb_q;
+    assign wb_we_o      = state_q == S_STORE_WORD || state_q == S_STORE_TAKEN || state_q == S_STORE_ACTUAL;
+    assign wb_adr_o     = adr;
+    assign wb_sel_o     = state_q == S_LOAD_ACTUAL || state_q == S_STORE_ACTUAL ? SEL_ACT :
+                          state_q == S_LOAD_RL ? SEL_RL : 4'hF;
+    assign wb_dat_o     = state_q == S_STORE_WORD  ? word_q :
+                          state_q == S_STORE_TAKEN ? taken_q : ({30'd0, buf_d} << ACT_BIT);
+
+endmodule
+
+`default_nettype wire

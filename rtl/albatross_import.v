@@ -1,0 +1,301 @@
+// albatross_import -- the Import engine: the consumer's side of the
+// three-buffer protocol (seed 3.1, figure 3) in hardware, on one Wishbone
+// B4 classic master port.  It runs one Import of a channel at a time and
+// hands the value out as a word stream; it keeps no per-channel state of its
+// own beyond the transfer (the ReadLocked copy comes in with start_i and goes
+// out on rl_known_o/rl_o), so a controller can run many channels through one
+// engine and albatross_import_endpoint can keep one channel in registers.
+// Rules:
+//   * Access order.  Phase 1: load Actual.  If the ReadLocked copy is unknown
+//     or differs from it, store ReadLocked := Actual and load Actual again,
+//     until a load equals the copy: the result is New if ReadLocked was
+//     stored in this Import, else Old.  An Actual that names no buffer ends
+//     the Import with corrupt_o (nothing is read, the copy is kept).  Then
+//     selected_o: the caller answers stream_i (read the value) or skip_i
+//     (end without reading).  Phase 2: load the W words of buffer ReadLocked
+//     in address order, one load per word handed out on word_o.
+//   * Accesses: one at a time; cyc = stb from request to ack.  With no fault
+//     and a consumer that takes every word in its ack clock (word_ready_i),
+//     the next access is on the bus in the clock after the previous ack: no
+//     idle bus clock inside an Import.  Undisturbed, an Import is 1 (Old) or
+//     3 (New) control accesses, plus W loads when streamed; with albatross_dpram
+//     each access is 2 clocks back to back.  Control accesses select their
+//     byte lane only (sel), word loads all four.
+//   * Word stream: word_valid_o is high in a word load's ack clock (word_o =
+//     wb_dat_i) or, if word_ready_i was low then, from the next clock on with
+//     the held word, until word_ready_i.  The next load begins in the clock
+//     after the word is taken.  word_index_o is the word's index 0..W-1.
+//   * Failures: an access answered with err counts in fails_o and is tried
+//     again.  may_access_i gates every access: an access begins in the clock
+//     after an edge where it is 1; an access due at an edge where it is 0
+//     ends the Import there with cut_o.  An Import cut off between its store
+//     of ReadLocked and the confirming load of Actual forgets its copy
+//     (rl_known_o = 0): the store may have landed, and the next Import must
+//     take that buffer as a new value.
+//   * Timing: start_i is taken when idle_o; the first access is on the bus in
+//     the next clock.  done_o is high for one clock after the last ack (or
+//     the cut-off or skip edge); new_o, corrupt_o, cut_o, fails_o and the
+//     state outputs hold until the next start.  Reset clears control state
+//     (the copy becomes unknown), never a data register.
+`default_nettype none
+
+module albatross_import #(
+    parameter ADDR_WIDTH  = 10, // word-address bits of the port (wb_adr_o)
+    parameter WORDS_WIDTH = 12, // bits of words_i: W from 1 to 2**WORDS_WIDTH - 1
+    parameter COUNT_WIDTH = 8   // bits of fails_o (saturating)
+) (
+    input  wire                   clk_i,
+    input  wire                   rst_i,        // synchronous, active high
+    // command and the channel's state
+    input  wire                   start_i,      // begin an Import (taken when idle_o)
+    input  wire [ADDR_WIDTH-1:0]  base_i,       // channel base, word address
+    input  wire [WORDS_WIDTH-1:0] words_i,      // W, the value's words (>= 1)
+    input  wire                   rl_known_i,   // the ReadLocked copy is known ...
+    input  wire [1:0]             rl_i,         // ... and is this buffer (1..3)
+    input  wire                   may_access_i, // 1: an access may begin (deadline); tie 1 if none
+    output wire                   idle_o,       // no Import under way: start_i is taken
+    // end of phase 1
+    output wire                   selected_o,   // new_o is valid; stream_i / skip_i decide
+    input  wire                   stream_i,     // read the value now (sampled with selected_o)
+    input  wire                   skip_i,       // end without reading (sampled with selected_o)
+    // the value, one word per load
+    output wire [31:0]            word_o,
+    output wire                   word_valid_o,
+    input  wire                   word_ready_i,
+    output wire [WORDS_WIDTH-1:0] word_index_o, // 0..W-1
+    // results
+    output wire                   done_o,       // one clock: the Import is over
+    output wire                   new_o,        // ReadLocked was stored: a value never read before
+    output wire                   corrupt_o,    // Actual named no buffer
+    output wire                   cut_o,        // ended by may_access_i
+    output wire [COUNT_WIDTH-1:0] fails_o,      // accesses answered with err in this Import
+    output wire                   rl_known_o,   // the copy after the Import (live)
+    output wire [1:0]             rl_o,
+    // Wishbone B4 classic master
+    output wire                   wb_cyc_o,
+    output wire                   wb_stb_o,
+    output wire                   wb_we_o,
+    output wire [ADDR_WIDTH-1:0]  wb_adr_o,     // word address
+    output wire [3:0]             wb_sel_o,
+    output wire [31:0]            wb_dat_o,
+    input  wire [31:0]            wb_dat_i,
+    input  wire                   wb_ack_i,
+    input  wire                   wb_err_i
+);
+
+`include "albatross_contract.vh"
+
+    // Channel layout: both control bytes in one word, buffers from BUF_WORD.
+    localparam integer          CTRL_WORD_I = ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES;
+    localparam integer          BUF_WORD_I  = ALB_CH_OFF_BUFFERS / ALB_CH_WORD_BYTES;
+    localparam [ADDR_WIDTH-1:0] CTRL_WORD   = CTRL_WORD_I[ADDR_WIDTH-1:0];
+    localparam [ADDR_WIDTH-1:0] BUF_WORD    = BUF_WORD_I[ADDR_WIDTH-1:0];
+    localparam                  ACT_BIT     = 8 * (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
+    localparam                  RL_BIT      = 8 * (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
+    localparam [3:0]            SEL_ACT     = 4'b0001 << (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
+    localparam [3:0]            SEL_RL      = 4'b0001 << (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
+    localparam [1:0]            BUFFER1     = ALB_CH_BUFFER1[1:0];
+    localparam [1:0]            BUFFER2     = BUFFER1 + 2'd1;
+
+    // The engine relies on: both control bytes in one word, three buffers
+    // numbered 1..3 (2 bits).
+    generate
+        if (ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES != ALB_CH_OFF_READLOCKED / ALB_CH_WORD_BYTES ||
+            ALB_CH_BUFFER1 != 1 || ALB_CH_BUFFER_LAST != 3 || ALB_CH_BUFFERS != 3 ||
+            ALB_CH_WORD_BYTES != 4 || ADDR_WIDTH < 2 || WORDS_WIDTH < 1 || COUNT_WIDTH < 1) begin : g_contract_check
+            albatross_import_contract_mismatch u_error ();
+        end
+    endgenerate
+
+    // States.
+    localparam [2:0] S_IDLE        = 3'd0,  // waiting for start_i
+                     S_LOAD_ACTUAL = 3'd1,  // load Actual (phase 1)
+                     S_STORE_RL    = 3'd2,  // store ReadLocked := the Actual just loaded
+                     S_SELECTED    = 3'd3,  // phase 1 over: waiting for stream_i or skip_i
+                     S_LOAD_WORD   = 3'd4,  // load word k of buffer ReadLocked
+                     S_HOLD_WORD   = 3'd5;  // word k loaded, not yet taken by the consumer
+
+    reg [2:0]             state_q;
+    reg                   stb_q;        // cyc = stb: an access is on the bus
+    reg                   we_q;
+    reg [3:0]             sel_q;
+    reg [ADDR_WIDTH-1:0]  adr_q;
+    reg [ADDR_WIDTH-1:0]  base_q;
+    reg [WORDS_WIDTH-1:0] words_q;
+    reg [WORDS_WIDTH-1:0] k_q;          // word index in phase 2
+    reg [1:0]             act_q;        // the Actual last loaded: the next ReadLocked store
+    reg                   rl_known_q;
+    reg [1:0]             rl_q;
+    reg                   new_q;
+    reg                   corrupt_q;
+    reg                   cut_q;
+    reg                   done_q;
+    reg [COUNT_WIDTH-1:0] fails_q;
+    reg [31:0]            word_q;       // a loaded word the consumer has not taken yet
+
+    wire [7:0] act_byte   = wb_dat_i[ACT_BIT +: 8];
+    wire       act_valid  = act_byte[7:2] == 6'd0 && act_byte[1:0] != 2'd0;
+    wire       act_match  = rl_known_q && act_byte[1:0] == rl_q;
+    wire       last_word  = k_q == words_q - 1'b1;
+    wire       end_phase1 = state_q == S_LOAD_ACTUAL && wb_ack_i && act_valid && act_match;
+    wire       word_ack   = state_q == S_LOAD_WORD && wb_ack_i;
+    wire       taken      = (word_ack || state_q == S_HOLD_WORD) && word_ready_i;
+
+    // First word of buffer b: base + BUF_WORD + (b - 1) * W (no multiplier).
+    // W as an address offset (widened, then cut to ADDR_WIDTH bits: a
+    // channel never reaches past the port's address space).
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [ADDR_WIDTH+WORDS_WIDTH-1:0] w_wide = {{ADDR_WIDTH{1'b0}}, words_q};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [ADDR_WIDTH-1:0] w_ext     = w_wide[ADDR_WIDTH-1:0];
+    wire [ADDR_WIDTH-1:0] buf_first = base_q + BUF_WORD +
+                                      (rl_q == BUFFER1 ? {ADDR_WIDTH{1'b0}} :
+                                       rl_q == BUFFER2 ? w_ext : (w_ext << 1));
+
+    always @(posedge clk_i) begin
+        done_q <= 1'b0;
+        if (rst_i) begin
+            state_q    <= S_IDLE;
+            stb_q      <= 1'b0;
+            rl_known_q <= 1'b0;
+            new_q      <= 1'b0;
+            corrupt_q  <= 1'b0;
+            cut_q      <= 1'b0;
+            fails_q    <= {COUNT_WIDTH{1'b0}};
+        end else if (wb_err_i && stb_q) begin
+            // A failed access: count it, try it again if an access may begin.
+            if (~&fails_q) fails_q <= fails_q + 1'b1;
+            if (!may_access_i) begin
+                stb_q   <= 1'b0;
+                state_q <= S_IDLE;
+                cut_q   <= 1'b1;
+                done_q  <= 1'b1;
+                // ReadLocked stored (or maybe stored) and not confirmed: forget the copy.
+                if (state_q == S_STORE_RL || (state_q == S_LOAD_ACTUAL && new_q)) rl_known_q <= 1'b0;
+            end
+        end else begin
+            case (state_q)
+                S_IDLE: if (start_i) begin
+                    base_q     <= base_i;
+                    words_q    <= words_i;
+                    rl_known_q <= rl_known_i;
+                    rl_q       <= rl_i;
+                    new_q      <= 1'b0;
+                    corrupt_q  <= 1'b0;
+                    cut_q      <= 1'b0;
+                    fails_q    <= {COUNT_WIDTH{1'b0}};
+                    adr_q      <= base_i + CTRL_WORD;
+                    we_q       <= 1'b0;
+                    sel_q      <= SEL_ACT;
+                    if (may_access_i) begin
+                        stb_q   <= 1'b1;
+                        state_q <= S_LOAD_ACTUAL;
+                    end else begin
+                        cut_q  <= 1'b1;
+                        done_q <= 1'b1;
+                    end
+                end
+                S_LOAD_ACTUAL: if (wb_ack_i) begin
+                    act_q <= act_byte[1:0];
+                    if (!act_valid) begin                  // names no buffer: read nothing
+                        stb_q     <= 1'b0;
+                        state_q   <= S_IDLE;
+                        corrupt_q <= 1'b1;
+                        done_q    <= 1'b1;
+                    end else if (!act_match) begin         // ReadLocked := Actual
+                        we_q    <= 1'b1;
+                        sel_q   <= SEL_RL;
+                        new_q   <= 1'b1;
+                        stb_q   <= may_access_i;
+                        state_q <= may_access_i ? S_STORE_RL : S_IDLE;
+                        cut_q   <= !may_access_i;
+                        done_q  <= !may_access_i;
+                        if (!may_access_i && new_q) rl_known_q <= 1'b0;
+                    end else if (skip_i && !stream_i) begin
+                        stb_q   <= 1'b0;
+                        state_q <= S_IDLE;
+                        done_q  <= 1'b1;
+                    end else if (stream_i) begin
+                        adr_q   <= buf_first;
+                        k_q     <= {WORDS_WIDTH{1'b0}};
+                        sel_q   <= 4'hF;
+                        stb_q   <= may_access_i;
+                        state_q <= may_access_i ? S_LOAD_WORD : S_IDLE;
+                        cut_q   <= !may_access_i;
+                        done_q  <= !may_access_i;
+                    end else begin
+                        stb_q   <= 1'b0;
+                        state_q <= S_SELECTED;
+                    end
+                end
+                S_STORE_RL: if (wb_ack_i) begin
+                    rl_q       <= act_q;
+                    rl_known_q <= 1'b1;
+                    we_q       <= 1'b0;
+                    sel_q      <= SEL_ACT;
+                    stb_q      <= may_access_i;
+                    state_q    <= may_access_i ? S_LOAD_ACTUAL : S_IDLE;
+                    cut_q      <= !may_access_i;
+                    done_q     <= !may_access_i;
+                    if (!may_access_i) rl_known_q <= 1'b0;   // stored, not confirmed
+                end
+                S_SELECTED: if (stream_i) begin
+                    adr_q   <= buf_first;
+                    k_q     <= {WORDS_WIDTH{1'b0}};
+                    sel_q   <= 4'hF;
+                    stb_q   <= may_access_i;
+                    state_q <= may_access_i ? S_LOAD_WORD : S_IDLE;
+                    cut_q   <= !may_access_i;
+                    done_q  <= !may_access_i;
+                end else if (skip_i) begin
+                    state_q <= S_IDLE;
+                    done_q  <= 1'b1;
+                end
+                S_LOAD_WORD, S_HOLD_WORD: if (word_ack || state_q == S_HOLD_WORD) begin
+                    if (word_ack) word_q <= wb_dat_i;
+                    if (!taken) begin                      // the consumer is not ready
+                        stb_q   <= 1'b0;
+                        state_q <= S_HOLD_WORD;
+                    end else if (last_word) begin
+                        stb_q   <= 1'b0;
+                        state_q <= S_IDLE;
+                        done_q  <= 1'b1;
+                    end else begin
+                        adr_q   <= adr_q + 1'b1;
+                        k_q     <= k_q + 1'b1;
+                        stb_q   <= may_access_i;
+                        state_q <= may_access_i ? S_LOAD_WORD : S_IDLE;
+                        cut_q   <= !may_access_i;
+                        done_q  <= !may_access_i;
+                    end
+                end
+                default: begin
+                    stb_q   <= 1'b0;
+                    state_q <= S_IDLE;
+                end
+            endcase
+        end
+    end
+
+    assign idle_o       = state_q == S_IDLE;
+    assign selected_o   = end_phase1 || state_q == S_SELECTED;
+    assign word_o       = state_q == S_HOLD_WORD ? word_q : wb_dat_i;
+    assign word_valid_o = word_ack || state_q == S_HOLD_WORD;
+    assign word_index_o = k_q;
+    assign done_o       = done_q;
+    assign new_o        = new_q;
+    assign corrupt_o    = corrupt_q;
+    assign cut_o        = cut_q;
+    assign fails_o      = fails_q;
+    assign rl_known_o   = rl_known_q;
+    assign rl_o         = rl_q;
+    assign wb_cyc_o     = stb_q;
+    assign wb_stb_o     = stb_q;
+    assign wb_we_o      = we_q;
+    assign wb_adr_o     = adr_q;
+    assign wb_sel_o     = sel_q;
+    assign wb_dat_o     = {30'd0, act_q} << RL_BIT;
+
+endmodule
+
+`default_nettype wire
