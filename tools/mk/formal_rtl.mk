@@ -1,8 +1,7 @@
 # tools/mk/formal_rtl.mk -- bounded proofs of the RTL properties (formal/rtl/,
-# docs/verification.md "Formal proofs (RTL)").  formal/rtl/run_check.py runs one check,
+# docs/verification.md "Formal proofs (RTL)").  The unbounded proofs of the RAM,
+# the clock-crossing bridge and the bus are in tools/mk/formal_sby.mk.  formal/rtl/run_check.py runs one check,
 # names the failed assertions and writes build/reports/formal_rtl.json.
-#   formal-dpram                  albatross_dpram: access time, byte atomicity
-#                                 (yosys-smtbmc + z3)
 #   formal-controller             albatross_controller, black box: complete
 #                                 publication, no write of a locked buffer, slot
 #                                 times (yosys-abc bmc3: z3 cannot unroll it)
@@ -14,11 +13,6 @@ FRTL_DIR   := $(BUILD)/formal/rtl
 FRTL_RUN   := $(PYTHON) formal/rtl/run_check.py
 FRTL_DEPS  := formal/rtl/run_check.py tools/mk/formal_rtl.mk $(RTL_INC)
 
-DPRAM_PROPS := access_time_a,access_time_b,no_spurious_a,no_spurious_b,atomicity_a,atomicity_b
-DPRAM_DEPTH := 16
-frtl_dpram   = $(FRTL_RUN) $(1) --engine smtbmc --top formal_dpram --depth $(DPRAM_DEPTH) \
-               --props $(DPRAM_PROPS) --src $(2) formal/rtl/formal_dpram.v --define DUT=$(3) --expect $(4)
-
 CTRL_PROPS := complete_publish,no_locked_write,slot_idle,slot_start,time_step,rom_valid
 CTRL_REACH := reach_publish0,reach_publish1
 # Two slots: cycle 0 starts at time 23, the second slot's first access is at 57.
@@ -26,21 +20,11 @@ CTRL_DEPTH := 62
 frtl_ctrl    = $(FRTL_RUN) $(1) --engine abc --top formal_controller --depth $(CTRL_DEPTH) \
                --src $(2) formal/rtl/formal_controller.v --props $(3) --expect $(4)
 
-FORMAL_RTL_TESTS := formal-dpram formal-dpram-negative-no_arbitration formal-dpram-negative-priority_a \
-                    formal-controller formal-controller-negative-ignore_readlocked \
+FORMAL_RTL_TESTS := formal-controller formal-controller-negative-ignore_readlocked \
                     formal-controller-negative-publish_early formal-controller-negative-slot_late
 TESTS        += $(FORMAL_RTL_TESTS)
 FORMAL_TESTS += $(FORMAL_RTL_TESTS)
 .PHONY: $(addprefix test-,$(FORMAL_RTL_TESTS))
-
-test-formal-dpram: $(FRTL_DEPS)
-	@tools/run_test.sh formal-dpram $(call frtl_dpram,formal-dpram,rtl/albatross_dpram.v,albatross_dpram,pass)
-# dpram_no_arbitration tears a byte read while the other port writes it.
-test-formal-dpram-negative-no_arbitration: $(FRTL_DEPS)
-	@tools/run_test.sh formal-dpram-negative-no_arbitration $(call frtl_dpram,formal-dpram-negative-no_arbitration,tb/dpram/dpram_no_arbitration.v,dpram_no_arbitration,'atomicity_a|atomicity_b')
-# dpram_priority_a blocks port B while port A is busy.
-test-formal-dpram-negative-priority_a: $(FRTL_DEPS)
-	@tools/run_test.sh formal-dpram-negative-priority_a $(call frtl_dpram,formal-dpram-negative-priority_a,tb/dpram/dpram_priority_a.v,dpram_priority_a,access_time_b)
 
 test-formal-controller: $(FRTL_DEPS) formal/rtl/ctrl_time.hex rtl/albatross_controller.v
 	@tools/run_test.sh formal-controller $(call frtl_ctrl,formal-controller,rtl/albatross_controller.v,$(CTRL_PROPS),pass) --reach $(CTRL_REACH)

