@@ -424,6 +424,29 @@ SECTIONS = {"fpga": fpga, "controller-area": controller_area, "robot": robot, "r
 SECTIONS["formal-rtl"] = formal_rtl
 
 
+def formal_sby():
+    rep = load("formal_sby.json")
+    if not rep:
+        missing("formal_sby.json", "make formal")
+    rows = []
+    for c in rep.get("checks", []):
+        if c["expect"] == "pass":
+            what = {"prove": "proof", "cover": "covers (non-vacuity)"}.get(c["mode"], c["mode"])
+            result = c["result"] if c["ok"] else f"**{c['result']}**"
+        else:
+            what = "broken variant, must fail on " + " or ".join(f"`{e}`" for e in c["expect"].split("|"))
+            hit = [f["property"] for f in c.get("failed", [])
+                   if any(f["property"].endswith(e) for e in c["expect"].split("|"))]
+            result = (f"caught by `{hit[0].split('.', 1)[-1]}` (step {[f['step'] for f in c['failed'] if f['property'] == hit[0]][0]})"
+                      if c["ok"] and hit else "**not caught**")
+        depth = c["depth"] if c["depth"] is not None else "unbounded (PDR)"
+        rows.append([c["check"], f"`{c['engine']}`", c["mode"], what, depth, result, f"{c['seconds']:.1f}"])
+    return table(["check", "engine", "mode", "what", "depth (steps)", "result", "seconds"], rows)
+
+
+SECTIONS["formal-sby"] = formal_sby
+
+
 # A marker is a line of its own (a marker quoted inside a sentence is text).
 BLOCK = re.compile(r"^<!-- figures:([A-Za-z0-9_-]+) -->\n(.*?)^<!-- /figures:\1 -->$", re.S | re.M)
 

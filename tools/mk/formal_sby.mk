@@ -5,7 +5,7 @@
 # its verdict, names the failed property and the trace, and writes
 # build/reports/formal_sby.json.  Each test is NAME:CORE:TASK:EXPECT, EXPECT being
 # pass or the (suffix of the) assertion a broken variant must fail on.
-#   formal-<core>                     k-induction (smtbmc + yices)
+#   formal-<core>                     k-induction (smtbmc + yices); wb_cdc: PDR only
 #   formal-<core>-pdr                 abc pdr (Debian yosys-abc via tools/abc_compat.py)
 #   formal-<core>-cover               non-vacuity: every cover reached
 #   formal-<core>-negative-<variant>  a broken variant; passes only if the proof
@@ -24,11 +24,20 @@ FSBY_TESTS_SPEC := \
     formal-dpram-cover:dpram:cover:pass \
     formal-dpram-negative-priority_a:dpram:neg_priority_a:wb_b.props.ans_max_wait \
     formal-dpram-negative-no_arbitration:dpram:neg_no_arbitration:atomicity_a|atomicity_b \
-    formal-dpram-negative-drop_ack:dpram:neg_drop_ack:wb_a.props.ans_max_wait
+    formal-dpram-negative-drop_ack:dpram:neg_drop_ack:wb_a.props.ans_max_wait \
+    formal-wb_cdc-pdr:wb_cdc:prove_pdr:pass \
+    formal-wb_cdc-cover:wb_cdc:cover:pass \
+    formal-wb_cdc-negative-live_adr:wb_cdc:neg_live_adr:wb_m.req_stable \
+    formal-wb_cdc-negative-early_ack:wb_cdc:neg_early_ack:ack_match \
+    formal-bus:bus:prove:pass \
+    formal-bus-pdr:bus:prove_pdr:pass \
+    formal-bus-cover:bus:cover:pass \
+    formal-bus-negative-err_no_stb:bus:neg_err_no_stb:wb_m.props.ans_in_req \
+    formal-bus-negative-alias:bus:neg_alias:ack_selected
 
 # Sed mutants: formal/<core>/mutants/<variant>.sed applied to rtl/albatross_<core>.v,
 # written to build/formal/sby/mutant-src/<core>/<variant>/ (the .sby files read them there).
-FSBY_MUTANTS := dpram:drop_ack
+FSBY_MUTANTS := dpram:drop_ack wb_cdc:live_adr wb_cdc:early_ack bus:err_no_stb bus:alias
 
 FSBY_NAMES := $(foreach t,$(FSBY_TESTS_SPEC),$(call neg_field,$(t),1))
 TESTS        += $(FSBY_NAMES)
