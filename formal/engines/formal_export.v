@@ -14,7 +14,8 @@
 //                     were all stored (acked) in this Export, and not the
 //                     loaded ReadLocked;
 //   exact_accesses    an Export takes exactly W + 2 accesses, plus 1 when the
-//                     Actual copy was unknown at start;
+//                     Actual copy was unknown at start (no failed store of
+//                     Actual pending: tried_i = 0, as in an endpoint);
 //   in_channel        every access lies inside the channel.
 `default_nettype none
 
@@ -46,7 +47,7 @@ module formal_export (
     albatross_export #(.ADDR_WIDTH(6), .WORDS_WIDTH(2), .COUNT_WIDTH(8), .TAKEN_AT(0), .DESTS(1)) dut (
         .clk_i(clk_i), .rst_i(rst_i),
         .start_i(start_i), .base_i(base_i), .need_i(1'b1), .words_i(words_i), .taken_at_i(32'd0),
-        .act_known_i(act_known_i), .act_i(act_i), .may_access_i(1'b1), .idle_o(idle),
+        .act_known_i(act_known_i), .act_i(act_i), .tried_i(2'd0), .may_access_i(1'b1), .idle_o(idle),
         .word_i(word_i), .word_valid_i(word_valid_i), .word_ready_o(ready), .word_index_o(windex),
         .done_o(done), .published_o(published), .corrupt_o(corrupt), .cut_o(cut), .fails_o(fails),
         .act_known_o(known_o), .act_o(act_o),
