@@ -4,9 +4,11 @@
 // word}).  It runs the cyclic schedule of a ROM ($readmemh ROM_FILE; in
 // simulation +rom=FILE overrides it) as docs/controller.md specifies.  This
 // module only composes the parts and keeps the per-channel state:
-//   albatross_sequencer   ROM, start-up and background CRC check, cycle and
-//                         slot timing, the deadline (may_access), TIME's time,
-//                         the sync-mode poll
+//   albatross_sequencer   ROM, cycle and slot timing, the deadline
+//                         (may_access), TIME's time, the sync-mode poll; it
+//                         holds albatross_rom_check (start-up and background
+//                         CRC check) and albatross_entry_check (field checks
+//                         at fetch)
 //   albatross_import      the source's Import (seed figure 3)
 //   albatross_export      the destinations' Export (figure 4), to up to 4
 //                         destinations in lockstep

@@ -8,8 +8,8 @@
 //     TIME_BITS bits (higher bits set: the header, or the entry, is invalid).
 //   * ROM format (rtl/albatross_contract.toml): header H0..H3, entry k at
 //     word 4 + 8k; H3 is the CRC of the whole ROM image (words 0 .. 4+8*NE-1,
-//     H3 read as 0); no per-entry checksum.  CRC: c = CRC_SEED; for each word
-//     w in address order c = (c * x^32 + w) mod P, P = x^32 + CRC_POLY.
+//     H3 read as 0); no per-entry checksum.  The CRC and the prefix
+//     signatures are rtl/albatross_rom_check.v's (its rules).
 //   * Start-up (after enable_i): read the header (5 clocks), then one CRC
 //     pass over the image, one word a clock, storing the CRC after the header
 //     and after each entry (their prefix CRCs).  A bad magic, NE outside
@@ -26,9 +26,10 @@
 //     clock S+FETCH_CYCLES-1 with its fields: an engine started by go_o puts its
 //     first access on the bus in clock S+FETCH_CYCLES.  slot_time_o = S
 //     (global time): TIME publishes it.  An entry found invalid while it is
-//     fetched (fields as docs/controller.md "Validation" lists, the slot
-//     order, the cycle end, a bad mark) gets no go_o and adds 1 to
-//     rom_errors, once per cycle; an IDLE entry gets no go_o.
+//     fetched (rtl/albatross_entry_check.v: fields as docs/controller.md
+//     "Validation" lists, the slot order, the cycle end, a bad mark) gets
+//     no go_o and adds 1 to rom_errors, once per cycle; an IDLE entry gets
+//     no go_o.
 //   * Deadline D = cycle start + start + length.  may_access_o is high in a
 //     clock c of a slot when an access put on the bus in clock c+1 ends
 //     before D even if it times out: c + 1 <= D - TIMEOUT - 2.
@@ -90,25 +91,16 @@ module albatross_sequencer #(
 
 `include "albatross_contract.vh"
 
-    // CRC of the ROM image (rtl/albatross_contract.toml).
-    localparam [31:0] CRC_POLY = ALB_ROM_CRC_POLY;  // P = x^32 + CRC_POLY
-    localparam [31:0] CRC_SEED = ALB_ROM_CRC_SEED;  // c before the first word
     localparam FETCH_CYCLES = 7;                // slot start to the first access on the bus
     localparam MARGIN       = TIMEOUT + 2;      // an access on the bus in clock p needs p <= D - MARGIN
     localparam NE_FIT  = (ROM_WORDS - 4) / 8;
     localparam NE_MAX  = (NE_FIT > 255) ? 255 : NE_FIT;
     localparam ROM_AW  = $clog2(ROM_WORDS);
-    localparam RG_BITS = $clog2(NE_MAX + 1);    // parts: 0 header, k+1 entry k
     localparam TB      = TIME_BITS;
     localparam PC_BITS = $clog2(POLL);
     localparam integer        POLL_LAST_I = POLL - 1;
     localparam [PC_BITS-1:0]  POLL_LAST   = POLL_LAST_I[PC_BITS-1:0];
-    localparam integer        W_STATUS_I  = 2 * N_CHAN + 1;
-    localparam [11:0]         W_STATUS    = W_STATUS_I[11:0];
-    localparam integer        N_CHAN_I    = N_CHAN;
-    localparam [8:0]          N_CHAN_9    = N_CHAN_I[8:0];
     localparam integer        MIN_LEN_I   = FETCH_CYCLES + MARGIN;
-    localparam [TB:0]         MIN_LEN     = MIN_LEN_I[TB:0];
     localparam [TB:0]         MARGIN_T    = MARGIN[TB:0];
     localparam [ROM_AW-1:0]   A1 = 1, A2 = 2, A3 = 3, A4 = 4, A5 = 5, A8 = 8, A9 = 9;
     localparam [7:0]          NE_MAX8     = NE_MAX[7:0];
@@ -186,17 +178,10 @@ module albatross_sequencer #(
     reg                cycle_q1;      // cycle_o
     reg [PC_BITS-1:0]  pc_q;
     reg                poll_q;
-    // background check
-    reg [ROM_AW-1:0]   bg_adr_q;      // next word to read
-    reg [ROM_AW-1:0]   bg_dadr_q;     // word in rom_q when bg_data_q
-    reg                bg_data_q;
-    reg [31:0]         crc_q;
 
     // ------------------------------------------------------------ memories (never reset)
     reg [31:0] rom [0:ROM_WORDS-1];
     reg [31:0] rom_q;
-    reg [32:0] sig [0:NE_MAX];        // {part r found bad, prefix CRC after part r}
-    reg [32:0] sig_q;
 
     integer ri;
 `ifndef SYNTHESIS
@@ -217,18 +202,6 @@ module albatross_sequencer #(
 `endif
     end
 
-    function [31:0] crc_step;            // (c * x^32 + w) mod P
-        input [31:0] c;
-        input [31:0] w;
-        integer i;
-        reg [31:0] x;
-        begin
-            x = c;
-            for (i = 0; i < 32; i = i + 1) x = {x[30:0], 1'b0} ^ (x[31] ? CRC_POLY : 32'd0);
-            crc_step = x ^ w;
-        end
-    endfunction
-
     // ------------------------------------------------------------ ROM port
     wire               start_now = state_q == ST_WAIT && rel_q >= start_q;   // clock S (late only after an overrun)
     wire               fetch_rom = state_q == ST_FETCH && step_q <= 3'd5;
@@ -239,8 +212,8 @@ module albatross_sequencer #(
     wire [ROM_AW+11:0] last_wide = {{ROM_AW{1'b0}}, 1'b0, ne_q, 3'b011}; // 4 + 8*NE - 1
     /* verilator lint_on UNUSEDSIGNAL */
     wire [ROM_AW-1:0]  last_word = last_wide[ROM_AW-1:0];
-    wire               bg_issue  = bg_on && !main_rom && !(state_q == ST_CHECK && bg_adr_q > last_word);
     // Main reads: header H0, H1, H3, E1 of entry 0; fetch E0 (clock S), E2..E5, E1 of the next.
+    wire [ROM_AW-1:0] bg_adr;         // the ROM check's next word
     reg [ROM_AW-1:0] main_adr;
     always @* begin
         main_adr = ent_adr_q;                                       // E0 (start_now)
@@ -261,72 +234,35 @@ module albatross_sequencer #(
             endcase
     end
     always @(posedge clk_i) begin
-        rom_q <= rom[main_rom ? main_adr : bg_adr_q];
+        rom_q <= rom[main_rom ? main_adr : bg_adr];
 `ifndef SYNTHESIS
         if (upset_word >= 0 && upset_word < ROM_WORDS && time_q == upset_at[31:0])
             rom[upset_word] <= rom[upset_word] ^ 32'h00010000;
 `endif
     end
 
-    // ------------------------------------------------------------ background check
-    wire [RG_BITS-1:0] part   = bg_dadr_q[RG_BITS+2:3];              // 0 header, k+1 entry k
-    wire               p_end  = bg_data_q && bg_dadr_q[2:0] == 3'b011;
-    wire               p_last = bg_data_q && bg_dadr_q == last_word;
-    wire [31:0]        crc_n  = crc_step(crc_q, bg_dadr_q == 3 ? 32'd0 : rom_q);
-    wire               learn  = state_q == ST_CHECK;
-    wire               mism   = p_end && !learn && crc_n != sig_q[31:0];
-    wire               mism_new = mism && !sig_q[32];                 // counted once
-    // One read port: the background check's part, except in the clock S of
-    // a fetch (no background read is issued then), which reads the fetched
-    // entry's mark for FETCH clock 1.
-    wire [RG_BITS-1:0] fetch_part = ent_q[RG_BITS-1:0] + 1'b1;
-    always @(posedge clk_i) begin
-        if ((p_end && learn) || mism) sig[part] <= learn ? {1'b0, crc_n} : {1'b1, sig_q[31:0]};
-        sig_q <= sig[start_now ? fetch_part : bg_adr_q[RG_BITS+2:3]];
-    end
-    wire bad_mem_q = sig_q[32];
+    // ------------------------------------------------------------ ROM check
+    // The start-up CRC and the background re-check; in the clock S of a
+    // fetch it reads the fetched entry's bad mark for FETCH clock 1.
+    wire p_last, crc_ok, mism_new, bad_mark;
+    albatross_rom_check #(.ROM_WORDS(ROM_WORDS)) u_rom_check (
+        .clk_i(clk_i), .rst_i(rst_i), .learn_i(state_q == ST_CHECK), .bg_on_i(bg_on),
+        .main_rom_i(main_rom), .last_word_i(last_word), .adr_o(bg_adr), .rom_dat_i(rom_q),
+        .h3_i(h3_q), .fetch_i(start_now), .fetch_ent_i(ent_q), .last_o(p_last), .crc_ok_o(crc_ok),
+        .mism_o(mism_new), .bad_o(bad_mark));
 
     // ------------------------------------------------------------ field checks at fetch
-    wire [3:0]  e0_kind = rom_q[ALB_ROM_E0_KIND_LSB +: 4];
-    wire [3:0]  e0_nd   = rom_q[ALB_ROM_E0_ND_LSB +: 4];
-    wire [7:0]  e0_id   = rom_q[ALB_ROM_E0_ID_LSB +: 8];
+    wire [1:0]  e0_kind = rom_q[ALB_ROM_E0_KIND_LSB +: 2];   // (rules: rtl/albatross_entry_check.v)
+    wire [2:0]  e0_nd   = rom_q[ALB_ROM_E0_ND_LSB +: 3];
+    wire [4:0]  e0_id   = rom_q[ALB_ROM_E0_ID_LSB +: 5];
     wire [11:0] e0_w    = rom_q[ALB_ROM_E0_W_LSB +: 12];
-    wire        e0_idle = e0_kind == ALB_KIND_IDLE;
-    wire        e0_bad  = e0_kind > 4'd3 ||
-                          (rom_q[EFLAG_SYNC] && !(ent_q == 8'd0 && smode_q && e0_kind == ALB_KIND_COPY)) ||
-                          (!e0_idle && (e0_nd == 4'd0 || e0_nd > 4'd4 || {1'b0, e0_id} >= N_CHAN_9)) ||
-                          (e0_kind == ALB_KIND_COPY && e0_w == 12'd0) ||
-                          (e0_kind == ALB_KIND_TIME && e0_w != 12'd1) ||
-                          (e0_kind == ALB_KIND_STATUS && e0_w != W_STATUS);
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire [31:0] len_w   = rom_q;
-    /* verilator lint_on UNUSEDSIGNAL */
-    wire [TB:0] e2_end  = {1'b0, start_q} + {1'b0, len_w[TB-1:0]};
-    wire        e2_bad  = start_bad_q || len_w[31:TB] != 0 || {1'b0, len_w[TB-1:0]} < MIN_LEN ||
-                          e2_end > {1'b0, cycle_q} || {1'b0, start_q} < prev_end_q;
-    function place_ok;                 // board < NB and base + 3*stride < 2^ADDR_WIDTH
-        input [15:0] p;
-        input [13:0] s3;
-        reg [14:0] ext;
-        begin
-            ext = {3'd0, p[ALB_ROM_PLACE_BASE_LSB +: 12]} + {1'b0, s3};
-            place_ok = p[ALB_ROM_PLACE_BOARD_LSB +: 4] < NB && (ext >> ADDR_WIDTH) == 15'd0;
-        end
-    endfunction
-    wire [13:0] e3d    = e3_q + 14'd3;                               // 3 * (W + 1)
-    wire        lo_ok  = place_ok(rom_q[15:0], e3d);
-    wire        hi_ok  = place_ok(rom_q[31:16], e3d);
-    reg bad_now;
-    always @* begin
-        case (step_q)
-            3'd1:    bad_now = e0_bad || bad_mem_q;
-            3'd2:    bad_now = e2_bad;
-            3'd3:    bad_now = kind_q == ALB_KIND_COPY[1:0] && !place_ok(rom_q[15:0], e3_q);
-            3'd4:    bad_now = !lo_ok || (nd_q >= 3'd2 && !hi_ok);
-            3'd5:    bad_now = (nd_q >= 3'd3 && !lo_ok) || (nd_q == 3'd4 && !hi_ok);
-            default: bad_now = 1'b0;
-        endcase
-    end
+    wire [TB:0] e2_end  = {1'b0, start_q} + {1'b0, rom_q[TB-1:0]};
+    wire        bad_now;
+    albatross_entry_check #(.NB(NB), .ADDR_WIDTH(ADDR_WIDTH), .N_CHAN(N_CHAN), .TIME_BITS(TB),
+                            .MIN_LEN(MIN_LEN_I)) u_entry_check (
+        .step_i(step_q), .rom_i(rom_q), .ent0_i(ent_q == 8'd0), .smode_i(smode_q), .bad_mark_i(bad_mark),
+        .kind_i(kind_q), .nd_i(nd_q), .e3_i(e3_q), .start_i(start_q), .start_bad_i(start_bad_q),
+        .cycle_i(cycle_q), .prev_end_i(prev_end_q), .e2_end_i(e2_end), .bad_o(bad_now));
 
     // ------------------------------------------------------------ control
     wire cycle_end  = rel_q >= cycle_q - 1'b1;      // (late only if a slot overran: recover)
@@ -338,7 +274,7 @@ module albatross_sequencer #(
                       (state_q == ST_TRANSFER && slot_done_i);
     wire new_cycle  = (state_q == ST_CYCLE_END && (cycle_end || poll_hit)) ||
                       (entry_over && last_ent && cycle_end) ||       // the last slot ends at H1 - 1
-                      (state_q == ST_CHECK && p_last && crc_n == h3_q);
+                      (state_q == ST_CHECK && p_last && crc_ok);
     wire [TB:0] rel_next = {1'b0, rel_q} + 1'b1;
     wire        go_now   = state_q == ST_FETCH && step_q == 3'd6 && !bad_q && kind_q != ALB_KIND_IDLE[1:0];
 
@@ -352,17 +288,10 @@ module albatross_sequencer #(
             rerr_q    <= 16'd0;
             cycles_q  <= 16'd0;
             poll_q    <= 1'b0;
-            bg_data_q <= 1'b0;
-            bg_adr_q  <= {ROM_AW{1'b0}};
-            crc_q     <= CRC_SEED;
             sync_ok_q <= 1'b0;
         end else begin
             time_q    <= time_q + 32'd1;
             rel_q     <= rel_next[TB-1:0];
-            bg_data_q <= bg_issue;
-            bg_dadr_q <= bg_adr_q;
-            if (bg_issue) bg_adr_q <= (bg_adr_q == last_word) ? {ROM_AW{1'b0}} : bg_adr_q + 1'b1;
-            if (bg_data_q) crc_q <= p_last ? CRC_SEED : (p_end && !learn) ? sig_q[31:0] : crc_n;
             if (rerr_q != 16'hFFFF)
                 rerr_q <= rerr_q + {15'd0, mism_new | (entry_over && state_q == ST_FETCH && bad_q)};
             case (state_q)
@@ -389,7 +318,7 @@ module albatross_sequencer #(
                     end
                 end
                 ST_CHECK: if (p_last) begin
-                    if (crc_n != h3_q) begin                                    // else new_cycle
+                    if (!crc_ok) begin                                    // else new_cycle
                         state_q <= ST_ERROR;
                         err_q   <= 1'b1;
                     end
@@ -405,10 +334,10 @@ module albatross_sequencer #(
                     if (bad_now) bad_q <= 1'b1;
                     case (step_q)
                         3'd1: begin                                             // E0
-                            kind_q  <= e0_kind[1:0];
+                            kind_q  <= e0_kind;
                             sflag_q <= rom_q[EFLAG_SYNC];
-                            chan_q  <= e0_id[4:0];
-                            nd_q    <= e0_nd[2:0];
+                            chan_q  <= e0_id;
+                            nd_q    <= e0_nd;
                             w_q     <= e0_w;
                             e3_q    <= {2'b00, e0_w} + {1'b0, e0_w, 1'b0};
                         end

@@ -1,4 +1,5 @@
-# tools/mk/parts.mk -- the controller's parts (issue 12): albatross_sequencer,
+# tools/mk/parts.mk -- the controller's parts (issue 12): albatross_sequencer
+# (with its albatross_rom_check and albatross_entry_check),
 # albatross_bus_master, albatross_counters, each on its own (the engines have
 # tools/mk/endpoint.mk; rtl/albatross_controller.v composes them all).
 #   make test-parts-lint        Verilator -Wall, Icarus -g2005 and Yosys of each part
@@ -10,7 +11,7 @@
 # Outputs in build/parts/.
 
 PARTS_DIR := $(BUILD)/parts
-PARTS     := albatross_sequencer albatross_bus_master albatross_counters
+PARTS     := albatross_sequencer albatross_rom_check albatross_entry_check albatross_bus_master albatross_counters
 
 TESTS += parts-lint sequencer
 .PHONY: test-parts-lint test-sequencer
@@ -19,12 +20,14 @@ test-parts-lint: $(addprefix rtl/,$(addsuffix .v,$(PARTS))) $(RTL_INC)
 	@mkdir -p $(PARTS_DIR)
 	@tools/run_test.sh parts-lint bash -c 'set -e; for m in $(PARTS); do \
 	    verilator --lint-only -Wall -Irtl rtl/$$m.v; \
-	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/$$m.vvp rtl/$$m.v; \
-	    yosys -q -p "read_verilog -Irtl rtl/$$m.v; synth -top $$m" > $(PARTS_DIR)/$$m.yosys.log; \
+	    iverilog -g2005 -Irtl -y rtl -o $(PARTS_DIR)/$$m.vvp rtl/$$m.v; \
+	    sub=; if [ $$m = albatross_sequencer ]; then sub="rtl/albatross_rom_check.v rtl/albatross_entry_check.v"; fi; \
+	    yosys -q -p "read_verilog -Irtl rtl/$$m.v $$sub; synth -top $$m" > $(PARTS_DIR)/$$m.yosys.log; \
 	    echo "$$m: lint, Icarus and Yosys clean"; done'
 
-test-sequencer: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v $(RTL_INC)
+test-sequencer: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v rtl/albatross_rom_check.v rtl/albatross_entry_check.v $(RTL_INC)
 	@mkdir -p $(PARTS_DIR)/seq
 	@tools/run_test.sh sequencer bash -c 'set -e; $(PYTHON) tb/sequencer/make_rom.py $(PARTS_DIR)/seq/seq_rom.hex; \
-	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/seq/tb tb/sequencer/tb_sequencer.v rtl/albatross_sequencer.v; \
+	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/seq/tb tb/sequencer/tb_sequencer.v rtl/albatross_sequencer.v rtl/albatross_rom_check.v \
+	        rtl/albatross_entry_check.v; \
 	    cd $(PARTS_DIR)/seq && vvp -n tb | grep -v readmemh | tee tb.log; grep -q "^PASS" tb.log'

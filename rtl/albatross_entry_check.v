@@ -1,0 +1,88 @@
+// albatross_entry_check -- the field checks of albatross_sequencer's entry
+// fetch (docs/controller.md "Validation", issue 12 section 1): combinational,
+// one ROM word a clock.
+// Rules (bad_o high: the entry being fetched is invalid):
+//   * FETCH clock 1 (E0): kind above 3; the SYNC flag on other than entry 0
+//     of a sync-mode ROM with kind COPY; a non-IDLE entry with ND outside
+//     1..4 or a channel id >= N_CHAN; COPY with W = 0, TIME with W != 1,
+//     STATUS with W != 2*N_CHAN+1; or the background check's bad mark.
+//   * Clock 2 (E2, length): E1 did not fit (start_bad_i), the length does
+//     not fit in TIME_BITS or is below MIN_LEN, the slot ends after the
+//     cycle (e2_end_i > H1), or it starts before the previous slot's end.
+//   * Clocks 3..5 (E3..E5): a place (source of a COPY, destinations 1..ND)
+//     with board >= NB or base + 3*(W or W+1) past 2^ADDR_WIDTH.
+`default_nettype none
+
+module albatross_entry_check #(
+    parameter NB         = 4,    // boards on the system bus, 1..16
+    parameter ADDR_WIDTH = 10,   // word-address bits of a board RAM, 3..12
+    parameter N_CHAN     = 32,   // channel ids, 1..32
+    parameter TIME_BITS  = 16,   // bits of time within a cycle, 4..31
+    parameter MIN_LEN    = 17    // shortest valid slot in clocks (fetch and deadline margin)
+) (
+    input  wire [2:0]           step_i,       // FETCH clock 1..5 (others: no check)
+    input  wire [31:0]          rom_i,        // the ROM word of this clock
+    input  wire                 ent0_i,       // the entry is entry 0
+    input  wire                 smode_i,      // the ROM is position-synchronised
+    input  wire                 bad_mark_i,   // the background check marked the entry bad
+    input  wire [1:0]           kind_i,       // E0's kind (from clock 2 on)
+    input  wire [2:0]           nd_i,         // E0's ND (from clock 2 on)
+    input  wire [13:0]          e3_i,         // 3 * W
+    input  wire [TIME_BITS-1:0] start_i,      // E1
+    input  wire                 start_bad_i,  // E1 did not fit in TIME_BITS
+    input  wire [TIME_BITS-1:0] cycle_i,      // H1
+    input  wire [TIME_BITS:0]   prev_end_i,   // the previous valid slot's end
+    input  wire [TIME_BITS:0]   e2_end_i,     // start + length
+    output reg                  bad_o
+);
+
+`include "albatross_contract.vh"
+
+    localparam TB = TIME_BITS;
+    localparam integer W_STATUS_I = 2 * N_CHAN + 1;
+    localparam [11:0]  W_STATUS   = W_STATUS_I[11:0];   // W of a STATUS entry
+    localparam integer N_CHAN_I   = N_CHAN;
+    localparam [8:0]   N_CHAN_9   = N_CHAN_I[8:0];      // N_CHAN for a 9-bit compare
+    localparam integer MIN_LEN_I  = MIN_LEN;
+    localparam [TB:0]  MIN_LEN_T  = MIN_LEN_I[TB:0];    // MIN_LEN in time bits
+    localparam         EFLAG_SYNC = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_SYNC; // E0's SYNC flag
+
+    wire [3:0]  e0_kind = rom_i[ALB_ROM_E0_KIND_LSB +: 4];
+    wire [3:0]  e0_nd   = rom_i[ALB_ROM_E0_ND_LSB +: 4];
+    wire [7:0]  e0_id   = rom_i[ALB_ROM_E0_ID_LSB +: 8];
+    wire [11:0] e0_w    = rom_i[ALB_ROM_E0_W_LSB +: 12];
+    wire        e0_idle = e0_kind == ALB_KIND_IDLE;
+    wire        e0_bad  = e0_kind > 4'd3 ||
+                          (rom_i[EFLAG_SYNC] && !(ent0_i && smode_i && e0_kind == ALB_KIND_COPY)) ||
+                          (!e0_idle && (e0_nd == 4'd0 || e0_nd > 4'd4 || {1'b0, e0_id} >= N_CHAN_9)) ||
+                          (e0_kind == ALB_KIND_COPY && e0_w == 12'd0) ||
+                          (e0_kind == ALB_KIND_TIME && e0_w != 12'd1) ||
+                          (e0_kind == ALB_KIND_STATUS && e0_w != W_STATUS);
+    wire        e2_bad  = start_bad_i || rom_i[31:TB] != 0 || {1'b0, rom_i[TB-1:0]} < MIN_LEN_T ||
+                          e2_end_i > {1'b0, cycle_i} || {1'b0, start_i} < prev_end_i;
+    function place_ok;                 // board < NB and base + 3*stride < 2^ADDR_WIDTH
+        input [15:0] p;
+        input [13:0] s3;
+        reg [14:0] ext;
+        begin
+            ext = {3'd0, p[ALB_ROM_PLACE_BASE_LSB +: 12]} + {1'b0, s3};
+            place_ok = p[ALB_ROM_PLACE_BOARD_LSB +: 4] < NB && (ext >> ADDR_WIDTH) == 15'd0;
+        end
+    endfunction
+    wire [13:0] e3d    = e3_i + 14'd3;                               // 3 * (W + 1)
+    wire        lo_ok  = place_ok(rom_i[15:0], e3d);
+    wire        hi_ok  = place_ok(rom_i[31:16], e3d);
+    always @* begin
+        case (step_i)
+            3'd1:    bad_o = e0_bad || bad_mark_i;
+            3'd2:    bad_o = e2_bad;
+            3'd3:    bad_o = kind_i == ALB_KIND_COPY[1:0] && !place_ok(rom_i[15:0], e3_i);
+            3'd4:    bad_o = !lo_ok || (nd_i >= 3'd2 && !hi_ok);
+            3'd5:    bad_o = (nd_i >= 3'd3 && !lo_ok) || (nd_i == 3'd4 && !hi_ok);
+            default: bad_o = 1'b0;
+        endcase
+    end
+
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,119 @@
+// albatross_rom_check -- the schedule ROM's integrity check for
+// albatross_sequencer: the start-up CRC pass and the background re-check,
+// with the memory of prefix signatures (docs/controller.md "Execution",
+// issue 12 section 1).  The sequencer owns the ROM and its one read port;
+// this module says which word to read when the sequencer does not need the
+// port, and checks the words so read.
+// Rules:
+//   * CRC (rtl/albatross_contract.toml): c = CRC_SEED; for each word w in
+//     address order c = (c * x^32 + w) mod P, P = x^32 + CRC_POLY; over
+//     words 0 .. 4+8*NE-1 (last_word_i), H3 (word 3) read as 0.
+//   * Parts: part 0 is the header (words 0..3), part k+1 entry k (words
+//     4+8k .. 11+8k).  A part ends at a word whose address is 3 mod 8.
+//   * A read is issued in each clock with bg_on_i high and main_rom_i low
+//     (the sequencer's fetches come first), except once the start-up pass
+//     (learn_i) has read last_word_i; its data is checked in the next clock.
+//     The read address then steps on, wrapping after last_word_i.
+//   * Start-up (learn_i): the CRC runs over the whole image, and its value
+//     after each part is stored as that part's prefix signature (bad mark
+//     clear).  last_o is high with the check of last_word_i; crc_ok_o then
+//     says whether the CRC equals h3_i.
+//   * Background (learn_i low): the CRC is carried on from the stored
+//     prefix of the previous part; at the end of each part it is compared
+//     with that part's stored prefix.  A mismatch sets the part's bad mark;
+//     mism_o is high in the clock of the first mismatch of a part (counted
+//     once).  After last_word_i the CRC restarts from CRC_SEED.
+//   * One read port on the signatures: the background part, except in the
+//     clock fetch_i (no background read is issued then), which reads part
+//     fetch_part_i; bad_o is that part's bad mark in the next clock.
+//   * Reset (synchronous) clears the read address and the CRC; the
+//     signature memory is never reset (the start-up pass writes it).
+`default_nettype none
+
+module albatross_rom_check #(
+    parameter ROM_WORDS = 1024   // schedule ROM depth in 32-bit words, >= 12
+) (
+    input  wire                     clk_i,
+    input  wire                     rst_i,        // synchronous, active high
+    input  wire                     learn_i,      // the start-up pass: store the prefixes
+    input  wire                     bg_on_i,      // the check may read the ROM
+    input  wire                     main_rom_i,   // the sequencer reads the ROM this clock
+    input  wire [$clog2(ROM_WORDS)-1:0] last_word_i, // 4 + 8*NE - 1
+    output wire [$clog2(ROM_WORDS)-1:0] adr_o,    // ROM word to read when main_rom_i is low
+    input  wire [31:0]              rom_dat_i,    // the ROM word read in the previous clock
+    input  wire [31:0]              h3_i,         // the CRC the header states
+    input  wire                     fetch_i,      // clock S of a fetch: read fetch_ent_i's mark
+    /* verilator lint_off UNUSEDSIGNAL */
+    input  wire [7:0]               fetch_ent_i,  // the entry fetched (its part is entry + 1)
+    /* verilator lint_on UNUSEDSIGNAL */
+    output wire                     last_o,       // the check of last_word_i
+    output wire                     crc_ok_o,     // the CRC including this word equals h3_i
+    output wire                     mism_o,       // a part's first background mismatch
+    output wire                     bad_o         // the bad mark read for fetch_ent_i
+);
+
+`include "albatross_contract.vh"
+
+    localparam [31:0] CRC_POLY = ALB_ROM_CRC_POLY;  // P = x^32 + CRC_POLY
+    localparam [31:0] CRC_SEED = ALB_ROM_CRC_SEED;  // c before the first word
+    localparam NE_FIT  = (ROM_WORDS - 4) / 8;       // entries that fit
+    localparam NE_MAX  = (NE_FIT > 255) ? 255 : NE_FIT; // entries the header may state
+    localparam ROM_AW  = $clog2(ROM_WORDS);         // ROM word-address bits
+    localparam RG_BITS = $clog2(NE_MAX + 1);        // parts: 0 header, k+1 entry k
+
+    reg [ROM_AW-1:0]   bg_adr_q;      // next word to read
+    reg [ROM_AW-1:0]   bg_dadr_q;     // word in rom_dat_i when bg_data_q
+    reg                bg_data_q;
+    reg [31:0]         crc_q;
+
+    // ------------------------------------------------------------ memory (never reset)
+    reg [32:0] sig [0:NE_MAX];        // {part r found bad, prefix CRC after part r}
+    reg [32:0] sig_q;
+
+    function [31:0] crc_step;            // (c * x^32 + w) mod P
+        input [31:0] c;
+        input [31:0] w;
+        integer i;
+        reg [31:0] x;
+        begin
+            x = c;
+            for (i = 0; i < 32; i = i + 1) x = {x[30:0], 1'b0} ^ (x[31] ? CRC_POLY : 32'd0);
+            crc_step = x ^ w;
+        end
+    endfunction
+
+    wire               bg_issue = bg_on_i && !main_rom_i && !(learn_i && bg_adr_q > last_word_i);
+    wire [RG_BITS-1:0] part     = bg_dadr_q[RG_BITS+2:3];            // 0 header, k+1 entry k
+    wire               p_end    = bg_data_q && bg_dadr_q[2:0] == 3'b011;
+    wire               p_last   = bg_data_q && bg_dadr_q == last_word_i;
+    wire [31:0]        crc_n    = crc_step(crc_q, bg_dadr_q == 3 ? 32'd0 : rom_dat_i);
+    wire [RG_BITS-1:0] fetch_part = fetch_ent_i[RG_BITS-1:0] + 1'b1;
+    wire               mism     = p_end && !learn_i && crc_n != sig_q[31:0];
+
+    always @(posedge clk_i) begin
+        if ((p_end && learn_i) || mism) sig[part] <= learn_i ? {1'b0, crc_n} : {1'b1, sig_q[31:0]};
+        sig_q <= sig[fetch_i ? fetch_part : bg_adr_q[RG_BITS+2:3]];
+    end
+
+    always @(posedge clk_i) begin
+        if (rst_i) begin
+            bg_data_q <= 1'b0;
+            bg_adr_q  <= {ROM_AW{1'b0}};
+            crc_q     <= CRC_SEED;
+        end else begin
+            bg_data_q <= bg_issue;
+            bg_dadr_q <= bg_adr_q;
+            if (bg_issue) bg_adr_q <= (bg_adr_q == last_word_i) ? {ROM_AW{1'b0}} : bg_adr_q + 1'b1;
+            if (bg_data_q) crc_q <= p_last ? CRC_SEED : (p_end && !learn_i) ? sig_q[31:0] : crc_n;
+        end
+    end
+
+    assign adr_o    = bg_adr_q;
+    assign last_o   = p_last;
+    assign crc_ok_o = crc_n == h3_i;
+    assign mism_o   = mism && !sig_q[32];
+    assign bad_o    = sig_q[32];
+
+endmodule
+
+`default_nettype wire
