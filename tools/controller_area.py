@@ -168,7 +168,7 @@ def main():
             line += f"{row.get('luts', 'ERROR'):>12}" + (f"{row['over_picorv32']:>8.2f}" if "over_picorv32" in row
                                                         else f"{'-':>8}")
         print(line)
-    write_json(a.report, {"picorv32_luts": pico, "rows": rows, "goal_over_picorv32": 0.25,
+    write_json(a.report, {"picorv32_luts": pico, "rows": rows, "goal_over_picorv32": 0.35, "aim_over_picorv32": 0.25,
                           "note": "LUTs: SB_LUT4 / LUT4 / LUT1-6; variants are tie-offs of "
                                   "the controller's files (tools/controller_area.py), measurements only"})
     print(f"controller_area: {a.report}")
