@@ -382,6 +382,10 @@ int main(int argc, char **argv)
     std::vector<TransferMeter> meters;
     for (const PlanChannel &c : plan.channels)
         if (c.copy() && c.dests.size() == 1) { TransferMeter t; t.c = &c; meters.push_back(t); }
+    // A CPU whose C code loops without a RAM access never hands control back
+    // to this loop, so no bound in simulated cycles can stop it: the wall-clock
+    // hand-off watchdog ends the run with a message naming the CPU.
+    SimCpu::arm_handoff_watchdog(10);
     FaultModel faults(o.fault_rate, o.burst, o.seed ^ 0xFA17ull);
     uint64_t wait[SystemSim::kBoards] = {};
     const uint64_t start = sim.cycle(), report_every = o.cycles / 10;

@@ -115,3 +115,14 @@ test-system-negative-$(call neg_field,$(1),1): $(SYS_DIR)/$(call neg_field,$(1),
 	    --expect-caught-by $(call neg_field,$(1),3) $(subst $(comma), ,$(call neg_field,$(1),4))
 endef
 $(foreach n,$(SYS_NEGATIVE),$(eval $(call sys_negative,$(n))))
+
+# The wall-clock hand-off watchdog: a controller that zeroes ReadLocked makes a
+# consumer's driver loop without a RAM access; the run must end with the
+# watchdog's message (exit 3), not hang.
+TESTS += system-negative-watchdog
+test-system-negative-watchdog: $(SYS_DIR)/mutant-zero_readlocked/tb_system $(SYS_RIGID)/tb_plan.txt
+	@tools/run_test.sh system-negative-watchdog bash -c '$< --plan $(SYS_RIGID) --seed $(SEED) --cycles 300000 \
+	    --label system-negative-watchdog > $(SYS_DIR)/watchdog.log 2>&1; rc=$$?; tail -1 $(SYS_DIR)/watchdog.log; \
+	    if [ $$rc = 3 ] && grep -q "tb: watchdog: simulated CPU" $(SYS_DIR)/watchdog.log; then \
+	    echo "the hand-off watchdog ended the run, as expected"; \
+	    else echo "expected the hand-off watchdog to end the run (exit 3), got exit $$rc"; exit 1; fi'
