@@ -32,6 +32,7 @@
 #include "Vimport_pico.h"
 #include "verilated.h"
 #include "report.h"
+#include "../bench_options.h"
 #include "../channel_watch.h"
 
 static const int kWords = 4, kBase = 0;
@@ -39,23 +40,13 @@ static const uint32_t kStartFlagWord = 0x100 / 4, kStartMagic = 0x5354;
 
 int main(int argc, char **argv)
 {
-    uint64_t max_cycles = 20000000, seed = 1, values = 2000;
-    std::string report, label = "endpoint-import", expect;
-    for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--max-cycles") && i + 1 < argc) max_cycles = std::strtoull(argv[++i], 0, 0);
-        else if (!std::strcmp(argv[i], "--seed") && i + 1 < argc) seed = std::strtoull(argv[++i], 0, 0);
-        else if (!std::strcmp(argv[i], "--values") && i + 1 < argc) values = std::strtoull(argv[++i], 0, 0);
-        else if (!std::strcmp(argv[i], "--report") && i + 1 < argc) report = argv[++i];
-        else if (!std::strcmp(argv[i], "--label") && i + 1 < argc) label = argv[++i];
-        else if (!std::strcmp(argv[i], "--expect-checker") && i + 1 < argc) expect = argv[++i];
-        else if (argv[i][0] != '+') { std::fprintf(stderr, "unknown argument %s\n", argv[i]); return 2; }
-    }
-    int expect_kind = -1;
-    if (!expect.empty()) {
-        for (int k = 0; k < ProtocolChecker::KINDS; ++k)
-            if (expect == ProtocolChecker::kind_name(k)) expect_kind = k;
-        if (expect_kind < 0) { std::fprintf(stderr, "unknown checker %s\n", expect.c_str()); return 2; }
-    }
+    BenchOptions opt;
+    opt.values = 2000;
+    opt.label = "endpoint-import";
+    if (!opt.parse(argc, argv)) return 2;
+    const uint64_t max_cycles = opt.max_cycles, seed = opt.seed, values = opt.values;
+    const std::string &report = opt.report, &label = opt.label, &expect = opt.expect;
+    const int expect_kind = opt.expect_kind;
     Verilated::commandArgs(argc, argv);
     Vimport_pico m;
 
