@@ -1,6 +1,6 @@
 # tools/mk/controller.mk -- smoke test of albatross_controller on the multi-board test
 # top tb/system/tb_system.v: 4 boards (soc/albatross_system.v), albatross_bus, bus_fault_injector
-# (tb/controller/test_controller.cpp).  Outputs in build/ctrl/.
+# (tb/controller/test_controller.cpp, ctrl_bench.h/.cpp, ctrl_scenarios_*.cpp).  Outputs in build/ctrl/.
 #   make test-controller-smoke            the self-checking run (all scenarios)
 #   make test-controller-smoke-negative   the timing checker, given a formula one
 #                                         clock off, must fail (exit 65: timing only)
@@ -9,15 +9,17 @@
 
 CTRL_DIR := $(BUILD)/ctrl
 CTRL_BIN := $(CTRL_DIR)/obj/Vtb_system
+CTRL_CPP := tb/controller/test_controller.cpp tb/controller/ctrl_bench.cpp \
+            tb/controller/ctrl_scenarios_data.cpp tb/controller/ctrl_scenarios_faults.cpp
 CTRL_SRC := tb/system/tb_system.v soc/albatross_system.v tb/common/bus_fault_injector.v $(CTRL_RTL) \
-            rtl/albatross_bus.v rtl/albatross_dpram.v tb/controller/test_controller.cpp \
+            rtl/albatross_bus.v rtl/albatross_dpram.v $(CTRL_CPP) tb/controller/ctrl_bench.h \
             $(RTL_INC) tb/common/albatross_contract.h
 
 $(CTRL_BIN): $(CTRL_SRC) tools/mk/controller.mk
 	@mkdir -p $(CTRL_DIR)
 	verilator --cc --exe --build -j 2 -O3 -Wall --top-module tb_system \
 	    -GROM_FILE='"ctrl_rom.hex"' -CFLAGS "-O2 -std=c++17 -Wall -Wextra $(TB_COMMON_INC)" \
-	    --Mdir $(CTRL_DIR)/obj $(VLIB) tb/system/tb_system.v $(abspath tb/controller/test_controller.cpp) \
+	    --Mdir $(CTRL_DIR)/obj $(VLIB) tb/system/tb_system.v $(abspath $(CTRL_CPP)) \
 	    > $(CTRL_DIR)/build.log 2>&1 || { cat $(CTRL_DIR)/build.log; exit 1; }
 
 TESTS += controller-smoke controller-smoke-negative

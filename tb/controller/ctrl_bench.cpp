@@ -1,0 +1,116 @@
+// ctrl_bench.cpp -- the shared helpers of test_controller declared in ctrl_bench.h:
+// the checks, the schedule ROM builder and the CPU-side helpers.
+#include "ctrl_bench.h"
+
+// ------------------------------------------------------------------ checks
+unsigned g_failed_groups;
+unsigned g_checks, g_fails;
+bool g_inject_timing;
+int g_argc;
+char **g_argv;
+
+void check(unsigned group, bool ok, const char *fmt, ...) {
+    ++g_checks;
+    if (!ok) {
+        ++g_fails;
+        g_failed_groups |= group;
+    }
+    {
+        va_list ap;
+        va_start(ap, fmt);
+        std::printf("%s ", ok ? "ok  " : "FAIL");
+        std::vprintf(fmt, ap);
+        std::printf("\n");
+        va_end(ap);
+    }
+}
+
+// ------------------------------------------------------------------ schedule ROM
+size_t rom_addr(size_t k, unsigned j) { return C::ROM_HEADER_WORDS + C::ROM_ENTRY_WORDS * k + j; }
+
+// The CRC word of a ROM of ne entries.
+void reseal(std::vector<uint32_t> &r, size_t ne) {
+    r[C::ROM_CRC_WORD] = C::rom_crc(&r[0], (int)rom_addr(ne, 0));
+}
+
+// hflags: the H0 flags field (C::HFLAG_SYNC_MODE: position-synchronised).
+std::vector<uint32_t> build_rom(uint32_t h1, unsigned hflags, const std::vector<Entry> &es) {
+    std::vector<uint32_t> r(ROMW, 0);
+    r[C::H0_MAGIC.word] |= C::H0_MAGIC.put(C::ROM_MAGIC);
+    r[C::H0_NE.word] |= C::H0_NE.put((uint32_t)es.size());
+    r[C::H0_FLAGS.word] |= C::H0_FLAGS.put(hflags);
+    r[C::H1_CYCLE.word] |= C::H1_CYCLE.put(h1);
+    for (size_t k = 0; k < es.size(); ++k) {
+        const Entry &e = es[k];
+        uint32_t *w = &r[rom_addr(k, 0)];
+        w[C::E0_KIND.word] |= C::E0_KIND.put(e.kind);
+        w[C::E0_FLAGS.word] |= C::E0_FLAGS.put(e.flags);
+        w[C::E0_ID.word] |= C::E0_ID.put(e.chan);
+        w[C::E0_ND.word] |= C::E0_ND.put((uint32_t)e.dst.size());
+        w[C::E0_W.word] |= C::E0_W.put(e.w);
+        w[C::E1_START.word] |= C::E1_START.put(e.start);
+        w[C::E2_LENGTH.word] |= C::E2_LENGTH.put(e.len);
+        w[C::E3_SRC.word] |= C::E3_SRC.put(C::place(e.sbrd, e.sbase));
+        for (size_t i = 0; i < e.dst.size(); ++i)
+            w[C::DST[i].word] |= C::DST[i].put(C::place(e.dst[i].brd, e.dst[i].base));
+    }
+    reseal(r, es.size());
+    return r;
+}
+
+void write_rom(const std::vector<uint32_t> &r) {
+    FILE *f = std::fopen(ROM_PATH, "w");
+    if (!f) {
+        std::perror(ROM_PATH);
+        std::exit(2);
+    }
+    for (uint32_t v : r) std::fprintf(f, "%08x\n", v);
+    std::fclose(f);
+}
+
+std::vector<Entry> schedule() {
+    return {
+        {COPY, 0, 0, W_COPY, S_COPY, L_COPY, 0, SRC_BASE, {{1, DST_BASE}}},
+        {TIME, 0, 1, 1, S_TIME, L_TIME, 0, 0, {{0, TIME_BASE}, {1, TIME_BASE}}},
+        {STATUS, 0, 2, W_STAT, S_STAT, L_STAT, 0, 0, {{1, STAT_BASE}}},
+    };
+}
+
+// ------------------------------------------------------------------ the CPUs' three-buffer protocol
+unsigned pick(unsigned a, unsigned r) {
+    for (unsigned b = 3; b >= 1; --b)
+        if (b != a && b != r) return b;
+    return 1;
+}
+
+std::vector<uint32_t> value(unsigned n) {
+    return {0x10000000u * (n + 1) + 0x111u, 0xC0DE0000u + n, 0x5A5A0000u ^ (n * 0x1234u)};
+}
+
+uint32_t ba(unsigned brd, unsigned word) { return brd << AW | word; }
+
+// Exact fault-free timing of the attempts of one slot (all acked, back to back).
+void check_slot_timing(const char *what, const std::vector<Attempt> &v, uint64_t S, size_t expect_n) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%s: number of accesses", what);
+    CHECK_EQ(G_TIMING, buf, expect_n, v.size());
+    uint64_t p = S + F;
+    uint64_t phi = (p % 2 == 0) ? 1 : 0;  // tb_system: port B is served at the end of odd clocks
+    uint64_t skew = g_inject_timing ? 1 : 0;
+    for (size_t k = 1; k <= v.size(); ++k) {
+        const Attempt &a = v[k - 1];
+        uint64_t exp = S + F + 2 * k + phi + skew;
+        std::snprintf(buf, sizeof buf, "%s: access %zu (adr 0x%04x%s) ack sampled at edge S+%d+2*%zu+phi",
+                      what, k, a.adr, a.we ? " store" : " load", F, k);
+        check(G_TIMING, a.result == 1 && a.end + 1 == exp,
+              "%s: expected %" PRIu64 ", got %" PRIu64 "%s", buf, exp, a.end + 1,
+              a.result == 1 ? "" : " (not acked)");
+    }
+    if (!v.empty()) {
+        std::snprintf(buf, sizeof buf, "%s: sample_offset (first Actual load done) = FETCH_CYCLES+2+phi", what);
+        CHECK_EQ(G_TIMING, buf, F + 2 + phi + skew, v.front().end + 1 - S);
+        std::snprintf(buf, sizeof buf, "%s: pub_offset (last access done) = FETCH_CYCLES+2A+phi, A=%zu", what,
+                      expect_n);
+        CHECK_EQ(G_TIMING, buf, F + 2 * expect_n + phi + skew, v.back().end + 1 - S);
+    }
+}

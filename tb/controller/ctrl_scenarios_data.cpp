@@ -1,0 +1,158 @@
+// ctrl_scenarios_data.cpp -- test_controller scenarios basic (values, exact timing,
+// access sequence) and corrupt (invalid entry, flipped ROM bits).
+#include "ctrl_bench.h"
+
+void scenario_basic() {
+    std::printf("== basic: delivery, exact COPY timing, TIME, STATUS\n");
+    std::vector<Entry> es = schedule();
+    write_rom(build_rom(H1, 0, es));
+    Sim s;
+    Setup u(s);
+    const uint64_t T0 = t0_of((int)es.size());
+    u.prod.publish(s, value(0));
+    s.run_until(T0 + TAIL);  // cycle 0
+
+    CHECK_EQ(G_DATA, "error_o after a valid header", 0, s.top->error_o);
+    CHECK_EQ(G_ROM, "rom_errors_o with a valid ROM", 0, s.top->rom_errors_o);
+    std::vector<Attempt> c0 = s.attempts(T0, T0 + L_COPY);
+    check(G_TIMING, !c0.empty() && c0[0].start == T0 + S_COPY + F,
+          "cycle 0 COPY: first access on the bus at cycle start + E1 + FETCH_CYCLES: expected %" PRIu64
+          ", got %" PRIu64, T0 + S_COPY + F, c0.empty() ? 0 : c0[0].start);
+    // first transfer after reset: the destination Actual copy is unknown, read back
+    check_slot_timing("cycle 0 COPY (new, Actual copy unknown)", c0, T0 + S_COPY, 3 + W_COPY + 1 * (W_COPY + 3) + 1);
+
+    std::vector<uint32_t> got;
+    bool isnew = u.cons.import(s, got);
+    CHECK_EQ(G_DATA, "cycle 0: consumer Import on board 1 returns New", 1, isnew);
+    for (unsigned i = 0; i < W_COPY; ++i) {
+        char b[64];
+        std::snprintf(b, sizeof b, "cycle 0: value word %u", i);
+        CHECK_HEX(G_DATA, b, value(0)[i], got[i]);
+    }
+    if (c0.size() >= 3) CHECK_EQ(G_DATA, "cycle 0: taken_at = time_o in the ack clock of the final Actual load",
+                                 c0[2].end, got[W_COPY]);
+    CHECK_EQ(G_DATA, "cycle 0: destination Actual = last buffer neither Actual(1) nor ReadLocked(1)", 3,
+             s.rd(1, DST_BASE) & 0xFF);
+
+    // cycle 1: steady state, a new value
+    u.prod.publish(s, value(1));
+    const uint64_t C1 = T0 + H1;
+    s.run_until(C1 + TAIL);
+    std::vector<Attempt> c1 = s.attempts(C1, C1 + L_COPY);
+    const size_t A = 3 + W_COPY + 1 * (W_COPY + 3);
+    check_slot_timing("cycle 1 COPY (new, steady state)", c1, C1 + S_COPY, A);
+    if (c1.size() == A) {
+        // the access sequence: Import, Export control, streamed words, taken_at, Actual
+        unsigned sb = u.prod.actual, db = pick(3, 3);   // dest Actual copy 3, ReadLocked 3 (consumer)
+        std::vector<std::pair<bool, uint32_t>> exp = {
+            {false, ba(0, SRC_BASE)}, {true, ba(0, SRC_BASE)}, {false, ba(0, SRC_BASE)},
+            {false, ba(1, DST_BASE)}};
+        for (unsigned i = 0; i < W_COPY; ++i) {
+            exp.push_back({false, ba(0, SRC_BASE + 1 + (sb - 1) * W_COPY + i)});
+            exp.push_back({true, ba(1, DST_BASE + 1 + (db - 1) * (W_COPY + 1) + i)});
+        }
+        exp.push_back({true, ba(1, DST_BASE + 1 + (db - 1) * (W_COPY + 1) + W_COPY)});
+        exp.push_back({true, ba(1, DST_BASE)});
+        for (size_t k = 0; k < A; ++k) {
+            char b[96];
+            std::snprintf(b, sizeof b, "cycle 1 COPY access %zu: {we, board, word}", k + 1);
+            CHECK_HEX(G_DATA, b, (uint64_t)exp[k].first << 16 | exp[k].second,
+                      (uint64_t)c1[k].we << 16 | c1[k].adr);
+        }
+    }
+    isnew = u.cons.import(s, got);
+    CHECK_EQ(G_DATA, "cycle 1: consumer Import returns New", 1, isnew);
+    for (unsigned i = 0; i < W_COPY; ++i) {
+        char b[64];
+        std::snprintf(b, sizeof b, "cycle 1: value word %u", i);
+        CHECK_HEX(G_DATA, b, value(1)[i], got[i]);
+    }
+    if (c1.size() >= 3) CHECK_EQ(G_DATA, "cycle 1: taken_at", c1[2].end, got[W_COPY]);
+    isnew = u.cons.import(s, got);
+    CHECK_EQ(G_DATA, "cycle 1: a second Import returns Old", 0, isnew);
+
+    // TIME: value = taken_at = time at the slot start, on both boards
+    for (int b = 0; b < 2; ++b) {
+        Consumer &c = b ? u.time1 : u.time0;
+        isnew = c.import(s, got);
+        char m[96];
+        std::snprintf(m, sizeof m, "cycle 1 TIME on board %d: Import New", b);
+        CHECK_EQ(G_DATA, m, 1, isnew);
+        std::snprintf(m, sizeof m, "cycle 1 TIME on board %d: value = slot start", b);
+        CHECK_EQ(G_DATA, m, C1 + S_TIME, got[0]);
+        std::snprintf(m, sizeof m, "cycle 1 TIME on board %d: taken_at = slot start", b);
+        CHECK_EQ(G_DATA, m, C1 + S_TIME, got[1]);
+    }
+    std::vector<Attempt> t1 = s.attempts(C1 + S_TIME, C1 + S_TIME + L_TIME);
+    check_slot_timing("cycle 1 TIME (2 destinations)", t1, C1 + S_TIME, 2 * (1 + 3));
+
+    // STATUS: {rom_errors, cycles}, then {transfers, retries}, {abandoned, corrupt} per channel
+    isnew = u.stat.import(s, got);
+    CHECK_EQ(G_DATA, "cycle 1 STATUS: Import New", 1, isnew);
+    CHECK_HEX(G_DATA, "cycle 1 STATUS word 0 {rom_errors, cycles}", 0u << 16 | 2u, got[0]);
+    CHECK_HEX(G_DATA, "cycle 1 STATUS channel 0 {transfers, retries}", 2u << 16 | 0u, got[1]);
+    CHECK_HEX(G_DATA, "cycle 1 STATUS channel 0 {abandoned, corrupt}", 0u, got[2]);
+    CHECK_HEX(G_DATA, "cycle 1 STATUS channel 1 {transfers, retries}", 4u << 16 | 0u, got[3]);
+    CHECK_HEX(G_DATA, "cycle 1 STATUS channel 2 {transfers, retries}", 1u << 16 | 0u, got[5]);
+    CHECK_EQ(G_DATA, "cycle 1 STATUS taken_at = slot start", C1 + S_STAT, got[W_STAT]);
+    std::vector<Attempt> st = s.attempts(C1 + S_STAT, C1 + S_STAT + L_STAT);
+    check_slot_timing("cycle 1 STATUS", st, C1 + S_STAT, W_STAT + 3);
+}
+
+void scenario_corrupt() {
+    std::printf("== corrupt: an invalid entry is flagged and skipped; a flipped ROM bit stops the controller\n");
+    std::vector<Entry> es = schedule();
+    std::vector<uint32_t> rom = build_rom(H1, 0, es);
+    rom[rom_addr(1, C::E0_W.word)] ^= C::E0_W.put(3);   // entry 1 (TIME): W = 2, CRC resealed
+    reseal(rom, es.size());
+    write_rom(rom);
+    {
+        Sim s;
+        Setup u(s);
+        const uint64_t T0 = t0_of((int)es.size());
+        u.prod.publish(s, value(0));
+        for (unsigned c = 0; c < 3; ++c) {
+            uint64_t C = T0 + c * H1;
+            s.run_until(C + TAIL);
+            char m[128];
+            std::snprintf(m, sizeof m, "cycle %u: rom_errors_o counts the bad entry once per cycle", c);
+            CHECK_EQ(G_ROM, m, c + 1, s.top->rom_errors_o);
+            std::vector<Attempt> cp = s.attempts(C + S_COPY, C + S_COPY + L_COPY);
+            std::snprintf(m, sizeof m, "cycle %u: COPY first access at its slot start + FETCH_CYCLES", c);
+            CHECK_EQ(G_ROM, m, C + S_COPY + F, cp.empty() ? 0 : cp[0].start);
+            std::vector<Attempt> tm = s.attempts(C + S_TIME, C + S_TIME + L_TIME);
+            std::snprintf(m, sizeof m, "cycle %u: the skipped TIME entry makes no access", c);
+            CHECK_EQ(G_ROM, m, 0, tm.size());
+            std::vector<Attempt> st = s.attempts(C + S_STAT, C + S_STAT + L_STAT);
+            std::snprintf(m, sizeof m, "cycle %u: STATUS first access at its slot start + FETCH_CYCLES", c);
+            CHECK_EQ(G_ROM, m, C + S_STAT + F, st.empty() ? 0 : st[0].start);
+            std::vector<uint32_t> got;
+            bool isnew = u.cons.import(s, got);
+            std::snprintf(m, sizeof m, "cycle %u: COPY still delivers (New, word 0)", c);
+            check(G_ROM, isnew && got[0] == value(c)[0], "%s: expected New 0x%08x, got %s 0x%08x", m,
+                  value(c)[0], isnew ? "New" : "Old", got[0]);
+            isnew = u.stat.import(s, got);
+            std::snprintf(m, sizeof m, "cycle %u: STATUS word 0 {rom_errors, cycles}", c);
+            CHECK_HEX(G_ROM, m, (c + 1) << 16 | (c + 1), got[0]);
+            u.prod.publish(s, value(c + 1));
+        }
+        size_t n0 = s.att.size();
+        s.run_until(s.now + 3 * H1);
+        check(G_ROM, s.att.size() - n0 >= 3 * (W_STAT + 3 + 1),
+              "no hang: 3 more cycles of COPY (1 access) and STATUS (%u): expected >= %zu accesses, got %zu",
+              W_STAT + 3, (size_t)(3 * (W_STAT + 3 + 1)), s.att.size() - n0);
+    }
+    // a flipped bit in the header, or in an entry: the CRC fails, error_o, and the bus stays idle
+    for (size_t word : {(size_t)C::H1_CYCLE.word, rom_addr(1, C::E1_START.word), rom_addr(2, 7)}) {
+        rom = build_rom(H1, 0, es);
+        rom[word] ^= 1u << 5;   // the CRC (H3) no longer matches
+        write_rom(rom);
+        Sim s;
+        s.run_until(4 * H1);
+        char m[96];
+        std::snprintf(m, sizeof m, "bit flipped in ROM word %zu: error_o", word);
+        CHECK_EQ(G_ROM, m, 1, s.top->error_o);
+        std::snprintf(m, sizeof m, "bit flipped in ROM word %zu: bus accesses", word);
+        CHECK_EQ(G_ROM, m, 0, s.att.size() + (s.in_att ? 1 : 0));
+    }
+}
