@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # expect_fail.sh BINARY... -- the checker's own negative test.  Each BINARY is
-# tb/unit/test_driver.c built against a deliberately broken port (see
-# tb/unit/port/alb_port_impl.h, UNIT_BROKEN_PORT).  Each must end with exit
+# the unit tests (tb/unit/*.c, see DRV_UNIT_SRC in tools/mk/driver.mk) built
+# against a deliberately broken port (see tb/unit/port/alb_port_impl.h,
+# UNIT_BROKEN_PORT).  Each must end with exit
 # status 1 and a last line "driver-unit: N checks, F failed" with F > 0
 # (a crash or a clean pass both count as "not caught").  Exits non-zero
 # unless every broken port was caught.

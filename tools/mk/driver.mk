@@ -15,8 +15,10 @@ DRV_RV_LEVELS := Os O2
 DRV_RV_OBJS   := $(foreach O,$(DRV_RV_LEVELS),$(BUILD)/rv32i/albatross-$(O).o)
 DRV_HOST_OBJ  := $(BUILD)/host/albatross.o
 DRV_UNIT      := $(BUILD)/unit
-DRV_UNIT_DEPS := tb/unit/test_driver.c tb/unit/port/alb_port_impl.h $(DRV_SRC) \
-                 $(wildcard c-driver/*.h)
+DRV_UNIT_SRC  := tb/unit/test_driver.c tb/unit/test_transfer.c tb/unit/test_errors.c \
+                 tb/unit/unit_helpers.c
+DRV_UNIT_DEPS := $(DRV_UNIT_SRC) tb/unit/unit_test.h tb/unit/port/alb_port_impl.h \
+                 $(DRV_SRC) $(wildcard c-driver/*.h)
 DRV_BROKEN    := 1 2
 # Any rv32i program built under build/ becomes a $readmemh image of 32-bit
 # words (the soft-core boards' program RAM) with the same name, .hex.
@@ -35,13 +37,13 @@ BENCHES += driver-size
 $(DRV_UNIT)/test_driver: $(DRV_UNIT_DEPS)
 	@mkdir -p $(@D)
 	$(DRV_HOST_CC) $(DRV_CFLAGS) -O2 -Itb/unit/port -Ic-driver -o $@ \
-	    tb/unit/test_driver.c $(DRV_SRC)
+	    $(DRV_UNIT_SRC) $(DRV_SRC)
 
 # The same tests against a deliberately broken port (UNIT_BROKEN_PORT=N).
 $(DRV_UNIT)/test_driver_broken%: $(DRV_UNIT_DEPS)
 	@mkdir -p $(@D)
 	$(DRV_HOST_CC) $(DRV_CFLAGS) -O2 -DUNIT_BROKEN_PORT=$* -Itb/unit/port -Ic-driver \
-	    -o $@ tb/unit/test_driver.c $(DRV_SRC)
+	    -o $@ $(DRV_UNIT_SRC) $(DRV_SRC)
 
 test-driver-unit: $(DRV_UNIT)/test_driver
 	@tools/run_test.sh driver-unit $<

@@ -7,7 +7,7 @@
  * fences are logged too but are not RAM accesses.  An access outside the
  * array, outside the window of the channel under test, or a misaligned word
  * access is a trap: it is counted and described, never performed (a trapped
- * load returns 0).  All state lives in unit_port, defined in test_driver.c.
+ * load returns 0).  All state lives in unit_port, defined in unit_helpers.c.
  *
  * Checker self-test (driver-unit-negative): compiled with -DUNIT_BROKEN_PORT=N
  * the port is deliberately broken and the test program must fail:
@@ -52,13 +52,13 @@ struct unit_port {
 
 extern struct unit_port unit_port;
 
-/* Defined in test_driver.c (not inline: it formats a message). */
+/* Defined in unit_helpers.c (not inline: it formats a message). */
 void unit_trap(enum unit_kind kind, uintptr_t addr, const char *why);
 
 /* Watchdog: a driver call that loops for ever on valid control bytes never
  * returns to the test.  More RAM accesses than this since the last reset of
  * the port (a call takes a few, every test under 1000 between resets) end the
- * program: unit_runaway (test_driver.c) names the test and exits with 1. */
+ * program: unit_runaway (unit_helpers.c) names the test and exits with 1. */
 #ifndef UNIT_MAX_ACCESSES
 #define UNIT_MAX_ACCESSES 1000000ul
 #endif
