@@ -1,0 +1,169 @@
+// board_program.cpp -- see board_program.h.
+#include "board_program.h"
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include "alb_port.h"   // the faulty producer writes a control byte itself
+
+namespace tbsys {
+
+SystemSim *g_sim = nullptr;
+const Options *g_opts = nullptr;
+bool g_corrupted = false;
+SystemChecker *g_chk = nullptr;
+const Plan *g_plan = nullptr;
+StatusSeen g_status;
+
+namespace {
+uint64_t now() { return g_sim->cycle(); }
+
+bool parse_num(const char *s, double &out)
+{
+    char *end = nullptr;
+    out = std::strtod(s, &end);
+    return *s && !*end;
+}
+
+int usage(const char *why)
+{
+    std::fprintf(stderr, "tb_system: %s\n"
+                 "usage: tb_system --plan DIR [--cycles N] [--seed S] [--fault-rate R] [--burst L]\n"
+                 "                 [--dead-board B --dead-at C] [--corrupt-entry K] [--rom FILE]\n"
+                 "                 [--report FILE] [--label NAME] [--latency-scale F]\n"
+                 "                 [--expect-caught-by CHECKER]...\n", why);
+    return 2;
+}
+}  // namespace
+
+void board_program(SimCpu &cpu)
+{
+    BoardCtx &b = *static_cast<BoardCtx *>(cpu.context);
+    alignas(8) uint8_t buf[1100];
+    for (Role &r : b.roles) {
+        const PlanChannel &c = g_plan->channels[r.chan];
+        if (r.dest < 0) {
+            alb_channel_setup(&r.ch, c.src_base, c.size);
+            if (alb_producer_attach(&r.ch) != ALB_OK) ++b.attach_errors;
+        } else {
+            alb_channel_setup(&r.ch, c.dests[r.dest].base, c.dest_size());
+            if (alb_consumer_attach(&r.ch) != ALB_OK) ++b.attach_errors;
+        }
+    }
+    for (;;) {
+        bool called = false;
+        for (Role &r : b.roles) {
+            const PlanChannel &c = g_plan->channels[r.chan];
+            called = called || r.dest >= 0 || now() >= r.next_due;
+            if (r.dest < 0) {
+                if (!g_corrupted && r.chan == g_opts->corrupt_channel && now() >= g_opts->corrupt_at) {
+                    g_corrupted = true;   // a faulty producer: an out-of-range Actual,
+                    alb_wr8(c.src_base + ALB_OFF_ACTUAL, 7);   // left there for two cycles
+                    r.next_due = now() + 2 * g_plan->cycle;
+                }
+                if (now() < r.next_due) continue;
+                ++r.seq;
+                channel_value(c.id, r.seq, buf, c.size);
+                int rc = alb_export(&r.ch, buf);
+                if (rc == ALB_OK) g_chk->exported(r.chan, r.seq);
+                r.next_due = now() + r.interval_lo + b.rng() % (r.interval_hi - r.interval_lo + 1);
+            } else {
+                uint64_t begin = now();
+                int rc = alb_import(&r.ch, buf);
+                if (r.status_channel && rc == ALB_NEW) {
+                    uint32_t w[1 + 2 * 32] = {};
+                    std::memcpy(w, buf, std::min<size_t>(sizeof w, 4 * c.words));
+                    uint64_t t = 0, re = 0, ab = 0, co = 0;
+                    for (uint32_t k = 0; 1 + 2 * k + 1 < c.words; ++k) {
+                        t += w[1 + 2 * k] >> 16;
+                        re += w[1 + 2 * k] & 0xFFFFu;
+                        ab += w[2 + 2 * k] >> 16;
+                        co += w[2 + 2 * k] & 0xFFFFu;
+                    }
+                    ++g_status.imports;
+                    g_status.transfers = std::max(g_status.transfers, t);
+                    g_status.retries = std::max(g_status.retries, re);
+                    g_status.abandoned = std::max(g_status.abandoned, ab);
+                    g_status.corrupt = std::max(g_status.corrupt, co);
+                    g_status.rom_errors = std::max<uint64_t>(g_status.rom_errors, w[0] >> 16);
+                }
+                if (r.time_channel && rc == ALB_NEW) {
+                    std::memcpy(&b.global_time, buf, 4);
+                    b.global_at = now();
+                }
+                uint32_t local_time = b.global_time + static_cast<uint32_t>(now() - b.global_at);
+                g_chk->imported(r.chan, r.dest, rc, buf, begin, now(), local_time);
+            }
+        }
+        if (!called) cpu.idle();   // nothing due: let a clock pass
+    }
+}
+
+void load_images(const Plan &plan)
+{
+    for (const PlanChannel &c : plan.channels) {
+        if (c.copy()) {
+            std::vector<uint8_t> img(ALB_CHANNEL_BYTES(c.size), 0);
+            img[0] = img[1] = ALB_BUFFER1;
+            channel_value(c.id, 0, &img[ALB_OFF_BUFFER(1u, c.size)], c.size);
+            g_sim->load(c.src_board, c.src_base, img.data(), static_cast<uint32_t>(img.size()));
+        }
+        for (const PlanDest &d : c.dests) {
+            std::vector<uint8_t> img(ALB_CHANNEL_BYTES(c.dest_size()), 0);
+            img[0] = img[1] = ALB_BUFFER1;
+            if (c.copy()) channel_value(c.id, 0, &img[ALB_OFF_BUFFER(1u, c.dest_size())], c.size);
+            g_sim->load(d.board, d.base, img.data(), static_cast<uint32_t>(img.size()));
+        }
+    }
+}
+
+bool entry_exists(const std::string &rom, int k)
+{
+    std::ifstream in(rom);
+    std::string h0;
+    if (!std::getline(in, h0)) return false;
+    uint32_t ne = (static_cast<uint32_t>(std::strtoul(h0.c_str(), nullptr, 16)) >> 8) & 0xFFu;
+    return k >= 0 && static_cast<uint32_t>(k) < ne;
+}
+
+int parse_options(int argc, char **argv, Options &o)
+{
+    for (int i = 1; i < argc; ++i) {
+        std::string a = argv[i];
+        if (i + 1 >= argc) return usage(("missing value for " + a).c_str());
+        const char *v = argv[++i];
+        double x = 0;
+        bool num = parse_num(v, x);
+        if (a == "--plan") o.plan_dir = v;
+        else if (a == "--rom") o.rom = v;
+        else if (a == "--report") o.report = v;
+        else if (a == "--label") o.label = v;
+        else if (a == "--cycles" && num && x >= 1000) o.cycles = static_cast<uint64_t>(x);
+        else if (a == "--seed" && num && x >= 0) o.seed = static_cast<uint64_t>(x);
+        else if (a == "--fault-rate" && num && x >= 0 && x < 1) o.fault_rate = x;
+        else if (a == "--burst" && num && x >= 1) o.burst = x;
+        else if (a == "--dead-board" && num && x >= 0 && x < SystemSim::kBoards) o.dead_board = static_cast<int>(x);
+        else if (a == "--dead-at" && num && x >= 0) o.dead_at = static_cast<uint64_t>(x);
+        else if (a == "--corrupt-entry" && num && x >= 0) o.corrupt_entry = static_cast<int>(x);
+        else if (a == "--corrupt-actual") {
+            unsigned long long ch = 0, at = 0;
+            if (std::sscanf(v, "%llu:%llu", &ch, &at) != 2) return usage("--corrupt-actual needs CHANNEL:CYCLE");
+            o.corrupt_channel = static_cast<int>(ch);
+            o.corrupt_at = at;
+        }
+        else if (a == "--latency-scale" && num && x > 0) o.latency_scale = x;
+        else if (a == "--trace-bus" && std::sscanf(v, "%llu:%llu", reinterpret_cast<unsigned long long *>(&o.trace_from),
+                                                   reinterpret_cast<unsigned long long *>(&o.trace_to)) == 2) {}
+        else if (a == "--expect-caught-by") {
+            int k = 0;
+            while (k < SystemChecker::KINDS && std::string(v) != SystemChecker::kind_name(k)) ++k;
+            if (k == SystemChecker::KINDS) return usage(("unknown checker " + std::string(v)).c_str());
+            o.expect_caught_by.push_back(v);
+        }
+        else return usage(("bad option or value: " + a + " " + v).c_str());
+    }
+    if (o.plan_dir.empty()) return usage("--plan is required");
+    return -1;
+}
+
+}  // namespace tbsys

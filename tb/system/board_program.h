@@ -1,0 +1,145 @@
+// board_program.h -- the side of tb_system that is not the main loop: its
+// command line, each board's CPU program (the real C driver exporting and
+// importing its channels), the bus fault model and the transfer meter.
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+#include "plan.h"
+#include "system_checker.h"
+#include "system_sim.h"
+extern "C" {
+#include "albatross.h"
+}
+
+namespace tbsys {
+
+struct Options {
+    std::string plan_dir, rom, report, label = "system";
+    uint64_t cycles = 400000, seed = 1, dead_at = 0;
+    double fault_rate = 0, burst = 1, latency_scale = 1;
+    std::vector<std::string> expect_caught_by;   // a negative test: these checkers must fire
+    uint64_t trace_from = 1, trace_to = 0;       // print the controller's accesses in this window
+    int dead_board = -1, corrupt_entry = -1;
+    int corrupt_channel = -1;                    // a faulty producer stores Actual = 7 ...
+    uint64_t corrupt_at = 0;                     // ... once, at this cycle
+};
+
+// Parses the command line into o: -1 on success, else the exit status
+// (the usage message has been printed).
+int parse_options(int argc, char **argv, Options &o);
+
+// Shared with board_program (set up by main before the CPUs start).
+extern SystemSim *g_sim;
+extern const Options *g_opts;
+extern bool g_corrupted;
+extern SystemChecker *g_chk;
+extern const Plan *g_plan;
+
+// One channel role of one board's CPU.
+struct Role {
+    int chan = 0;              // plan channel index
+    int dest = -1;             // -1: producer of the source instance
+    alb_channel_t ch{};
+    uint64_t seq = 0, next_due = 0, interval_lo = 1, interval_hi = 1;
+    bool time_channel = false, status_channel = false;
+};
+
+// The controller's counters as a CPU reads them from the STATUS channel:
+// word 0 = {rom_errors, cycles}, then per channel {transfers, retries},
+// {abandoned, corrupt}.  The largest totals seen.
+struct StatusSeen {
+    uint64_t imports = 0, transfers = 0, retries = 0, abandoned = 0, corrupt = 0, rom_errors = 0;
+};
+extern StatusSeen g_status;
+
+struct BoardCtx {
+    int board = 0;
+    std::vector<Role> roles;
+    uint32_t global_time = 0;   // the newest GlobalTime this CPU has imported ...
+    uint64_t global_at = 0;     // ... and its local clock then: a local timer
+                                // synchronised to the global time (seed 3.4.1)
+    std::mt19937_64 rng;
+    int attach_errors = 0;
+};
+
+void board_program(SimCpu &cpu);
+
+// Gilbert-Elliott fault process over clocks: bursts of mean length `burst`
+// in which every access begun fails, with a long-run faulted share `rate`.
+struct FaultModel {
+    double rate, burst;
+    bool bad = false;
+    std::mt19937_64 rng;
+    FaultModel(double r, double b, uint64_t seed) : rate(r), burst(std::max(1.0, b)), rng(seed) {}
+    unsigned next() {
+        if (rate <= 0) return 0;
+        std::uniform_real_distribution<double> u(0, 1);
+        if (burst <= 1) {
+            // Independent clocks.  (The two-state chain below degenerates at
+            // burst 1 and rate 0.5 into strict alternation: a controller whose
+            // accesses all take 2 clocks back to back then sees every access
+            // faulted, or none, depending only on the phase of its first one.)
+            bad = u(rng) < rate;
+            return bad ? 1 + static_cast<unsigned>(rng() % 3) : 0;
+        }
+        double enter = rate / (burst * (1 - std::min(rate, 0.999)));
+        if (bad) { if (u(rng) < 1 / burst) bad = false; }
+        else if (u(rng) < enter) bad = true;
+        return bad ? 1 + static_cast<unsigned>(rng() % 3) : 0;
+    }
+};
+
+// Bus cycles of every COPY transfer that publishes a new value to a channel
+// with one destination: from the start of its first access (the load of the
+// source Actual) to the end of its last (the store of the destination
+// Actual), against the protocol's minimum: W loads, W + 1 stores and 5
+// control accesses, each access_cycles long.
+struct TransferMeter {
+    const PlanChannel *c = nullptr;
+    bool active = false, published = false;
+    uint64_t start = 0, accesses = 0, busy = 0;
+    uint64_t n = 0, sum = 0, min = ~0ull, max = 0, idle_sum = 0, accesses_last = 0;
+
+    bool in(int board, uint32_t base, uint32_t size, const SystemSim::BusEvent &e) const {
+        return e.board == board && e.addr >= base && e.addr < base + ALB_CHANNEL_BYTES(size);
+    }
+    void on(const SystemSim::BusEvent &e) {
+        const bool src = in(c->src_board, c->src_base, c->size, e);
+        const bool dst = in(c->dests[0].board, c->dests[0].base, c->dest_size(), e);
+        if (!src && !dst) { active = false; return; }       // another entry: an Old transfer ends
+        const bool src_actual = src && !e.we && e.addr == c->src_base;
+        if (src_actual && (!active || published)) {
+            active = true;
+            published = false;
+            start = e.start;
+            accesses = busy = 0;
+        }
+        if (!active) return;
+        if (!e.ok) { active = false; return; }               // only fault-free transfers
+        ++accesses;
+        busy += e.end - e.start;
+        if (dst && e.we && e.addr == c->dests[0].base) {      // the store of Actual: published
+            uint64_t cycles = e.end - start;
+            ++n;
+            sum += cycles;
+            min = std::min(min, cycles);
+            max = std::max(max, cycles);
+            idle_sum += cycles - busy;
+            accesses_last = accesses;
+            published = true;
+            active = false;
+        }
+    }
+};
+
+// The RAM image of every channel instance: Actual = ReadLocked = Buffer1,
+// Buffer1 holds value 0 (sources) or zeros (destinations).
+void load_images(const Plan &plan);
+
+// The ROM image holds entry k (its header's entry count is above k).
+bool entry_exists(const std::string &rom, int k);
+
+}  // namespace tbsys
