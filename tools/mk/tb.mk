@@ -8,8 +8,10 @@ VERILATOR_ROOT_DIR := $(shell verilator --getenv VERILATOR_ROOT 2>/dev/null)
 TB_CXXFLAGS := -std=c++17 -O3 -g0 -U_FORTIFY_SOURCE -Wall -Wextra -Werror -Itb/common -Ic-driver -Itb/common/port \
                -isystem $(VERILATOR_ROOT_DIR)/include -isystem $(VERILATOR_ROOT_DIR)/include/vltstd
 TB_CFLAGS   := -std=c99 -O2 -Wall -Wextra -Werror -pedantic -U_FORTIFY_SOURCE -Ic-driver -Itb/common/port
-TB_SRC      := tb/dpram/tb_dpram.cpp tb/common/ram_bus.cpp tb/common/ref_ram.cpp tb/common/sim_cpu.cpp tb/common/protocol_checker.cpp
-TB_HDR      := $(wildcard tb/common/*.h) tb/common/port/alb_port_impl.h c-driver/albatross.h c-driver/albatross_layout.h
+TB_SRC      := tb/dpram/tb_dpram.cpp tb/dpram/tb_dpram_common.cpp tb/dpram/tb_dpram_exhaustive.cpp \
+               tb/dpram/tb_dpram_random.cpp tb/dpram/tb_dpram_crash.cpp \
+               tb/common/ram_bus.cpp tb/common/ref_ram.cpp tb/common/sim_cpu.cpp tb/common/protocol_checker.cpp
+TB_HDR      := $(wildcard tb/common/*.h tb/dpram/*.h) tb/common/port/alb_port_impl.h c-driver/albatross.h c-driver/albatross_layout.h
 MUTANTS     := $(patsubst tb/mutants/driver/%.sed,%,$(wildcard tb/mutants/driver/*.sed))
 TB_IMPORTS  ?= 1000000
 SOAK_IMPORTS ?= 100000000
