@@ -54,6 +54,8 @@
 //   faults     with faults injected, the controller's STATUS (read by the
 //              navigation core) counts retries
 // Exit status 0 = verdict pass, 1 = fail, 2 = bad arguments.
+// The command line is parsed in sim/mobot_sim_options.cpp, the --ages CSV
+// written by sim/mobot_sim_ages.cpp; sim/mobot_sim.h holds what they share.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -70,163 +72,14 @@
 #include "verilated_vcd_c.h"
 #endif
 #include "report.h"
-#include "plan.h"
-
-namespace {
-
-const int NB = 4;
-enum : uint32_t { EV_NEW = 1, EV_OLD, EV_ERROR, EV_BEGIN, EV_EXPORT, EV_STALE, EV_FRESH, EV_STATUS };
-const char *const kChecks[] = {"cpu", "liveness", "age", "staleness", "faults"};
-
-struct Options {
-    std::string plan, report, ages, trace, label = "mobot-sim", expect;
-    uint64_t cycles = 2000000, seed = 1, stall = 0, trace_from = 0, trace_cycles = 20000, progress = 10;
-    double fault_rate = 0, age_scale = 1;
-    int crash_board = -1, hang_board = -1;
-    bool require_done = false;
-    uint64_t crash_at = 0, hang_at = 0;
-};
-
-struct Stat {  // min / mean / max of a series of integers
-    uint64_t n = 0, min = 0, max = 0;
-    double sum = 0;
-    void add(uint64_t v) {
-        min = n ? std::min(min, v) : v;
-        max = n ? std::max(max, v) : v;
-        sum += double(v);
-        ++n;
-    }
-    double mean() const { return n ? sum / double(n) : 0; }
-    std::string json() const {
-        JsonReport r;
-        r.num("n", double(n)).num("min", double(min)).num("mean", mean()).num("max", double(max));
-        std::string t = r.text();
-        return t.substr(0, t.size() - 1);
-    }
-};
-
-struct Series {  // one channel at one consumer
-    const PlanChannel *ch = nullptr;
-    int board = 0;
-    uint32_t base = 0;  // byte offset of the instance in the consumer's RAM
-    Stat age, import_cycles;
-    uint64_t news = 0, olds = 0, news_after_crash = 0, over_bound = 0, bound = 0;
-    std::vector<uint64_t> bucket_max;  // worst age per time bucket (picture)
-};
-
-struct Producer {  // a copy channel's producer
-    const PlanChannel *ch = nullptr;
-    Stat export_cycles;
-    uint64_t exports = 0, stores = 0, last_store = 0, max_gap = 0;
-};
-
-bool parse_u64(const char *s, uint64_t &v)
-{
-    char *end = nullptr;
-    if (!s || !*s) return false;
-    v = std::strtoull(s, &end, 0);
-    return *end == '\0';
-}
-
-bool parse_board_at(const std::string &s, const Plan &plan, int &board, uint64_t &at)
-{
-    const size_t p = s.find('@');
-    if (p == std::string::npos) return false;
-    const std::string name = s.substr(0, p);
-    board = -1;
-    for (size_t b = 0; b < plan.board_names.size(); ++b)
-        if (plan.board_names[b] == name) board = int(b);
-    return board >= 0 && parse_u64(s.substr(p + 1).c_str(), at);
-}
-
-int usage(const char *msg)
-{
-    std::fprintf(stderr, "mobot_sim: %s\n"
-                 "usage: mobot_sim --plan tb_plan.txt +fw0..3=FILE +ram0..3=FILE +rom=FILE [--cycles N]\n"
-                 "                 [--seed S] [--stall P] [--fault-rate R] [--crash BOARD@CYCLE] [--hang BOARD@CYCLE]\n"
-                 "                 [--trace FILE.vcd [--trace-from N] [--trace-cycles N]] [--report FILE]\n"
-                 "                 [--ages FILE.csv] [--label NAME] [--progress K] [--age-scale X] [--require-done]\n"
-                 "                 [--expect-caught-by cpu|liveness|age|staleness|faults]\n", msg);
-    return 2;
-}
-
-std::string code_text(uint32_t code, const Plan &plan)
-{
-    static const char *what[8] = {"pass", "alb_import error", "attach error", "checksum wrong",
-                                  "sequence number went back", "New without a newer value",
-                                  "Old with a newer value", "export error"};
-    if (code == 0) return "pass";
-    const uint32_t chk = code & 0xfu, id = (code >> 4) & 0xfu, seq = code >> 12;
-    const PlanChannel *ch = nullptr;
-    for (const PlanChannel &c : plan.channels)
-        if (uint32_t(c.id) == id) ch = &c;
-    char b[160];
-    std::snprintf(b, sizeof b, "%s, channel %s, sequence %u", chk < 8 ? what[chk] : "unknown code",
-                  ch ? ch->name.c_str() : "-", seq);
-    return b;
-}
-
-}  // namespace
+#include "mobot_sim.h"
 
 int main(int argc, char **argv)
 {
     Options o;
-    std::string crash_arg, hang_arg;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a[0] == '+') continue;  // plusargs: the RTL reads them
-        if (a == "--help" || a == "-h") { usage("the whole-system simulation (sim/mobot_sim.cpp)"); return 0; }
-        if (a == "--require-done") { o.require_done = true; continue; }
-        if (i + 1 >= argc) return usage((a + " needs a value").c_str());
-        const char *v = argv[++i];
-        uint64_t n = 0;
-        if (a == "--plan") o.plan = v;
-        else if (a == "--report") o.report = v;
-        else if (a == "--ages") o.ages = v;
-        else if (a == "--trace") o.trace = v;
-        else if (a == "--label") o.label = v;
-        else if (a == "--expect-caught-by") o.expect = v;
-        else if (a == "--crash") crash_arg = v;
-        else if (a == "--hang") hang_arg = v;
-        else if (a == "--fault-rate" || a == "--age-scale") {
-            char *end = nullptr;
-            const double x = std::strtod(v, &end);
-            if (*end || !(x >= 0) || (a == "--fault-rate" && x >= 1))
-                return usage((a + ": expected a number" + (a == "--fault-rate" ? " in [0, 1)" : " >= 0")).c_str());
-            (a == "--fault-rate" ? o.fault_rate : o.age_scale) = x;
-        } else if (parse_u64(v, n)) {
-            if (a == "--cycles" && n > 0) o.cycles = n;
-            else if (a == "--seed") o.seed = n;
-            else if (a == "--stall") o.stall = n;
-            else if (a == "--trace-from") o.trace_from = n;
-            else if (a == "--trace-cycles" && n > 0) o.trace_cycles = n;
-            else if (a == "--progress" && n <= 100) o.progress = n;
-            else return usage(("unknown option or bad value: " + a + " " + v).c_str());
-        } else {
-            return usage(("unknown option or bad value: " + a + " " + v).c_str());
-        }
-    }
-    if (o.plan.empty()) return usage("--plan is required");
-    std::vector<std::string> expect;  // --expect-caught-by a,b: every one of them fails, no other
-    for (size_t p = 0; !o.expect.empty() && p <= o.expect.size();) {
-        const size_t q = std::min(o.expect.find(',', p), o.expect.size());
-        expect.push_back(o.expect.substr(p, q - p));
-        if (std::find(std::begin(kChecks), std::end(kChecks), expect.back()) == std::end(kChecks))
-            return usage(("--expect-caught-by: no check named " + expect.back()).c_str());
-        p = q + 1;
-    }
     Plan plan;
-    std::string err;
-    if (!plan.load(o.plan, err)) return usage(err.c_str());
-    if (plan.boards != NB || int(plan.board_names.size()) != NB)
-        return usage("the plan must have 4 boards (sim/pico_boards.v has NB = 4)");
-    if (!crash_arg.empty() && !parse_board_at(crash_arg, plan, o.crash_board, o.crash_at))
-        return usage(("--crash: expected BOARD@CYCLE with a board of the plan, got " + crash_arg).c_str());
-    if (!hang_arg.empty() && !parse_board_at(hang_arg, plan, o.hang_board, o.hang_at))
-        return usage(("--hang: expected BOARD@CYCLE with a board of the plan, got " + hang_arg).c_str());
-#if !VM_TRACE
-    if (!o.trace.empty()) return usage("--trace needs the model built with Verilator --trace (make sim TRACE=1)");
-#endif
+    std::vector<std::string> expect;  // --expect-caught-by a,b: every one of them fails, no other
+    if (const int rc = parse_options(argc, argv, o, plan, expect); rc >= 0) return rc;
 
     // What the plan says: one series per channel and consumer, one producer per copy channel.
     std::vector<Series> series;
@@ -354,8 +207,8 @@ int main(int argc, char **argv)
     std::printf("%s: %d boards (%s, %s, %s, %s), %llu cycles, seed %llu, fault rate %.2f%s%s\n", o.label.c_str(), NB,
                 plan.board_names[0].c_str(), plan.board_names[1].c_str(), plan.board_names[2].c_str(),
                 plan.board_names[3].c_str(), (unsigned long long)o.cycles, (unsigned long long)o.seed, o.fault_rate,
-                o.crash_board >= 0 ? (", crash " + crash_arg).c_str() : "",
-                o.hang_board >= 0 ? (", hang " + hang_arg).c_str() : "");
+                o.crash_board >= 0 ? (", crash " + o.crash_arg).c_str() : "",
+                o.hang_board >= 0 ? (", hang " + o.hang_arg).c_str() : "");
     std::fflush(stdout);
     auto bad = [&]() { return (m->trap_o & all) || (m->bus_err_o & all) || m->error_o; };
     uint64_t next_progress = o.progress ? o.cycles / o.progress : ~0ull;
@@ -597,27 +450,9 @@ int main(int argc, char **argv)
                     stale_events ? (long long)first_stale - (long long)crash_cycle : 0ll);
     }
 
-    if (!o.ages.empty()) {  // the picture's data: worst age per bucket and series
-        FILE *f = std::fopen(o.ages.c_str(), "w");
-        if (!f) { std::fprintf(stderr, "cannot write %s\n", o.ages.c_str()); return 1; }
-        std::fprintf(f, "# mobot_sim ages: bucket_start_cycle, then per series the worst age in the bucket "
-                        "(clocks; empty: no Import)\n# crash_cycle %llu first_stale %llu\ncycle", (unsigned long long)crash_cycle,
-                     (unsigned long long)first_stale);
-        for (const Series &s : series)
-            std::fprintf(f, ",%s@%s(bound=%llu)", s.ch->name.c_str(), plan.board_names[s.board].c_str(),
-                         (unsigned long long)s.bound);
-        std::fprintf(f, "\n");
-        const uint64_t used = std::min<uint64_t>(n_buckets, (cycle + bucket_len - 1) / bucket_len);
-        for (uint64_t k = 0; k < used; ++k) {
-            std::fprintf(f, "%llu", (unsigned long long)(k * bucket_len));
-            for (const Series &s : series) {
-                if (s.bucket_max[k]) std::fprintf(f, ",%llu", (unsigned long long)s.bucket_max[k]);
-                else std::fprintf(f, ",");
-            }
-            std::fprintf(f, "\n");
-        }
-        std::fclose(f);
-    }
+    if (!o.ages.empty() &&  // the picture's data: worst age per bucket and series
+        !write_ages(o.ages, series, plan, n_buckets, bucket_len, cycle, crash_cycle, first_stale))
+        return 1;
 
     std::string verdict = "pass", last;
     std::vector<std::string> lines;

@@ -1,0 +1,118 @@
+// mobot_sim_options.cpp -- the command line of sim/mobot_sim.cpp (see its
+// head comment) and the text of a core's failure code.
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <iterator>
+#include <string>
+#include <vector>
+#include "mobot_sim.h"
+
+namespace {
+
+bool parse_u64(const char *s, uint64_t &v)
+{
+    char *end = nullptr;
+    if (!s || !*s) return false;
+    v = std::strtoull(s, &end, 0);
+    return *end == '\0';
+}
+
+bool parse_board_at(const std::string &s, const Plan &plan, int &board, uint64_t &at)
+{
+    const size_t p = s.find('@');
+    if (p == std::string::npos) return false;
+    const std::string name = s.substr(0, p);
+    board = -1;
+    for (size_t b = 0; b < plan.board_names.size(); ++b)
+        if (plan.board_names[b] == name) board = int(b);
+    return board >= 0 && parse_u64(s.substr(p + 1).c_str(), at);
+}
+}  // namespace
+
+int usage(const char *msg)
+{
+    std::fprintf(stderr, "mobot_sim: %s\n"
+                 "usage: mobot_sim --plan tb_plan.txt +fw0..3=FILE +ram0..3=FILE +rom=FILE [--cycles N]\n"
+                 "                 [--seed S] [--stall P] [--fault-rate R] [--crash BOARD@CYCLE] [--hang BOARD@CYCLE]\n"
+                 "                 [--trace FILE.vcd [--trace-from N] [--trace-cycles N]] [--report FILE]\n"
+                 "                 [--ages FILE.csv] [--label NAME] [--progress K] [--age-scale X] [--require-done]\n"
+                 "                 [--expect-caught-by cpu|liveness|age|staleness|faults]\n", msg);
+    return 2;
+}
+
+std::string code_text(uint32_t code, const Plan &plan)
+{
+    static const char *what[8] = {"pass", "alb_import error", "attach error", "checksum wrong",
+                                  "sequence number went back", "New without a newer value",
+                                  "Old with a newer value", "export error"};
+    if (code == 0) return "pass";
+    const uint32_t chk = code & 0xfu, id = (code >> 4) & 0xfu, seq = code >> 12;
+    const PlanChannel *ch = nullptr;
+    for (const PlanChannel &c : plan.channels)
+        if (uint32_t(c.id) == id) ch = &c;
+    char b[160];
+    std::snprintf(b, sizeof b, "%s, channel %s, sequence %u", chk < 8 ? what[chk] : "unknown code",
+                  ch ? ch->name.c_str() : "-", seq);
+    return b;
+}
+
+int parse_options(int argc, char **argv, Options &o, Plan &plan, std::vector<std::string> &expect)
+{
+    std::string &crash_arg = o.crash_arg, &hang_arg = o.hang_arg;  // as given, for the report
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a[0] == '+') continue;  // plusargs: the RTL reads them
+        if (a == "--help" || a == "-h") { usage("the whole-system simulation (sim/mobot_sim.cpp)"); return 0; }
+        if (a == "--require-done") { o.require_done = true; continue; }
+        if (i + 1 >= argc) return usage((a + " needs a value").c_str());
+        const char *v = argv[++i];
+        uint64_t n = 0;
+        if (a == "--plan") o.plan = v;
+        else if (a == "--report") o.report = v;
+        else if (a == "--ages") o.ages = v;
+        else if (a == "--trace") o.trace = v;
+        else if (a == "--label") o.label = v;
+        else if (a == "--expect-caught-by") o.expect = v;
+        else if (a == "--crash") crash_arg = v;
+        else if (a == "--hang") hang_arg = v;
+        else if (a == "--fault-rate" || a == "--age-scale") {
+            char *end = nullptr;
+            const double x = std::strtod(v, &end);
+            if (*end || !(x >= 0) || (a == "--fault-rate" && x >= 1))
+                return usage((a + ": expected a number" + (a == "--fault-rate" ? " in [0, 1)" : " >= 0")).c_str());
+            (a == "--fault-rate" ? o.fault_rate : o.age_scale) = x;
+        } else if (parse_u64(v, n)) {
+            if (a == "--cycles" && n > 0) o.cycles = n;
+            else if (a == "--seed") o.seed = n;
+            else if (a == "--stall") o.stall = n;
+            else if (a == "--trace-from") o.trace_from = n;
+            else if (a == "--trace-cycles" && n > 0) o.trace_cycles = n;
+            else if (a == "--progress" && n <= 100) o.progress = n;
+            else return usage(("unknown option or bad value: " + a + " " + v).c_str());
+        } else {
+            return usage(("unknown option or bad value: " + a + " " + v).c_str());
+        }
+    }
+    if (o.plan.empty()) return usage("--plan is required");
+    for (size_t p = 0; !o.expect.empty() && p <= o.expect.size();) {
+        const size_t q = std::min(o.expect.find(',', p), o.expect.size());
+        expect.push_back(o.expect.substr(p, q - p));
+        if (std::find(std::begin(kChecks), std::end(kChecks), expect.back()) == std::end(kChecks))
+            return usage(("--expect-caught-by: no check named " + expect.back()).c_str());
+        p = q + 1;
+    }
+    std::string err;
+    if (!plan.load(o.plan, err)) return usage(err.c_str());
+    if (plan.boards != NB || int(plan.board_names.size()) != NB)
+        return usage("the plan must have 4 boards (sim/pico_boards.v has NB = 4)");
+    if (!crash_arg.empty() && !parse_board_at(crash_arg, plan, o.crash_board, o.crash_at))
+        return usage(("--crash: expected BOARD@CYCLE with a board of the plan, got " + crash_arg).c_str());
+    if (!hang_arg.empty() && !parse_board_at(hang_arg, plan, o.hang_board, o.hang_at))
+        return usage(("--hang: expected BOARD@CYCLE with a board of the plan, got " + hang_arg).c_str());
+#if !VM_TRACE
+    if (!o.trace.empty()) return usage("--trace needs the model built with Verilator --trace (make sim TRACE=1)");
+#endif
+    return -1;
+}
