@@ -3,7 +3,7 @@ contract (rtl/albatross_contract.toml), and the definition's own checks.
 
     python3 -m unittest -v compiler/tests/test_contract.py      (from the repository root)
 
-compiler/tests/test_schedule.py decodes ROMs and models the controller
+compiler/tests/oracle.py decodes ROMs and models the controller
 without the compiler's contract module, on purpose.  Here every field of its
 decoder is located by probing it bit by bit and compared with the
 definition, its ROM CRC, magic, kind codes and entry addressing are checked
@@ -26,7 +26,7 @@ sys.path.insert(0, HERE)
 
 from albatross_schedule import contract  # noqa: E402
 from albatross_schedule.contract_gen import render_markdown  # noqa: E402
-import test_schedule as O  # noqa: E402  (the oracles)
+import oracle as O  # noqa: E402  (the oracles)
 
 C = contract.load()
 SCALARS = {   # oracle decode key -> (word, field) of the definition
@@ -49,7 +49,7 @@ def header(ne=1):
 
 
 class RomDecoderOracle(unittest.TestCase):
-    """test_schedule.decode and rom_problems against the definition."""
+    """oracle.decode and rom_problems against the definition."""
 
     def probe(self, base_entry, getters, skip_words=()):
         """For each oracle value: the bits of the entry that change it."""

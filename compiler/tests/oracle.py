@@ -1,0 +1,337 @@
+"""The compiler tests' shared pieces (compiler/tests/test_schedule.py, test_contract.py):
+the paths and command line of the build, the independent oracles of the ROM contract
+(ROM format, CRC, validation rules, memory map; written without the compiler's
+contract module and checked against rtl/albatross_contract.toml by test_contract.py),
+and a small model of the controller executing rom.hex on the boards' RAM images.
+No tests here: unittest discovers test*.py only.
+"""
+
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+COMPILER_DIR = os.path.dirname(HERE)
+REPO = os.path.dirname(COMPILER_DIR)
+# The command line, as the build runs it: python3 -m albatross_schedule with compiler/ on the path.
+TOOL = [sys.executable, "-m", "albatross_schedule"]
+TOOL_ENV = dict(os.environ, PYTHONPATH=COMPILER_DIR)
+EXAMPLES = os.path.join(REPO, "sim")  # the MOBOT-III robot's descriptions
+BAD = os.path.join(HERE, "bad")
+OUT = os.path.join(REPO, "build", "compiler-tests")
+CFLAGS = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"]
+CINC = ["-I" + os.path.join(REPO, "c-driver"), "-I" + os.path.join(REPO, "c-driver", "port", "mmio")]
+
+sys.path.insert(0, COMPILER_DIR)
+import albatross_schedule as S  # noqa: E402
+
+EXAMPLE_FILES = ["mobot3.toml", "mobot3_possync.toml"]
+
+
+# ---------------------------------------------------------------------------
+# Independent checkers of the ROM contract (docs/controller.md).  They are deliberate oracles,
+# written without the compiler's contract module; compiler/tests/test_contract.py
+# checks their field positions and constants against rtl/albatross_contract.toml.
+
+# The channel layout the controller model below assumes (byte offsets from the
+# channel base; buffer index values; words after a destination value).
+ORACLE_LAYOUT = {"off_actual": 0, "off_readlocked": 1, "off_buffers": 4, "buffer1": 1, "buffers": 3,
+                 "taken_at_words": 1}
+
+
+def crc(words):
+    """CRC of a ROM image, H3 (word 3) read as 0: polynomial division over
+    GF(2) by P = x^32 + x^7 + x^5 + x^3 + x^2 + x + 1, written as the
+    remainder of the image's polynomial (seed 0xFFFFFFFF prepended)."""
+    p = (1 << 32) | 0xAF
+    r = 0xFFFFFFFF
+    for i, w in enumerate(words):
+        r = (r << 32) | (0 if i == 3 else w)
+        for b in range(63, 31, -1):          # reduce the degree below 32
+            if r >> b & 1:
+                r ^= p << (b - 32)
+    return r
+
+
+def read_hex(path):
+    words = []
+    with open(path) as f:
+        for n, line in enumerate(f, 1):
+            line = line.rstrip("\n")
+            if not re.fullmatch(r"[0-9a-f]{8}", line):
+                raise AssertionError(f"{path}:{n}: {line!r} is not 8 lower-case hex digits")
+            words.append(int(line, 16))
+    return words
+
+
+def decode(words):
+    h0 = words[0]
+    ne = (h0 >> 8) & 0xFF
+    entries = []
+    for k in range(ne):
+        e = words[4 + 8 * k: 12 + 8 * k]
+        if len(e) < 8:
+            break
+        nd = (e[0] >> 12) & 0xF
+        dst = [e[4] & 0xFFFF, e[4] >> 16, e[5] & 0xFFFF, e[5] >> 16]
+        entries.append({
+            "raw": e, "kind": e[0] >> 28, "flags": (e[0] >> 24) & 0xF, "id": (e[0] >> 16) & 0xFF,
+            "nd": nd, "w": e[0] & 0xFFF, "start": e[1] & 0xFFFF, "length": e[2] & 0xFFFF,
+            "time_high": (e[1] | e[2]) >> 16,
+            "src_board": (e[3] >> 12) & 0xF, "src_word": e[3] & 0xFFF,
+            "dst": [((d >> 12) & 0xF, d & 0xFFF) for d in dst[:nd]], "unused_dst": dst[nd:]})
+    return {"magic": h0 >> 16, "ne": ne, "flags": h0 & 0xFF, "cycle": words[1] & 0xFFFF,
+            "cycle_high": words[1] >> 16}, entries
+
+
+def rom_problems(words, n_chan, ram_words):
+    """Every violation of the ROM format (docs/controller.md) and validation rules."""
+    p = []
+    if len(words) < 4:
+        return ["shorter than the header"]
+    hdr, entries = decode(words)
+    if hdr["magic"] != 0xA1BA:
+        p.append("bad magic")
+    if crc(words) != words[3]:
+        p.append("ROM CRC")
+    if hdr["cycle_high"]:
+        p.append("H1 above 16 bits")
+    if words[2] != 0:
+        p.append("H2 not 0")
+    if not 1 <= hdr["ne"] <= 255:
+        p.append("entry count")
+    if len(words) != 4 + 8 * hdr["ne"]:
+        p.append("length does not match the entry count")
+    sync = hdr["flags"] & 1
+    prev_end = 0
+    for k, e in enumerate(entries):
+        if e["time_high"]:
+            p.append(f"entry {k}: time above 16 bits")
+        if e["raw"][7] != 0:
+            p.append(f"entry {k}: E7 not 0")
+        if e["kind"] not in (1, 2, 3):
+            p.append(f"entry {k}: kind {e['kind']}")
+        if not 1 <= e["nd"] <= 4:
+            p.append(f"entry {k}: ND")
+        if e["id"] >= n_chan:
+            p.append(f"entry {k}: channel id")
+        if any(e["unused_dst"]):
+            p.append(f"entry {k}: unused destination field not 0")
+        if e["raw"][6] != 0:
+            p.append(f"entry {k}: E6 not 0")
+        if e["kind"] == 2 and e["w"] != 1:
+            p.append(f"entry {k}: TIME W")
+        if e["kind"] == 3 and e["w"] != 1 + 2 * n_chan:
+            p.append(f"entry {k}: STATUS W")
+        if e["kind"] != 1 and e["raw"][3] != 0:
+            p.append(f"entry {k}: source on a non-COPY")
+        exts = [(b, w, e["w"] + 1) for b, w in e["dst"]]
+        if e["kind"] == 1:
+            exts.append((e["src_board"], e["src_word"], e["w"]))
+        for b, base, stride in exts:
+            if b >= len(ram_words):
+                p.append(f"entry {k}: board {b} does not exist")
+            elif base + 1 + 3 * stride > ram_words[b]:
+                p.append(f"entry {k}: extent outside the RAM")
+        if e["flags"] & 1 and not (k == 0 and sync):
+            p.append(f"entry {k}: SYNC flag misplaced")
+        if sync and k == 0 and not (e["flags"] & 1 and e["kind"] == 1 and e["start"] == 0):
+            p.append("entry 0 of a sync ROM is not a SYNC COPY at 0")
+        if e["start"] < prev_end:
+            p.append(f"entry {k}: overlaps or precedes the previous slot")
+        if e["start"] + e["length"] > hdr["cycle"]:
+            p.append(f"entry {k}: ends after the cycle")
+        prev_end = e["start"] + e["length"]
+    return p
+
+
+def gaps(starts, cycle):
+    s = sorted(starts)
+    return [(s[(i + 1) % len(s)] + (cycle if i == len(s) - 1 else 0)) - s[i] for i in range(len(s))]
+
+
+def plan_problems(rep):
+    """Per channel: at least one slot, period <= max_period, the reported
+    period equal to the slots' largest cyclic gap."""
+    p = []
+    cycle = rep["cycle"]["clocks"]
+    for c in rep["channels"]:
+        starts = [s["start"] for s in c["slots"]]
+        if not starts:
+            p.append(f"{c['name']}: no slot")
+            continue
+        g = max(gaps(starts, cycle))
+        if g > c["max_period"]["clocks"]:
+            p.append(f"{c['name']}: guaranteed period {g} > max_period {c['max_period']['clocks']}")
+        if g != c["guaranteed_period"]["clocks"]:
+            p.append(f"{c['name']}: reported period {c['guaranteed_period']['clocks']} != {g}")
+        if c["redundancy"] != len(starts):
+            p.append(f"{c['name']}: redundancy factor")
+    return p
+
+
+def layout_problems(rep):
+    """Per board: instances word-aligned, inside the RAM, not overlapping."""
+    p = []
+    for b in rep["boards"]:
+        spans = sorted((i["base"], i["base"] + i["bytes"], i["channel"]) for i in b["instances"])
+        for lo, hi, name in spans:
+            if lo % 4 or lo < 0 or hi > b["ram_bytes"]:
+                p.append(f"{b['name']}: {name} misplaced")
+        for (lo1, hi1, n1), (lo2, _, n2) in zip(spans, spans[1:]):
+            if hi1 > lo2:
+                p.append(f"{b['name']}: {n1} overlaps {n2}")
+    return p
+
+
+def compile_example(name, out):
+    shutil.rmtree(out, ignore_errors=True)
+    r = subprocess.run(TOOL + [os.path.join(EXAMPLES, name), "--out", out],
+                       capture_output=True, text=True, env=TOOL_ENV)
+    if r.returncode != 0:
+        raise AssertionError(f"{name}: exit {r.returncode}\n{r.stdout}{r.stderr}")
+    with open(os.path.join(out, "report.json")) as f:
+        return json.load(f)
+
+
+# ---------------------------------------------------------------------------
+# A small model of the controller executing rom.hex on the boards' RAM
+# images (fault-free, docs/controller.md "Execution"), for the end-to-end test.
+
+class RamImage:
+    def __init__(self, words):
+        self.b = bytearray()
+        for w in words:
+            self.b += w.to_bytes(4, "little")
+
+    def words(self):
+        return [int.from_bytes(self.b[i:i + 4], "little") for i in range(0, len(self.b), 4)]
+
+    def rd8(self, a):
+        return self.b[a]
+
+    def wr8(self, a, v):
+        self.b[a] = v
+
+    def rd32(self, a):
+        return int.from_bytes(self.b[a:a + 4], "little")
+
+    def wr32(self, a, v):
+        self.b[a:a + 4] = v.to_bytes(4, "little")
+
+
+class ControllerModel:
+    def __init__(self, rom, rams, n_chan):
+        self.hdr, self.entries = decode(rom)
+        self.rams = rams
+        self.n_chan = n_chan
+        self.time = 0
+        self.state = {}   # id -> dict
+        self.cycles = 0
+
+    def st(self, e):
+        return self.state.setdefault(e["id"], {"rl": 1, "version": 0, "taken_at": 0, "value": None,
+                                               "actual": [1] * 4, "delivered": [0] * 4})
+
+    def export(self, st, k, board, base_word, words, taken_at):
+        lay = ORACLE_LAYOUT
+        ram = self.rams[board]
+        base = 4 * base_word
+        rl = ram.rd8(base + lay["off_readlocked"])
+        bufs = range(lay["buffer1"], lay["buffer1"] + lay["buffers"])
+        buf = [b for b in bufs if b != st["actual"][k] and b != rl][-1]
+        stride = 4 * (len(words) + lay["taken_at_words"])
+        addr = base + lay["off_buffers"] + (buf - lay["buffer1"]) * stride
+        for i, w in enumerate(words):
+            ram.wr32(addr + 4 * i, w)
+        ram.wr32(addr + 4 * len(words), taken_at)
+        ram.wr8(base + lay["off_actual"], buf)
+        st["actual"][k] = buf
+
+    def run_cycle(self):
+        c0 = self.time
+        for e in self.entries:
+            self.time = c0 + e["start"]
+            st = self.st(e)
+            if e["kind"] == 1:                       # COPY: Import from the source
+                lay = ORACLE_LAYOUT
+                src = self.rams[e["src_board"]]
+                base = 4 * e["src_word"]
+                actual = src.rd8(base + lay["off_actual"])
+                new = False
+                while actual != st["rl"]:
+                    st["rl"] = actual
+                    src.wr8(base + lay["off_readlocked"], actual)
+                    actual = src.rd8(base + lay["off_actual"])
+                    new = True
+                if new:
+                    st["version"] += 1
+                    st["taken_at"] = self.time
+                    addr = base + lay["off_buffers"] + (st["rl"] - lay["buffer1"]) * 4 * e["w"]
+                    st["value"] = [src.rd32(addr + 4 * i) for i in range(e["w"])]
+                for k, (b, bw) in enumerate(e["dst"]):
+                    if st["delivered"][k] != st["version"]:
+                        self.export(st, k, b, bw, st["value"], st["taken_at"])
+                        st["delivered"][k] = st["version"]
+            elif e["kind"] == 2:                     # TIME
+                for k, (b, bw) in enumerate(e["dst"]):
+                    self.export(st, k, b, bw, [self.time], self.time)
+            elif e["kind"] == 3:                     # STATUS: counters of a fault-free run
+                words = [self.cycles & 0xFFFF] + [0] * (2 * self.n_chan)
+                for k, (b, bw) in enumerate(e["dst"]):
+                    self.export(st, k, b, bw, words, self.time)
+        self.cycles += 1
+        self.time = c0 + self.hdr["cycle"]
+
+
+def harness_source(board, rep):
+    """A host program for one board: load its RAM image, set up every
+    channel (init or attach), run export/import commands, save the RAM."""
+    insts = [i for b in rep["boards"] if b["name"] == board for i in b["instances"]]
+    chans = {c["name"]: c for c in rep["channels"]}
+    L = ['#include <stdio.h>', '#include <stdlib.h>', '#include <string.h>', f'#include "{board}.h"', "",
+         "static uint32_t ram[ALB_%s_RAM_BYTES / 4u];" % board.upper(), "",
+         "static void load(const char *path)", "{",
+         "    FILE *f = fopen(path, \"r\");", "    unsigned long w;", "    size_t n = 0;",
+         "    if (f == NULL) exit(3);",
+         "    while (n < sizeof ram / sizeof ram[0] && fscanf(f, \"%8lx\", &w) == 1) ram[n++] = (uint32_t)w;",
+         "    fclose(f);", "    if (n != sizeof ram / sizeof ram[0]) exit(4);", "}", "",
+         "static void save(const char *path)", "{", "    FILE *f = fopen(path, \"w\");", "    size_t n;",
+         "    if (f == NULL) exit(3);",
+         "    for (n = 0; n < sizeof ram / sizeof ram[0]; ++n) fprintf(f, \"%08lx\\n\", (unsigned long)ram[n]);",
+         "    fclose(f);", "}", "",
+         "static void dump(const char *what, const void *p, size_t n, int r)", "{",
+         "    const unsigned char *b = (const unsigned char *)p;", "    size_t i;",
+         "    printf(\"%s %d \", what, r);", "    for (i = 0; i < n; ++i) printf(\"%02x\", b[i]);",
+         "    printf(\"\\n\");", "}", "",
+         "int main(int argc, char **argv)", "{", "    int i, rc;", "    if (argc < 4) return 2;",
+         "    load(argv[1]);",
+         f"    rc = strcmp(argv[3], \"init\") == 0 ? alb_{board}_init_all((uintptr_t)ram)"
+         f" : alb_{board}_attach_all((uintptr_t)ram);",
+         "    printf(\"setup %d\\n\", rc);",
+         "    for (i = 4; i < argc; ++i) {", "        const char *op = argv[i];", "        (void)op;"]
+    for inst in insts:
+        c = chans[inst["channel"]]
+        n = c["name"]
+        if inst["role"] == "source":
+            L += [f"        if (strncmp(op, \"export:{n}:\", {len(n) + 8}) == 0) {{",
+                  f"            {c['type']} v;", "            unsigned char *b = (unsigned char *)&v;",
+                  "            size_t k;", f"            int seed = atoi(op + {len(n) + 8});",
+                  "            for (k = 0; k < sizeof v; ++k) b[k] = (unsigned char)(seed * 31 + (int)k);",
+                  f"            rc = Make{n}Available(&v);", "            printf(\"export %d\\n\", rc);", "        }"]
+        else:
+            L += [f"        if (strcmp(op, \"import:{n}\") == 0) {{", f"            {n}_msg m;",
+                  "            memset(&m, 0xEE, sizeof m);",
+                  f"            rc = alb_import(&alb_ch_{n}, &m);",
+                  f"            dump(\"import {n}\", &m.value, sizeof m.value, rc);",
+                  "            printf(\"taken_at %lu\\n\", (unsigned long)m.taken_at);",
+                  f"            printf(\"typed %d\\n\", (int)LookForNew{n}(&m));", "        }"]
+    L += ["    }", "    save(argv[2]);", "    return 0;", "}"]
+    return "\n".join(L) + "\n"
+
+
+def pattern(seed, size):
+    return bytes((seed * 31 + k) & 0xFF for k in range(size))
