@@ -18,35 +18,25 @@ FSBY_TIMEOUT := 420
 FSBY_DEPS    := tools/formal_sby.py tools/abc_compat.py tools/mk/formal_sby.mk $(wildcard formal/wb/*.v)
 FSBY_MUT     := $(BUILD)/formal/sby/mutant-src
 
-FSBY_TESTS_SPEC := \
-    formal-dpram:dpram:prove:pass \
-    formal-dpram-pdr:dpram:prove_pdr:pass \
-    formal-dpram-cover:dpram:cover:pass \
-    formal-dpram-negative-priority_a:dpram:neg_priority_a:wb_b.props.ans_max_wait \
-    formal-dpram-negative-no_arbitration:dpram:neg_no_arbitration:atomicity_a|atomicity_b \
-    formal-dpram-negative-drop_ack:dpram:neg_drop_ack:wb_a.props.ans_max_wait \
-    formal-wb_cdc-pdr:wb_cdc:prove_pdr:pass \
-    formal-wb_cdc-cover:wb_cdc:cover:pass \
-    formal-wb_cdc-negative-live_adr:wb_cdc:neg_live_adr:wb_m.req_stable \
-    formal-wb_cdc-negative-early_ack:wb_cdc:neg_early_ack:ack_match \
-    formal-bus:bus:prove:pass \
-    formal-bus-pdr:bus:prove_pdr:pass \
-    formal-bus-cover:bus:cover:pass \
-    formal-bus-negative-err_no_stb:bus:neg_err_no_stb:wb_m.props.ans_in_req \
-    formal-bus-negative-alias:bus:neg_alias:ack_selected
-
-# Sed mutants: formal/<core>/mutants/<variant>.sed applied to rtl/albatross_<core>.v,
-# written to build/formal/sby/mutant-src/<core>/<variant>/ (the .sby files read them there).
-FSBY_MUTANTS := dpram:drop_ack wb_cdc:live_adr wb_cdc:early_ack bus:err_no_stb bus:alias
+# Each core's tests and mutants are listed in formal/<core>/tests.mk (one file per
+# core, so cores are added without touching this file).  A mutant is CORE:VARIANT:
+# formal/<core>/mutants/<variant>.sed applied to rtl/albatross_<core>.v, or, when
+# FSBY_RTL_<core> names another file (a harness over several modules), to that file.
+FSBY_TESTS_SPEC :=
+FSBY_MUTANTS    :=
+include $(sort $(wildcard formal/*/tests.mk))
 
 FSBY_NAMES := $(foreach t,$(FSBY_TESTS_SPEC),$(call neg_field,$(t),1))
 TESTS        += $(FSBY_NAMES)
 FORMAL_TESTS += $(FSBY_NAMES)
 .PHONY: $(addprefix test-,$(FSBY_NAMES))
 
+# A mutant is CORE:VARIANT[:FILE]: FILE (default albatross_<core>.v) is an rtl/ file;
+# the mutant keeps its name, in build/formal/sby/mutant-src/<core>/<variant>/.
+fsby_mut_file = $(or $(call neg_field,$(1),3),albatross_$(call neg_field,$(1),1).v)
 define fsby_mutant
-$(FSBY_MUT)/$(call neg_field,$(1),1)/$(call neg_field,$(1),2)/albatross_$(call neg_field,$(1),1).v: \
-        rtl/albatross_$(call neg_field,$(1),1).v formal/$(call neg_field,$(1),1)/mutants/$(call neg_field,$(1),2).sed
+$(FSBY_MUT)/$(call neg_field,$(1),1)/$(call neg_field,$(1),2)/$(call fsby_mut_file,$(1)): \
+        rtl/$(call fsby_mut_file,$(1)) formal/$(call neg_field,$(1),1)/mutants/$(call neg_field,$(1),2).sed
 	@mkdir -p $$(@D)
 	sed -f formal/$(call neg_field,$(1),1)/mutants/$(call neg_field,$(1),2).sed $$< > $$@
 	@if cmp -s $$@ $$<; then echo "mutant $(call neg_field,$(1),2) did not apply: $$< no longer has the line its .sed edits"; \
@@ -54,9 +44,10 @@ $(FSBY_MUT)/$(call neg_field,$(1),1)/$(call neg_field,$(1),2)/albatross_$(call n
 endef
 $(foreach m,$(FSBY_MUTANTS),$(eval $(call fsby_mutant,$(m))))
 
-# Every test of a core depends on its script, harness, RTL and mutants.
-fsby_core_deps = formal/$(1)/$(1).sby $(wildcard formal/$(1)/*.v) rtl/albatross_$(1).v \
-                 $(foreach m,$(FSBY_MUTANTS),$(if $(filter $(1),$(call neg_field,$(m),1)),$(FSBY_MUT)/$(1)/$(call neg_field,$(m),2)/albatross_$(1).v))
+# Every test of a core depends on its script, harness, RTL (FSBY_RTL_<core>, default
+# rtl/albatross_<core>.v) and mutants.
+fsby_core_deps = formal/$(1)/$(1).sby $(wildcard formal/$(1)/*.v) $(or $(FSBY_RTL_$(1)),rtl/albatross_$(1).v) $(RTL_INC) \
+                 $(foreach m,$(FSBY_MUTANTS),$(if $(filter $(1),$(call neg_field,$(m),1)),$(FSBY_MUT)/$(1)/$(call neg_field,$(m),2)/$(call fsby_mut_file,$(m))))
 define fsby_test
 test-$(call neg_field,$(1),1): $(FSBY_DEPS) $(call fsby_core_deps,$(call neg_field,$(1),2))
 	@tools/run_test.sh $(call neg_field,$(1),1) $(FSBY_RUN) $(call neg_field,$(1),1) --sby formal/$(call neg_field,$(1),2)/$(call neg_field,$(1),2).sby \

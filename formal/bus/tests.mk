@@ -1,0 +1,9 @@
+# formal/bus/tests.mk -- the SymbiYosys tests of formal/bus/bus.sby
+# (tools/mk/formal_sby.mk says the fields: NAME:CORE:TASK:EXPECT, CORE:VARIANT).
+FSBY_TESTS_SPEC += \
+    formal-bus:bus:prove:pass \
+    formal-bus-pdr:bus:prove_pdr:pass \
+    formal-bus-cover:bus:cover:pass \
+    formal-bus-negative-err_no_stb:bus:neg_err_no_stb:wb_m.props.ans_in_req \
+    formal-bus-negative-alias:bus:neg_alias:ack_selected
+FSBY_MUTANTS += bus:err_no_stb bus:alias
