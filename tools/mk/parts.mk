@@ -8,13 +8,17 @@
 #                               CRC, no per-entry checksum): slot starts, the
 #                               deadline, cycle length, a ROM upset found by the
 #                               background check and its entry skipped
+#   make test-sequencer-negative-slot_late
+#                               the same bench on a sequencer whose slots start
+#                               one clock late (formal/rtl/mutants/slot_late.sed):
+#                               passes only if the bench fails and names the go
 # Outputs in build/parts/.
 
 PARTS_DIR := $(BUILD)/parts
 PARTS     := albatross_sequencer albatross_rom_check albatross_entry_check albatross_bus_master albatross_counters
 
-TESTS += parts-lint sequencer
-.PHONY: test-parts-lint test-sequencer
+TESTS += parts-lint sequencer sequencer-negative-slot_late
+.PHONY: test-parts-lint test-sequencer test-sequencer-negative-slot_late
 
 test-parts-lint: $(addprefix rtl/,$(addsuffix .v,$(PARTS))) $(RTL_INC)
 	@mkdir -p $(PARTS_DIR)
@@ -31,3 +35,17 @@ test-sequencer: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatro
 	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/seq/tb tb/sequencer/tb_sequencer.v rtl/albatross_sequencer.v rtl/albatross_rom_check.v \
 	        rtl/albatross_entry_check.v; \
 	    cd $(PARTS_DIR)/seq && vvp -n tb | grep -v readmemh | tee tb.log; grep -q "^PASS" tb.log'
+
+# The negative: the mutant must make the bench print the slot-start failure.
+test-sequencer-negative-slot_late: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v \
+        formal/rtl/mutants/slot_late.sed rtl/albatross_rom_check.v rtl/albatross_entry_check.v $(RTL_INC)
+	@mkdir -p $(PARTS_DIR)/seq-neg
+	@tools/run_test.sh sequencer-negative-slot_late bash -c 'set -e; $(PYTHON) tb/sequencer/make_rom.py $(PARTS_DIR)/seq-neg/seq_rom.hex; \
+	    sed -f formal/rtl/mutants/slot_late.sed rtl/albatross_sequencer.v > $(PARTS_DIR)/seq-neg/albatross_sequencer.v; \
+	    if cmp -s $(PARTS_DIR)/seq-neg/albatross_sequencer.v rtl/albatross_sequencer.v; then echo "mutant slot_late did not apply"; exit 1; fi; \
+	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/seq-neg/tb tb/sequencer/tb_sequencer.v $(PARTS_DIR)/seq-neg/albatross_sequencer.v \
+	        rtl/albatross_rom_check.v rtl/albatross_entry_check.v; \
+	    cd $(PARTS_DIR)/seq-neg && vvp -n tb | grep -v readmemh > tb.log || true; \
+	    if grep -q "^PASS" tb.log; then echo "the bench passed a sequencer whose slots start late"; exit 1; fi; \
+	    if ! grep -q "^FAIL entry .* go at" tb.log; then echo "expected a FAIL naming the go clock, got: $$(head -n 3 tb.log)"; exit 1; fi; \
+	    echo "caught: $$(grep -m1 "^FAIL entry" tb.log)"'
