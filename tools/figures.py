@@ -448,6 +448,30 @@ def formal_sby():
 SECTIONS["formal-sby"] = formal_sby
 
 
+def sim_excerpt():
+    """The head of `make sim`'s console report, as sim/mobot_sim.cpp prints it."""
+    r = load("sim.json")
+    if not r:
+        missing("sim.json", "make sim")
+    hz = r["clock_hz"]
+    lines = ["```",
+             f"{r['label']}: {r['cycles']} cycles ({1e3 * r['cycles'] / hz:.2f} ms at {hz / 1e6:.0f} MHz), "
+             f"controller time {r['cycles']}, bus busy {100 * r['bus_busy_fraction']:.1f} %, {r['requests']} requests, "
+             f"{r['faults_injected']} faults injected, STATUS: {r['status_retries']} retries, "
+             f"{r['status_abandoned']} abandoned",
+             "  %-11s %-11s %7s %7s %9s %9s %9s %9s %6s %11s" % ("channel", "consumer", "New", "Old", "age min",
+                                                             "age mean", "age max", "bound", "ratio", "cyc/Import")]
+    for s in r["series"][:4]:
+        a = s["age"]
+        lines.append("  %-11s %-11s %7d %7d %9d %9.0f %9d %9d %6.3f %11.0f" % (
+            s["channel"], s["consumer"], s["new"], s["old"], a["min"], a["mean"], a["max"], s["bound"],
+            a["max"] / s["bound"] if s["bound"] else 0.0, s["import_cycles"]["mean"]))
+    return "\n".join(lines + ["  ...", "```"])
+
+
+SECTIONS["sim-excerpt"] = sim_excerpt
+
+
 # A marker is a line of its own (a marker quoted inside a sentence is text).
 BLOCK = re.compile(r"^<!-- figures:([A-Za-z0-9_-]+) -->\n(.*?)^<!-- /figures:\1 -->$", re.S | re.M)
 
