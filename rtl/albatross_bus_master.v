@@ -6,8 +6,8 @@
 //     board field; the master adds the board field (m_adr_o = {board, word}).
 //   * Arbitration: at most one requester is expected to hold cyc at a time
 //     (the word stream between the engines guarantees it).  The master makes
-//     it explicit and safe: the owner is the requester that raised cyc first
-//     (the lowest index if several raise it in one clock) and keeps the bus
+//     it explicit and safe: a free bus goes to the lowest-indexed requester
+//     holding cyc (a requester that was waiting included), which keeps it
 //     until it drops cyc; any other requester's cyc waits (it sees neither
 //     ack nor err) and overlap_o goes high for good (a design error that a
 //     test or proof can watch for).  A request passes in the clock it is
