@@ -1,0 +1,372 @@
+// fseq -- property harness of albatross_sequencer (with albatross_rom_check and
+// albatross_entry_check inside it) for the unbounded proofs of
+// formal/sequencer/sequencer.sby (docs/verification.md "Sequencer (unbounded)").
+// Rules:
+//   * The ROM is a fixed image, fseq_rom.hex, and fseq_rom.vh gives the
+//     configuration and the image's fields; both are written by
+//     formal/sequencer/gen_rom.py (the schedule compiler's encoder and CRC).
+//     The harness models exactly F_NE = 2 entries, both COPY, TIME or STATUS.
+//   * Reset is high in the first clock only; enable_i is free (the cover and
+//     negative tasks hold it high from the start, -DF_EAGER).  The engines
+//     are abstract: slot_done_i is free, except that a slot that got go_o ends
+//     (slot_done_i) at the latest in the clock before the next planned slot
+//     start, or before H1 for the last slot: the sequencer's one assumption on
+//     the engines (it starts a slot only once the previous one is over).  The
+//     poll port (ack, err, data) and sync_rl_i are free in every clock.
+//   * Times are counted from the harness's own view of the cycle: crel is the
+//     number of clocks since the last cycle_o (0 in the cycle_o clock).  All
+//     properties are asserted once start-up has ended (the first cycle_o),
+//     whatever its length; before that, none of go_o, may_access_o, poll_cyc_o
+//     may be high.
+// Properties (labels; S_k = E1 of entry k, D_k = S_k + E2 of entry k,
+// MARGIN = TIMEOUT + 2, FETCH = 7):
+//   go_time        go_o only in a clock with crel = S_k + FETCH - 1 (so at most
+//                  once per entry per cycle), after start-up.
+//   go_given       in every cycle, go_o is high in clock S_k + FETCH - 1 (valid
+//                  images: every slot starts, exactly on time).
+//   go_fields      with go_o: kind, channel, ND, W, source, destinations and
+//                  SYNC flag are entry k's; slot_time_o is the time_o of clock S_k.
+//   deadline       may_access_o only while a slot runs (from its go_o to its
+//                  slot_done_i) and only in a clock c with c + 1 <= D_k - MARGIN.
+//   access_window  conversely, may_access_o is high in every such clock.
+//   cycle_start    after the first cycle, cycle_o is high exactly when the
+//                  last cycle start is H1 clocks ago, or (sync mode) in the
+//                  clock after a poll's ack that shows a valid Actual other
+//                  than sync_rl_i: time-rigid cycles are exactly H1 apart.
+//   poll_when      poll_cyc_o only in sync mode, after the cycle's last slot
+//                  has ended, at entry 0's source (board and base).
+//   idle_on_error  no go_o, no poll_cyc_o and no may_access_o while error_o.
+//   rom_ok         valid image: error_o never, rom_errors_o stays 0 (the
+//                  background check never flags the unchanged ROM).
+//   never_starts   invalid image: no cycle ever starts.
+//   time_step      time_o counts clocks, so slot_time_o = time_o - (FETCH - 1)
+//                  at go_o (not in the PDR task, -DF_PDR: PDR learns the 32-bit
+//                  increment relation slowly; k-induction proves it).
+// Induction strengthening (white-box, -DF_PROBE): the .sby script joins the
+// f_* wires below to the sequencer's and the ROM check's registers after
+// flatten (Yosys has no hierarchical references); the inv_* assertions tie
+// them to the harness's model and make the property set 1-inductive.
+`default_nettype none
+
+module fseq (
+    input  wire        clk_i,
+    input  wire        rst_i,
+    input  wire        enable_i,
+    input  wire        slot_done_i,
+    input  wire [31:0] poll_dat_i,
+    input  wire        poll_ack_i,
+    input  wire        poll_err_i,
+    input  wire [1:0]  sync_rl_i
+);
+`include "albatross_contract.vh"
+`include "fseq_rom.vh"
+
+    localparam [31:0] FETCH  = 32'd7;                 // the sequencer's FETCH_CYCLES
+    localparam [31:0] MARGIN = F_TIMEOUT + 2;         // deadline margin
+    localparam [31:0] D0 = F_S0 + F_L0, D1 = F_S1 + F_L1;
+    localparam [31:0] G0 = F_S0 + FETCH - 1, G1 = F_S1 + FETCH - 1;   // go clocks
+    localparam        CW = F_TB + 1;                  // crel bits (saturating)
+
+    generate
+        if (F_NE != 2) begin : g_ne_check
+            fseq_models_two_entries u_error ();
+        end
+    endgenerate
+
+    wire                  go_o, sync_entry_o, may_access_o, poll_cyc_o, cycle_o, error_o;
+    wire [1:0]            kind_o;
+    wire [4:0]            chan_o;
+    wire [2:0]            nd_o;
+    wire [11:0]           words_o;
+    wire [3:0]            src_board_o, poll_board_o;
+    wire [F_AW-1:0]       src_base_o, poll_adr_o;
+    wire [15:0]           dst_board_o, rom_errors_o, cycles_o;
+    wire [4*F_AW-1:0]     dst_base_o;
+    wire [31:0]           slot_time_o, time_o;
+
+    albatross_sequencer #(
+        .NB(F_NB), .ADDR_WIDTH(F_AW), .N_CHAN(F_NCHAN), .ROM_WORDS(F_ROM_WORDS), .ROM_FILE("fseq_rom.hex"),
+        .TIME_BITS(F_TB), .TIMEOUT(F_TIMEOUT), .POLL(F_POLL)
+    ) dut (
+        .clk_i(clk_i), .rst_i(rst_i), .enable_i(enable_i),
+        .go_o(go_o), .kind_o(kind_o), .chan_o(chan_o), .nd_o(nd_o), .words_o(words_o),
+        .src_board_o(src_board_o), .src_base_o(src_base_o), .dst_board_o(dst_board_o),
+        .dst_base_o(dst_base_o), .slot_time_o(slot_time_o), .sync_entry_o(sync_entry_o),
+        .may_access_o(may_access_o), .slot_done_i(slot_done_i),
+        .poll_cyc_o(poll_cyc_o), .poll_board_o(poll_board_o), .poll_adr_o(poll_adr_o),
+        .poll_dat_i(poll_dat_i), .poll_ack_i(poll_ack_i), .poll_err_i(poll_err_i), .sync_rl_i(sync_rl_i),
+        .time_o(time_o), .cycle_o(cycle_o), .error_o(error_o), .rom_errors_o(rom_errors_o),
+        .cycles_o(cycles_o)
+    );
+
+`ifdef FORMAL
+    reg init_q = 1'b1;
+    always @(posedge clk_i) init_q <= 1'b0;
+
+    // ------------------------------------------------------------ the model
+    reg           started_q;      // a cycle has started (start-up is over)
+    reg [CW-1:0]  crel_q;         // clocks since the last cycle start (saturating)
+    reg           busy_q;         // a slot runs: go_o given, slot_done_i not yet
+    reg           cur_q;          // the entry of that slot (or of the last one)
+    reg           last_done_q;    // the cycle's last slot is over
+    reg           hit_q;          // the last clock had a poll hit
+    reg           rst_q;
+    reg  [31:0]   time_q;         // time_o of the last clock
+    reg  [31:0]   ts_q;           // time_o of the last planned slot start S
+
+    wire [CW-1:0] crel   = cycle_o ? {CW{1'b0}} : crel_q;
+    wire [31:0]   crel32 = {{(32-CW){1'b0}}, crel};
+    wire          at_go0 = started_q && crel32 == G0;
+    wire          at_go1 = started_q && crel32 == G1;
+    wire          busy   = go_o || busy_q;
+    wire          cur    = go_o ? at_go1 : cur_q;
+    wire [31:0]   dl     = cur ? D1 : D0;
+    wire          open_w = busy && crel32 + 32'd1 + MARGIN <= dl;   // an access may begin next clock
+    wire [7:0]    actual = poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 8];
+    wire          hit    = poll_cyc_o && poll_ack_i && actual != 8'd0 && actual[7:2] == 6'd0 &&
+                           actual[1:0] != sync_rl_i;
+
+    always @(posedge clk_i) begin
+        rst_q  <= rst_i;
+        time_q <= time_o;
+        if ((started_q || cycle_o) && (crel32 == F_S0 || crel32 == F_S1)) ts_q <= time_o;
+        if (rst_i) begin
+            started_q   <= 1'b0;
+            crel_q      <= {CW{1'b0}};
+            busy_q      <= 1'b0;
+            cur_q       <= 1'b0;
+            last_done_q <= 1'b0;
+            hit_q       <= 1'b0;
+        end else begin
+            if (cycle_o) started_q <= 1'b1;
+            crel_q      <= (&crel) ? crel : crel + 1'b1;
+            busy_q      <= go_o || (busy_q && !slot_done_i);
+            cur_q       <= cur;
+            last_done_q <= (last_done_q && !cycle_o) || (busy_q && slot_done_i && cur_q);
+            hit_q       <= hit;
+        end
+    end
+
+    // ------------------------------------------------------------ assumptions
+    always @* begin
+        assume(rst_i == init_q);
+`ifdef F_EAGER
+        assume(enable_i);     // bounded tasks (cover, negatives): start-up begins at once
+`endif
+        // the engines end a slot before the next planned start (the last one before H1)
+        if (busy_q && crel32 == (cur_q ? F_H1 : F_S1) - 32'd1) assume(slot_done_i);
+    end
+
+    // ------------------------------------------------------------ properties
+    always @* begin
+        if (!init_q) begin
+            go_time:       assert(!go_o || at_go0 || at_go1);
+            if (F_VALID) begin
+                go_given:  assert(!(at_go0 || at_go1) || go_o);
+            end
+            if (go_o && at_go0) begin
+                go_fields_0: assert(kind_o == F_KIND0 && chan_o == F_CHAN0 && nd_o == F_ND0 && words_o == F_W0 &&
+                                  src_board_o == F_SRCB0 && src_base_o == F_SRCA0 && dst_board_o == F_DSTB0 &&
+                                  dst_base_o == F_DSTA0 && sync_entry_o == F_SYNC0 &&
+                                  slot_time_o == ts_q);
+            end
+            if (go_o && at_go1) begin
+                go_fields_1: assert(kind_o == F_KIND1 && chan_o == F_CHAN1 && nd_o == F_ND1 && words_o == F_W1 &&
+                                  src_board_o == F_SRCB1 && src_base_o == F_SRCA1 && dst_board_o == F_DSTB1 &&
+                                  dst_base_o == F_DSTA1 && sync_entry_o == F_SYNC1 &&
+                                  slot_time_o == ts_q);
+            end
+            deadline:      assert(!may_access_o || (started_q && open_w));
+            access_window: assert(!(started_q && open_w) || may_access_o);
+            if (started_q) begin
+                cycle_start: assert(cycle_o == ({{(32-CW){1'b0}}, crel_q} == F_H1 || hit_q));
+            end
+            poll_when:     assert(!poll_cyc_o || (F_SMODE && started_q && last_done_q && !cycle_o &&
+                                                  poll_board_o == F_SRCB0 && poll_adr_o == F_SRCA0));
+            idle_on_error: assert(!error_o || !(go_o || poll_cyc_o || may_access_o));
+            if (F_VALID) begin
+                rom_ok:    assert(!error_o && rom_errors_o == 16'd0);
+            end else begin
+                never_starts: assert(!cycle_o && !started_q);
+            end
+`ifndef F_PDR
+            if (!rst_q) begin
+                time_step: assert(time_o == time_q + 32'd1);
+            end
+`endif
+        end
+    end
+
+    // ------------------------------------------------------------ non-vacuity
+    always @* begin
+        if (!init_q) begin
+            if (F_VALID) begin
+                c_go1:      cover(go_o && at_go1);
+                c_cycle2:   cover(cycle_o && started_q);
+                c_last_acc: cover(may_access_o && crel32 + 32'd1 + MARGIN == D0);
+            end else begin
+                c_error:    cover(error_o);
+            end
+            if (F_SMODE) begin
+                c_poll:     cover(poll_cyc_o);
+                c_early:    cover(cycle_o && started_q && hit_q);
+            end
+        end
+    end
+`ifdef F_PROBE
+    // ------------------------------------------------------------ induction strengthening
+    // Joined by sequencer.sby after flatten (white-box; the sequencer's state
+    // encoding is mirrored here).  No named wire may be a plain alias of an f_*
+    // wire (e.g. w = {0, f_x}): `connect -set` would cut the alias off and
+    // leave it undriven; use the f_* wires in expressions instead.
+    localparam [2:0] ST_HEADER = 3'd0, ST_CHECK = 3'd1, ST_ERROR = 3'd2, ST_WAIT = 3'd3,
+                     ST_FETCH = 3'd4, ST_TRANSFER = 3'd5, ST_CYCLE_END = 3'd6;
+    localparam       AW = $clog2(F_ROM_WORDS);
+    localparam [AW-1:0] LAST_W = F_ROM_WORDS - 1;      // the image's last word
+    (* keep *) wire [2:0]          f_state, f_step;
+    (* keep *) wire [F_TB-1:0]     f_rel, f_cycle, f_first, f_start, f_next_start;
+    (* keep *) wire [F_TB:0]       f_end, f_prev_end;
+    (* keep *) wire [7:0]          f_ne, f_ent;
+    (* keep *) wire [AW-1:0]       f_ent_adr, f_bg_adr, f_bg_dadr;
+    (* keep *) wire                f_smode, f_sync_ok, f_start_bad, f_next_bad, f_bad, f_sflag, f_poll, f_bg_data;
+    (* keep *) wire [31:0]         f_h3, f_slot_time, f_crc;
+    (* keep *) wire [1:0]          f_kind;
+    (* keep *) wire [4:0]          f_chan;
+    (* keep *) wire [2:0]          f_nd;
+    (* keep *) wire [11:0]         f_w;
+    (* keep *) wire [13:0]         f_e3;
+    (* keep *) wire [3:0]          f_sbrd, f_sync_brd;
+    (* keep *) wire [F_AW-1:0]     f_sbase, f_sync_base;
+    (* keep *) wire [15:0]         f_dbrd;
+    (* keep *) wire [4*F_AW-1:0]   f_dbase;
+    (* keep *) wire [33*(F_NE+1)-1:0] f_sig;         // the prefix signatures, part r at [33r +: 33]
+    (* keep *) wire [32:0]         f_sig_q;
+    (* keep *) wire [31:0]         f_rom_q;       // the ROM's read register
+
+    wire          run    = started_q || cycle_o;        // start-up is over
+    wire          e1     = f_ent == 8'd1;
+    wire [31:0]   s_ent  = e1 ? F_S1 : F_S0;
+    wire [31:0]   d_ent  = e1 ? D1 : D0;
+    wire          fetch  = f_state == ST_FETCH;
+    wire          xfer   = f_state == ST_TRANSFER;
+    wire          got1   = xfer || (fetch && f_step >= 3'd2);   // E0's fields are in
+    wire          got2   = xfer || (fetch && f_step >= 3'd3);   // E2
+    wire          got3   = xfer || (fetch && f_step >= 3'd4);   // E3
+    wire          got4   = xfer || (fetch && f_step >= 3'd5);   // E4
+    wire          got5   = xfer || (fetch && f_step >= 3'd6);   // E5
+    wire [AW-1:0] bg_nxt = f_bg_dadr == LAST_W ? {AW{1'b0}} : f_bg_dadr + 1'b1;
+    wire [31:0]   crcb   = F_CRCB[32*f_bg_dadr +: 32];
+    // the word a main read of the last clock left in rom_q: the header reads, the
+    // entry's words E0, E2..E5, then the next entry's E1 (past the image: free)
+    reg  [31:0]   main_a;
+    wire          hdr    = f_state == ST_HEADER;
+    always @* begin
+        case (f_step)
+            3'd1:    main_a = hdr ? 32'd0 : {{(32-AW){1'b0}}, f_ent_adr};
+            3'd2:    main_a = hdr ? 32'd1 : {{(32-AW){1'b0}}, f_ent_adr} + 32'd2;
+            3'd3:    main_a = hdr ? 32'd3 : {{(32-AW){1'b0}}, f_ent_adr} + 32'd3;
+            3'd4:    main_a = hdr ? 32'd5 : {{(32-AW){1'b0}}, f_ent_adr} + 32'd4;
+            3'd5:    main_a = {{(32-AW){1'b0}}, f_ent_adr} + 32'd5;
+            default: main_a = hdr ? 32'd0 : {{(32-AW){1'b0}}, f_ent_adr} + 32'd9;   // HEADER: word 0 while it waits
+        endcase
+    end
+    wire [31:0]   rom_main = F_ROM[32*main_a[AW-1:0] +: 32];
+    wire          hdr_ok = f_ne == F_NE && f_smode == F_SMODE && f_cycle == F_H1[F_TB-1:0] && f_h3 == F_H3 &&
+                           f_first == F_S0[F_TB-1:0];
+    wire [F_TB:0] pe_want = (f_ent == 8'd0 && !xfer) ? {(F_TB+1){1'b0}} :
+                            ((f_ent == 8'd0 && xfer) || (e1 && !xfer)) ? D0[F_TB:0] : D1[F_TB:0];
+    // a part's signature is stored once the start-up pass has checked its last word
+    wire [F_NE:0] sig_ok;
+    genvar r;
+    generate for (r = 0; r <= F_NE; r = r + 1) begin : g_sig
+        assign sig_ok[r] = !(run || (f_state == ST_CHECK && {{(32-AW){1'b0}}, f_bg_dadr} > 8 * r + 3)) ||
+                           f_sig[33*r +: 33] == {1'b0, F_PFX[32*r +: 32]};
+    end endgenerate
+    always @* begin
+        if (!init_q) begin
+            inv_reset: assert(!rst_q || (f_state == ST_HEADER && f_step == 3'd0 && !f_bg_data && f_bg_adr == 0 &&
+                                         f_crc == F_CRCB[31:0] && !error_o && !started_q && !f_poll));
+            if (!rst_q) begin
+                inv_bg:  assert(f_bg_adr == (f_bg_data ? bg_nxt : f_bg_dadr) && f_bg_dadr <= LAST_W);
+                inv_crc: assert(f_crc == crcb);
+            end
+            inv_poll:    assert(!f_poll || (f_state == ST_CYCLE_END && f_smode && f_sync_ok));
+            inv_sync:    assert(!f_sync_ok || (F_SYNC0 && f_sync_brd == F_SRCB0 && f_sync_base == F_SRCA0));
+            if (!run) begin
+                inv_start: assert(!started_q && !cycle_o && !busy_q && !hit_q &&
+                                  (f_state == ST_HEADER || f_state == ST_CHECK || (!F_VALID && f_state == ST_ERROR)));
+            end
+            if (f_state == ST_HEADER) begin
+                inv_header: assert(f_step <= 3'd4 && !error_o && (rst_q || (!f_bg_data && f_bg_dadr == 0)) &&
+                                   (f_step < 3'd2 || (f_ne == F_NE && f_smode == F_SMODE)) &&
+                                   (f_step < 3'd3 || f_cycle == F_H1[F_TB-1:0]) &&
+                                   (f_step < 3'd4 || f_h3 == F_H3));
+            end
+            if (f_state == ST_CHECK) begin
+                inv_check: assert(hdr_ok && !error_o);
+            end
+            if (f_state == ST_ERROR) begin
+                inv_error: assert(!F_VALID && error_o && !cycle_o && !started_q && (!f_bg_data || f_bg_dadr == 0));
+            end
+            inv_sig: assert(&sig_ok);
+            // the signature read register: the background part, or at FETCH clock 1 the entry's
+            if (run && f_bg_data) begin
+                inv_sig_q: assert(f_sig_q == {1'b0, F_PFX[32*f_bg_dadr[AW-1:3] +: 32]});
+            end
+            if (run && fetch && f_step == 3'd1) begin
+                inv_sig_f: assert(f_sig_q == {1'b0, F_PFX[32*({31'd0, f_ent[0]} + 32'd1) +: 32]});
+            end
+            // the ROM read register: a background read, a header read, a fetch read
+            if (!rst_q && f_bg_data) begin
+                inv_rom_bg: assert(f_rom_q == F_ROM[32*f_bg_dadr +: 32]);
+            end
+            if ((hdr && !rst_q) || (fetch && main_a < F_ROM_WORDS)) begin
+                inv_rom_main: assert(f_rom_q == rom_main);
+            end
+            if (run) begin
+                inv_run: assert(hdr_ok && !error_o && f_rel == crel[F_TB-1:0] && crel32 < F_H1 &&
+                                f_ent <= 8'd2 && {{(32-AW){1'b0}}, f_ent_adr} == 32'd4 + 32'd8 * {24'd0, f_ent} &&
+                                (f_ent == 8'd2 || (f_start == s_ent[F_TB-1:0] && !f_start_bad)) &&
+                                f_prev_end == pe_want && (busy_q == xfer) && (!xfer || cur_q == e1) &&
+                                ((last_done_q && !cycle_o) == (f_state == ST_CYCLE_END)));
+                case (f_state)
+                    ST_WAIT:      inv_wait:  assert(f_ent < 8'd2 && crel32 <= s_ent && (!e1 || crel32 >= G0 + 32'd2));
+                    ST_FETCH:     inv_fetch: assert(f_ent < 8'd2 && crel32 == s_ent + {29'd0, f_step} && f_step >= 3'd1 &&
+                                                    f_step <= 3'd6 && !f_bad && f_slot_time == ts_q);
+                    ST_TRANSFER:  inv_xfer:  assert(f_ent < 8'd2 && crel32 > s_ent + FETCH - 32'd1 &&
+                                                    crel32 < (e1 ? F_H1 : F_S1) &&
+                                                    (e1 || (f_next_start == F_S1[F_TB-1:0] && !f_next_bad)));
+                    ST_CYCLE_END: inv_end:   assert(f_ent == 8'd2 && crel32 >= G1 + 32'd2);
+                    default:      inv_state: assert(1'b0);
+                endcase
+                if (f_ent >= 8'd1 || xfer) begin
+                    inv_sync_ok: assert(f_sync_ok == F_SYNC0);
+                end
+                if (got1) begin
+                    inv_e0: assert(f_kind == (e1 ? F_KIND1 : F_KIND0) && f_sflag == (e1 ? F_SYNC1 : F_SYNC0) &&
+                                   f_chan == (e1 ? F_CHAN1 : F_CHAN0) && f_nd == (e1 ? F_ND1 : F_ND0) &&
+                                   f_w == (e1 ? F_W1 : F_W0) && f_e3 == 14'd3 * {2'd0, f_w});
+                end
+                if (got2) begin
+                    inv_e2: assert(f_end == d_ent[F_TB:0]);
+                end
+                if (got3) begin
+                    inv_e3: assert(f_sbrd == (e1 ? F_SRCB1 : F_SRCB0) && f_sbase == (e1 ? F_SRCA1 : F_SRCA0));
+                end
+                if (got4) begin
+                    inv_e4: assert(f_dbrd[7:0] == (e1 ? F_DSTB1[7:0] : F_DSTB0[7:0]) &&
+                                   f_dbase[2*F_AW-1:0] == (e1 ? F_DSTA1[2*F_AW-1:0] : F_DSTA0[2*F_AW-1:0]));
+                end
+                if (got5) begin
+                    inv_e5: assert(f_dbrd[15:8] == (e1 ? F_DSTB1[15:8] : F_DSTB0[15:8]) &&
+                                   f_dbase[4*F_AW-1:2*F_AW] == (e1 ? F_DSTA1[4*F_AW-1:2*F_AW] : F_DSTA0[4*F_AW-1:2*F_AW]));
+                end
+            end
+        end
+    end
+`endif
+`endif
+
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,25 @@
+# formal/sequencer/tests.mk -- the SymbiYosys tests of formal/sequencer/sequencer.sby
+# (tools/mk/formal_sby.mk says the fields: NAME:CORE:TASK:EXPECT, CORE:VARIANT).
+FSBY_TESTS_SPEC += \
+    formal-sequencer:sequencer:prove:pass \
+    formal-sequencer-sync:sequencer:prove_sync:pass \
+    formal-sequencer-error:sequencer:prove_bad:pass \
+    formal-sequencer-pdr:sequencer:prove_pdr:pass \
+    formal-sequencer-cover:sequencer:cover:pass \
+    formal-sequencer-cover-sync:sequencer:cover_sync:pass \
+    formal-sequencer-cover-error:sequencer:cover_bad:pass \
+    formal-sequencer-negative-slot_late:sequencer:neg_slot_late:go_time \
+    formal-sequencer-negative-deadline_late:sequencer:neg_deadline_late:deadline \
+    formal-sequencer-negative-start_bad_crc:sequencer:neg_start_bad_crc:idle_on_error
+FSBY_MUTANTS += sequencer:slot_late sequencer:deadline_late sequencer:start_bad_crc
+FSBY_RTL_sequencer := rtl/albatross_sequencer.v rtl/albatross_rom_check.v rtl/albatross_entry_check.v
+
+# The ROM images of the proofs and their decoded fields, written by gen_rom.py with the
+# schedule compiler's encoder and CRC (sequencer.sby reads them from this folder).
+FSEQ_ROM       := $(BUILD)/formal/sby/sequencer-rom
+FSEQ_ROM_FILES := $(foreach i,time sync badcrc,$(FSEQ_ROM)/$(i).hex $(FSEQ_ROM)/$(i).vh)
+$(FSEQ_ROM_FILES) &: formal/sequencer/gen_rom.py rtl/albatross_contract.toml \
+                     $(wildcard compiler/albatross_schedule/*.py)
+	$(PYTHON) formal/sequencer/gen_rom.py $(FSEQ_ROM)
+$(foreach t,$(FSBY_TESTS_SPEC),$(if $(filter sequencer,$(call neg_field,$(t),2)),test-$(call neg_field,$(t),1))): \
+        $(FSEQ_ROM_FILES)
