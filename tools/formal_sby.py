@@ -119,7 +119,9 @@ def main():
     unproved = sorted({p for p, _, s in re.findall(r"failed assertion (\S+) at (\S+)(?: step (\d+))?", out) if not s})
     traces = re.findall(r"counterexample trace: (\S+)", out)
     unreached = re.findall(r"unreached cover statement (\S+)", out)
-    reached = re.findall(r"reached cover statement (\S+)", out)
+    # The engine logs every cover it reaches; SymbiYosys's closing summary lists only a few.
+    reached = sorted(set(re.findall(r"Reached cover statement in step \d+ at \S+ (\S+)", out))
+                     | {c.rsplit(".", 1)[-1] for c in re.findall(r"(?<!un)reached cover statement (\S+)", out)})
     mode = opts.get("mode", "?")
     result = {"PASS": {"prove": "proved", "cover": "all covers reached", "bmc": "no failure"}.get(mode, "pass"),
               "FAIL": "failed", "UNKNOWN": "induction failed" if unproved else "unknown"}.get(status, status.lower())
