@@ -42,25 +42,33 @@
 //   no_actual_write nor to the buffer the live Actual of d names.
 //   complete_publish a store of Actual := b to d only after words 0..S-1 of buffer
 //                   b of d were stored and acked in this Export.
-//   word_data       words are taken in order 0..W-1, once; word k's stores carry
-//                   the stream's word k, the taken_at store taken_at_i.
+//   word_data       word k's stores carry the stream's word k, the taken_at store
+//                   taken_at_i sampled at start;
+//   word_order      words are taken in order 0..W-1, each once.
 //   access_start    an access begins only in the clock after an edge with
 //                   may_access_i = 1.
 //   drop_dead       DROP = 1: no access to d after its second err in this Export;
 //   landed_leave    none after a read-back of Actual equal to tried_i[d] != 0.
-//   exact_accesses  at done_o: undisturbed (no err, may_access_i and word_valid_i
-//                   high whenever needed), acks = ND * (S + 2) + unknown copies,
-//                   a landed destination counting 1; disturbed, at most that.
+//   exact_accesses  at done_o: undisturbed (no err, may_access_i high at every edge
+//                   of the Export, word_valid_i high whenever word_ready_o), acks =
+//                   ND * (S + 2) + unknown copies, a landed destination counting 1;
+//                   disturbed, at most that.
 //   no_idle         undisturbed, cyc is high in every clock of the Export before
 //                   done_o.
 //   published_exact at done_o published_o[d] = Actual acked, or landed read-back;
+//   complete_export at done_o without cut_o every d in need_i is published or
+//                   (DROP = 1) dropped: a failing destination never blocks the others;
 //   fail_copy       after an err on d's Actual store not repeated with an ack:
 //                   act_known_o[d] = 0 and tried_o[d] = the buffer tried.
-//   copy_ok, published_ok, tried_sound  (every idle clock) a known copy is the
-//                   RAM's Actual; a published d's Actual names a complete buffer;
-//                   tried_o meets the tried_i assumption of the next Export.
-// With -DF_PROBE the script joins f_* wires to the engine's registers for the
-// k-induction invariants inv_* (Yosys has no hierarchical references).
+//   copy_ok, published_ok, tried_sound  (every clock) a known copy is the RAM's
+//                   Actual; a published d's Actual names a complete buffer; tried_o
+//                   meets the tried_i assumption of the next Export.
+// Covers (cover task): cov_both (undisturbed, both destinations), cov_unknown (a
+// read-back), cov_landed, cov_failed, cov_cut, cov_drop, cov_retry, cov_moved (a
+// store while the consumer holds a buffer it locked after the engine's load).
+// With -DF_PROBE the invariants of fexport_inv.v are added (instance inv); the
+// script joins its f_* wires to the engine's registers (Yosys has no
+// hierarchical references).
 `default_nettype none
 
 module fexport #(
