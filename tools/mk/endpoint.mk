@@ -127,27 +127,3 @@ endpoint-report: test-endpoint-export test-endpoint-import
 	           i["imports_new"], i["accesses_per_import_old"], i["accesses_per_import_new"], \
 	           i["clocks_per_import_old_mean"], i["clocks_per_import_new_mean"]))' \
 	    $(REPORTS)/endpoint_export.json $(REPORTS)/endpoint_import.json $(REPORTS)/endpoint.json
-
-# Bounded proof of the Export engine (formal/engines/formal_export.v: every
-# transfer from reset up to the depth, adversarial slave and stream), and the
-# engine mutants above caught by it.  k-induction (yosys-smtbmc -i) does not
-# finish at depth 12 within minutes without strengthening invariants: not yet.
-EP_FORMAL_PROPS := no_locked_write,complete_publish,exact_accesses,in_channel
-EP_FORMAL_DEPTH := 20
-ep_formal = $(FRTL_RUN) $(1) --engine smtbmc --top formal_export --depth $(EP_FORMAL_DEPTH) \
-            --props $(EP_FORMAL_PROPS) --src $(2) formal/engines/formal_export.v --expect $(3)
-EP_FORMAL_TESTS := formal-export-engine formal-export-engine-negative-export_writes_locked \
-                   formal-export-engine-negative-export_early_publish
-TESTS        += $(EP_FORMAL_TESTS)
-FORMAL_TESTS += $(EP_FORMAL_TESTS)
-.PHONY: $(addprefix test-,$(EP_FORMAL_TESTS))
-test-formal-export-engine: formal/engines/formal_export.v rtl/albatross_export.v $$(FRTL_DEPS)
-	@tools/run_test.sh formal-export-engine $(call ep_formal,formal-export-engine,rtl/albatross_export.v,pass)
-# export_writes_locked: no_locked_write.  export_early_publish: complete_publish,
-# or (W = 1: the mutant's last-word test never holds, it stores on past the
-# value) in_channel, or no_locked_write (those stores run into the next
-# buffer, which may be the locked one), whichever the solver reaches first.
-test-formal-export-engine-negative-export_writes_locked: $(EP_DIR)/mut-export_writes_locked/src/albatross_export.v $$(FRTL_DEPS)
-	@tools/run_test.sh formal-export-engine-negative-export_writes_locked $(call ep_formal,formal-export-engine-negative-export_writes_locked,$<,no_locked_write)
-test-formal-export-engine-negative-export_early_publish: $(EP_DIR)/mut-export_early_publish/src/albatross_export.v $$(FRTL_DEPS)
-	@tools/run_test.sh formal-export-engine-negative-export_early_publish $(call ep_formal,formal-export-engine-negative-export_early_publish,$<,'complete_publish|in_channel|no_locked_write')
