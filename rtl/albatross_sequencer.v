@@ -102,7 +102,7 @@ module albatross_sequencer #(
     localparam [PC_BITS-1:0]  POLL_LAST   = POLL_LAST_I[PC_BITS-1:0];
     localparam integer        MIN_LEN_I   = FETCH_CYCLES + MARGIN;
     localparam [TB:0]         MARGIN_T    = MARGIN[TB:0];
-    localparam [ROM_AW-1:0]   A1 = 1, A2 = 2, A3 = 3, A4 = 4, A5 = 5, A8 = 8, A9 = 9;
+    localparam [ROM_AW-1:0]   A1 = 1, A3 = 3, A5 = 5;
     localparam [7:0]          NE_MAX8     = NE_MAX[7:0];
     localparam                HFLAG_SYNC  = ALB_ROM_H0_FLAGS_LSB + ALB_ROM_HFLAG_SYNC_MODE;
     localparam                EFLAG_SYNC  = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_SYNC;
@@ -157,7 +157,6 @@ module albatross_sequencer #(
     reg [TB:0]         end_q;         // start + length: the deadline D in rel
     reg [TB:0]         prev_end_q;    // the previous valid slot's end
     reg [7:0]          ent_q;
-    reg [ROM_AW-1:0]   ent_adr_q;     // 4 + 8 * ent_q
     reg                bad_q;         // the entry being fetched is invalid
     reg [1:0]          kind_q;
     reg                sflag_q;
@@ -213,24 +212,36 @@ module albatross_sequencer #(
     /* verilator lint_on UNUSEDSIGNAL */
     wire [ROM_AW-1:0]  last_word = last_wide[ROM_AW-1:0];
     // Main reads: header H0, H1, H3, E1 of entry 0; fetch E0 (clock S), E2..E5, E1 of the next.
+    // Entry k's word j is 4 + 8k + j = {k, 3'b100} + j (mod 2^ROM_AW): E0, E2, E3 are
+    // {k, 1jj}, E4, E5 and the next E1 are {k + 1, 0jj / 101}; ent_inc is k + 1 (shared
+    // with the entry count).
     wire [ROM_AW-1:0] bg_adr;         // the ROM check's next word
+    wire [7:0]        ent_inc = ent_q + 8'd1;
+    wire              adr_inc = state_q == ST_FETCH && step_q >= 3'd3;   // E4, E5, next E1
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [7:0]        ent_sel = adr_inc ? ent_inc : ent_q;
+    /* verilator lint_on UNUSEDSIGNAL */
+    reg  [2:0]        adr_lo;
+    always @* begin
+        adr_lo = 3'b100;                                             // E0 (start_now)
+        if (state_q == ST_FETCH)
+            case (step_q)
+                3'd1:    adr_lo = 3'b110;                            // E2
+                3'd2:    adr_lo = 3'b111;                            // E3
+                3'd3:    adr_lo = 3'b000;                            // E4
+                3'd4:    adr_lo = 3'b001;                            // E5
+                default: adr_lo = 3'b101;                            // E1 of the next entry
+            endcase
+    end
     reg [ROM_AW-1:0] main_adr;
     always @* begin
-        main_adr = ent_adr_q;                                       // E0 (start_now)
+        main_adr = {ent_sel[ROM_AW-4:0], adr_lo};
         if (state_q == ST_HEADER)
             case (step_q)
                 3'd0:    main_adr = {ROM_AW{1'b0}};
                 3'd1:    main_adr = A1;
                 3'd2:    main_adr = A3;
                 default: main_adr = A5;                              // E1 of entry 0
-            endcase
-        else if (state_q == ST_FETCH)
-            case (step_q)
-                3'd1:    main_adr = ent_adr_q | A2;               // E2
-                3'd2:    main_adr = ent_adr_q | A3;               // E3
-                3'd3:    main_adr = ent_adr_q + A4;               // E4
-                3'd4:    main_adr = ent_adr_q + A5;               // E5
-                default: main_adr = ent_adr_q + A9;               // E1 of the next entry
             endcase
     end
     always @(posedge clk_i) begin
@@ -266,7 +277,7 @@ module albatross_sequencer #(
 
     // ------------------------------------------------------------ control
     wire cycle_end  = rel_q >= cycle_q - 1'b1;      // (late only if a slot overran: recover)
-    wire last_ent   = ent_q + 8'd1 == ne_q;
+    wire last_ent   = ent_inc == ne_q;
     wire poll_hit   = poll_q && poll_ack_i && poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 8] != 8'd0 &&
                       poll_dat_i[8*ALB_CH_OFF_ACTUAL + 2 +: 6] == 6'd0 &&
                       poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 2] != sync_rl_i;
@@ -377,8 +388,7 @@ module albatross_sequencer #(
                 default: ;
             endcase
             if (entry_over) begin
-                ent_q       <= ent_q + 8'd1;
-                ent_adr_q   <= ent_adr_q + A8;
+                ent_q       <= ent_inc;
                 start_q     <= (state_q == ST_FETCH) ? rom_q[TB-1:0] : next_start_q;
                 start_bad_q <= (state_q == ST_FETCH) ? rom_q[31:TB] != 0 : next_bad_q;
                 state_q     <= last_ent ? ST_CYCLE_END : ST_WAIT;
@@ -387,7 +397,6 @@ module albatross_sequencer #(
             if (new_cycle) begin
                 rel_q       <= {TB{1'b0}};
                 ent_q       <= 8'd0;
-                ent_adr_q   <= A4;
                 start_q     <= first_start_q;
                 start_bad_q <= 1'b0;
                 prev_end_q  <= {(TB+1){1'b0}};

@@ -227,7 +227,7 @@ module fseq (
     (* keep *) wire [F_TB-1:0]     f_rel, f_cycle, f_first, f_start, f_next_start;
     (* keep *) wire [F_TB:0]       f_end, f_prev_end;
     (* keep *) wire [7:0]          f_ne, f_ent;
-    (* keep *) wire [AW-1:0]       f_ent_adr, f_bg_adr, f_bg_dadr;
+    (* keep *) wire [AW-1:0]       f_bg_adr, f_bg_dadr;
     (* keep *) wire                f_smode, f_sync_ok, f_start_bad, f_next_bad, f_bad, f_sflag, f_poll, f_bg_data;
     (* keep *) wire [31:0]         f_h3, f_slot_time, f_crc;
     (* keep *) wire [1:0]          f_kind;
@@ -258,16 +258,18 @@ module fseq (
     wire [31:0]   crcb   = F_CRCB[32*f_bg_dadr +: 32];
     // the word a main read of the last clock left in rom_q: the header reads, the
     // entry's words E0, E2..E5, then the next entry's E1 (past the image: free)
+    // (entry k's words start at 4 + 8k: the sequencer derives its addresses from ent_q)
     reg  [31:0]   main_a;
     wire          hdr    = f_state == ST_HEADER;
+    wire [31:0]   e_base = 32'd4 + 32'd8 * {24'd0, f_ent};
     always @* begin
         case (f_step)
-            3'd1:    main_a = hdr ? 32'd0 : {{(32-AW){1'b0}}, f_ent_adr};
-            3'd2:    main_a = hdr ? 32'd1 : {{(32-AW){1'b0}}, f_ent_adr} + 32'd2;
-            3'd3:    main_a = hdr ? 32'd3 : {{(32-AW){1'b0}}, f_ent_adr} + 32'd3;
-            3'd4:    main_a = hdr ? 32'd5 : {{(32-AW){1'b0}}, f_ent_adr} + 32'd4;
-            3'd5:    main_a = {{(32-AW){1'b0}}, f_ent_adr} + 32'd5;
-            default: main_a = hdr ? 32'd0 : {{(32-AW){1'b0}}, f_ent_adr} + 32'd9;   // HEADER: word 0 while it waits
+            3'd1:    main_a = hdr ? 32'd0 : e_base;
+            3'd2:    main_a = hdr ? 32'd1 : e_base + 32'd2;
+            3'd3:    main_a = hdr ? 32'd3 : e_base + 32'd3;
+            3'd4:    main_a = hdr ? 32'd5 : e_base + 32'd4;
+            3'd5:    main_a = e_base + 32'd5;
+            default: main_a = hdr ? 32'd0 : e_base + 32'd9;   // HEADER: word 0 while it waits
         endcase
     end
     wire [31:0]   rom_main = F_ROM[32*main_a[AW-1:0] +: 32];
@@ -325,7 +327,7 @@ module fseq (
             end
             if (run) begin
                 inv_run: assert(hdr_ok && !error_o && f_rel == crel[F_TB-1:0] && crel32 < F_H1 &&
-                                f_ent <= 8'd2 && {{(32-AW){1'b0}}, f_ent_adr} == 32'd4 + 32'd8 * {24'd0, f_ent} &&
+                                f_ent <= 8'd2 &&
                                 (f_ent == 8'd2 || (f_start == s_ent[F_TB-1:0] && !f_start_bad)) &&
                                 f_prev_end == pe_want && (busy_q == xfer) && (!xfer || cur_q == e1) &&
                                 ((last_done_q && !cycle_o) == (f_state == ST_CYCLE_END)));
