@@ -276,7 +276,8 @@ module albatross_sequencer #(
         .cycle_i(cycle_q), .prev_end_i(prev_end_q), .e2_end_i(e2_end), .bad_o(bad_now));
 
     // ------------------------------------------------------------ control
-    wire cycle_end  = rel_q >= cycle_q - 1'b1;      // (late only if a slot overran: recover)
+    wire [TB:0] rel_next = {1'b0, rel_q} + 1'b1;
+    wire cycle_end  = rel_next >= {1'b0, cycle_q};  // rel_q >= H1 - 1 (late only if a slot overran: recover)
     wire last_ent   = ent_inc == ne_q;
     wire poll_hit   = poll_q && poll_ack_i && poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 8] != 8'd0 &&
                       poll_dat_i[8*ALB_CH_OFF_ACTUAL + 2 +: 6] == 6'd0 &&
@@ -286,7 +287,6 @@ module albatross_sequencer #(
     wire new_cycle  = (state_q == ST_CYCLE_END && (cycle_end || poll_hit)) ||
                       (entry_over && last_ent && cycle_end) ||       // the last slot ends at H1 - 1
                       (state_q == ST_CHECK && p_last && crc_ok);
-    wire [TB:0] rel_next = {1'b0, rel_q} + 1'b1;
     wire        go_now   = state_q == ST_FETCH && step_q == 3'd6 && !bad_q && kind_q != ALB_KIND_IDLE[1:0];
 
     always @(posedge clk_i) begin
