@@ -150,10 +150,8 @@ module albatross_sequencer #(
     reg                sync_ok_q;     // entry 0 is a valid SYNC COPY (this cycle)
     reg [31:0]         h3_q;
     reg [TB-1:0]       first_start_q; // E1 of entry 0
-    reg [TB-1:0]       start_q;       // E1 of entry ent_q
+    reg [TB-1:0]       start_q;       // E1 of entry ent_q; from FETCH clock 6 on, of entry ent_q + 1
     reg                start_bad_q;   // ... did not fit in TIME_BITS
-    reg [TB-1:0]       next_start_q;  // E1 of entry ent_q + 1
-    reg                next_bad_q;
     reg [TB:0]         end_q;         // start + length: the deadline D in rel
     reg [TB:0]         prev_end_q;    // the previous valid slot's end
     reg [7:0]          ent_q;
@@ -368,8 +366,8 @@ module albatross_sequencer #(
                                                                      rom_q[ALB_ROM_E5_DST2_BASE_LSB +: ADDR_WIDTH]};
                         end
                         default: begin                                          // E1 of the next entry
-                            next_start_q <= rom_q[TB-1:0];
-                            next_bad_q   <= rom_q[31:TB] != 0;
+                            start_q      <= rom_q[TB-1:0];             // (entry_check is done with it)
+                            start_bad_q  <= rom_q[31:TB] != 0;
                             if (!bad_q) prev_end_q <= end_q;
                             if (ent_q == 8'd0) begin
                                 sync_ok_q   <= !bad_q && sflag_q;
@@ -389,8 +387,6 @@ module albatross_sequencer #(
             endcase
             if (entry_over) begin
                 ent_q       <= ent_inc;
-                start_q     <= (state_q == ST_FETCH) ? rom_q[TB-1:0] : next_start_q;
-                start_bad_q <= (state_q == ST_FETCH) ? rom_q[31:TB] != 0 : next_bad_q;
                 state_q     <= last_ent ? ST_CYCLE_END : ST_WAIT;
                 pc_q        <= POLL_LAST;
             end

@@ -224,11 +224,11 @@ module fseq (
     localparam       AW = $clog2(F_ROM_WORDS);
     localparam [AW-1:0] LAST_W = F_ROM_WORDS - 1;      // the image's last word
     (* keep *) wire [2:0]          f_state, f_step;
-    (* keep *) wire [F_TB-1:0]     f_rel, f_cycle, f_first, f_start, f_next_start;
+    (* keep *) wire [F_TB-1:0]     f_rel, f_cycle, f_first, f_start;
     (* keep *) wire [F_TB:0]       f_end, f_prev_end;
     (* keep *) wire [7:0]          f_ne, f_ent;
     (* keep *) wire [AW-1:0]       f_bg_adr, f_bg_dadr;
-    (* keep *) wire                f_smode, f_sync_ok, f_start_bad, f_next_bad, f_bad, f_sflag, f_poll, f_bg_data;
+    (* keep *) wire                f_smode, f_sync_ok, f_start_bad, f_bad, f_sflag, f_poll, f_bg_data;
     (* keep *) wire [31:0]         f_h3, f_slot_time, f_crc;
     (* keep *) wire [1:0]          f_kind;
     (* keep *) wire [4:0]          f_chan;
@@ -328,7 +328,7 @@ module fseq (
             if (run) begin
                 inv_run: assert(hdr_ok && !error_o && f_rel == crel[F_TB-1:0] && crel32 < F_H1 &&
                                 f_ent <= 8'd2 &&
-                                (f_ent == 8'd2 || (f_start == s_ent[F_TB-1:0] && !f_start_bad)) &&
+                                (f_ent == 8'd2 || xfer || (f_start == s_ent[F_TB-1:0] && !f_start_bad)) &&
                                 f_prev_end == pe_want && (busy_q == xfer) && (!xfer || cur_q == e1) &&
                                 ((last_done_q && !cycle_o) == (f_state == ST_CYCLE_END)));
                 case (f_state)
@@ -337,7 +337,7 @@ module fseq (
                                                     f_step <= 3'd6 && !f_bad && f_slot_time == ts_q);
                     ST_TRANSFER:  inv_xfer:  assert(f_ent < 8'd2 && crel32 > s_ent + FETCH - 32'd1 &&
                                                     crel32 < (e1 ? F_H1 : F_S1) &&
-                                                    (e1 || (f_next_start == F_S1[F_TB-1:0] && !f_next_bad)));
+                                                    (e1 || (f_start == F_S1[F_TB-1:0] && !f_start_bad)));
                     ST_CYCLE_END: inv_end:   assert(f_ent == 8'd2 && crel32 >= G1 + 32'd2);
                     default:      inv_state: assert(1'b0);
                 endcase
