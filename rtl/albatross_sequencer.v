@@ -415,7 +415,7 @@ module albatross_sequencer #(
     assign dst_base_o   = dbase_q;
     assign slot_time_o  = slot_time_q;
     assign sync_entry_o = sflag_q;
-    assign may_access_o = (state_q == ST_TRANSFER || go_now) && rel_next + MARGIN_T <= end_q;
+    assign may_access_o = (state_q == ST_TRANSFER || go_now) && {1'b0, rel_q} < end_q - MARGIN_T; // c + 1 + MARGIN <= D (D >= MIN_LEN > MARGIN)
     assign poll_cyc_o   = poll_q;
     assign poll_board_o = sync_brd_q;
     assign poll_adr_o   = sync_base_q;
