@@ -286,6 +286,10 @@ module albatross_sequencer #(
                       (entry_over && last_ent && cycle_end) ||       // the last slot ends at H1 - 1
                       (state_q == ST_CHECK && p_last && crc_ok);
     wire        go_now   = state_q == ST_FETCH && step_q == 3'd6 && !bad_q && kind_q != ALB_KIND_IDLE[1:0];
+    // Saturating counters: the carry out of the increment says the count is at its top.
+    wire        rerr_up  = mism_new | (entry_over && state_q == ST_FETCH && bad_q);
+    wire [16:0] rerr_inc = {1'b0, rerr_q} + {16'd0, rerr_up};
+    wire [16:0] cyc_inc  = {1'b0, cycles_q} + 17'd1;
 
     always @(posedge clk_i) begin
         cycle_q1 <= 1'b0;
@@ -301,8 +305,7 @@ module albatross_sequencer #(
         end else begin
             time_q    <= time_q + 32'd1;
             rel_q     <= rel_next[TB-1:0];
-            if (rerr_q != 16'hFFFF)
-                rerr_q <= rerr_q + {15'd0, mism_new | (entry_over && state_q == ST_FETCH && bad_q)};
+            if (!rerr_inc[16]) rerr_q <= rerr_inc[15:0];
             case (state_q)
                 ST_HEADER: if (enable_i || step_q != 3'd0) begin
                     step_q <= step_q + 3'd1;
@@ -399,7 +402,7 @@ module albatross_sequencer #(
                 poll_q      <= 1'b0;
                 state_q     <= ST_WAIT;
                 cycle_q1    <= 1'b1;
-                if (cycles_q != 16'hFFFF) cycles_q <= cycles_q + 16'd1;
+                if (!cyc_inc[16]) cycles_q <= cyc_inc[15:0];
             end
         end
     end
