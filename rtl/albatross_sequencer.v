@@ -150,6 +150,7 @@ module albatross_sequencer #(
     reg                sync_ok_q;     // entry 0 is a valid SYNC COPY (this cycle)
     reg [31:0]         h3_q;
     reg [TB-1:0]       first_start_q; // E1 of entry 0
+    reg                first_bad_q;   // ... did not fit in TIME_BITS
     reg [TB-1:0]       start_q;       // E1 of entry ent_q; from FETCH clock 6 on, of entry ent_q + 1
     reg                start_bad_q;   // ... did not fit in TIME_BITS
     reg [TB:0]         end_q;         // start + length: the deadline D in rel
@@ -326,6 +327,7 @@ module albatross_sequencer #(
                     endcase
                     if (step_q == 3'd4) begin                                   // E1 of entry 0
                         first_start_q <= rom_q[TB-1:0];
+                        first_bad_q   <= rom_q[31:TB] != 0;
                         state_q       <= err_q ? ST_ERROR : ST_CHECK;
                     end
                 end
@@ -397,7 +399,7 @@ module albatross_sequencer #(
                 rel_q       <= {TB{1'b0}};
                 ent_q       <= 8'd0;
                 start_q     <= first_start_q;
-                start_bad_q <= 1'b0;
+                start_bad_q <= first_bad_q;
                 prev_end_q  <= {(TB+1){1'b0}};
                 poll_q      <= 1'b0;
                 state_q     <= ST_WAIT;

@@ -228,7 +228,7 @@ module fseq (
     (* keep *) wire [F_TB:0]       f_end, f_prev_end;
     (* keep *) wire [7:0]          f_ne, f_ent;
     (* keep *) wire [AW-1:0]       f_bg_adr, f_bg_dadr;
-    (* keep *) wire                f_smode, f_sync_ok, f_start_bad, f_bad, f_sflag, f_poll, f_bg_data;
+    (* keep *) wire                f_smode, f_sync_ok, f_start_bad, f_first_bad, f_bad, f_sflag, f_poll, f_bg_data;
     (* keep *) wire [31:0]         f_h3, f_slot_time, f_crc;
     (* keep *) wire [1:0]          f_kind;
     (* keep *) wire [4:0]          f_chan;
@@ -274,7 +274,7 @@ module fseq (
     end
     wire [31:0]   rom_main = F_ROM[32*main_a[AW-1:0] +: 32];
     wire          hdr_ok = f_ne == F_NE && f_smode == F_SMODE && f_cycle == F_H1[F_TB-1:0] && f_h3 == F_H3 &&
-                           f_first == F_S0[F_TB-1:0];
+                           f_first == F_S0[F_TB-1:0] && !f_first_bad;
     wire [F_TB:0] pe_want = (f_ent == 8'd0 && !xfer) ? {(F_TB+1){1'b0}} :
                             ((f_ent == 8'd0 && xfer) || (e1 && !xfer)) ? D0[F_TB:0] : D1[F_TB:0];
     // a part's signature is stored once the start-up pass has checked its last word
