@@ -149,9 +149,8 @@ module albatross_sequencer #(
     reg                smode_q;
     reg                sync_ok_q;     // entry 0 is a valid SYNC COPY (this cycle)
     reg [31:0]         h3_q;
-    reg [TB-1:0]       first_start_q; // E1 of entry 0
-    reg                first_bad_q;   // ... did not fit in TIME_BITS
     reg [TB-1:0]       start_q;       // E1 of entry ent_q; from FETCH clock 6 on, of entry ent_q + 1
+                                      // (of entry 0 after the last entry and after the header)
     reg                start_bad_q;   // ... did not fit in TIME_BITS
     reg [TB:0]         end_q;         // start + length: the deadline D in rel
     reg [TB:0]         prev_end_q;    // the previous valid slot's end
@@ -210,7 +209,8 @@ module albatross_sequencer #(
     wire [ROM_AW+11:0] last_wide = {{ROM_AW{1'b0}}, 1'b0, ne_q, 3'b011}; // 4 + 8*NE - 1
     /* verilator lint_on UNUSEDSIGNAL */
     wire [ROM_AW-1:0]  last_word = last_wide[ROM_AW-1:0];
-    // Main reads: header H0, H1, H3, E1 of entry 0; fetch E0 (clock S), E2..E5, E1 of the next.
+    // Main reads: header H0, H1, H3, E1 of entry 0; fetch E0 (clock S), E2..E5, E1 of the next
+    // (of entry 0 after the last entry: start_q then holds the next cycle's first start).
     // Entry k's word j is 4 + 8k + j = {k, 3'b100} + j (mod 2^ROM_AW): E0, E2, E3 are
     // {k, 1jj}, E4, E5 and the next E1 are {k + 1, 0jj / 101}; ent_inc is k + 1 (shared
     // with the entry count).
@@ -219,6 +219,7 @@ module albatross_sequencer #(
     wire              adr_inc = state_q == ST_FETCH && step_q >= 3'd3;   // E4, E5, next E1
     /* verilator lint_off UNUSEDSIGNAL */
     wire [7:0]        ent_sel = adr_inc ? ent_inc : ent_q;
+    wire              adr_wrap = state_q == ST_FETCH && step_q >= 3'd5 && ent_inc == ne_q;  // last entry: word 5
     /* verilator lint_on UNUSEDSIGNAL */
     reg  [2:0]        adr_lo;
     always @* begin
@@ -234,7 +235,7 @@ module albatross_sequencer #(
     end
     reg [ROM_AW-1:0] main_adr;
     always @* begin
-        main_adr = {ent_sel[ROM_AW-4:0], adr_lo};
+        main_adr = {adr_wrap ? {(ROM_AW-3){1'b0}} : ent_sel[ROM_AW-4:0], adr_lo};
         if (state_q == ST_HEADER)
             case (step_q)
                 3'd0:    main_adr = {ROM_AW{1'b0}};
@@ -326,8 +327,8 @@ module albatross_sequencer #(
                         default: ;
                     endcase
                     if (step_q == 3'd4) begin                                   // E1 of entry 0
-                        first_start_q <= rom_q[TB-1:0];
-                        first_bad_q   <= rom_q[31:TB] != 0;
+                        start_q       <= rom_q[TB-1:0];
+                        start_bad_q   <= rom_q[31:TB] != 0;
                         state_q       <= err_q ? ST_ERROR : ST_CHECK;
                     end
                 end
@@ -398,8 +399,6 @@ module albatross_sequencer #(
             if (new_cycle) begin
                 rel_q       <= {TB{1'b0}};
                 ent_q       <= 8'd0;
-                start_q     <= first_start_q;
-                start_bad_q <= first_bad_q;
                 prev_end_q  <= {(TB+1){1'b0}};
                 poll_q      <= 1'b0;
                 state_q     <= ST_WAIT;
