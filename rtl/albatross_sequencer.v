@@ -102,7 +102,7 @@ module albatross_sequencer #(
     localparam [PC_BITS-1:0]  POLL_LAST   = POLL_LAST_I[PC_BITS-1:0];
     localparam integer        MIN_LEN_I   = FETCH_CYCLES + MARGIN;
     localparam [TB:0]         MARGIN_T    = MARGIN[TB:0];
-    localparam [ROM_AW-1:0]   A1 = 1, A2 = 2, A3 = 3, A4 = 4, A5 = 5, A8 = 8, A9 = 9;
+    localparam [ROM_AW-1:0]   A1 = 1, A3 = 3, A5 = 5;
     localparam [7:0]          NE_MAX8     = NE_MAX[7:0];
     localparam                HFLAG_SYNC  = ALB_ROM_H0_FLAGS_LSB + ALB_ROM_HFLAG_SYNC_MODE;
     localparam                EFLAG_SYNC  = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_SYNC;
@@ -149,15 +149,12 @@ module albatross_sequencer #(
     reg                smode_q;
     reg                sync_ok_q;     // entry 0 is a valid SYNC COPY (this cycle)
     reg [31:0]         h3_q;
-    reg [TB-1:0]       first_start_q; // E1 of entry 0
-    reg [TB-1:0]       start_q;       // E1 of entry ent_q
+    reg [TB-1:0]       start_q;       // E1 of entry ent_q; from FETCH clock 6 on, of entry ent_q + 1
+                                      // (of entry 0 after the last entry and after the header)
     reg                start_bad_q;   // ... did not fit in TIME_BITS
-    reg [TB-1:0]       next_start_q;  // E1 of entry ent_q + 1
-    reg                next_bad_q;
     reg [TB:0]         end_q;         // start + length: the deadline D in rel
     reg [TB:0]         prev_end_q;    // the previous valid slot's end
     reg [7:0]          ent_q;
-    reg [ROM_AW-1:0]   ent_adr_q;     // 4 + 8 * ent_q
     reg                bad_q;         // the entry being fetched is invalid
     reg [1:0]          kind_q;
     reg                sflag_q;
@@ -212,25 +209,39 @@ module albatross_sequencer #(
     wire [ROM_AW+11:0] last_wide = {{ROM_AW{1'b0}}, 1'b0, ne_q, 3'b011}; // 4 + 8*NE - 1
     /* verilator lint_on UNUSEDSIGNAL */
     wire [ROM_AW-1:0]  last_word = last_wide[ROM_AW-1:0];
-    // Main reads: header H0, H1, H3, E1 of entry 0; fetch E0 (clock S), E2..E5, E1 of the next.
+    // Main reads: header H0, H1, H3, E1 of entry 0; fetch E0 (clock S), E2..E5, E1 of the next
+    // (of entry 0 after the last entry: start_q then holds the next cycle's first start).
+    // Entry k's word j is 4 + 8k + j = {k, 3'b100} + j (mod 2^ROM_AW): E0, E2, E3 are
+    // {k, 1jj}, E4, E5 and the next E1 are {k + 1, 0jj / 101}; ent_inc is k + 1 (shared
+    // with the entry count).
     wire [ROM_AW-1:0] bg_adr;         // the ROM check's next word
+    wire [7:0]        ent_inc = ent_q + 8'd1;
+    wire              adr_inc = state_q == ST_FETCH && step_q >= 3'd3;   // E4, E5, next E1
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [7:0]        ent_sel = adr_inc ? ent_inc : ent_q;
+    wire              adr_wrap = state_q == ST_FETCH && step_q >= 3'd5 && ent_inc == ne_q;  // last entry: word 5
+    /* verilator lint_on UNUSEDSIGNAL */
+    reg  [2:0]        adr_lo;
+    always @* begin
+        adr_lo = 3'b100;                                             // E0 (start_now)
+        if (state_q == ST_FETCH)
+            case (step_q)
+                3'd1:    adr_lo = 3'b110;                            // E2
+                3'd2:    adr_lo = 3'b111;                            // E3
+                3'd3:    adr_lo = 3'b000;                            // E4
+                3'd4:    adr_lo = 3'b001;                            // E5
+                default: adr_lo = 3'b101;                            // E1 of the next entry
+            endcase
+    end
     reg [ROM_AW-1:0] main_adr;
     always @* begin
-        main_adr = ent_adr_q;                                       // E0 (start_now)
+        main_adr = {adr_wrap ? {(ROM_AW-3){1'b0}} : ent_sel[ROM_AW-4:0], adr_lo};
         if (state_q == ST_HEADER)
             case (step_q)
                 3'd0:    main_adr = {ROM_AW{1'b0}};
                 3'd1:    main_adr = A1;
                 3'd2:    main_adr = A3;
                 default: main_adr = A5;                              // E1 of entry 0
-            endcase
-        else if (state_q == ST_FETCH)
-            case (step_q)
-                3'd1:    main_adr = ent_adr_q | A2;               // E2
-                3'd2:    main_adr = ent_adr_q | A3;               // E3
-                3'd3:    main_adr = ent_adr_q + A4;               // E4
-                3'd4:    main_adr = ent_adr_q + A5;               // E5
-                default: main_adr = ent_adr_q + A9;               // E1 of the next entry
             endcase
     end
     always @(posedge clk_i) begin
@@ -265,8 +276,9 @@ module albatross_sequencer #(
         .cycle_i(cycle_q), .prev_end_i(prev_end_q), .e2_end_i(e2_end), .bad_o(bad_now));
 
     // ------------------------------------------------------------ control
-    wire cycle_end  = rel_q >= cycle_q - 1'b1;      // (late only if a slot overran: recover)
-    wire last_ent   = ent_q + 8'd1 == ne_q;
+    wire [TB:0] rel_next = {1'b0, rel_q} + 1'b1;
+    wire cycle_end  = rel_next >= {1'b0, cycle_q};  // rel_q >= H1 - 1 (late only if a slot overran: recover)
+    wire last_ent   = ent_inc == ne_q;
     wire poll_hit   = poll_q && poll_ack_i && poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 8] != 8'd0 &&
                       poll_dat_i[8*ALB_CH_OFF_ACTUAL + 2 +: 6] == 6'd0 &&
                       poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 2] != sync_rl_i;
@@ -275,8 +287,11 @@ module albatross_sequencer #(
     wire new_cycle  = (state_q == ST_CYCLE_END && (cycle_end || poll_hit)) ||
                       (entry_over && last_ent && cycle_end) ||       // the last slot ends at H1 - 1
                       (state_q == ST_CHECK && p_last && crc_ok);
-    wire [TB:0] rel_next = {1'b0, rel_q} + 1'b1;
     wire        go_now   = state_q == ST_FETCH && step_q == 3'd6 && !bad_q && kind_q != ALB_KIND_IDLE[1:0];
+    // Saturating counters: the carry out of the increment says the count is at its top.
+    wire        rerr_up  = mism_new | (entry_over && state_q == ST_FETCH && bad_q);
+    wire [16:0] rerr_inc = {1'b0, rerr_q} + {16'd0, rerr_up};
+    wire [16:0] cyc_inc  = {1'b0, cycles_q} + 17'd1;
 
     always @(posedge clk_i) begin
         cycle_q1 <= 1'b0;
@@ -292,8 +307,7 @@ module albatross_sequencer #(
         end else begin
             time_q    <= time_q + 32'd1;
             rel_q     <= rel_next[TB-1:0];
-            if (rerr_q != 16'hFFFF)
-                rerr_q <= rerr_q + {15'd0, mism_new | (entry_over && state_q == ST_FETCH && bad_q)};
+            if (!rerr_inc[16]) rerr_q <= rerr_inc[15:0];
             case (state_q)
                 ST_HEADER: if (enable_i || step_q != 3'd0) begin
                     step_q <= step_q + 3'd1;
@@ -313,7 +327,8 @@ module albatross_sequencer #(
                         default: ;
                     endcase
                     if (step_q == 3'd4) begin                                   // E1 of entry 0
-                        first_start_q <= rom_q[TB-1:0];
+                        start_q       <= rom_q[TB-1:0];
+                        start_bad_q   <= rom_q[31:TB] != 0;
                         state_q       <= err_q ? ST_ERROR : ST_CHECK;
                     end
                 end
@@ -357,8 +372,8 @@ module albatross_sequencer #(
                                                                      rom_q[ALB_ROM_E5_DST2_BASE_LSB +: ADDR_WIDTH]};
                         end
                         default: begin                                          // E1 of the next entry
-                            next_start_q <= rom_q[TB-1:0];
-                            next_bad_q   <= rom_q[31:TB] != 0;
+                            start_q      <= rom_q[TB-1:0];             // (entry_check is done with it)
+                            start_bad_q  <= rom_q[31:TB] != 0;
                             if (!bad_q) prev_end_q <= end_q;
                             if (ent_q == 8'd0) begin
                                 sync_ok_q   <= !bad_q && sflag_q;
@@ -377,24 +392,18 @@ module albatross_sequencer #(
                 default: ;
             endcase
             if (entry_over) begin
-                ent_q       <= ent_q + 8'd1;
-                ent_adr_q   <= ent_adr_q + A8;
-                start_q     <= (state_q == ST_FETCH) ? rom_q[TB-1:0] : next_start_q;
-                start_bad_q <= (state_q == ST_FETCH) ? rom_q[31:TB] != 0 : next_bad_q;
+                ent_q       <= ent_inc;
                 state_q     <= last_ent ? ST_CYCLE_END : ST_WAIT;
                 pc_q        <= POLL_LAST;
             end
             if (new_cycle) begin
                 rel_q       <= {TB{1'b0}};
                 ent_q       <= 8'd0;
-                ent_adr_q   <= A4;
-                start_q     <= first_start_q;
-                start_bad_q <= 1'b0;
                 prev_end_q  <= {(TB+1){1'b0}};
                 poll_q      <= 1'b0;
                 state_q     <= ST_WAIT;
                 cycle_q1    <= 1'b1;
-                if (cycles_q != 16'hFFFF) cycles_q <= cycles_q + 16'd1;
+                if (!cyc_inc[16]) cycles_q <= cyc_inc[15:0];
             end
         end
     end
@@ -410,7 +419,7 @@ module albatross_sequencer #(
     assign dst_base_o   = dbase_q;
     assign slot_time_o  = slot_time_q;
     assign sync_entry_o = sflag_q;
-    assign may_access_o = (state_q == ST_TRANSFER || go_now) && rel_next + MARGIN_T <= end_q;
+    assign may_access_o = (state_q == ST_TRANSFER || go_now) && {1'b0, rel_q} < end_q - MARGIN_T; // c + 1 + MARGIN <= D (D >= MIN_LEN > MARGIN)
     assign poll_cyc_o   = poll_q;
     assign poll_board_o = sync_brd_q;
     assign poll_adr_o   = sync_base_q;

@@ -224,11 +224,11 @@ module fseq (
     localparam       AW = $clog2(F_ROM_WORDS);
     localparam [AW-1:0] LAST_W = F_ROM_WORDS - 1;      // the image's last word
     (* keep *) wire [2:0]          f_state, f_step;
-    (* keep *) wire [F_TB-1:0]     f_rel, f_cycle, f_first, f_start, f_next_start;
+    (* keep *) wire [F_TB-1:0]     f_rel, f_cycle, f_start;
     (* keep *) wire [F_TB:0]       f_end, f_prev_end;
     (* keep *) wire [7:0]          f_ne, f_ent;
-    (* keep *) wire [AW-1:0]       f_ent_adr, f_bg_adr, f_bg_dadr;
-    (* keep *) wire                f_smode, f_sync_ok, f_start_bad, f_next_bad, f_bad, f_sflag, f_poll, f_bg_data;
+    (* keep *) wire [AW-1:0]       f_bg_adr, f_bg_dadr;
+    (* keep *) wire                f_smode, f_sync_ok, f_start_bad, f_bad, f_sflag, f_poll, f_bg_data;
     (* keep *) wire [31:0]         f_h3, f_slot_time, f_crc;
     (* keep *) wire [1:0]          f_kind;
     (* keep *) wire [4:0]          f_chan;
@@ -254,25 +254,28 @@ module fseq (
     wire          got3   = xfer || (fetch && f_step >= 3'd4);   // E3
     wire          got4   = xfer || (fetch && f_step >= 3'd5);   // E4
     wire          got5   = xfer || (fetch && f_step >= 3'd6);   // E5
+    // start_q: entry ent's start, from its FETCH clock 6 on the next entry's (entry 0's after the last)
+    wire [31:0]   st_want = (f_ent == 8'd2 || (xfer && e1)) ? F_S0 : xfer ? F_S1 : s_ent;
     wire [AW-1:0] bg_nxt = f_bg_dadr == LAST_W ? {AW{1'b0}} : f_bg_dadr + 1'b1;
     wire [31:0]   crcb   = F_CRCB[32*f_bg_dadr +: 32];
     // the word a main read of the last clock left in rom_q: the header reads, the
-    // entry's words E0, E2..E5, then the next entry's E1 (past the image: free)
+    // entry's words E0, E2..E5, then the next entry's E1 (after the last entry: entry 0's)
+    // (entry k's words start at 4 + 8k: the sequencer derives its addresses from ent_q)
     reg  [31:0]   main_a;
     wire          hdr    = f_state == ST_HEADER;
+    wire [31:0]   e_base = 32'd4 + 32'd8 * {24'd0, f_ent};
     always @* begin
         case (f_step)
-            3'd1:    main_a = hdr ? 32'd0 : {{(32-AW){1'b0}}, f_ent_adr};
-            3'd2:    main_a = hdr ? 32'd1 : {{(32-AW){1'b0}}, f_ent_adr} + 32'd2;
-            3'd3:    main_a = hdr ? 32'd3 : {{(32-AW){1'b0}}, f_ent_adr} + 32'd3;
-            3'd4:    main_a = hdr ? 32'd5 : {{(32-AW){1'b0}}, f_ent_adr} + 32'd4;
-            3'd5:    main_a = {{(32-AW){1'b0}}, f_ent_adr} + 32'd5;
-            default: main_a = hdr ? 32'd0 : {{(32-AW){1'b0}}, f_ent_adr} + 32'd9;   // HEADER: word 0 while it waits
+            3'd1:    main_a = hdr ? 32'd0 : e_base;
+            3'd2:    main_a = hdr ? 32'd1 : e_base + 32'd2;
+            3'd3:    main_a = hdr ? 32'd3 : e_base + 32'd3;
+            3'd4:    main_a = hdr ? 32'd5 : e_base + 32'd4;
+            3'd5:    main_a = e_base + 32'd5;
+            default: main_a = hdr ? 32'd0 : (f_ent + 8'd1 == F_NE) ? 32'd5 : e_base + 32'd9;   // HEADER: word 0 while it waits
         endcase
     end
     wire [31:0]   rom_main = F_ROM[32*main_a[AW-1:0] +: 32];
-    wire          hdr_ok = f_ne == F_NE && f_smode == F_SMODE && f_cycle == F_H1[F_TB-1:0] && f_h3 == F_H3 &&
-                           f_first == F_S0[F_TB-1:0];
+    wire          hdr_ok = f_ne == F_NE && f_smode == F_SMODE && f_cycle == F_H1[F_TB-1:0] && f_h3 == F_H3;
     wire [F_TB:0] pe_want = (f_ent == 8'd0 && !xfer) ? {(F_TB+1){1'b0}} :
                             ((f_ent == 8'd0 && xfer) || (e1 && !xfer)) ? D0[F_TB:0] : D1[F_TB:0];
     // a part's signature is stored once the start-up pass has checked its last word
@@ -303,7 +306,7 @@ module fseq (
                                    (f_step < 3'd4 || f_h3 == F_H3));
             end
             if (f_state == ST_CHECK) begin
-                inv_check: assert(hdr_ok && !error_o);
+                inv_check: assert(hdr_ok && !error_o && f_start == F_S0[F_TB-1:0] && !f_start_bad);
             end
             if (f_state == ST_ERROR) begin
                 inv_error: assert(!F_VALID && error_o && !cycle_o && !started_q && (!f_bg_data || f_bg_dadr == 0));
@@ -325,8 +328,8 @@ module fseq (
             end
             if (run) begin
                 inv_run: assert(hdr_ok && !error_o && f_rel == crel[F_TB-1:0] && crel32 < F_H1 &&
-                                f_ent <= 8'd2 && {{(32-AW){1'b0}}, f_ent_adr} == 32'd4 + 32'd8 * {24'd0, f_ent} &&
-                                (f_ent == 8'd2 || (f_start == s_ent[F_TB-1:0] && !f_start_bad)) &&
+                                f_ent <= 8'd2 &&
+                                f_start == st_want[F_TB-1:0] && !f_start_bad &&
                                 f_prev_end == pe_want && (busy_q == xfer) && (!xfer || cur_q == e1) &&
                                 ((last_done_q && !cycle_o) == (f_state == ST_CYCLE_END)));
                 case (f_state)
@@ -335,7 +338,7 @@ module fseq (
                                                     f_step <= 3'd6 && !f_bad && f_slot_time == ts_q);
                     ST_TRANSFER:  inv_xfer:  assert(f_ent < 8'd2 && crel32 > s_ent + FETCH - 32'd1 &&
                                                     crel32 < (e1 ? F_H1 : F_S1) &&
-                                                    (e1 || (f_next_start == F_S1[F_TB-1:0] && !f_next_bad)));
+                                                    (e1 || (f_start == F_S1[F_TB-1:0] && !f_start_bad)));
                     ST_CYCLE_END: inv_end:   assert(f_ent == 8'd2 && crel32 >= G1 + 32'd2);
                     default:      inv_state: assert(1'b0);
                 endcase
