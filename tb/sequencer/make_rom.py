@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Test ROM for tb_sequencer.v in the new format (no per-entry checksum, H3 =
 CRC of the whole image with H3 read as 0): three entries (COPY, TIME,
-STATUS) in a cycle of 400 clocks.  Usage: make_rom.py OUT.hex"""
+STATUS) in a cycle of 400 clocks.  Usage: make_rom.py OUT.hex [--bad-start0]
+(--bad-start0: entry 0's start has bit 12 set, above the bench's TIME_BITS = 12:
+the entry is invalid and must be skipped every cycle)."""
 import sys
 
 POLY, SEED = 0x000000AF, 0xFFFFFFFF
@@ -23,7 +25,7 @@ def entry(kind, cid, nd, w, start, length, src, dsts):
     return e
 
 
-ents = [entry(1, 0, 2, 4, 10, 100, (0 << 12) | 16, [(1 << 12) | 16, (2 << 12) | 16]),
+ents = [entry(1, 0, 2, 4, 0x100A if '--bad-start0' in sys.argv[2:] else 10, 100, (0 << 12) | 16, [(1 << 12) | 16, (2 << 12) | 16]),
         entry(2, 1, 1, 1, 120, 60, 0, [(3 << 12) | 64]),
         entry(3, 2, 1, 2 * 4 + 1, 200, 150, 0, [(2 << 12) | 128])]
 rom = [(0xA1BA << 16) | (len(ents) << 8), 400, 0, 0] + sum(ents, [])

@@ -3,6 +3,9 @@
 // after cycle start + E1, may_access_o ends TIMEOUT+2 clocks before the
 // deadline, cycles are 400 clocks, no ROM error; then one ROM word of entry 1
 // is upset: the background check counts it and the entry is skipped.
+// +bad_start0 (make_rom.py --bad-start0): entry 0's start does not fit
+// TIME_BITS: entry 0 never goes, it counts in rom_errors every cycle, and
+// the other entries keep their times.
 `timescale 1ns/1ps
 `default_nettype none
 module tb_sequencer;
@@ -23,7 +26,7 @@ module tb_sequencer;
         .poll_err_i(1'b0), .sync_rl_i(2'd0),
         .time_o(t), .cycle_o(cyc_s), .error_o(error), .rom_errors_o(rerr), .cycles_o(cycles));
     assign perr = 1'b0;
-    integer cstart = -1, errors = 0, gos = 0, k, last_may, in_slot = 0;
+    integer cstart = -1, errors = 0, gos = 0, k, last_may, in_slot = 0, e0_gos = 0;
     integer starts [0:2]; integer lens [0:2];
     initial begin
         starts[0] = 10; starts[1] = 120; starts[2] = 200; lens[0] = 100; lens[1] = 60; lens[2] = 150;
@@ -44,6 +47,7 @@ module tb_sequencer;
                 errors = errors + 1;
             end
             gos = gos + 1; in_slot = 1;
+            if (kind == 1) e0_gos = e0_gos + 1;
         end
         if (in_slot && may) last_may = t;
         if (in_slot && !may && !go) begin
@@ -58,6 +62,14 @@ module tb_sequencer;
     initial begin
         wait (!rst);
         repeat (3000) @(posedge clk);
+        if ($test$plusargs("bad_start0")) begin
+            if (error || e0_gos != 0 || rerr < cycles - 1 || gos < 10)
+                begin $display("FAIL bad entry-0 start: expected no go of entry 0, rom_errors >= cycles - 1 = %0d, gos >= 10; came error %0d, entry-0 gos %0d, rom_errors %0d, gos %0d",
+                                cycles - 1, error, e0_gos, rerr, gos); errors = errors + 1; end
+            $display("bad entry-0 start: skipped, rom_errors %0d in %0d cycles", rerr, cycles);
+            if (errors == 0) $display("PASS tb_sequencer");
+            $finish;
+        end
         if (error || rerr != 0 || gos < 15) begin $display("FAIL error %0d rom_errors %0d gos %0d", error, rerr, gos); errors = errors + 1; end
         dut.rom[4 + 8 + 3] = 32'h00001234;     // upset entry 1 (E3, unused by TIME)
         gos = 0;

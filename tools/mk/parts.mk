@@ -8,6 +8,9 @@
 #                               CRC, no per-entry checksum): slot starts, the
 #                               deadline, cycle length, a ROM upset found by the
 #                               background check and its entry skipped
+#   make test-sequencer-bad-start0
+#                               the same bench with entry 0's start above
+#                               TIME_BITS: skipped and counted every cycle
 #   make test-sequencer-negative-slot_late
 #                               the same bench on a sequencer whose slots start
 #                               one clock late (formal/rtl/mutants/slot_late.sed):
@@ -17,8 +20,8 @@
 PARTS_DIR := $(BUILD)/parts
 PARTS     := albatross_sequencer albatross_rom_check albatross_entry_check albatross_bus_master albatross_counters
 
-TESTS += parts-lint sequencer sequencer-negative-slot_late
-.PHONY: test-parts-lint test-sequencer test-sequencer-negative-slot_late
+TESTS += parts-lint sequencer sequencer-bad-start0 sequencer-negative-slot_late
+.PHONY: test-parts-lint test-sequencer test-sequencer-bad-start0 test-sequencer-negative-slot_late
 
 test-parts-lint: $(addprefix rtl/,$(addsuffix .v,$(PARTS))) $(RTL_INC)
 	@mkdir -p $(PARTS_DIR)
@@ -49,3 +52,10 @@ test-sequencer-negative-slot_late: tb/sequencer/tb_sequencer.v tb/sequencer/make
 	    if grep -q "^PASS" tb.log; then echo "the bench passed a sequencer whose slots start late"; exit 1; fi; \
 	    if ! grep -q "^FAIL entry .* go at" tb.log; then echo "expected a FAIL naming the go clock, got: $$(head -n 3 tb.log)"; exit 1; fi; \
 	    echo "caught: $$(grep -m1 "^FAIL entry" tb.log)"'
+
+test-sequencer-bad-start0: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v rtl/albatross_rom_check.v rtl/albatross_entry_check.v $(RTL_INC)
+	@mkdir -p $(PARTS_DIR)/seq-bad0
+	@tools/run_test.sh sequencer-bad-start0 bash -c 'set -e; $(PYTHON) tb/sequencer/make_rom.py $(PARTS_DIR)/seq-bad0/seq_rom.hex --bad-start0; \
+	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/seq-bad0/tb tb/sequencer/tb_sequencer.v rtl/albatross_sequencer.v rtl/albatross_rom_check.v \
+	        rtl/albatross_entry_check.v; \
+	    cd $(PARTS_DIR)/seq-bad0 && vvp -n tb +bad_start0 | grep -v readmemh | tee tb.log; grep -q "^PASS" tb.log'
