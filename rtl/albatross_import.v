@@ -92,22 +92,23 @@ module albatross_import #(
 
 `include "albatross_contract.vh"
 
-    // Channel layout: both control bytes in one word, buffers from BUF_WORD.
+    // Channel layout: both control bytes in one word, buffers from BUF_WORD_I.
     localparam integer          CTRL_WORD_I = ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES;
     localparam integer          BUF_WORD_I  = ALB_CH_OFF_BUFFERS / ALB_CH_WORD_BYTES;
     localparam [ADDR_WIDTH-1:0] CTRL_WORD   = CTRL_WORD_I[ADDR_WIDTH-1:0];
-    localparam [ADDR_WIDTH-1:0] BUF_WORD    = BUF_WORD_I[ADDR_WIDTH-1:0];
     localparam                  ACT_BIT     = 8 * (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
     localparam                  RL_BIT      = 8 * (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
     localparam [3:0]            SEL_ACT     = 4'b0001 << (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
     localparam [3:0]            SEL_RL      = 4'b0001 << (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
     localparam [1:0]            BUFFER1     = ALB_CH_BUFFER1[1:0];
     localparam [1:0]            BUFFER2     = BUFFER1 + 2'd1;
+    localparam [1:0]            BUFFER3     = BUFFER1 + 2'd2;
 
-    // The engine relies on: both control bytes in one word, three buffers
-    // numbered 1..3 (2 bits).
+    // The engine relies on: both control bytes in one word, the buffers from
+    // the next word on, three buffers numbered 1..3 (2 bits).
     generate
         if (ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES != ALB_CH_OFF_READLOCKED / ALB_CH_WORD_BYTES ||
+            BUF_WORD_I != CTRL_WORD_I + 1 ||
             ALB_CH_BUFFER1 != 1 || ALB_CH_BUFFER_LAST != 3 || ALB_CH_BUFFERS != 3 ||
             ALB_CH_WORD_BYTES != 4 || ADDR_WIDTH < 2 || WORDS_WIDTH < 1 || COUNT_WIDTH < 1) begin : g_contract_check
             albatross_import_contract_mismatch u_error ();
@@ -128,7 +129,6 @@ module albatross_import #(
     reg                   we_q;
     reg [3:0]             sel_q;
     reg [ADDR_WIDTH-1:0]  adr_q;
-    reg [ADDR_WIDTH-1:0]  base_q;
     reg [WORDS_WIDTH-1:0] words_q;
     reg [WORDS_WIDTH-1:0] k_q;          // word index in phase 2
     reg [1:0]             act_q;        // the Actual last loaded: the next ReadLocked store
@@ -150,16 +150,21 @@ module albatross_import #(
     wire       word_ack   = state_q == S_LOAD_WORD && wb_ack_i;
     wire       taken      = (word_ack || state_q == S_HOLD_WORD) && word_ready_i;
 
-    // First word of buffer b: base + BUF_WORD + (b - 1) * W (no multiplier).
-    // W as an address offset (widened, then cut to ADDR_WIDTH bits: a
-    // channel never reaches past the port's address space).
+    // Next address: adr + 1 + m, one adder.  In phase 1 and S_SELECTED adr_q
+    // is the control word (base + CTRL_WORD), so the first word of buffer
+    // ReadLocked, base + BUF_WORD_I + (rl - 1) * W, is adr + 1 + m with
+    // m = (rl - 1) * W = 0, W or 2W (no multiplier, no base register); in
+    // phase 2 (state_q[2]) m = 0: the next word.  W as an address offset
+    // (widened, then cut to ADDR_WIDTH bits: a channel never reaches past the
+    // port's address space).
     /* verilator lint_off UNUSEDSIGNAL */
     wire [ADDR_WIDTH+WORDS_WIDTH-1:0] w_wide = {{ADDR_WIDTH{1'b0}}, words_q};
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [ADDR_WIDTH-1:0] w_ext     = w_wide[ADDR_WIDTH-1:0];
-    wire [ADDR_WIDTH-1:0] buf_first = base_q + BUF_WORD +
-                                      (rl_q == BUFFER1 ? {ADDR_WIDTH{1'b0}} :
-                                       rl_q == BUFFER2 ? w_ext : (w_ext << 1));
+    wire [ADDR_WIDTH-1:0] w_ext   = w_wide[ADDR_WIDTH-1:0];
+    wire                  m_w     = !state_q[2] && rl_q == BUFFER2;
+    wire                  m_2w    = !state_q[2] && rl_q == BUFFER3;
+    wire [ADDR_WIDTH-1:0] m       = ({ADDR_WIDTH{m_w}} & w_ext) | ({ADDR_WIDTH{m_2w}} & (w_ext << 1));
+    wire [ADDR_WIDTH-1:0] adr_inc = adr_q + m + 1'b1;
 
     always @(posedge clk_i) begin
         done_q <= 1'b0;
@@ -191,7 +196,6 @@ module albatross_import #(
         end else begin
             case (state_q)
                 S_IDLE: if (start_i) begin
-                    base_q     <= base_i;
                     words_q    <= words_i;
                     rl_known_q <= rl_known_i;
                     rl_q       <= rl_i;
@@ -231,13 +235,13 @@ module albatross_import #(
                         state_q <= S_IDLE;
                         done_q  <= 1'b1;
                     end else if (stream_i && PULL != 0) begin
-                        adr_q   <= buf_first;
+                        adr_q   <= adr_inc;
                         k_q     <= {WORDS_WIDTH{1'b0}};
                         sel_q   <= 4'hF;
                         stb_q   <= 1'b0;
                         state_q <= S_WAIT_PULL;
                     end else if (stream_i) begin
-                        adr_q   <= buf_first;
+                        adr_q   <= adr_inc;
                         k_q     <= {WORDS_WIDTH{1'b0}};
                         sel_q   <= 4'hF;
                         stb_q   <= may_access_i;
@@ -261,7 +265,7 @@ module albatross_import #(
                     if (!may_access_i) rl_known_q <= 1'b0;   // stored, not confirmed
                 end
                 S_SELECTED: if (stream_i) begin
-                    adr_q   <= buf_first;
+                    adr_q   <= adr_inc;
                     k_q     <= {WORDS_WIDTH{1'b0}};
                     sel_q   <= 4'hF;
                     stb_q   <= may_access_i && PULL == 0;
@@ -286,12 +290,12 @@ module albatross_import #(
                         state_q <= S_IDLE;
                         done_q  <= 1'b1;
                     end else if (PULL != 0) begin
-                        adr_q   <= adr_q + 1'b1;
+                        adr_q   <= adr_inc;
                         k_q     <= k_q + 1'b1;
                         stb_q   <= 1'b0;
                         state_q <= S_WAIT_PULL;
                     end else begin
-                        adr_q   <= adr_q + 1'b1;
+                        adr_q   <= adr_inc;
                         k_q     <= k_q + 1'b1;
                         stb_q   <= may_access_i;
                         state_q <= may_access_i ? S_LOAD_WORD : S_IDLE;
