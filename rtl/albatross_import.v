@@ -145,7 +145,8 @@ module albatross_import #(
     wire [7:0] act_byte   = wb_dat_i[ACT_BIT +: 8];
     wire       act_valid  = act_byte[7:2] == 6'd0 && act_byte[1:0] != 2'd0;
     wire       act_match  = rl_known_q && act_byte[1:0] == rl_q;
-    wire       last_word  = k_q == words_q - 1'b1;
+    wire [WORDS_WIDTH-1:0] k_inc = k_q + 1'b1;
+    wire       last_word  = k_inc == words_q;     // k = W - 1, without a subtractor
     wire       end_phase1 = state_q == S_LOAD_ACTUAL && wb_ack_i && act_valid && act_match;
     wire       word_ack   = state_q == S_LOAD_WORD && wb_ack_i;
     wire       taken      = (word_ack || state_q == S_HOLD_WORD) && word_ready_i;
@@ -291,12 +292,12 @@ module albatross_import #(
                         done_q  <= 1'b1;
                     end else if (PULL != 0) begin
                         adr_q   <= adr_inc;
-                        k_q     <= k_q + 1'b1;
+                        k_q     <= k_inc;
                         stb_q   <= 1'b0;
                         state_q <= S_WAIT_PULL;
                     end else begin
                         adr_q   <= adr_inc;
-                        k_q     <= k_q + 1'b1;
+                        k_q     <= k_inc;
                         stb_q   <= may_access_i;
                         state_q <= may_access_i ? S_LOAD_WORD : S_IDLE;
                         cut_q   <= !may_access_i;
