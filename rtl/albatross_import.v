@@ -125,9 +125,6 @@ module albatross_import #(
                      S_WAIT_PULL   = 3'd6;  // PULL: word k is next, waiting for word_ready_i
 
     reg [2:0]             state_q;
-    reg                   stb_q;        // cyc = stb: an access is on the bus
-    reg                   we_q;
-    reg [3:0]             sel_q;
     reg [ADDR_WIDTH-1:0]  adr_q;
     reg [WORDS_WIDTH-1:0] words_q;
     reg [WORDS_WIDTH-1:0] k_q;          // word index in phase 2
@@ -142,6 +139,15 @@ module albatross_import #(
     reg [COUNT_WIDTH-1:0] fails_q;
     reg [31:0]            word_q;       // a loaded word the consumer has not taken yet
 
+    // The request follows the state: cyc = stb in an access state except in
+    // the clock after a failed access; we in the ReadLocked store; sel the
+    // ReadLocked lane there, all four lanes in phase 2 (state_q[2]), else the
+    // Actual lane.
+    wire       phase2     = state_q[2];
+    wire       stb        = (state_q == S_LOAD_ACTUAL || state_q == S_STORE_RL || state_q == S_LOAD_WORD) && !retry_q;
+    wire       we         = state_q == S_STORE_RL;
+    wire [3:0] sel        = phase2 ? 4'hF : we ? SEL_RL : SEL_ACT;
+
     wire [7:0] act_byte   = wb_dat_i[ACT_BIT +: 8];
     wire       act_valid  = act_byte[7:2] == 6'd0 && act_byte[1:0] != 2'd0;
     wire       act_match  = rl_known_q && act_byte[1:0] == rl_q;
@@ -149,54 +155,101 @@ module albatross_import #(
     wire       last_word  = k_inc == words_q;     // k = W - 1, without a subtractor
     wire       end_phase1 = state_q == S_LOAD_ACTUAL && wb_ack_i && act_valid && act_match;
     wire       word_ack   = state_q == S_LOAD_WORD && wb_ack_i;
-    wire       taken      = (word_ack || state_q == S_HOLD_WORD) && word_ready_i;
+    wire       hold       = state_q == S_HOLD_WORD;
+    wire       taken      = (word_ack || hold) && word_ready_i;
 
     // Next address: adr + 1 + m, one adder.  In phase 1 and S_SELECTED adr_q
     // is the control word (base + CTRL_WORD), so the first word of buffer
     // ReadLocked, base + BUF_WORD_I + (rl - 1) * W, is adr + 1 + m with
     // m = (rl - 1) * W = 0, W or 2W (no multiplier, no base register); in
-    // phase 2 (state_q[2]) m = 0: the next word.  W as an address offset
-    // (widened, then cut to ADDR_WIDTH bits: a channel never reaches past the
-    // port's address space).
+    // phase 2 m = 0: the next word.  W as an address offset (widened, then
+    // cut to ADDR_WIDTH bits: a channel never reaches past the port's address
+    // space).
     /* verilator lint_off UNUSEDSIGNAL */
     wire [ADDR_WIDTH+WORDS_WIDTH-1:0] w_wide = {{ADDR_WIDTH{1'b0}}, words_q};
     /* verilator lint_on UNUSEDSIGNAL */
     wire [ADDR_WIDTH-1:0] w_ext   = w_wide[ADDR_WIDTH-1:0];
-    wire                  m_w     = !state_q[2] && rl_q == BUFFER2;
-    wire                  m_2w    = !state_q[2] && rl_q == BUFFER3;
+    wire                  m_w     = !phase2 && rl_q == BUFFER2;
+    wire                  m_2w    = !phase2 && rl_q == BUFFER3;
     wire [ADDR_WIDTH-1:0] m       = ({ADDR_WIDTH{m_w}} & w_ext) | ({ADDR_WIDTH{m_2w}} & (w_ext << 1));
     wire [ADDR_WIDTH-1:0] adr_inc = adr_q + m + 1'b1;
+
+    // The next step (no err in this clock): the state nst; due: an access
+    // begins (or is repeated) from the next clock on, or a held word is past
+    // the deadline check, so may_access_i low cuts the Import off here; fin:
+    // the Import ends (done) if not cut off.
+    reg [2:0] nst;
+    reg       due, fin;
+    always @* begin
+        nst = state_q;
+        due = 1'b0;
+        fin = 1'b0;
+        if (retry_q) due = 1'b1;                         // the failed access again
+        else case (state_q)
+            S_IDLE: if (start_i) begin
+                nst = S_LOAD_ACTUAL;
+                due = 1'b1;
+            end
+            S_LOAD_ACTUAL: if (wb_ack_i) begin
+                if (!act_valid) fin = 1'b1;                // names no buffer: read nothing
+                else if (!act_match) begin                 // ReadLocked := Actual
+                    nst = S_STORE_RL;
+                    due = 1'b1;
+                end else if (skip_i && !stream_i) fin = 1'b1;
+                else if (stream_i) begin
+                    nst = PULL != 0 ? S_WAIT_PULL : S_LOAD_WORD;
+                    due = PULL == 0;
+                end else nst = S_SELECTED;
+            end
+            S_STORE_RL: if (wb_ack_i) begin
+                nst = S_LOAD_ACTUAL;
+                due = 1'b1;
+            end
+            S_SELECTED: if (stream_i) begin
+                nst = PULL != 0 ? S_WAIT_PULL : S_LOAD_WORD;
+                due = PULL == 0;
+            end else if (skip_i) fin = 1'b1;
+            S_LOAD_WORD, S_HOLD_WORD: if (word_ack || hold) begin
+                if (!taken) begin                          // the consumer is not ready
+                    nst = S_HOLD_WORD;
+                    due = hold;                            // abandoned, or past the deadline
+                    fin = hold && skip_i;
+                end else if (last_word) fin = 1'b1;
+                else begin
+                    nst = PULL != 0 ? S_WAIT_PULL : S_LOAD_WORD;
+                    due = PULL == 0;
+                end
+            end
+            S_WAIT_PULL: begin
+                due = 1'b1;
+                if (skip_i) fin = 1'b1;
+                else if (word_ready_i) nst = S_LOAD_WORD;
+            end
+            default: nst = S_IDLE;
+        endcase
+    end
+    wire cut_now = due && !may_access_i;
+    // Cut off with ReadLocked stored (or maybe stored) and not confirmed: forget the copy.
+    wire forget  = state_q == S_STORE_RL || (state_q == S_LOAD_ACTUAL && new_q && (retry_q || !act_match));
 
     always @(posedge clk_i) begin
         done_q <= 1'b0;
         if (rst_i) begin
             state_q    <= S_IDLE;
-            stb_q      <= 1'b0;
             rl_known_q <= 1'b0;
             new_q      <= 1'b0;
             corrupt_q  <= 1'b0;
             cut_q      <= 1'b0;
             fails_q    <= {COUNT_WIDTH{1'b0}};
             retry_q    <= 1'b0;
-        end else if (wb_err_i && stb_q) begin
+        end else if (wb_err_i && stb) begin
             // A failed access: count it, drop cyc for a clock.
             if (~&fails_q) fails_q <= fails_q + 1'b1;
-            stb_q   <= 1'b0;
             retry_q <= 1'b1;
-        end else if (retry_q) begin
-            // The same access again if one may begin, else the cut-off.
-            retry_q <= 1'b0;
-            if (may_access_i) stb_q <= 1'b1;
-            else begin
-                state_q <= S_IDLE;
-                cut_q   <= 1'b1;
-                done_q  <= 1'b1;
-                // ReadLocked stored (or maybe stored) and not confirmed: forget the copy.
-                if (state_q == S_STORE_RL || (state_q == S_LOAD_ACTUAL && new_q)) rl_known_q <= 1'b0;
-            end
         end else begin
-            case (state_q)
-                S_IDLE: if (start_i) begin
+            retry_q <= 1'b0;
+            if (!retry_q) begin
+                if (state_q == S_IDLE && start_i) begin
                     words_q    <= words_i;
                     rl_known_q <= rl_known_i;
                     rl_q       <= rl_i;
@@ -205,123 +258,42 @@ module albatross_import #(
                     cut_q      <= 1'b0;
                     fails_q    <= {COUNT_WIDTH{1'b0}};
                     adr_q      <= base_i + CTRL_WORD;
-                    we_q       <= 1'b0;
-                    sel_q      <= SEL_ACT;
-                    if (may_access_i) begin
-                        stb_q   <= 1'b1;
-                        state_q <= S_LOAD_ACTUAL;
-                    end else begin
-                        cut_q  <= 1'b1;
-                        done_q <= 1'b1;
-                    end
                 end
-                S_LOAD_ACTUAL: if (wb_ack_i) begin
+                if (state_q == S_LOAD_ACTUAL && wb_ack_i) begin
                     act_q <= act_byte[1:0];
-                    if (!act_valid) begin                  // names no buffer: read nothing
-                        stb_q     <= 1'b0;
-                        state_q   <= S_IDLE;
-                        corrupt_q <= 1'b1;
-                        done_q    <= 1'b1;
-                    end else if (!act_match) begin         // ReadLocked := Actual
-                        we_q    <= 1'b1;
-                        sel_q   <= SEL_RL;
-                        new_q   <= 1'b1;
-                        stb_q   <= may_access_i;
-                        state_q <= may_access_i ? S_STORE_RL : S_IDLE;
-                        cut_q   <= !may_access_i;
-                        done_q  <= !may_access_i;
-                        if (!may_access_i && new_q) rl_known_q <= 1'b0;
-                    end else if (skip_i && !stream_i) begin
-                        stb_q   <= 1'b0;
-                        state_q <= S_IDLE;
-                        done_q  <= 1'b1;
-                    end else if (stream_i && PULL != 0) begin
-                        adr_q   <= adr_inc;
-                        k_q     <= {WORDS_WIDTH{1'b0}};
-                        sel_q   <= 4'hF;
-                        stb_q   <= 1'b0;
-                        state_q <= S_WAIT_PULL;
-                    end else if (stream_i) begin
-                        adr_q   <= adr_inc;
-                        k_q     <= {WORDS_WIDTH{1'b0}};
-                        sel_q   <= 4'hF;
-                        stb_q   <= may_access_i;
-                        state_q <= may_access_i ? S_LOAD_WORD : S_IDLE;
-                        cut_q   <= !may_access_i;
-                        done_q  <= !may_access_i;
-                    end else begin
-                        stb_q   <= 1'b0;
-                        state_q <= S_SELECTED;
-                    end
+                    if (!act_valid) corrupt_q <= 1'b1;
+                    else if (!act_match) new_q <= 1'b1;
                 end
-                S_STORE_RL: if (wb_ack_i) begin
+                if (state_q == S_STORE_RL && wb_ack_i) begin
                     rl_q       <= act_q;
                     rl_known_q <= 1'b1;
-                    we_q       <= 1'b0;
-                    sel_q      <= SEL_ACT;
-                    stb_q      <= may_access_i;
-                    state_q    <= may_access_i ? S_LOAD_ACTUAL : S_IDLE;
-                    cut_q      <= !may_access_i;
-                    done_q     <= !may_access_i;
-                    if (!may_access_i) rl_known_q <= 1'b0;   // stored, not confirmed
                 end
-                S_SELECTED: if (stream_i) begin
-                    adr_q   <= adr_inc;
-                    k_q     <= {WORDS_WIDTH{1'b0}};
-                    sel_q   <= 4'hF;
-                    stb_q   <= may_access_i && PULL == 0;
-                    state_q <= PULL != 0 ? S_WAIT_PULL : may_access_i ? S_LOAD_WORD : S_IDLE;
-                    cut_q   <= !may_access_i && PULL == 0;
-                    done_q  <= !may_access_i && PULL == 0;
-                end else if (skip_i) begin
-                    state_q <= S_IDLE;
-                    done_q  <= 1'b1;
+                if (selected_o && stream_i) begin      // phase 2 from word 0
+                    adr_q <= adr_inc;
+                    k_q   <= {WORDS_WIDTH{1'b0}};
                 end
-                S_LOAD_WORD, S_HOLD_WORD: if (word_ack || state_q == S_HOLD_WORD) begin
-                    if (word_ack) word_q <= wb_dat_i;
-                    if (!taken && state_q == S_HOLD_WORD && (skip_i || !may_access_i)) begin
-                        state_q <= S_IDLE;                 // abandoned, or past the deadline
-                        cut_q   <= !may_access_i;
-                        done_q  <= 1'b1;
-                    end else if (!taken) begin             // the consumer is not ready
-                        stb_q   <= 1'b0;
-                        state_q <= S_HOLD_WORD;
-                    end else if (last_word) begin
-                        stb_q   <= 1'b0;
-                        state_q <= S_IDLE;
-                        done_q  <= 1'b1;
-                    end else if (PULL != 0) begin
-                        adr_q   <= adr_inc;
-                        k_q     <= k_inc;
-                        stb_q   <= 1'b0;
-                        state_q <= S_WAIT_PULL;
-                    end else begin
-                        adr_q   <= adr_inc;
-                        k_q     <= k_inc;
-                        stb_q   <= may_access_i;
-                        state_q <= may_access_i ? S_LOAD_WORD : S_IDLE;
-                        cut_q   <= !may_access_i;
-                        done_q  <= !may_access_i;
-                    end
+                if (word_ack) word_q <= wb_dat_i;
+                if (taken && !last_word) begin         // the next word
+                    adr_q <= adr_inc;
+                    k_q   <= k_inc;
                 end
-                S_WAIT_PULL: if (word_ready_i || skip_i || !may_access_i) begin
-                    stb_q   <= word_ready_i && !skip_i && may_access_i;
-                    state_q <= (word_ready_i && !skip_i && may_access_i) ? S_LOAD_WORD : S_IDLE;
-                    cut_q   <= !may_access_i;
-                    done_q  <= skip_i || !may_access_i;
-                end
-                default: begin
-                    stb_q   <= 1'b0;
-                    state_q <= S_IDLE;
-                end
-            endcase
+            end
+            if (cut_now) begin
+                state_q <= S_IDLE;
+                cut_q   <= 1'b1;
+                done_q  <= 1'b1;
+                if (forget) rl_known_q <= 1'b0;
+            end else if (fin) begin
+                state_q <= S_IDLE;
+                done_q  <= 1'b1;
+            end else state_q <= nst;
         end
     end
 
     assign idle_o       = state_q == S_IDLE;
     assign selected_o   = end_phase1 || state_q == S_SELECTED;
-    assign word_o       = state_q == S_HOLD_WORD ? word_q : wb_dat_i;
-    assign word_valid_o = word_ack || state_q == S_HOLD_WORD;
+    assign word_o       = hold ? word_q : wb_dat_i;
+    assign word_valid_o = word_ack || hold;
     assign word_index_o = k_q;
     assign done_o       = done_q;
     assign new_o        = new_q;
@@ -330,11 +302,11 @@ module albatross_import #(
     assign fails_o      = fails_q;
     assign rl_known_o   = rl_known_q;
     assign rl_o         = rl_q;
-    assign wb_cyc_o     = stb_q;
-    assign wb_stb_o     = stb_q;
-    assign wb_we_o      = we_q;
+    assign wb_cyc_o     = stb;
+    assign wb_stb_o     = stb;
+    assign wb_we_o      = we;
     assign wb_adr_o     = adr_q;
-    assign wb_sel_o     = sel_q;
+    assign wb_sel_o     = sel;
     assign wb_dat_o     = {30'd0, act_q} << RL_BIT;
 
 endmodule

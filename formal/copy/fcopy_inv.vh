@@ -12,13 +12,13 @@
 `ifdef F_PROBE
     // the engines' and the bus master's registers, joined by the script after flatten
     (* keep *) wire [2:0]    fi_state;   // u_import.state_q
-    (* keep *) wire          fi_stb;     // u_import.stb_q
+    (* keep *) wire          fi_stb;     // u_import.stb
     (* keep *) wire          fi_retry;   // u_import.retry_q
     (* keep *) wire [AW-1:0] fi_adr;     // u_import.adr_q
     (* keep *) wire [WW-1:0] fi_words;   // u_import.words_q
     (* keep *) wire [1:0]    fi_act;     // u_import.act_q
-    (* keep *) wire          fi_we;      // u_import.we_q
-    (* keep *) wire [3:0]    fi_sel;     // u_import.sel_q
+    (* keep *) wire          fi_we;      // u_import.we
+    (* keep *) wire [3:0]    fi_sel;     // u_import.sel
     (* keep *) wire [2:0]    fe_state;   // u_export.state_q
     (* keep *) wire          fe_stb;     // u_export.stb_q
     (* keep *) wire          fe_retry;   // u_export.retry_q

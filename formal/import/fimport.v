@@ -346,7 +346,7 @@ module fimport #(
     // ------------------------------------------------------------ induction strengthening
 `ifdef F_PROBE
     (* keep *) wire [2:0]    f_state;    // dut.state_q
-    (* keep *) wire          f_stb;      // dut.stb_q
+    (* keep *) wire          f_stb;      // dut.stb
     (* keep *) wire [AW-1:0] f_adr;      // dut.adr_q
     (* keep *) wire [WW-1:0] f_dwords;   // dut.words_q
     (* keep *) wire [WW-1:0] f_dk;       // dut.k_q
@@ -356,8 +356,8 @@ module fimport #(
     (* keep *) wire          f_drlk;     // dut.rl_known_q
     (* keep *) wire [1:0]    f_drl;      // dut.rl_q
     (* keep *) wire [31:0]   f_dword;    // dut.word_q
-    (* keep *) wire          f_dwe;      // dut.we_q
-    (* keep *) wire [3:0]    f_dsel;     // dut.sel_q
+    (* keep *) wire          f_dwe;      // dut.we
+    (* keep *) wire [3:0]    f_dsel;     // dut.sel
     localparam [2:0] S_IDLE = 3'd0, S_LOAD_ACTUAL = 3'd1, S_STORE_RL = 3'd2, S_SELECTED = 3'd3,
                      S_LOAD_WORD = 3'd4, S_HOLD_WORD = 3'd5, S_WAIT_PULL = 3'd6;
     wire accessing = f_state == S_LOAD_ACTUAL || f_state == S_STORE_RL || f_state == S_LOAD_WORD;
