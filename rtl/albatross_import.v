@@ -242,41 +242,39 @@ module albatross_import #(
             cut_q      <= 1'b0;
             fails_q    <= {COUNT_WIDTH{1'b0}};
             retry_q    <= 1'b0;
-        end else if (wb_err_i && stb) begin
-            // A failed access: count it, drop cyc for a clock.
-            if (~&fails_q) fails_q <= fails_q + 1'b1;
-            retry_q <= 1'b1;
         end else begin
-            retry_q <= 1'b0;
-            if (!retry_q) begin
-                if (state_q == S_IDLE && start_i) begin
-                    words_q    <= words_i;
-                    rl_known_q <= rl_known_i;
-                    rl_q       <= rl_i;
-                    new_q      <= 1'b0;
-                    corrupt_q  <= 1'b0;
-                    cut_q      <= 1'b0;
-                    fails_q    <= {COUNT_WIDTH{1'b0}};
-                    adr_q      <= base_i + CTRL_WORD;
-                end
-                if (state_q == S_LOAD_ACTUAL && wb_ack_i) begin
-                    act_q <= act_byte[1:0];
-                    if (!act_valid) corrupt_q <= 1'b1;
-                    else if (!act_match) new_q <= 1'b1;
-                end
-                if (state_q == S_STORE_RL && wb_ack_i) begin
-                    rl_q       <= act_q;
-                    rl_known_q <= 1'b1;
-                end
-                if (selected_o && stream_i) begin      // phase 2 from word 0
-                    adr_q <= adr_inc;
-                    k_q   <= {WORDS_WIDTH{1'b0}};
-                end
-                if (word_ack) word_q <= wb_dat_i;
-                if (taken && !last_word) begin         // the next word
-                    adr_q <= adr_inc;
-                    k_q   <= k_inc;
-                end
+            // A failed access: count it, drop cyc for a clock.  (Wishbone: no
+            // ack with err, none without a request, so nothing below moves in
+            // that clock or in the retry clock but the state's deadline check.)
+            retry_q <= wb_err_i && stb;
+            if (wb_err_i && stb && ~&fails_q) fails_q <= fails_q + 1'b1;
+            if (state_q == S_IDLE && start_i) begin
+                words_q    <= words_i;
+                rl_known_q <= rl_known_i;
+                rl_q       <= rl_i;
+                new_q      <= 1'b0;
+                corrupt_q  <= 1'b0;
+                cut_q      <= 1'b0;
+                fails_q    <= {COUNT_WIDTH{1'b0}};
+                adr_q      <= base_i + CTRL_WORD;
+            end
+            if (state_q == S_LOAD_ACTUAL && wb_ack_i) begin
+                act_q <= act_byte[1:0];
+                if (!act_valid) corrupt_q <= 1'b1;
+                else if (!act_match) new_q <= 1'b1;
+            end
+            if (state_q == S_STORE_RL && wb_ack_i) begin
+                rl_q       <= act_q;
+                rl_known_q <= 1'b1;
+            end
+            if (selected_o && stream_i) begin          // phase 2 from word 0
+                adr_q <= adr_inc;
+                k_q   <= {WORDS_WIDTH{1'b0}};
+            end
+            if (word_ack) word_q <= wb_dat_i;
+            if (taken && !last_word) begin             // the next word
+                adr_q <= adr_inc;
+                k_q   <= k_inc;
             end
             if (cut_now) begin
                 state_q <= S_IDLE;
