@@ -77,7 +77,7 @@ module albatross_import #(
     output wire                   cut_o,        // ended by may_access_i
     output wire [COUNT_WIDTH-1:0] fails_o,      // accesses answered with err in this Import
     output wire                   rl_known_o,   // the copy after the Import (live)
-    output wire [1:0]             rl_o,
+    output wire [1:0]             rl_o,         // ... its buffer (0 while unknown)
     // Wishbone B4 classic master
     output wire                   wb_cyc_o,
     output wire                   wb_stb_o,
@@ -129,8 +129,7 @@ module albatross_import #(
     reg [WORDS_WIDTH-1:0] words_q;
     reg [WORDS_WIDTH-1:0] k_q;          // word index in phase 2
     reg [1:0]             act_q;        // the Actual last loaded: the next ReadLocked store
-    reg                   rl_known_q;
-    reg [1:0]             rl_q;
+    reg [1:0]             rl_q;         // the ReadLocked copy: a buffer 1..3, 0 unknown
     reg                   new_q;
     reg                   corrupt_q;
     reg                   cut_q;
@@ -150,7 +149,8 @@ module albatross_import #(
 
     wire [7:0] act_byte   = wb_dat_i[ACT_BIT +: 8];
     wire       act_valid  = act_byte[7:2] == 6'd0 && act_byte[1:0] != 2'd0;
-    wire       act_match  = rl_known_q && act_byte[1:0] == rl_q;
+    wire       rl_known   = rl_q != 2'd0;
+    wire       act_match  = act_byte[1:0] == rl_q;    // with act_valid: the copy is known and equal
     wire [WORDS_WIDTH-1:0] k_inc = k_q + 1'b1;
     wire       last_word  = k_inc == words_q;     // k = W - 1, without a subtractor
     wire       end_phase1 = state_q == S_LOAD_ACTUAL && wb_ack_i && act_valid && act_match;
@@ -236,7 +236,7 @@ module albatross_import #(
         done_q <= 1'b0;
         if (rst_i) begin
             state_q    <= S_IDLE;
-            rl_known_q <= 1'b0;
+            rl_q       <= 2'd0;
             new_q      <= 1'b0;
             corrupt_q  <= 1'b0;
             cut_q      <= 1'b0;
@@ -250,8 +250,7 @@ module albatross_import #(
             if (wb_err_i && stb && ~&fails_q) fails_q <= fails_q + 1'b1;
             if (state_q == S_IDLE && start_i) begin
                 words_q    <= words_i;
-                rl_known_q <= rl_known_i;
-                rl_q       <= rl_i;
+                rl_q       <= rl_known_i ? rl_i : 2'd0;
                 new_q      <= 1'b0;
                 corrupt_q  <= 1'b0;
                 cut_q      <= 1'b0;
@@ -265,7 +264,6 @@ module albatross_import #(
             end
             if (state_q == S_STORE_RL && wb_ack_i) begin
                 rl_q       <= act_q;
-                rl_known_q <= 1'b1;
             end
             if (selected_o && stream_i) begin          // phase 2 from word 0
                 adr_q <= adr_inc;
@@ -280,7 +278,7 @@ module albatross_import #(
                 state_q <= S_IDLE;
                 cut_q   <= 1'b1;
                 done_q  <= 1'b1;
-                if (forget) rl_known_q <= 1'b0;
+                if (forget) rl_q <= 2'd0;
             end else if (fin) begin
                 state_q <= S_IDLE;
                 done_q  <= 1'b1;
@@ -298,7 +296,7 @@ module albatross_import #(
     assign corrupt_o    = corrupt_q;
     assign cut_o        = cut_q;
     assign fails_o      = fails_q;
-    assign rl_known_o   = rl_known_q;
+    assign rl_known_o   = rl_known;
     assign rl_o         = rl_q;
     assign wb_cyc_o     = stb;
     assign wb_stb_o     = stb;

@@ -353,7 +353,7 @@ module fimport #(
     (* keep *) wire [1:0]    f_dact;     // dut.act_q
     (* keep *) wire          f_dretry;   // dut.retry_q
     (* keep *) wire          f_dnew;     // dut.new_q
-    (* keep *) wire          f_drlk;     // dut.rl_known_q
+    (* keep *) wire          f_drlk;     // dut.rl_known
     (* keep *) wire [1:0]    f_drl;      // dut.rl_q
     (* keep *) wire [31:0]   f_dword;    // dut.word_q
     (* keep *) wire          f_dwe;      // dut.we
