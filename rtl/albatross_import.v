@@ -15,7 +15,10 @@
 //     (end without reading).  skip_i while a word waits to be taken (or, with
 //     PULL, to be asked for) ends the Import there; so does may_access_i low.  Phase 2: load the W words of buffer ReadLocked
 //     in address order, one load per word handed out on word_o.
-//   * Accesses: one at a time; cyc = stb from request to ack.  With no fault
+//   * Accesses: one at a time; cyc = stb from request to ack; wb_we_o and
+//     wb_sel_o are decoded from the state (meaningful only with cyc).  The
+//     engine relies on Wishbone's answers: ack or err only in a clock with a
+//     request, never both.  With no fault
 //     and a consumer that takes every word in its ack clock (word_ready_i),
 //     the next access is on the bus in the clock after the previous ack: no
 //     idle bus clock inside an Import.  Undisturbed, an Import is 1 (Old) or
