@@ -233,7 +233,7 @@ module albatross_import #(
     end
     wire cut_now = due && !may_access_i;
     // Cut off with ReadLocked stored (or maybe stored) and not confirmed: forget the copy.
-    wire forget  = state_q == S_STORE_RL || (state_q == S_LOAD_ACTUAL && new_q && (retry_q || !act_match));
+    wire forget  = state_q == S_STORE_RL || (state_q == S_LOAD_ACTUAL && new_q && !end_phase1);
 
     always @(posedge clk_i) begin
         done_q <= 1'b0;
