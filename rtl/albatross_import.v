@@ -15,7 +15,10 @@
 //     (end without reading).  skip_i while a word waits to be taken (or, with
 //     PULL, to be asked for) ends the Import there; so does may_access_i low.  Phase 2: load the W words of buffer ReadLocked
 //     in address order, one load per word handed out on word_o.
-//   * Accesses: one at a time; cyc = stb from request to ack.  With no fault
+//   * Accesses: one at a time; cyc = stb from request to ack; wb_we_o and
+//     wb_sel_o are decoded from the state (meaningful only with cyc).  The
+//     engine relies on Wishbone's answers: ack or err only in a clock with a
+//     request, never both.  With no fault
 //     and a consumer that takes every word in its ack clock (word_ready_i),
 //     the next access is on the bus in the clock after the previous ack: no
 //     idle bus clock inside an Import.  Undisturbed, an Import is 1 (Old) or
@@ -77,7 +80,7 @@ module albatross_import #(
     output wire                   cut_o,        // ended by may_access_i
     output wire [COUNT_WIDTH-1:0] fails_o,      // accesses answered with err in this Import
     output wire                   rl_known_o,   // the copy after the Import (live)
-    output wire [1:0]             rl_o,
+    output wire [1:0]             rl_o,         // ... its buffer (0 while unknown)
     // Wishbone B4 classic master
     output wire                   wb_cyc_o,
     output wire                   wb_stb_o,
@@ -92,22 +95,23 @@ module albatross_import #(
 
 `include "albatross_contract.vh"
 
-    // Channel layout: both control bytes in one word, buffers from BUF_WORD.
+    // Channel layout: both control bytes in one word, buffers from BUF_WORD_I.
     localparam integer          CTRL_WORD_I = ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES;
     localparam integer          BUF_WORD_I  = ALB_CH_OFF_BUFFERS / ALB_CH_WORD_BYTES;
     localparam [ADDR_WIDTH-1:0] CTRL_WORD   = CTRL_WORD_I[ADDR_WIDTH-1:0];
-    localparam [ADDR_WIDTH-1:0] BUF_WORD    = BUF_WORD_I[ADDR_WIDTH-1:0];
     localparam                  ACT_BIT     = 8 * (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
     localparam                  RL_BIT      = 8 * (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
     localparam [3:0]            SEL_ACT     = 4'b0001 << (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
     localparam [3:0]            SEL_RL      = 4'b0001 << (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
     localparam [1:0]            BUFFER1     = ALB_CH_BUFFER1[1:0];
     localparam [1:0]            BUFFER2     = BUFFER1 + 2'd1;
+    localparam [1:0]            BUFFER3     = BUFFER1 + 2'd2;
 
-    // The engine relies on: both control bytes in one word, three buffers
-    // numbered 1..3 (2 bits).
+    // The engine relies on: both control bytes in one word, the buffers from
+    // the next word on, three buffers numbered 1..3 (2 bits).
     generate
         if (ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES != ALB_CH_OFF_READLOCKED / ALB_CH_WORD_BYTES ||
+            BUF_WORD_I != CTRL_WORD_I + 1 ||
             ALB_CH_BUFFER1 != 1 || ALB_CH_BUFFER_LAST != 3 || ALB_CH_BUFFERS != 3 ||
             ALB_CH_WORD_BYTES != 4 || ADDR_WIDTH < 2 || WORDS_WIDTH < 1 || COUNT_WIDTH < 1) begin : g_contract_check
             albatross_import_contract_mismatch u_error ();
@@ -124,16 +128,11 @@ module albatross_import #(
                      S_WAIT_PULL   = 3'd6;  // PULL: word k is next, waiting for word_ready_i
 
     reg [2:0]             state_q;
-    reg                   stb_q;        // cyc = stb: an access is on the bus
-    reg                   we_q;
-    reg [3:0]             sel_q;
     reg [ADDR_WIDTH-1:0]  adr_q;
-    reg [ADDR_WIDTH-1:0]  base_q;
     reg [WORDS_WIDTH-1:0] words_q;
     reg [WORDS_WIDTH-1:0] k_q;          // word index in phase 2
     reg [1:0]             act_q;        // the Actual last loaded: the next ReadLocked store
-    reg                   rl_known_q;
-    reg [1:0]             rl_q;
+    reg [1:0]             rl_q;         // the ReadLocked copy: a buffer 1..3, 0 unknown
     reg                   new_q;
     reg                   corrupt_q;
     reg                   cut_q;
@@ -142,194 +141,171 @@ module albatross_import #(
     reg [COUNT_WIDTH-1:0] fails_q;
     reg [31:0]            word_q;       // a loaded word the consumer has not taken yet
 
+    // The request follows the state: cyc = stb in an access state except in
+    // the clock after a failed access; we in the ReadLocked store; sel the
+    // ReadLocked lane there, all four lanes in phase 2 (state_q[2]), else the
+    // Actual lane.
+    wire       phase2     = state_q[2];
+    wire       stb        = (state_q == S_LOAD_ACTUAL || state_q == S_STORE_RL || state_q == S_LOAD_WORD) && !retry_q;
+    wire       we         = state_q == S_STORE_RL;
+    wire [3:0] sel        = phase2 ? 4'hF : we ? SEL_RL : SEL_ACT;
+
     wire [7:0] act_byte   = wb_dat_i[ACT_BIT +: 8];
     wire       act_valid  = act_byte[7:2] == 6'd0 && act_byte[1:0] != 2'd0;
-    wire       act_match  = rl_known_q && act_byte[1:0] == rl_q;
-    wire       last_word  = k_q == words_q - 1'b1;
+    wire       rl_known   = rl_q != 2'd0;
+    wire       act_match  = act_byte[1:0] == rl_q;    // with act_valid: the copy is known and equal
+    wire [WORDS_WIDTH-1:0] k_inc = k_q + 1'b1;
+    wire       last_word  = k_inc == words_q;     // k = W - 1, without a subtractor
     wire       end_phase1 = state_q == S_LOAD_ACTUAL && wb_ack_i && act_valid && act_match;
     wire       word_ack   = state_q == S_LOAD_WORD && wb_ack_i;
-    wire       taken      = (word_ack || state_q == S_HOLD_WORD) && word_ready_i;
+    wire       hold       = state_q == S_HOLD_WORD;
+    wire       taken      = (word_ack || hold) && word_ready_i;
 
-    // First word of buffer b: base + BUF_WORD + (b - 1) * W (no multiplier).
-    // W as an address offset (widened, then cut to ADDR_WIDTH bits: a
-    // channel never reaches past the port's address space).
+    // Next address: adr + 1 + m, one adder.  In phase 1 and S_SELECTED adr_q
+    // is the control word (base + CTRL_WORD), so the first word of buffer
+    // ReadLocked, base + BUF_WORD_I + (rl - 1) * W, is adr + 1 + m with
+    // m = (rl - 1) * W = 0, W or 2W (no multiplier, no base register); in
+    // phase 2 m = 0: the next word.  W as an address offset (widened, then
+    // cut to ADDR_WIDTH bits: a channel never reaches past the port's address
+    // space).
     /* verilator lint_off UNUSEDSIGNAL */
     wire [ADDR_WIDTH+WORDS_WIDTH-1:0] w_wide = {{ADDR_WIDTH{1'b0}}, words_q};
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [ADDR_WIDTH-1:0] w_ext     = w_wide[ADDR_WIDTH-1:0];
-    wire [ADDR_WIDTH-1:0] buf_first = base_q + BUF_WORD +
-                                      (rl_q == BUFFER1 ? {ADDR_WIDTH{1'b0}} :
-                                       rl_q == BUFFER2 ? w_ext : (w_ext << 1));
+    wire [ADDR_WIDTH-1:0] w_ext   = w_wide[ADDR_WIDTH-1:0];
+    wire                  m_w     = !phase2 && rl_q == BUFFER2;
+    wire                  m_2w    = !phase2 && rl_q == BUFFER3;
+    wire [ADDR_WIDTH-1:0] m       = ({ADDR_WIDTH{m_w}} & w_ext) | ({ADDR_WIDTH{m_2w}} & (w_ext << 1));
+    wire [ADDR_WIDTH-1:0] adr_inc = adr_q + m + 1'b1;
+
+    // The next step (no err in this clock): the state nst; due: an access
+    // begins (or is repeated) from the next clock on, or a held word is past
+    // the deadline check, so may_access_i low cuts the Import off here; fin:
+    // the Import ends (done) if not cut off.
+    reg [2:0] nst;
+    reg       due, fin;
+    always @* begin
+        nst = state_q;
+        due = 1'b0;
+        fin = 1'b0;
+        if (retry_q) due = 1'b1;                         // the failed access again
+        else case (state_q)
+            S_IDLE: if (start_i) begin
+                nst = S_LOAD_ACTUAL;
+                due = 1'b1;
+            end
+            S_LOAD_ACTUAL: if (wb_ack_i) begin
+                if (!act_valid) fin = 1'b1;                // names no buffer: read nothing
+                else if (!act_match) begin                 // ReadLocked := Actual
+                    nst = S_STORE_RL;
+                    due = 1'b1;
+                end else if (skip_i && !stream_i) fin = 1'b1;
+                else if (stream_i) begin
+                    nst = PULL != 0 ? S_WAIT_PULL : S_LOAD_WORD;
+                    due = PULL == 0;
+                end else nst = S_SELECTED;
+            end
+            S_STORE_RL: if (wb_ack_i) begin
+                nst = S_LOAD_ACTUAL;
+                due = 1'b1;
+            end
+            S_SELECTED: if (stream_i) begin
+                nst = PULL != 0 ? S_WAIT_PULL : S_LOAD_WORD;
+                due = PULL == 0;
+            end else if (skip_i) fin = 1'b1;
+            S_LOAD_WORD, S_HOLD_WORD: if (word_ack || hold) begin
+                if (!taken) begin                          // the consumer is not ready
+                    nst = S_HOLD_WORD;
+                    due = hold;                            // abandoned, or past the deadline
+                    fin = hold && skip_i;
+                end else if (last_word) fin = 1'b1;
+                else begin
+                    nst = PULL != 0 ? S_WAIT_PULL : S_LOAD_WORD;
+                    due = PULL == 0;
+                end
+            end
+            S_WAIT_PULL: begin
+                due = 1'b1;
+                if (skip_i) fin = 1'b1;
+                else if (word_ready_i) nst = S_LOAD_WORD;
+            end
+            default: nst = S_IDLE;
+        endcase
+    end
+    wire cut_now = due && !may_access_i;
+    // Cut off with ReadLocked stored (or maybe stored) and not confirmed: forget the copy.
+    wire forget  = state_q == S_STORE_RL || (state_q == S_LOAD_ACTUAL && new_q && !end_phase1);
 
     always @(posedge clk_i) begin
         done_q <= 1'b0;
         if (rst_i) begin
             state_q    <= S_IDLE;
-            stb_q      <= 1'b0;
-            rl_known_q <= 1'b0;
+            rl_q       <= 2'd0;
             new_q      <= 1'b0;
             corrupt_q  <= 1'b0;
             cut_q      <= 1'b0;
             fails_q    <= {COUNT_WIDTH{1'b0}};
             retry_q    <= 1'b0;
-        end else if (wb_err_i && stb_q) begin
-            // A failed access: count it, drop cyc for a clock.
-            if (~&fails_q) fails_q <= fails_q + 1'b1;
-            stb_q   <= 1'b0;
-            retry_q <= 1'b1;
-        end else if (retry_q) begin
-            // The same access again if one may begin, else the cut-off.
-            retry_q <= 1'b0;
-            if (may_access_i) stb_q <= 1'b1;
-            else begin
+        end else begin
+            // A failed access: count it, drop cyc for a clock.  (Wishbone: no
+            // ack with err, none without a request, so nothing below moves in
+            // that clock or in the retry clock but the state's deadline check.)
+            retry_q <= wb_err_i && stb;
+            if (wb_err_i && stb && ~&fails_q) fails_q <= fails_q + 1'b1;
+            if (state_q == S_IDLE && start_i) begin
+                words_q    <= words_i;
+                rl_q       <= rl_known_i ? rl_i : 2'd0;
+                new_q      <= 1'b0;
+                corrupt_q  <= 1'b0;
+                cut_q      <= 1'b0;
+                fails_q    <= {COUNT_WIDTH{1'b0}};
+                adr_q      <= base_i + CTRL_WORD;
+            end
+            if (state_q == S_LOAD_ACTUAL && wb_ack_i) begin
+                act_q <= act_byte[1:0];
+                if (!act_valid) corrupt_q <= 1'b1;
+                else if (!act_match) new_q <= 1'b1;
+            end
+            if (state_q == S_STORE_RL && wb_ack_i) begin
+                rl_q       <= act_q;
+            end
+            if (selected_o && stream_i) begin          // phase 2 from word 0
+                adr_q <= adr_inc;
+                k_q   <= {WORDS_WIDTH{1'b0}};
+            end
+            if (word_ack) word_q <= wb_dat_i;
+            if (taken && !last_word) begin             // the next word
+                adr_q <= adr_inc;
+                k_q   <= k_inc;
+            end
+            if (cut_now) begin
                 state_q <= S_IDLE;
                 cut_q   <= 1'b1;
                 done_q  <= 1'b1;
-                // ReadLocked stored (or maybe stored) and not confirmed: forget the copy.
-                if (state_q == S_STORE_RL || (state_q == S_LOAD_ACTUAL && new_q)) rl_known_q <= 1'b0;
-            end
-        end else begin
-            case (state_q)
-                S_IDLE: if (start_i) begin
-                    base_q     <= base_i;
-                    words_q    <= words_i;
-                    rl_known_q <= rl_known_i;
-                    rl_q       <= rl_i;
-                    new_q      <= 1'b0;
-                    corrupt_q  <= 1'b0;
-                    cut_q      <= 1'b0;
-                    fails_q    <= {COUNT_WIDTH{1'b0}};
-                    adr_q      <= base_i + CTRL_WORD;
-                    we_q       <= 1'b0;
-                    sel_q      <= SEL_ACT;
-                    if (may_access_i) begin
-                        stb_q   <= 1'b1;
-                        state_q <= S_LOAD_ACTUAL;
-                    end else begin
-                        cut_q  <= 1'b1;
-                        done_q <= 1'b1;
-                    end
-                end
-                S_LOAD_ACTUAL: if (wb_ack_i) begin
-                    act_q <= act_byte[1:0];
-                    if (!act_valid) begin                  // names no buffer: read nothing
-                        stb_q     <= 1'b0;
-                        state_q   <= S_IDLE;
-                        corrupt_q <= 1'b1;
-                        done_q    <= 1'b1;
-                    end else if (!act_match) begin         // ReadLocked := Actual
-                        we_q    <= 1'b1;
-                        sel_q   <= SEL_RL;
-                        new_q   <= 1'b1;
-                        stb_q   <= may_access_i;
-                        state_q <= may_access_i ? S_STORE_RL : S_IDLE;
-                        cut_q   <= !may_access_i;
-                        done_q  <= !may_access_i;
-                        if (!may_access_i && new_q) rl_known_q <= 1'b0;
-                    end else if (skip_i && !stream_i) begin
-                        stb_q   <= 1'b0;
-                        state_q <= S_IDLE;
-                        done_q  <= 1'b1;
-                    end else if (stream_i && PULL != 0) begin
-                        adr_q   <= buf_first;
-                        k_q     <= {WORDS_WIDTH{1'b0}};
-                        sel_q   <= 4'hF;
-                        stb_q   <= 1'b0;
-                        state_q <= S_WAIT_PULL;
-                    end else if (stream_i) begin
-                        adr_q   <= buf_first;
-                        k_q     <= {WORDS_WIDTH{1'b0}};
-                        sel_q   <= 4'hF;
-                        stb_q   <= may_access_i;
-                        state_q <= may_access_i ? S_LOAD_WORD : S_IDLE;
-                        cut_q   <= !may_access_i;
-                        done_q  <= !may_access_i;
-                    end else begin
-                        stb_q   <= 1'b0;
-                        state_q <= S_SELECTED;
-                    end
-                end
-                S_STORE_RL: if (wb_ack_i) begin
-                    rl_q       <= act_q;
-                    rl_known_q <= 1'b1;
-                    we_q       <= 1'b0;
-                    sel_q      <= SEL_ACT;
-                    stb_q      <= may_access_i;
-                    state_q    <= may_access_i ? S_LOAD_ACTUAL : S_IDLE;
-                    cut_q      <= !may_access_i;
-                    done_q     <= !may_access_i;
-                    if (!may_access_i) rl_known_q <= 1'b0;   // stored, not confirmed
-                end
-                S_SELECTED: if (stream_i) begin
-                    adr_q   <= buf_first;
-                    k_q     <= {WORDS_WIDTH{1'b0}};
-                    sel_q   <= 4'hF;
-                    stb_q   <= may_access_i && PULL == 0;
-                    state_q <= PULL != 0 ? S_WAIT_PULL : may_access_i ? S_LOAD_WORD : S_IDLE;
-                    cut_q   <= !may_access_i && PULL == 0;
-                    done_q  <= !may_access_i && PULL == 0;
-                end else if (skip_i) begin
-                    state_q <= S_IDLE;
-                    done_q  <= 1'b1;
-                end
-                S_LOAD_WORD, S_HOLD_WORD: if (word_ack || state_q == S_HOLD_WORD) begin
-                    if (word_ack) word_q <= wb_dat_i;
-                    if (!taken && state_q == S_HOLD_WORD && (skip_i || !may_access_i)) begin
-                        state_q <= S_IDLE;                 // abandoned, or past the deadline
-                        cut_q   <= !may_access_i;
-                        done_q  <= 1'b1;
-                    end else if (!taken) begin             // the consumer is not ready
-                        stb_q   <= 1'b0;
-                        state_q <= S_HOLD_WORD;
-                    end else if (last_word) begin
-                        stb_q   <= 1'b0;
-                        state_q <= S_IDLE;
-                        done_q  <= 1'b1;
-                    end else if (PULL != 0) begin
-                        adr_q   <= adr_q + 1'b1;
-                        k_q     <= k_q + 1'b1;
-                        stb_q   <= 1'b0;
-                        state_q <= S_WAIT_PULL;
-                    end else begin
-                        adr_q   <= adr_q + 1'b1;
-                        k_q     <= k_q + 1'b1;
-                        stb_q   <= may_access_i;
-                        state_q <= may_access_i ? S_LOAD_WORD : S_IDLE;
-                        cut_q   <= !may_access_i;
-                        done_q  <= !may_access_i;
-                    end
-                end
-                S_WAIT_PULL: if (word_ready_i || skip_i || !may_access_i) begin
-                    stb_q   <= word_ready_i && !skip_i && may_access_i;
-                    state_q <= (word_ready_i && !skip_i && may_access_i) ? S_LOAD_WORD : S_IDLE;
-                    cut_q   <= !may_access_i;
-                    done_q  <= skip_i || !may_access_i;
-                end
-                default: begin
-                    stb_q   <= 1'b0;
-                    state_q <= S_IDLE;
-                end
-            endcase
+                if (forget) rl_q <= 2'd0;
+            end else if (fin) begin
+                state_q <= S_IDLE;
+                done_q  <= 1'b1;
+            end else state_q <= nst;
         end
     end
 
     assign idle_o       = state_q == S_IDLE;
     assign selected_o   = end_phase1 || state_q == S_SELECTED;
-    assign word_o       = state_q == S_HOLD_WORD ? word_q : wb_dat_i;
-    assign word_valid_o = word_ack || state_q == S_HOLD_WORD;
+    assign word_o       = hold ? word_q : wb_dat_i;
+    assign word_valid_o = word_ack || hold;
     assign word_index_o = k_q;
     assign done_o       = done_q;
     assign new_o        = new_q;
     assign corrupt_o    = corrupt_q;
     assign cut_o        = cut_q;
     assign fails_o      = fails_q;
-    assign rl_known_o   = rl_known_q;
+    assign rl_known_o   = rl_known;
     assign rl_o         = rl_q;
-    assign wb_cyc_o     = stb_q;
-    assign wb_stb_o     = stb_q;
-    assign wb_we_o      = we_q;
+    assign wb_cyc_o     = stb;
+    assign wb_stb_o     = stb;
+    assign wb_we_o      = we;
     assign wb_adr_o     = adr_q;
-    assign wb_sel_o     = sel_q;
+    assign wb_sel_o     = sel;
     assign wb_dat_o     = {30'd0, act_q} << RL_BIT;
 
 endmodule

@@ -12,14 +12,13 @@
 `ifdef F_PROBE
     // the engines' and the bus master's registers, joined by the script after flatten
     (* keep *) wire [2:0]    fi_state;   // u_import.state_q
-    (* keep *) wire          fi_stb;     // u_import.stb_q
+    (* keep *) wire          fi_stb;     // u_import.stb
     (* keep *) wire          fi_retry;   // u_import.retry_q
     (* keep *) wire [AW-1:0] fi_adr;     // u_import.adr_q
-    (* keep *) wire [AW-1:0] fi_base;    // u_import.base_q
     (* keep *) wire [WW-1:0] fi_words;   // u_import.words_q
     (* keep *) wire [1:0]    fi_act;     // u_import.act_q
-    (* keep *) wire          fi_we;      // u_import.we_q
-    (* keep *) wire [3:0]    fi_sel;     // u_import.sel_q
+    (* keep *) wire          fi_we;      // u_import.we
+    (* keep *) wire [3:0]    fi_sel;     // u_import.sel
     (* keep *) wire [2:0]    fe_state;   // u_export.state_q
     (* keep *) wire          fe_stb;     // u_export.stb_q
     (* keep *) wire          fe_retry;   // u_export.retry_q
@@ -125,7 +124,7 @@
             inv_bus:   assert(fb_owner <= 2'd1 && fb_tmo <= 2'd2 && !(fb_gap && m_cyc));
             inv_i_state: assert(fi_state != 3'd3 && fi_state != 3'd7 &&
                                 fi_stb == (i_acc && !fi_retry) && (!fi_retry || i_acc) &&
-                                (fi_state == I_IDLE || (fi_base == f_sbase && fi_words == f_w)));
+                                (fi_state == I_IDLE || fi_words == f_w));
             inv_i_p1:    assert((!i_p1 || (fi_adr == f_sbase && fi_we == (fi_state == I_STORE_RL) &&
                                            fi_sel == (fi_state == I_STORE_RL ? SEL_RL : SEL_ACT))) &&
                                 (fi_state != I_STORE_RL || (imp_new && fi_act != 2'd0)) &&

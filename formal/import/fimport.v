@@ -346,19 +346,18 @@ module fimport #(
     // ------------------------------------------------------------ induction strengthening
 `ifdef F_PROBE
     (* keep *) wire [2:0]    f_state;    // dut.state_q
-    (* keep *) wire          f_stb;      // dut.stb_q
+    (* keep *) wire          f_stb;      // dut.stb
     (* keep *) wire [AW-1:0] f_adr;      // dut.adr_q
-    (* keep *) wire [AW-1:0] f_dbase;    // dut.base_q
     (* keep *) wire [WW-1:0] f_dwords;   // dut.words_q
     (* keep *) wire [WW-1:0] f_dk;       // dut.k_q
     (* keep *) wire [1:0]    f_dact;     // dut.act_q
     (* keep *) wire          f_dretry;   // dut.retry_q
     (* keep *) wire          f_dnew;     // dut.new_q
-    (* keep *) wire          f_drlk;     // dut.rl_known_q
+    (* keep *) wire          f_drlk;     // dut.rl_known
     (* keep *) wire [1:0]    f_drl;      // dut.rl_q
     (* keep *) wire [31:0]   f_dword;    // dut.word_q
-    (* keep *) wire          f_dwe;      // dut.we_q
-    (* keep *) wire [3:0]    f_dsel;     // dut.sel_q
+    (* keep *) wire          f_dwe;      // dut.we
+    (* keep *) wire [3:0]    f_dsel;     // dut.sel
     localparam [2:0] S_IDLE = 3'd0, S_LOAD_ACTUAL = 3'd1, S_STORE_RL = 3'd2, S_SELECTED = 3'd3,
                      S_LOAD_WORD = 3'd4, S_HOLD_WORD = 3'd5, S_WAIT_PULL = 3'd6;
     wire accessing = f_state == S_LOAD_ACTUAL || f_state == S_STORE_RL || f_state == S_LOAD_WORD;
@@ -374,7 +373,7 @@ module fimport #(
             inv_state:  assert(f_state <= S_WAIT_PULL && (PULL != 0 || f_state != S_WAIT_PULL));
             inv_stb:    assert(f_stb == (accessing && !f_dretry));
             inv_retry:  assert(!f_dretry || accessing);
-            inv_chan:   assert(f_state == S_IDLE || (f_dbase == f_base && f_dwords == f_w && !done && !cut && !corrupt));
+            inv_chan:   assert(f_state == S_IDLE || (f_dwords == f_w && !done && !cut && !corrupt));
             inv_ctrl:   assert(!(f_state == S_LOAD_ACTUAL || f_state == S_STORE_RL) ||
                                (f_adr == f_base + CTRL_W && f_dwe == (f_state == S_STORE_RL) &&
                                 f_dsel == (f_state == S_STORE_RL ? SEL_RL : SEL_ACT)));
@@ -388,7 +387,7 @@ module fimport #(
                                 (!und || (w_nctrl == n_ctl && f_nword == 3'd0 &&
                                           (!f_dnew || mem_act == {6'd0, f_dact})))));
             inv_sel:    assert(f_state != S_SELECTED ||
-                               (f_conf_ok && f_drlk && f_drl == f_conf && !f_streamed && f_dnew == f_stored && !f_dwe &&
+                               (f_adr == f_base + CTRL_W && f_conf_ok && f_drlk && f_drl == f_conf && !f_streamed && f_dnew == f_stored && !f_dwe &&
                                 (!und || (f_nctrl == n_ctl && f_nword == 3'd0))));
             inv_p2:     assert(!in_p2 || (f_dk < f_dwords && f_dk == f_k && !f_dwe && f_dsel == 4'hF &&
                                           f_adr == f_first + {{(AW-WW){1'b0}}, f_dk} &&
