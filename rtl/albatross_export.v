@@ -234,7 +234,9 @@ module albatross_export #(
     // Figure 4: the last of Buffer1..3 that is neither Actual nor ReadLocked.
     wire [1:0] pick      = (copy_d != BUFFER3 && rl_lock != BUFFER3) ? BUFFER3 :
                            (copy_d != BUFFER2 && rl_lock != BUFFER2) ? BUFFER2 : BUFFER1;
-    wire       last_word = store_k_q == words_q - 1'b1;
+    // In S_STORE_WORD take_k_q = store_k_q + 1: the last word is being stored
+    // when every word was taken (no subtractor).
+    wire       last_word = take_k_q == words_q;
     wire       ack       = wb_ack_i && stb_q;
     assign drop_now = retry_q && drop_q;
     assign landed   = ack && state_q == S_LOAD_ACTUAL && act_valid && act_byte[1:0] == tried_d && tried_d != 2'd0;
