@@ -137,7 +137,7 @@ module albatross_export #(
                      S_LOAD_ACTUAL  = 3'd1,  // read back destination d's Actual (copy unknown)
                      S_LOAD_RL      = 3'd2,  // load destination d's ReadLocked, pick its buffer
                      S_WAIT_WORD    = 3'd3,  // waiting for word word_index_o of the stream
-                     S_STORE_WORD   = 3'd4,  // store word store_k_q to destination d
+                     S_STORE_WORD   = 3'd4,  // store word take_k_q - 1 to destination d
                      S_STORE_TAKEN  = 3'd5,  // store taken_at to destination d
                      S_STORE_ACTUAL = 3'd6;  // store destination d's Actual := its buffer
 
@@ -147,8 +147,7 @@ module albatross_export #(
     reg [DESTS*ADDR_WIDTH-1:0] base_q;
     reg [DESTS-1:0]            need_q;
     reg [WORDS_WIDTH-1:0]      words_q;
-    reg [WORDS_WIDTH-1:0]      take_k_q;       // index of the next word to take
-    reg [WORDS_WIDTH-1:0]      store_k_q;      // index of the word being stored
+    reg [WORDS_WIDTH-1:0]      take_k_q;       // index of the next word to take (S_STORE_WORD: 1 + the word stored)
     reg [31:0]                 word_q;         // the word being stored
     reg [31:0]                 taken_q;
     reg [DESTS-1:0]            act_known_q;
@@ -234,8 +233,7 @@ module albatross_export #(
     // Figure 4: the last of Buffer1..3 that is neither Actual nor ReadLocked.
     wire [1:0] pick      = (copy_d != BUFFER3 && rl_lock != BUFFER3) ? BUFFER3 :
                            (copy_d != BUFFER2 && rl_lock != BUFFER2) ? BUFFER2 : BUFFER1;
-    // In S_STORE_WORD take_k_q = store_k_q + 1: the last word is being stored
-    // when every word was taken (no subtractor).
+    // In S_STORE_WORD the last word is being stored when every word was taken.
     wire       last_word = take_k_q == words_q;
     wire       ack       = wb_ack_i && stb_q;
     assign drop_now = retry_q && drop_q;
@@ -250,16 +248,18 @@ module albatross_export #(
 
     // Address of the current access: a control word, or word k of d's buffer
     // base + BUF_WORD + (buf - 1) * S + k, S = W + TAKEN_WORDS (no multiplier).
+    // k = take_k_q - 1 when storing word k (S_STORE_WORD), and k = W = take_k_q
+    // when storing taken_at (S_STORE_TAKEN): the -1 goes into the constant.
     /* verilator lint_off UNUSEDSIGNAL */
     wire [ADDR_WIDTH+WORDS_WIDTH-1:0] w_wide = {{ADDR_WIDTH{1'b0}}, words_q};
-    wire [ADDR_WIDTH+WORDS_WIDTH-1:0] k_wide = {{ADDR_WIDTH{1'b0}}, store_k_q};
+    wire [ADDR_WIDTH+WORDS_WIDTH-1:0] k_wide = {{ADDR_WIDTH{1'b0}}, take_k_q};
     /* verilator lint_on UNUSEDSIGNAL */
     wire [ADDR_WIDTH-1:0] w_ext   = w_wide[ADDR_WIDTH-1:0];
     wire [ADDR_WIDTH-1:0] stride  = w_ext + TAKEN_WORDS[ADDR_WIDTH-1:0];
     wire [ADDR_WIDTH-1:0] buf_off = buf_d == BUFFER1 ? {ADDR_WIDTH{1'b0}} : buf_d == BUFFER2 ? stride : (stride << 1);
-    wire [ADDR_WIDTH-1:0] word_k  = state_q == S_STORE_TAKEN ? w_ext : k_wide[ADDR_WIDTH-1:0];
     wire                  ctrl    = state_q == S_LOAD_ACTUAL || state_q == S_LOAD_RL || state_q == S_STORE_ACTUAL;
-    wire [ADDR_WIDTH-1:0] adr     = base_d + (ctrl ? CTRL_WORD : BUF_WORD + buf_off + word_k);
+    wire [ADDR_WIDTH-1:0] adr     = base_d + (ctrl ? CTRL_WORD :
+                            (state_q == S_STORE_TAKEN ? BUF_WORD : BUF_WORD - 1'b1) + buf_off + k_wide[ADDR_WIDTH-1:0]);
 
     // Put the next access (state s, destination d) on the bus, or end the
     // Export here if no access may begin.
@@ -334,7 +334,6 @@ module albatross_export #(
             need_q  <= need_m;
             if (want_word && word_valid_i) begin          // take a word: store it to the first d
                 word_q    <= word_i;
-                store_k_q <= take_k_q;
                 take_k_q  <= take_k_q + 1'b1;
                 begin_access(S_STORE_WORD, first_d);
             end else if (want_word && state_q == S_WAIT_WORD && !may_access_i) begin
