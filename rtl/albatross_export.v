@@ -141,6 +141,7 @@ module albatross_export #(
                      S_STORE_TAKEN  = 3'd5,  // store taken_at to destination d
                      S_STORE_ACTUAL = 3'd6;  // store destination d's Actual := its buffer
 
+    (* fsm_encoding = "none" *)         // binary as written: 5 LUT4 fewer than yosys's one-hot recode
     reg [2:0]                  state_q;
     reg                        stb_q;          // cyc = stb: an access is on the bus
     reg [1:0]                  d_q;            // current destination
