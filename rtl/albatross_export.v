@@ -237,6 +237,7 @@ module albatross_export #(
     // In S_STORE_WORD the last word is being stored when every word was taken.
     wire       last_word = take_k_q == words_q;
     wire       ack       = wb_ack_i && stb_q;
+    wire       ctrl_ld   = state_q == S_LOAD_ACTUAL || state_q == S_LOAD_RL;
     assign drop_now = retry_q && drop_q;
     assign landed   = ack && state_q == S_LOAD_ACTUAL && act_valid && act_byte[1:0] == tried_d && tried_d != 2'd0;
     assign leave    = drop_now || landed;
@@ -373,21 +374,10 @@ module albatross_export #(
                         corrupt_q   <= corrupt_q | d_bit;
                     end
                     if (landed) published_q <= published_q | d_bit;  // the failed store had landed
-                    if (!leave) begin_access(S_LOAD_RL, d_q);
-                    else if (has_next) begin_access(known_next ? S_LOAD_RL : S_LOAD_ACTUAL, next_d);
                 end
                 S_LOAD_RL: if (adv) begin
                     buf_q[2*d_q +: 2] <= pick;
                     if (ack && !rl_valid) corrupt_q <= corrupt_q | d_bit;
-                    if (has_next) begin_access(known_next ? S_LOAD_RL : S_LOAD_ACTUAL, next_d);
-                end
-                S_STORE_WORD: if (adv) begin
-                    if (has_next) begin_access(S_STORE_WORD, next_d);
-                    else if (last_word) begin_access(TAKEN_AT ? S_STORE_TAKEN : S_STORE_ACTUAL, first_d);
-                end
-                S_STORE_TAKEN: if (adv) begin
-                    if (has_next) begin_access(S_STORE_TAKEN, next_d);
-                    else begin_access(S_STORE_ACTUAL, first_d);
                 end
                 S_STORE_ACTUAL: if (adv) begin
                     if (ack) begin
@@ -396,15 +386,25 @@ module albatross_export #(
                         published_q         <= published_q | d_bit;
                         tried_q[2*d_q +: 2] <= 2'd0;
                     end
-                    if (has_next) begin_access(S_STORE_ACTUAL, next_d);
-                    else begin
-                        stb_q   <= 1'b0;
-                        state_q <= S_IDLE;
-                        done_q  <= 1'b1;
-                    end
                 end
                 default: ;
             endcase
+            // The next access after this one (adv is 0 in S_IDLE and S_WAIT_WORD):
+            // Actual read back, then ReadLocked, of d; else the same step for the
+            // next destination (a load: LR if its copy is known, else LA); else
+            // the next step (after the last word, taken_at, then Actual), or end.
+            if (adv) begin
+                if (state_q == S_LOAD_ACTUAL && !leave) begin_access(S_LOAD_RL, d_q);
+                else if (has_next) begin_access(ctrl_ld ? (known_next ? S_LOAD_RL : S_LOAD_ACTUAL) : state_q, next_d);
+                else if (state_q == S_STORE_WORD) begin
+                    if (last_word) begin_access(TAKEN_AT ? S_STORE_TAKEN : S_STORE_ACTUAL, first_d);
+                end else if (state_q == S_STORE_TAKEN) begin_access(S_STORE_ACTUAL, first_d);
+                else if (state_q == S_STORE_ACTUAL) begin
+                    stb_q   <= 1'b0;
+                    state_q <= S_IDLE;
+                    done_q  <= 1'b1;
+                end
+            end
         end
     end
 
