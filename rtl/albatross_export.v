@@ -318,19 +318,6 @@ module albatross_export #(
                 cut_q   <= 1'b1;
                 done_q  <= 1'b1;
             end
-        end else if (adv && need_m == {DESTS{1'b0}}) begin
-            // The last destination left: the Export is over.
-            retry_q <= 1'b0;
-            need_q  <= need_m;
-            if (landed) begin
-                act_q[2*d_q +: 2]   <= act_byte[1:0];
-                act_known_q         <= act_known_q | d_bit;
-                tried_q[2*d_q +: 2] <= 2'd0;
-                published_q         <= published_q | d_bit;
-            end
-            stb_q   <= 1'b0;
-            state_q <= S_IDLE;
-            done_q  <= 1'b1;
         end else begin
             retry_q <= 1'b0;
             need_q  <= need_m;
@@ -394,7 +381,11 @@ module albatross_export #(
             // next destination (a load: LR if its copy is known, else LA); else
             // the next step (after the last word, taken_at, then Actual), or end.
             if (adv) begin
-                if (state_q == S_LOAD_ACTUAL && !leave) begin_access(S_LOAD_RL, d_q);
+                if (need_m == {DESTS{1'b0}}) begin          // the last destination left
+                    stb_q   <= 1'b0;
+                    state_q <= S_IDLE;
+                    done_q  <= 1'b1;
+                end else if (state_q == S_LOAD_ACTUAL && !leave) begin_access(S_LOAD_RL, d_q);
                 else if (has_next) begin_access(ctrl_ld ? (known_next ? S_LOAD_RL : S_LOAD_ACTUAL) : state_q, next_d);
                 else if (state_q == S_STORE_WORD) begin
                     if (last_word) begin_access(TAKEN_AT ? S_STORE_TAKEN : S_STORE_ACTUAL, first_d);
