@@ -321,18 +321,6 @@ module albatross_export #(
         end else begin
             retry_q <= 1'b0;
             need_q  <= need_m;
-            if (want_word && word_valid_i) begin          // take a word: store it to the first d
-                word_q    <= word_i;
-                take_k_q  <= take_k_q + 1'b1;
-                begin_access(S_STORE_WORD, first_d);
-            end else if (want_word && state_q == S_WAIT_WORD && !may_access_i) begin
-                state_q <= S_IDLE;                        // no store could follow: cut off
-                cut_q   <= 1'b1;
-                done_q  <= 1'b1;
-            end else if (want_word) begin                 // wait for it, bus idle
-                state_q <= S_WAIT_WORD;
-                stb_q   <= 1'b0;
-            end
             case (state_q)
                 S_IDLE: if (start_i) begin
                     base_q      <= base_i;
@@ -395,6 +383,19 @@ module albatross_export #(
                     state_q <= S_IDLE;
                     done_q  <= 1'b1;
                 end
+            end
+            // The word stream (exclusive with the next-access decision above).
+            if (want_word && word_valid_i) begin          // take a word: store it to the first d
+                word_q    <= word_i;
+                take_k_q  <= take_k_q + 1'b1;
+                begin_access(S_STORE_WORD, first_d);
+            end else if (want_word && state_q == S_WAIT_WORD && !may_access_i) begin
+                state_q <= S_IDLE;                        // no store could follow: cut off
+                cut_q   <= 1'b1;
+                done_q  <= 1'b1;
+            end else if (want_word) begin                 // wait for it, bus idle
+                state_q <= S_WAIT_WORD;
+                stb_q   <= 1'b0;
             end
         end
     end
