@@ -250,8 +250,8 @@ module albatross_export #(
 
     // Address of the current access: a control word, or word k of d's buffer
     // base + BUF_WORD + (buf - 1) * S + k, S = W + TAKEN_WORDS (no multiplier).
-    // k = take_k_q - 1 when storing word k (S_STORE_WORD), and k = W = take_k_q
-    // when storing taken_at (S_STORE_TAKEN): the -1 goes into the constant.
+    // Word k is stored (S_STORE_WORD) when take_k_q = k + 1, taken_at (word W,
+    // S_STORE_TAKEN, TAKEN_AT = 1) at S - 1 = W: the -1 goes into the constant.
     /* verilator lint_off UNUSEDSIGNAL */
     wire [ADDR_WIDTH+WORDS_WIDTH-1:0] w_wide = {{ADDR_WIDTH{1'b0}}, words_q};
     wire [ADDR_WIDTH+WORDS_WIDTH-1:0] k_wide = {{ADDR_WIDTH{1'b0}}, take_k_q};
@@ -260,8 +260,8 @@ module albatross_export #(
     wire [ADDR_WIDTH-1:0] stride  = w_ext + TAKEN_WORDS[ADDR_WIDTH-1:0];
     wire [ADDR_WIDTH-1:0] buf_off = buf_d == BUFFER1 ? {ADDR_WIDTH{1'b0}} : buf_d == BUFFER2 ? stride : (stride << 1);
     wire                  ctrl    = state_q == S_LOAD_ACTUAL || state_q == S_LOAD_RL || state_q == S_STORE_ACTUAL;
-    wire [ADDR_WIDTH-1:0] adr     = base_d + (ctrl ? CTRL_WORD :
-                            (state_q == S_STORE_TAKEN ? BUF_WORD : BUF_WORD - 1'b1) + buf_off + k_wide[ADDR_WIDTH-1:0]);
+    wire [ADDR_WIDTH-1:0] word_k1 = state_q == S_STORE_TAKEN ? stride : k_wide[ADDR_WIDTH-1:0];  // k + 1
+    wire [ADDR_WIDTH-1:0] adr     = base_d + (ctrl ? CTRL_WORD : BUF_WORD - 1'b1 + buf_off + word_k1);
 
     // Put the next access (state s, destination d) on the bus, or end the
     // Export here if no access may begin.
