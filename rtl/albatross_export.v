@@ -137,18 +137,18 @@ module albatross_export #(
                      S_LOAD_ACTUAL  = 3'd1,  // read back destination d's Actual (copy unknown)
                      S_LOAD_RL      = 3'd2,  // load destination d's ReadLocked, pick its buffer
                      S_WAIT_WORD    = 3'd3,  // waiting for word word_index_o of the stream
-                     S_STORE_WORD   = 3'd4,  // store word store_k_q to destination d
+                     S_STORE_WORD   = 3'd4,  // store word take_k_q - 1 to destination d
                      S_STORE_TAKEN  = 3'd5,  // store taken_at to destination d
                      S_STORE_ACTUAL = 3'd6;  // store destination d's Actual := its buffer
 
+    (* fsm_encoding = "none" *)         // binary as written: 5 LUT4 fewer than yosys's one-hot recode
     reg [2:0]                  state_q;
     reg                        stb_q;          // cyc = stb: an access is on the bus
     reg [1:0]                  d_q;            // current destination
     reg [DESTS*ADDR_WIDTH-1:0] base_q;
     reg [DESTS-1:0]            need_q;
     reg [WORDS_WIDTH-1:0]      words_q;
-    reg [WORDS_WIDTH-1:0]      take_k_q;       // index of the next word to take
-    reg [WORDS_WIDTH-1:0]      store_k_q;      // index of the word being stored
+    reg [WORDS_WIDTH-1:0]      take_k_q;       // index of the next word to take (S_STORE_WORD: 1 + the word stored)
     reg [31:0]                 word_q;         // the word being stored
     reg [31:0]                 taken_q;
     reg [DESTS-1:0]            act_known_q;
@@ -234,8 +234,10 @@ module albatross_export #(
     // Figure 4: the last of Buffer1..3 that is neither Actual nor ReadLocked.
     wire [1:0] pick      = (copy_d != BUFFER3 && rl_lock != BUFFER3) ? BUFFER3 :
                            (copy_d != BUFFER2 && rl_lock != BUFFER2) ? BUFFER2 : BUFFER1;
-    wire       last_word = store_k_q == words_q - 1'b1;
+    // In S_STORE_WORD the last word is being stored when every word was taken.
+    wire       last_word = take_k_q == words_q;
     wire       ack       = wb_ack_i && stb_q;
+    wire       ctrl_ld   = state_q == S_LOAD_ACTUAL || state_q == S_LOAD_RL;
     assign drop_now = retry_q && drop_q;
     assign landed   = ack && state_q == S_LOAD_ACTUAL && act_valid && act_byte[1:0] == tried_d && tried_d != 2'd0;
     assign leave    = drop_now || landed;
@@ -248,16 +250,18 @@ module albatross_export #(
 
     // Address of the current access: a control word, or word k of d's buffer
     // base + BUF_WORD + (buf - 1) * S + k, S = W + TAKEN_WORDS (no multiplier).
+    // Word k is stored (S_STORE_WORD) when take_k_q = k + 1, taken_at (word W,
+    // S_STORE_TAKEN, TAKEN_AT = 1) at S - 1 = W: the -1 goes into the constant.
     /* verilator lint_off UNUSEDSIGNAL */
     wire [ADDR_WIDTH+WORDS_WIDTH-1:0] w_wide = {{ADDR_WIDTH{1'b0}}, words_q};
-    wire [ADDR_WIDTH+WORDS_WIDTH-1:0] k_wide = {{ADDR_WIDTH{1'b0}}, store_k_q};
+    wire [ADDR_WIDTH+WORDS_WIDTH-1:0] k_wide = {{ADDR_WIDTH{1'b0}}, take_k_q};
     /* verilator lint_on UNUSEDSIGNAL */
     wire [ADDR_WIDTH-1:0] w_ext   = w_wide[ADDR_WIDTH-1:0];
     wire [ADDR_WIDTH-1:0] stride  = w_ext + TAKEN_WORDS[ADDR_WIDTH-1:0];
     wire [ADDR_WIDTH-1:0] buf_off = buf_d == BUFFER1 ? {ADDR_WIDTH{1'b0}} : buf_d == BUFFER2 ? stride : (stride << 1);
-    wire [ADDR_WIDTH-1:0] word_k  = state_q == S_STORE_TAKEN ? w_ext : k_wide[ADDR_WIDTH-1:0];
     wire                  ctrl    = state_q == S_LOAD_ACTUAL || state_q == S_LOAD_RL || state_q == S_STORE_ACTUAL;
-    wire [ADDR_WIDTH-1:0] adr     = base_d + (ctrl ? CTRL_WORD : BUF_WORD + buf_off + word_k);
+    wire [ADDR_WIDTH-1:0] word_k1 = state_q == S_STORE_TAKEN ? stride : k_wide[ADDR_WIDTH-1:0];  // k + 1
+    wire [ADDR_WIDTH-1:0] adr     = base_d + (ctrl ? CTRL_WORD : BUF_WORD - 1'b1 + buf_off + word_k1);
 
     // Put the next access (state s, destination d) on the bus, or end the
     // Export here if no access may begin.
@@ -314,35 +318,9 @@ module albatross_export #(
                 cut_q   <= 1'b1;
                 done_q  <= 1'b1;
             end
-        end else if (adv && need_m == {DESTS{1'b0}}) begin
-            // The last destination left: the Export is over.
-            retry_q <= 1'b0;
-            need_q  <= need_m;
-            if (landed) begin
-                act_q[2*d_q +: 2]   <= act_byte[1:0];
-                act_known_q         <= act_known_q | d_bit;
-                tried_q[2*d_q +: 2] <= 2'd0;
-                published_q         <= published_q | d_bit;
-            end
-            stb_q   <= 1'b0;
-            state_q <= S_IDLE;
-            done_q  <= 1'b1;
         end else begin
             retry_q <= 1'b0;
             need_q  <= need_m;
-            if (want_word && word_valid_i) begin          // take a word: store it to the first d
-                word_q    <= word_i;
-                store_k_q <= take_k_q;
-                take_k_q  <= take_k_q + 1'b1;
-                begin_access(S_STORE_WORD, first_d);
-            end else if (want_word && state_q == S_WAIT_WORD && !may_access_i) begin
-                state_q <= S_IDLE;                        // no store could follow: cut off
-                cut_q   <= 1'b1;
-                done_q  <= 1'b1;
-            end else if (want_word) begin                 // wait for it, bus idle
-                state_q <= S_WAIT_WORD;
-                stb_q   <= 1'b0;
-            end
             case (state_q)
                 S_IDLE: if (start_i) begin
                     base_q      <= base_i;
@@ -371,21 +349,10 @@ module albatross_export #(
                         corrupt_q   <= corrupt_q | d_bit;
                     end
                     if (landed) published_q <= published_q | d_bit;  // the failed store had landed
-                    if (!leave) begin_access(S_LOAD_RL, d_q);
-                    else if (has_next) begin_access(known_next ? S_LOAD_RL : S_LOAD_ACTUAL, next_d);
                 end
                 S_LOAD_RL: if (adv) begin
                     buf_q[2*d_q +: 2] <= pick;
                     if (ack && !rl_valid) corrupt_q <= corrupt_q | d_bit;
-                    if (has_next) begin_access(known_next ? S_LOAD_RL : S_LOAD_ACTUAL, next_d);
-                end
-                S_STORE_WORD: if (adv) begin
-                    if (has_next) begin_access(S_STORE_WORD, next_d);
-                    else if (last_word) begin_access(TAKEN_AT ? S_STORE_TAKEN : S_STORE_ACTUAL, first_d);
-                end
-                S_STORE_TAKEN: if (adv) begin
-                    if (has_next) begin_access(S_STORE_TAKEN, next_d);
-                    else begin_access(S_STORE_ACTUAL, first_d);
                 end
                 S_STORE_ACTUAL: if (adv) begin
                     if (ack) begin
@@ -394,15 +361,42 @@ module albatross_export #(
                         published_q         <= published_q | d_bit;
                         tried_q[2*d_q +: 2] <= 2'd0;
                     end
-                    if (has_next) begin_access(S_STORE_ACTUAL, next_d);
-                    else begin
-                        stb_q   <= 1'b0;
-                        state_q <= S_IDLE;
-                        done_q  <= 1'b1;
-                    end
                 end
                 default: ;
             endcase
+            // The next access after this one (adv is 0 in S_IDLE and S_WAIT_WORD):
+            // Actual read back, then ReadLocked, of d; else the same step for the
+            // next destination (a load: LR if its copy is known, else LA); else
+            // the next step (after the last word, taken_at, then Actual), or end.
+            if (adv) begin
+                if (need_m == {DESTS{1'b0}}) begin          // the last destination left
+                    stb_q   <= 1'b0;
+                    state_q <= S_IDLE;
+                    done_q  <= 1'b1;
+                end else if (state_q == S_LOAD_ACTUAL && !leave) begin_access(S_LOAD_RL, d_q);
+                else if (has_next) begin_access(ctrl_ld ? (known_next ? S_LOAD_RL : S_LOAD_ACTUAL) : state_q, next_d);
+                else if (state_q == S_STORE_WORD) begin
+                    if (last_word) begin_access(TAKEN_AT ? S_STORE_TAKEN : S_STORE_ACTUAL, first_d);
+                end else if (state_q == S_STORE_TAKEN) begin_access(S_STORE_ACTUAL, first_d);
+                else if (state_q == S_STORE_ACTUAL) begin
+                    stb_q   <= 1'b0;
+                    state_q <= S_IDLE;
+                    done_q  <= 1'b1;
+                end
+            end
+            // The word stream (exclusive with the next-access decision above).
+            if (want_word && word_valid_i) begin          // take a word: store it to the first d
+                word_q    <= word_i;
+                take_k_q  <= take_k_q + 1'b1;
+                begin_access(S_STORE_WORD, first_d);
+            end else if (want_word && state_q == S_WAIT_WORD && !may_access_i) begin
+                state_q <= S_IDLE;                        // no store could follow: cut off
+                cut_q   <= 1'b1;
+                done_q  <= 1'b1;
+            end else if (want_word) begin                 // wait for it, bus idle
+                state_q <= S_WAIT_WORD;
+                stb_q   <= 1'b0;
+            end
         end
     end
 

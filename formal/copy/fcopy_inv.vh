@@ -25,7 +25,7 @@
     (* keep *) wire [4*AW-1:0] fe_base;  // u_export.base_q
     (* keep *) wire [3:0]    fe_need;    // u_export.need_q
     (* keep *) wire [WW-1:0] fe_words;   // u_export.words_q
-    (* keep *) wire [WW-1:0] fe_sk;      // u_export.store_k_q
+    wire [WW-1:0]            fe_sk = exp_index - 1'b1; // S_STORE_WORD: the word stored (take_k_q - 1)
     (* keep *) wire [31:0]   fe_word;    // u_export.word_q
     (* keep *) wire [31:0]   fe_taken;   // u_export.taken_q
     (* keep *) wire [7:0]    fe_buf;     // u_export.buf_q

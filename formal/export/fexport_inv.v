@@ -2,8 +2,8 @@
 // (formal/export/export.sby task prove, harness fexport.v; docs/verification.md
 // "Export engine (unbounded)").  Inputs only, every one an assertion; fexport
 // instantiates it with -DF_PROBE, its f_* inputs joined by the script to the
-// engine's registers (state_q, need_q, store_k_q, buf_q, fail1_q, retry_q,
-// drop_q, base_q, words_q, word_q, taken_q), the rest the harness's own state.
+// engine's registers (state_q, need_q, buf_q, fail1_q, retry_q, drop_q,
+// base_q, words_q, word_q, taken_q), the rest the harness's own state.
 // Rules: the engine's position is a key kcur (the harness's access order: the
 // present access, or the next word's first store while waiting for a word);
 // every planned access below kcur is over (acked, or its destination left),
@@ -41,7 +41,7 @@ module fexport_inv #(
     // the engine's registers, joined by the script (connect -set inv.f_* ...)
     (* keep *) wire [2:0]      f_state;     // dut.state_q
     (* keep *) wire [1:0]      f_need;      // dut.need_q
-    (* keep *) wire [1:0]      f_store_k;   // dut.store_k_q
+    wire [1:0]                 f_store_k = windex_i - 2'd1; // S_STORE_WORD: the word stored (take_k_q - 1)
     (* keep *) wire [3:0]      f_buf;       // dut.buf_q
     (* keep *) wire [1:0]      f_fail1;     // dut.fail1_q (DROP = 1 only: else optimised away)
     (* keep *) wire            f_retry;     // dut.retry_q

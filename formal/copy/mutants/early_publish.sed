@@ -2,4 +2,4 @@
 # of the value (the mutant of tb/mutants/engines/export_early_publish.sed): a
 # destination buffer is published incompletely written.  Must fail
 # publish_complete (formal/copy/copy.sby neg_early_publish).
-s/wire       last_word = store_k_q == words_q - 1'b1;/wire       last_word = store_k_q == words_q - 2'd2;/
+s/wire       last_word = take_k_q == words_q;/wire       last_word = take_k_q == words_q - 1'b1;/
