@@ -85,6 +85,30 @@ def variant_sources(texts, edits):
     return out
 
 
+def parts_ice40(paths, top, chparam, stem):
+    """The full controller on iCE40 without flattening: {module: LUT4} of each part's own cells
+    (a part's count excludes the parts it instantiates)."""
+    import re
+    import subprocess
+    script = (f"read_verilog -DSYNTHESIS -Irtl {' '.join(paths)}; {chparam}; synth_ice40 -noflatten -top {top}; "
+              f"tee -q -o {stem}_stat.txt stat")
+    with open(stem + "_yosys.log", "w") as log:
+        if subprocess.run(["yosys", "-q", "-p", script], stdout=log, stderr=subprocess.STDOUT).returncode:
+            return {"error": f"yosys failed (log {stem}_yosys.log)"}
+    parts, mod = {}, None
+    with open(stem + "_stat.txt") as f:
+        for line in f:
+            m = re.match(r"=== (.+?) ===", line)
+            if m:
+                name = m.group(1)
+                mod = None if name == "design hierarchy" else re.sub(r"^\$paramod\$[0-9a-f]+\\|^\$paramod\\|\\.*$", "", name)
+                mod = mod.split("\\")[0] if mod else None
+            m = re.match(r"\s+SB_LUT4\s+(\d+)", line)
+            if m and mod:
+                parts[mod] = parts.get(mod, 0) + int(m.group(1))
+    return parts
+
+
 def slug(name):
     return "".join(c if c.isalnum() else "_" for c in name.lower()).strip("_")
 
@@ -146,6 +170,14 @@ def main():
             print(f"controller_area: [{i}/{len(jobs)}] {key[0]} on {key[1]}: "
                   f"{r.get('luts', 'ERROR')} LUTs ({r['yosys_seconds']} s)", flush=True)
 
+    parts = {}
+    if "ice40" in fams:
+        parts = parts_ice40([os.path.join(a.out, "full", os.path.basename(p)) for p in CTRL_FILES], ctop, chparam,
+                            os.path.join(a.out, "parts_ice40"))
+        if "error" in parts:
+            res[("parts", "ice40")] = {"error": parts.pop("error")}
+        print("controller_area: parts on ice40 (not flattened): "
+              + ", ".join(f"{k} {v}" for k, v in sorted(parts.items(), key=lambda kv: -kv[1])), flush=True)
     errors = [f"{k[0]} on {k[1]}: {r['error']}" for k, r in res.items() if "error" in r]
     pico = {fam: res[("PicoRV32", fam)].get("luts") for fam in fams}
     rows = []
@@ -168,7 +200,7 @@ def main():
             line += f"{row.get('luts', 'ERROR'):>12}" + (f"{row['over_picorv32']:>8.2f}" if "over_picorv32" in row
                                                         else f"{'-':>8}")
         print(line)
-    write_json(a.report, {"picorv32_luts": pico, "rows": rows, "goal_over_picorv32": 0.35, "aim_over_picorv32": 0.25,
+    write_json(a.report, {"picorv32_luts": pico, "rows": rows, "parts_ice40": parts, "goal_over_picorv32": 0.35, "aim_over_picorv32": 0.25,
                           "note": "LUTs: SB_LUT4 / LUT4 / LUT1-6; variants are tie-offs of "
                                   "the controller's files (tools/controller_area.py), measurements only"})
     print(f"controller_area: {a.report}")

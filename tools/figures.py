@@ -362,8 +362,15 @@ def controller_area():
             cells.append(f"{n(e['luts'])} ({e['over_picorv32']:.2f})" if "over_picorv32" in e else "error")
         desc = next(x["description"] for x in r["rows"] if x["variant"] == name)
         rows.append([name, desc] + cells)
-    return table(head, rows) + (f"\n\nThe goal (issue 12): at most {r['goal_over_picorv32']:.2f} of one PicoRV32, aim "
+    out = table(head, rows) + (f"\n\nThe goal (issue 12): at most {r['goal_over_picorv32']:.2f} of one PicoRV32, aim "
         f"{r.get('aim_over_picorv32', r['goal_over_picorv32']):.2f} (`{REPORTS}/controller_area.json`).")
+    parts = r.get("parts_ice40")
+    if parts:
+        out += ("\n\nWhere the full controller's LUTs go on iCE40 (synthesised without flattening, so a part's "
+                "LUTs are its own; the sum is above the flattened figure):\n\n"
+                + table(["part", "ice40 LUTs"], [[f"`{k}`", n(v)] for k, v in sorted(parts.items(), key=lambda kv: -kv[1])]
+                        + [["sum", n(sum(parts.values()))]]))
+    return out
 
 
 def sim_speed():
