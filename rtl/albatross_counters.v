@@ -93,9 +93,10 @@ module albatross_counters #(
     wire [CB-1:0] rd_adr = (phase_q == 2'd1) ? w0 : (phase_q == 2'd2) ? w1 : idx_m1[CB-1:0];
     wire          wr     = !ready_q || phase_q == 2'd2 || phase_q == 2'd3;
     wire [CB-1:0] wr_adr = !ready_q ? clear_q : (phase_q == 2'd2) ? w0 : w1;
-    wire [31:0]   wr_dat = !ready_q ? 32'd0 :
-                           (phase_q == 2'd2) ? {sat_add(rd_q[31:16], {12'd0, xfer_n}), sat_add(rd_q[15:0], retry_n)}
-                                             : {sat_add(rd_q[31:16], {12'd0, aband_n}), sat_add(rd_q[15:0], {12'd0, corrupt_n})};
+    // One pair of saturating adders: the deltas of the word being written.
+    wire [3:0]    add_hi = (phase_q == 2'd2) ? xfer_n : aband_n;
+    wire [15:0]   add_lo = (phase_q == 2'd2) ? retry_n : {12'd0, corrupt_n};
+    wire [31:0]   wr_dat = !ready_q ? 32'd0 : {sat_add(rd_q[31:16], {12'd0, add_hi}), sat_add(rd_q[15:0], add_lo)};
 
     always @(posedge clk_i) begin
         if (wr) ram[wr_adr] <= wr_dat;
