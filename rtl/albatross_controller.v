@@ -135,9 +135,22 @@ module albatross_controller #(
     /* verilator lint_on UNUSEDSIGNAL */
     wire [ST_AW-1:0]  st_ix  = ch32[ST_AW-1:0];
     wire [ST_AW-1:0]  clr_ix = clr32[ST_AW-1:0];
+    // Each field is written only when its slot changed it (write enables,
+    // not a read-modify-write multiplexer); the clearing writes zeros, which
+    // is what st_d holds after reset (its sources are reset).
+    wire              st_wr   = !ready_q || slot_end;
+    wire [ST_AW-1:0]  st_wa   = ready_q ? st_ix : clr_ix;
+    wire              wr_exp  = !ready_q || exp_run_q;
+    wire              wr_imp  = !ready_q || imp_run_q;
+    wire              wr_tkn  = !ready_q || (chosen_q && new_q);
     always @(posedge clk_i) begin
-        if (!ready_q || slot_end) st_mem[ready_q ? st_ix : clr_ix] <= ready_q ? st_d : {ST_W{1'b0}};
-        else                      st_q <= st_mem[st_ix];
+        if (st_wr) begin
+            if (wr_tkn) st_mem[st_wa][31:0]  <= st_d[31:0];
+            if (wr_imp) st_mem[st_wa][33:32] <= st_d[33:32];
+            if (wr_exp) st_mem[st_wa][53:34] <= st_d[53:34];
+        end else begin
+            st_q <= st_mem[st_ix];
+        end
     end
     wire [7:0]  st_tried = st_q[53:46];
     wire [7:0]  st_act   = st_q[45:38];
@@ -243,11 +256,11 @@ module albatross_controller #(
     endgenerate
     always @* begin
         slot_end    = (exp_run_q && exp_done) || (imp_run_q && !exp_run_q && imp_done);
-        st_d[31:0]  = (chosen_q && new_q) ? taken_q : st_taken;
-        st_d[33:32] = imp_run_q ? (imp_rl_known ? imp_rl : 2'd0) : st_rl;
-        st_d[37:34] = exp_run_q ? need_q & ~exp_published : st_need;
-        st_d[45:38] = exp_run_q ? act_after : st_act;
-        st_d[53:46] = exp_run_q ? exp_tried : st_tried;
+        st_d[31:0]  = taken_q;
+        st_d[33:32] = imp_rl_known ? imp_rl : 2'd0;
+        st_d[37:34] = need_q & ~exp_published;
+        st_d[45:38] = act_after;
+        st_d[53:46] = exp_tried;
     end
 
     always @(posedge clk_i) begin
@@ -258,6 +271,8 @@ module albatross_controller #(
             exp_run_q <= 1'b0;
             chosen_q  <= 1'b0;
             new_q     <= 1'b0;
+            need_q    <= 4'd0;
+            taken_q   <= 32'd0;
             sync_rl_q <= 2'd0;
         end else begin
             if (!ready_q) begin
