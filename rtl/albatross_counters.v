@@ -55,6 +55,10 @@ module albatross_counters #(
         end
     endgenerate
 
+    // A read never needs a word written in the same clock (phase 2 writes
+    // word 2c and reads 2c+1; phase 3's read and the clearing's are not
+    // used: rd_done_q stays low), so the RAM has no collision logic.
+    (* no_rw_check *)
     reg [31:0]   ram [0:2*N_CHAN-1];
     reg [31:0]   rd_q;
     reg [CB-1:0] rd_adr_q;
