@@ -285,13 +285,13 @@ module albatross_controller #(
                 chosen_q  <= 1'b0;
                 new_q     <= 1'b0;
                 need_q    <= active;
-                taken_q   <= slot_time;
             end
+            // exp_taken is slot_time at go: one load, no multiplexer.
+            if (go || choose) taken_q <= exp_taken;
             if (choose) begin
                 chosen_q <= 1'b1;
                 new_q    <= imp_new;
                 need_q   <= need_now;
-                taken_q  <= exp_taken;
                 if (need_now != 4'd0) exp_run_q <= 1'b1;
             end
             if (slot_end) begin
