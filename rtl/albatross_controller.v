@@ -303,12 +303,13 @@ module albatross_controller #(
     end
 
     // ------------------------------------------------------------ counters
-    wire [2:0] xfers    = (exp_run_q && exp_done) ? popcount4(exp_published) : 3'd0;
+    // Totals of the slot (the counters sample them with slot_end).
+    wire [2:0] xfers    = exp_run_q ? popcount4(exp_published) : 3'd0;
     wire [2:0] corrupts = ((imp_run_q && imp_done && imp_corrupt) ? 3'd1 : 3'd0) +
                           ((exp_run_q && exp_done) ? popcount4(exp_corrupt) : 3'd0);
     // need after the slot: the state RAM's copy if the Export did not run.
     wire [3:0] need_end = exp_run_q ? st_d[37:34] : st_need;
-    wire [2:0] abandons = slot_end ? popcount4(need_end & active) : 3'd0;
+    wire [2:0] abandons = popcount4(need_end & active);
     albatross_counters #(.N_CHAN(N_CHAN), .INDEX_WIDTH(12)) u_counters (
         .clk_i(clk_i), .rst_i(rst_i), .ready_o(cnt_ready),
         .retry_i(fail), .transfers_i(xfers), .abandoned_i(abandons), .corrupt_i(corrupts),

@@ -9,13 +9,15 @@
 //     retries}, word 2c+1 = {abandoned, corrupt}.  The RAM has one write and
 //     one read port, is never reset, and is cleared by writing zeros after
 //     reset (2*N_CHAN clocks; ready_o then goes high).
-//   * During a slot the events of its channel are counted in small delta
-//     registers (one retry per clock at most; transfers, abandoned and
-//     corrupt arrive as counts).  commit_i (one clock, chan_i valid) adds the
-//     deltas to the channel's two words in three clocks (read; write
-//     {transfers, retries} + read; write {abandoned, corrupt}); an event in
-//     those clocks is never lost: it goes into the word still to be written,
-//     or counts towards the next commit.  busy_o is high meanwhile.
+//   * During a slot the retries and corrupt counts of its channel are
+//     counted in delta registers (one retry per clock at most; corrupt
+//     arrives as counts); transfers_i and abandoned_i are the slot's totals,
+//     sampled with commit_i only.  commit_i (one clock, chan_i valid, taken
+//     when no commit runs) adds them to the channel's two words in three
+//     clocks (read; write {transfers, retries} + read; write {abandoned,
+//     corrupt}); a retry or corrupt event in those clocks is never lost: it
+//     goes into the word still to be written, or counts towards the next
+//     commit.  busy_o is high meanwhile.
 //   * STATUS word 0 is {rom_errors_i, cycles_i}; word k >= 1 is RAM word
 //     k - 1.  status_index_i selects the word; status_o is that word and
 //     status_valid_o is high once the read of that index has completed (the
@@ -31,8 +33,8 @@ module albatross_counters #(
     output wire                   ready_o,        // the RAM is cleared
     // events of the current slot's channel
     input  wire                   retry_i,        // a failed access
-    input  wire [2:0]             transfers_i,    // values published now (0..4)
-    input  wire [2:0]             abandoned_i,    // destinations abandoned now (0..4)
+    input  wire [2:0]             transfers_i,    // values published in the slot (0..4), with commit_i
+    input  wire [2:0]             abandoned_i,    // destinations abandoned (0..4), with commit_i
     input  wire [2:0]             corrupt_i,      // corrupt control bytes now (0..5)
     input  wire                   commit_i,       // the slot is over: add its deltas to chan_i
     input  wire [4:0]             chan_i,         // channel of the slot (sampled with commit_i)
@@ -67,7 +69,8 @@ module albatross_counters #(
     reg [CB-1:0] clear_q;
     reg [1:0]    phase_q;       // commit: 0 none, 1 read word 2c, 2 write it + read 2c+1, 3 write that
     reg [15:0]   d_retry_q;
-    reg [3:0]    d_xfer_q, d_aband_q, d_corrupt_q;
+    reg [2:0]    xfer_q, aband_q;   // the committed slot's totals
+    reg [3:0]    d_corrupt_q;
     reg          zero_q;        // status index 0 was presented
     reg [4:0]    chan_q;        // the channel being committed
 
@@ -83,8 +86,6 @@ module albatross_counters #(
 
     // The deltas with this clock's events.
     wire [15:0] retry_n   = (retry_i && d_retry_q != 16'hFFFF) ? d_retry_q + 16'd1 : d_retry_q;
-    wire [3:0]  xfer_n    = d_xfer_q + {1'b0, transfers_i};
-    wire [3:0]  aband_n   = d_aband_q + {1'b0, abandoned_i};
     wire [3:0]  corrupt_n = d_corrupt_q + {1'b0, corrupt_i};
 
     // Channel words; the commit uses the read port in phases 1 and 2.
@@ -98,9 +99,9 @@ module albatross_counters #(
     wire          wr     = !ready_q || phase_q == 2'd2 || phase_q == 2'd3;
     wire [CB-1:0] wr_adr = !ready_q ? clear_q : (phase_q == 2'd2) ? w0 : w1;
     // One pair of saturating adders: the deltas of the word being written.
-    wire [3:0]    add_hi = (phase_q == 2'd2) ? xfer_n : aband_n;
+    wire [2:0]    add_hi = (phase_q == 2'd2) ? xfer_q : aband_q;
     wire [15:0]   add_lo = (phase_q == 2'd2) ? retry_n : {12'd0, corrupt_n};
-    wire [31:0]   wr_dat = !ready_q ? 32'd0 : {sat_add(rd_q[31:16], {12'd0, add_hi}), sat_add(rd_q[15:0], add_lo)};
+    wire [31:0]   wr_dat = !ready_q ? 32'd0 : {sat_add(rd_q[31:16], {13'd0, add_hi}), sat_add(rd_q[15:0], add_lo)};
 
     always @(posedge clk_i) begin
         if (wr) ram[wr_adr] <= wr_dat;
@@ -115,8 +116,6 @@ module albatross_counters #(
             phase_q   <= 2'd0;
             rd_done_q <= 1'b0;
             d_retry_q <= 16'd0;
-            d_xfer_q  <= 4'd0;
-            d_aband_q <= 4'd0;
             d_corrupt_q <= 4'd0;
         end else begin
             if (!ready_q) begin
@@ -127,13 +126,13 @@ module albatross_counters #(
             // Word 0's deltas go into the RAM in phase 2, word 1's in phase 3
             // (with that clock's events); later events count from zero.
             d_retry_q   <= (phase_q == 2'd2) ? 16'd0 : retry_n;
-            d_xfer_q    <= (phase_q == 2'd2) ? 4'd0 : xfer_n;
-            d_aband_q   <= (phase_q == 2'd3) ? 4'd0 : aband_n;
             d_corrupt_q <= (phase_q == 2'd3) ? 4'd0 : corrupt_n;
             case (phase_q)
                 2'd0: if (commit_i) begin
                     phase_q <= 2'd1;
                     chan_q  <= chan_i;
+                    xfer_q  <= transfers_i;
+                    aband_q <= abandoned_i;
                 end
                 2'd1: phase_q <= 2'd2;
                 2'd2: phase_q <= 2'd3;
