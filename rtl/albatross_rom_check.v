@@ -11,9 +11,10 @@
 //   * Parts: part 0 is the header (words 0..3), part k+1 entry k (words
 //     4+8k .. 11+8k).  A part ends at a word whose address is 3 mod 8.
 //   * A read is issued in each clock with bg_on_i high and main_rom_i low
-//     (the sequencer's fetches come first), except once the start-up pass
-//     (learn_i) has read last_word_i; its data is checked in the next clock.
-//     The read address then steps on, wrapping after last_word_i.
+//     (the sequencer's fetches come first); its data is checked in the next
+//     clock.  The read address then steps on, wrapping after last_word_i
+//     (so it never exceeds last_word_i: it is 0 when the start-up pass
+//     begins, and the header fixes last_word_i before).
 //   * Start-up (learn_i): the CRC runs over the whole image, and its value
 //     after each part is stored as that part's prefix signature (bad mark
 //     clear) in the clock after the part's end.  last_o is high with the
@@ -99,7 +100,7 @@ module albatross_rom_check #(
         end
     endfunction
 
-    wire               bg_issue = bg_on_i && !main_rom_i && !(learn_i && bg_adr_q > last_word_i);
+    wire               bg_issue = bg_on_i && !main_rom_i;
     wire [RG_BITS-1:0] part     = bg_dadr_q[RG_BITS+2:3];            // 0 header, k+1 entry k
     wire               p_end    = bg_data_q && bg_dadr_q[2:0] == 3'b011;
     wire               p_last   = bg_data_q && bg_dadr_q == last_word_i;
