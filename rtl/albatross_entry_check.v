@@ -41,24 +41,39 @@ module albatross_entry_check #(
     localparam TB = TIME_BITS;
     localparam integer W_STATUS_I = 2 * N_CHAN + 1;
     localparam [11:0]  W_STATUS   = W_STATUS_I[11:0];   // W of a STATUS entry
-    localparam integer N_CHAN_I   = N_CHAN;
-    localparam [8:0]   N_CHAN_9   = N_CHAN_I[8:0];      // N_CHAN for a 9-bit compare
-    localparam integer MIN_LEN_I  = MIN_LEN;
-    localparam [TB:0]  MIN_LEN_T  = MIN_LEN_I[TB:0];    // MIN_LEN in time bits
     localparam         EFLAG_SYNC = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_SYNC; // E0's SYNC flag
+
+    // x < k for a constant k, as logic: Yosys maps a relational operator to
+    // a carry chain with a LUT per bit even when one side is constant.
+    function below;
+        input [31:0] x;
+        input [31:0] k;
+        integer i;
+        reg lt, eq;
+        begin
+            lt = 1'b0;
+            eq = 1'b1;
+            for (i = 31; i >= 0; i = i - 1) begin
+                if (k[i] && !x[i]) lt = lt | eq;
+                eq = eq & (x[i] == k[i]);
+            end
+            below = lt;
+        end
+    endfunction
 
     wire [3:0]  e0_kind = rom_i[ALB_ROM_E0_KIND_LSB +: 4];
     wire [3:0]  e0_nd   = rom_i[ALB_ROM_E0_ND_LSB +: 4];
     wire [7:0]  e0_id   = rom_i[ALB_ROM_E0_ID_LSB +: 8];
     wire [11:0] e0_w    = rom_i[ALB_ROM_E0_W_LSB +: 12];
     wire        e0_idle = e0_kind == ALB_KIND_IDLE;
-    wire        e0_bad  = e0_kind > 4'd3 ||
+    wire        e0_bad  = e0_kind[3:2] != 2'd0 ||
                           (rom_i[EFLAG_SYNC] && !(ent0_i && smode_i && e0_kind == ALB_KIND_COPY)) ||
-                          (!e0_idle && (e0_nd == 4'd0 || e0_nd > 4'd4 || {1'b0, e0_id} >= N_CHAN_9)) ||
+                          (!e0_idle && (e0_nd == 4'd0 || !below({28'd0, e0_nd}, 32'd5) ||
+                                        !below({24'd0, e0_id}, N_CHAN))) ||
                           (e0_kind == ALB_KIND_COPY && e0_w == 12'd0) ||
                           (e0_kind == ALB_KIND_TIME && e0_w != 12'd1) ||
                           (e0_kind == ALB_KIND_STATUS && e0_w != W_STATUS);
-    wire        e2_bad  = start_bad_i || rom_i[31:TB] != 0 || {1'b0, rom_i[TB-1:0]} < MIN_LEN_T ||
+    wire        e2_bad  = start_bad_i || rom_i[31:TB] != 0 || below({{(32-TB){1'b0}}, rom_i[TB-1:0]}, MIN_LEN) ||
                           e2_end_i > {1'b0, cycle_i} || {1'b0, start_i} < prev_end_i;
     function place_ok;                 // board < NB and base + 3*stride < 2^ADDR_WIDTH
         input [15:0] p;
@@ -66,7 +81,7 @@ module albatross_entry_check #(
         reg [14:0] ext;
         begin
             ext = {3'd0, p[ALB_ROM_PLACE_BASE_LSB +: 12]} + {1'b0, s3};
-            place_ok = p[ALB_ROM_PLACE_BOARD_LSB +: 4] < NB && (ext >> ADDR_WIDTH) == 15'd0;
+            place_ok = below({28'd0, p[ALB_ROM_PLACE_BOARD_LSB +: 4]}, NB) && (ext >> ADDR_WIDTH) == 15'd0;
         end
     endfunction
     wire [13:0] e3d    = e3_i + 14'd3;                               // 3 * (W + 1)
@@ -77,8 +92,8 @@ module albatross_entry_check #(
             3'd1:    bad_o = e0_bad || bad_mark_i;
             3'd2:    bad_o = e2_bad;
             3'd3:    bad_o = kind_i == ALB_KIND_COPY[1:0] && !place_ok(rom_i[15:0], e3_i);
-            3'd4:    bad_o = !lo_ok || (nd_i >= 3'd2 && !hi_ok);
-            3'd5:    bad_o = (nd_i >= 3'd3 && !lo_ok) || (nd_i == 3'd4 && !hi_ok);
+            3'd4:    bad_o = !lo_ok || (nd_i[2:1] != 2'd0 && !hi_ok);
+            3'd5:    bad_o = ((nd_i[2] || nd_i[1:0] == 2'd3) && !lo_ok) || (nd_i == 3'd4 && !hi_ok);
             default: bad_o = 1'b0;
         endcase
     end
