@@ -17,22 +17,21 @@
 //     begins, and the header fixes last_word_i before).
 //   * Start-up (learn_i): the CRC runs over the whole image, and its value
 //     after each part is stored as that part's prefix signature (bad mark
-//     clear) in the clock after the part's end.  last_o is high with the
-//     check of last_word_i; crc_ok_o then says whether the CRC equals h3_i.
+//     clear).  last_o is high with the check of last_word_i; crc_ok_o then
+//     says whether the CRC equals h3_i.
 //   * Background (learn_i low): the CRC is carried on from the stored
 //     prefix of the previous part; at the end of each part it is compared
 //     with that part's stored prefix, the last part with h3_i (its prefix:
 //     the start-up pass ended only if they were equal; one comparator does
-//     both).  A mismatch sets the part's bad mark in the next clock; mism_o
-//     is high in the clock of the first mismatch of a part (counted once).
+//     both).  A mismatch sets the part's bad mark; mism_o is high in the
+//     clock of the first mismatch of a part (counted once).
 //     After last_word_i the CRC restarts from CRC_SEED.
 //   * One read port on the signatures: the background part, except in the
 //     clock fetch_i (no background read is issued then), which reads part
-//     fetch_part_i; bad_o is that part's bad mark in the next clock (the
-//     mark being written, if the write is in the clock fetch_i).
-//   * Reset (synchronous) clears the read address, the CRC and a pending
-//     write; the signature memory is never reset (the start-up pass writes
-//     it).
+//     fetch_part_i; bad_o is that part's bad mark in the next clock (as it
+//     was before a write in the clock fetch_i).
+//   * Reset (synchronous) clears the read address and the CRC; the
+//     signature memory is never reset (the start-up pass writes it).
 `default_nettype none
 
 module albatross_rom_check #(
@@ -72,21 +71,16 @@ module albatross_rom_check #(
     reg [31:0]         crc_q;
 
     // ------------------------------------------------------------ memory (never reset)
-    // A write lands one clock after its part's end, from crc_q (no data
-    // multiplexer): the new prefix in the start-up pass, the stored one
-    // reloaded after a background mismatch, CRC_SEED after the last part
-    // (whose stored prefix is never read: it is checked against h3_i).  A read of the part being written returns undefined data
-    // in hardware (no collision logic); only a fetch read can need it (the
-    // first fetch meets the start-up pass's last write), and clash_q then
-    // gives the mark being written.
+    // No collision logic on the RAM (no_rw_check: a read of the word written
+    // in the same clock returns undefined data in hardware).  Only a fetch
+    // read can meet a write (a background mismatch of that part); clash_q
+    // then gives the old mark, which the part's background read of the
+    // clock before left in sig_q[32] (what a read-first RAM would return).
     (* no_rw_check *)
     reg [32:0]         sig [0:NE_MAX]; // {part r found bad, prefix CRC after part r}
     reg [32:0]         sig_q;
-    reg                wr_q;          // write {wr_bad_q, crc_q} to part wr_part_q
-    reg                wr_bad_q;
-    reg [RG_BITS-1:0]  wr_part_q;
-    reg                clash_q;       // the fetch read met that write ...
-    reg                clash_bad_q;   // ... of this bad mark
+    reg                clash_q;       // the fetch read met a write of its part ...
+    reg                clash_bad_q;   // ... whose old mark this is
 
     function [31:0] crc_step;            // (c * x^32 + w) mod P
         input [31:0] c;
@@ -111,25 +105,23 @@ module albatross_rom_check #(
     wire               crc_eq   = crc_n == (p_last ? h3_i : sig_q[31:0]);
     wire               mism     = p_end && !learn_i && !crc_eq;
 
+    wire               wr       = (p_end && learn_i) || mism;
+
     always @(posedge clk_i) begin
-        if (wr_q) sig[wr_part_q] <= {wr_bad_q, crc_q};
-        sig_q   <= sig[rd_part];
-        clash_q     <= fetch_i && wr_q && fetch_part == wr_part_q;
-        clash_bad_q <= wr_bad_q;
+        if (wr) sig[part] <= learn_i ? {1'b0, crc_n} : {1'b1, sig_q[31:0]};
+        sig_q       <= sig[rd_part];
+        clash_q     <= fetch_i && wr && fetch_part == part;
+        clash_bad_q <= sig_q[32];
     end
 
     always @(posedge clk_i) begin
-        wr_bad_q  <= !learn_i;
-        wr_part_q <= part;
         if (rst_i) begin
             bg_data_q <= 1'b0;
             bg_adr_q  <= {ROM_AW{1'b0}};
             crc_q     <= CRC_SEED;
-            wr_q      <= 1'b0;
         end else begin
             bg_data_q <= bg_issue;
             bg_dadr_q <= bg_adr_q;
-            wr_q      <= (p_end && learn_i) || mism;
             if (bg_issue) bg_adr_q <= (bg_adr_q == last_word_i) ? {ROM_AW{1'b0}} : bg_adr_q + 1'b1;
             if (bg_data_q) crc_q <= p_last ? CRC_SEED : (p_end && !learn_i) ? sig_q[31:0] : crc_n;
         end
