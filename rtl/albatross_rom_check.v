@@ -76,7 +76,7 @@ module albatross_rom_check #(
     // read can meet a write (a background mismatch of that part); clash_q
     // then gives the old mark, which the part's background read of the
     // clock before left in sig_q[32] (what a read-first RAM would return).
-    (* no_rw_check *)
+    (* no_rw_check, ram_style = "block" *)
     reg [32:0]         sig [0:NE_MAX]; // {part r found bad, prefix CRC after part r}
     reg [32:0]         sig_q;
     reg                clash_q;       // the fetch read met a write of its part ...
@@ -108,7 +108,9 @@ module albatross_rom_check #(
     wire               wr       = (p_end && learn_i) || mism;
 
     always @(posedge clk_i) begin
-        if (wr) sig[part] <= learn_i ? {1'b0, crc_n} : {1'b1, sig_q[31:0]};
+        // A mismatch writes the mark alone (bit write enables, no data multiplexer).
+        if (p_end && learn_i) sig[part][31:0] <= crc_n;
+        if (wr)               sig[part][32]   <= !learn_i;
         sig_q       <= sig[rd_part];
         clash_q     <= fetch_i && wr && fetch_part == part;
         clash_bad_q <= sig_q[32];
