@@ -92,8 +92,8 @@ module albatross_entry_check #(
             3'd1:    bad_o = e0_bad || bad_mark_i;
             3'd2:    bad_o = e2_bad;
             3'd3:    bad_o = kind_i == ALB_KIND_COPY[1:0] && !place_ok(rom_i[15:0], e3_i);
-            3'd4:    bad_o = !lo_ok || (nd_i[2:1] != 2'd0 && !hi_ok);
-            3'd5:    bad_o = ((nd_i[2] || nd_i[1:0] == 2'd3) && !lo_ok) || (nd_i == 3'd4 && !hi_ok);
+            3'd4:    bad_o = !lo_ok || (nd_i >= 3'd2 && !hi_ok);
+            3'd5:    bad_o = (nd_i >= 3'd3 && !lo_ok) || (nd_i == 3'd4 && !hi_ok);
             default: bad_o = 1'b0;
         endcase
     end
