@@ -21,11 +21,9 @@
 //     says whether the CRC equals h3_i.
 //   * Background (learn_i low): the CRC is carried on from the stored
 //     prefix of the previous part; at the end of each part it is compared
-//     with that part's stored prefix, the last part with h3_i (its prefix:
-//     the start-up pass ended only if they were equal; one comparator does
-//     both).  A mismatch sets the part's bad mark; mism_o is high in the
-//     clock of the first mismatch of a part (counted once).
-//     After last_word_i the CRC restarts from CRC_SEED.
+//     with that part's stored prefix.  A mismatch sets the part's bad mark;
+//     mism_o is high in the clock of the first mismatch of a part (counted
+//     once).  After last_word_i the CRC restarts from CRC_SEED.
 //   * One read port on the signatures: the background part, except in the
 //     clock fetch_i (no background read is issued then), which reads part
 //     fetch_part_i; bad_o is that part's bad mark in the next clock (as it
@@ -101,9 +99,7 @@ module albatross_rom_check #(
     wire [31:0]        crc_n    = crc_step(crc_q, bg_dadr_q == 3 ? 32'd0 : rom_dat_i);
     wire [RG_BITS-1:0] fetch_part = fetch_ent_i[RG_BITS-1:0] + 1'b1;
     wire [RG_BITS-1:0] rd_part  = fetch_i ? fetch_part : bg_adr_q[RG_BITS+2:3];
-    // One comparator: the last part against H3, the others against their prefix.
-    wire               crc_eq   = crc_n == (p_last ? h3_i : sig_q[31:0]);
-    wire               mism     = p_end && !learn_i && !crc_eq;
+    wire               mism     = p_end && !learn_i && crc_n != sig_q[31:0];
 
     wire               wr       = (p_end && learn_i) || mism;
 
@@ -131,7 +127,7 @@ module albatross_rom_check #(
 
     assign adr_o    = bg_adr_q;
     assign last_o   = p_last;
-    assign crc_ok_o = crc_eq;
+    assign crc_ok_o = crc_n == h3_i;
     assign mism_o   = mism && !sig_q[32];
     assign bad_o    = clash_q ? clash_bad_q : sig_q[32];
 
