@@ -58,6 +58,7 @@ constexpr unsigned KIND_TIME = 2;
 constexpr unsigned KIND_STATUS = 3;
 constexpr unsigned HFLAG_SYNC_MODE = 1u << 0;  // in H0.flags
 constexpr unsigned EFLAG_SYNC = 1u << 0;  // in E0.flags
+constexpr unsigned EFLAG_FOUR_SLOT = 1u << 1;  // in E0.flags
 
 // CRC of a ROM image of n words (word ROM_CRC_WORD read as 0).
 inline uint32_t rom_crc(const uint32_t *w, int n) {
