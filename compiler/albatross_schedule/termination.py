@@ -44,16 +44,16 @@ from .model import BOARD_KEYS, BoardTiming, ScheduleError
 # memory of soc/ (pico_core/serv_core, board_memmap, the DPRAM's CPU port).
 # The loop does not depend on the payload size (the pass is load Actual,
 # compare, check, store ReadLocked, fence, load Actual; the payload is read
-# once, after the loop).  See docs/compiler.md "Termination bounds" for the
-# measurements.
+# once, after the loop).  Measured by make bench-pico and make bench-import-pass
+# (tools/mk/termination.mk, tb/pico/firmware/import_pass.c); see docs/compiler.md
+# "Termination bounds".
 CORE_TIMING = {
     "picorv32": {"t": 90, "v": 90,
-                 "source": "PicoRV32, make bench-pico (build/reports/bench_pico.json): alb_import New max - "
-                           "Old min = 90 clocks (one pass) for 4, 16, 64 and 256 bytes; V taken = T"},
-    "serv": {"t": 1010, "v": 1010,
-             "source": "SERV, estimated: PicoRV32's pass x the SERV/PicoRV32 ratio of the shortest "
-                       "GlobalTime Import on the same schedule (make test-serv-boards / test-pico-boards: "
-                       "3863 / 346 clocks), 90 x 11.2 = 1005, rounded up; V taken = T"},
+                 "source": "PicoRV32: make bench-pico, alb_import New (one pass) max - Old min = 90 clocks for "
+                           "4, 16, 64 and 256 bytes (make bench-import-pass: 83); V taken = T"},
+    "serv": {"t": 909, "v": 909,
+             "source": "SERV: make bench-import-pass (build/reports/import_pass.json), alb_import New (one "
+                       "pass) max - Old min = 3861 - 2952 = 909 clocks; V taken = T"},
 }
 
 
