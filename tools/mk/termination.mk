@@ -14,8 +14,9 @@ $(eval $(call serv_fw,import_pass-pico,import_pass,c-driver/albatross.c,))
 
 BENCHES += bench-import-pass
 .PHONY: bench-import-pass
-bench-import-pass: $(PICO_BIN) $(SERV_BIN2) $(SERV_DIR)/fw/producer-pico.hex \
+IMPORT_PASS_NEED := $(PICO_BIN) $(SERV_BIN2) $(SERV_DIR)/fw/producer-pico.hex \
         $(SERV_DIR)/fw/import_pass-pico.hex $(SERV_DIR)/fw/import_pass-serv.hex
+bench-import-pass: $(IMPORT_PASS_NEED) ## one Import loop pass on PicoRV32 and SERV (the compiler's T/V table)
 	@mkdir -p $(REPORTS)
 	$(PICO_BIN) +fw0=$(SERV_DIR)/fw/producer-pico.hex +fw1=$(SERV_DIR)/fw/import_pass-pico.hex \
 	    --max-cycles 20000000 --stall-core -1 --label import-pass-pico --report $(SERV_DIR)/import_pass_pico.json
