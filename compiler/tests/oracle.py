@@ -252,8 +252,9 @@ class ControllerModel:
         return 1 + 2 * pair + slot
 
     def import_four_slot(self, st, ram, base, w):
-        """The four-slot consumer's Import (docs: the mapping of issue 13):
-        1 + W accesses when nothing is new, 3 + W when something is."""
+        """The four-slot consumer's Import (the mapping of issue 13, with the rule
+        test_four_slot_mapping.py shows it needs: reading the buffer read last is
+        Old): 1 + W accesses when Actual is the buffer read last, else 3 + W."""
         lay, fs = ORACLE_LAYOUT, ORACLE_FOUR_SLOT
         a = ram.rd8(base + lay["off_actual"])
         if a == st["last"]:
@@ -262,6 +263,8 @@ class ControllerModel:
         pair = (a - 1) >> 1
         slot = ram.rd8(base + fs["off_slot"][pair])                # the control word loaded again
         b = self.fs_buf(pair, slot)
+        if b == st["last"]:
+            return False                                           # the same buffer: nothing new
         addr = base + lay["off_buffers"] + (b - 1) * 4 * w
         st["value"] = [ram.rd32(addr + 4 * i) for i in range(w)]
         st["last"] = b
