@@ -31,9 +31,15 @@ Description (TOML)
   n_chan              16  the controller's N_CHAN (channel ids 0..n_chan-1)
   poll_cycles         16  position poll interval (position-synchronised)
 
+[board.<name>]  optional, a board's Import loop timing (termination bounds)
+  core          "picorv32" | "serv": T and V from termination.CORE_TIMING
+  clock_hz      the board CPU's clock (default [system] clock_hz)
+  import_t_clocks / import_v_clocks   T and V in the CPU's clocks
+
 [[channel]]     one per channel; the id is the position (0, 1, ...)
   name          C identifier (LookForNew<name>, Make<name>Available)
-  kind          "copy" (default) | "time" | "status"
+  kind          "copy" (= "three_buffer", default) | "four_slot" (a copy
+                channel of the wait-free four-slot kind) | "time" | "status"
   type          C type of the value; default: a generated <name>_t
                 (copy: struct { uint8_t bytes[size]; }, time: uint32_t,
                 status: struct { uint32_t word[1 + 2*n_chan]; })
@@ -45,6 +51,7 @@ Description (TOML)
                 (position-synchronised mode only, exactly one, copy)
   priority      integer, default 0; higher gets redundant slots first
   max_slots     optional cap on this channel's slots per cycle
+  max_import_passes  optional: at most this many passes per three-buffer Import
 
 Plan
 ----
@@ -57,7 +64,9 @@ redundant slots are added round-robin (priority, then shortest period) while
 they fit (time and the 255-entry ROM), and all slots are placed so each
 channel's slots are spread evenly (its largest gap minimised).  In
 position-synchronised mode the sync channel is entry 0 at start 0 (SYNC
-flag) and poll_cycles stay idle at the end of the cycle.
+flag) and poll_cycles stay idle at the end of the cycle.  Then, for every
+three-buffer consumer whose board has timing, the Import bound (termination):
+while D <= T (no bound) the channel's slots are capped and the plan rebuilt.
 
 Outputs in DIR: rom.hex, <board>.h, <board>.c, <board>_ram.hex,
 report.json, report.txt, timeline.svg (see docs/compiler.md).
@@ -67,6 +76,8 @@ Modules (standard library only):
   description  reading and validating the TOML description
   layout       RAM layout of every board's channel instances
   plan         slot lengths, the cycle, redundancy, placement, bounds
+  fourslot     the channel kinds: [layout.four_slot] of the contract, bytes, images, flag
+  termination  board Import timing, D, the Import bounds, spacing the slots
   rom          the schedule ROM: encoder, hex image, verify_rom
   contract     the contract (ROM format, channel layout) from rtl/albatross_contract.toml
   contract_gen the files generated from it (python3 -m albatross_schedule.contract_gen)

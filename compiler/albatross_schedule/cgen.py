@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 from .contract import load as load_contract
+from .fourslot import FOUR_SLOT, initial_control_word
 from .model import Plan, System
 from .plan import channel_bounds
+from .termination import channel_termination
 from .rom import rom_hex
 
 
@@ -72,7 +74,8 @@ def render_board_header(system: System, b: int, desc_name: str, plan: Plan) -> s
         N = ch.name.upper()
         T = ch.type_name
         L.append("")
-        L.append(f"/* {ch.name}: {ch.kind}, {_route(system, ch)}; this board is the "
+        kind_txt = ", four-slot (wait-free Import)" if ch.layout == FOUR_SLOT else ""
+        L.append(f"/* {ch.name}: {ch.kind}{kind_txt}, {_route(system, ch)}; this board is the "
                  f"{'producer' if role == 'source' else 'consumer'}. */")
         if ch.ctype is None and ch.kind == "copy":
             L.append(f"typedef struct {{ uint8_t bytes[{ch.size}]; }} {T};")
@@ -83,6 +86,8 @@ def render_board_header(system: System, b: int, desc_name: str, plan: Plan) -> s
         L.append(f"#define ALB_{N}_SIZE   {payload}u  /* payload bytes of this instance"
                  + (" (value + taken_at) */" if role == "destination" else " */"))
         L.append(f"#define ALB_{N}_WORDS  {ch.words}u  /* W, the value's words */")
+        L.append(f"#define ALB_{N}_KIND   {'ALB_FOUR_SLOT' if ch.layout == FOUR_SLOT else 'ALB_THREE_BUFFER'}"
+                 "  /* channel kind, alb_channel_setup_kind */")
         if role == "destination":
             bnd = channel_bounds(system, plan, ch)
             L.append(f"#define ALB_{N}_PERIOD_CLOCKS  {bnd['guaranteed_period_clocks']}u"
@@ -93,6 +98,12 @@ def render_board_header(system: System, b: int, desc_name: str, plan: Plan) -> s
             else:
                 L.append(f"#define ALB_{N}_AGE_CLOCKS  {bnd['age_bound_clocks']['with_retries']}u"
                          "  /* guaranteed: now - taken_at of the newest value here (with retries) */")
+            term = channel_termination(system, plan, ch)[ch.consumers.index(b)]
+            if term["bounded"]:
+                L.append(f"#define ALB_{N}_IMPORT_MAX_PASSES    {term['max_passes']}u"
+                         "  /* compile-time bound: ReadLocked stores per Import */")
+                L.append(f"#define ALB_{N}_IMPORT_MAX_ACCESSES  {term['max_accesses']}u"
+                         "  /* compile-time bound: RAM accesses per Import */")
         L.append(f"typedef char alb_check_{ch.name}_size[(sizeof({T}) == {ch.size}u) ? 1 : -1];")
         if role == "source":
             L.append(f"ALB_CHANNEL({ch.name}, {T})")
@@ -142,7 +153,12 @@ def render_board_c(system: System, b: int, desc_name: str) -> str:
         for ch, role, _ in insts:
             N = ch.name.upper()
             obj = f"&alb_ch_{ch.name}"
-            L.append(f"    rc = alb_first_error(rc, alb_channel_setup({obj}, dpram_base + ALB_{N}_BASE, ALB_{N}_SIZE));")
+            if ch.layout == FOUR_SLOT:
+                L.append(f"    rc = alb_first_error(rc, alb_channel_setup_kind({obj}, dpram_base + ALB_{N}_BASE, "
+                         f"ALB_{N}_SIZE, ALB_FOUR_SLOT));")
+            else:
+                L.append(f"    rc = alb_first_error(rc, alb_channel_setup({obj}, dpram_base + ALB_{N}_BASE, "
+                         f"ALB_{N}_SIZE));")
             if role == "source":
                 call = f"alb_producer_init({obj}, zero)" if mode == "init" else f"alb_producer_attach({obj})"
             else:
@@ -156,6 +172,7 @@ def render_board_c(system: System, b: int, desc_name: str) -> str:
 def render_ram_hex(system: System, b: int) -> str:
     c = load_contract()
     words = [0] * (system.ram_bytes[b] // c.word_bytes)
-    for _, _, base in board_instances(system, b):
-        words[base // c.word_bytes] = c.initial_control_word()     # Actual = ReadLocked = Buffer1
+    for ch, _, base in board_instances(system, b):
+        # Actual = ReadLocked = Buffer1 (four-slot: Slot0 = Slot1 = 0 as well)
+        words[base // c.word_bytes] = initial_control_word(ch.layout)
     return rom_hex(words)

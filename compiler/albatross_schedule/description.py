@@ -12,6 +12,8 @@ from .model import (BUS_DEFAULTS, BUS_MINIMUM, CHANNEL_KEYS, CTYPE_RE, DEFAULT_R
                     ScheduleError, System)
 from .rom import BOARD_BITS, MAX_BOARDS, MAX_CHAN_IDS, MAX_DESTS, MAX_ENTRIES, MAX_WORDS
 from .contract import load as _load_contract
+from .fourslot import FOUR_SLOT, LAYOUTS, THREE_BUFFER
+from .termination import parse_board_timing
 
 CONTRACT_TIME_BITS = _load_contract().time_bits
 
@@ -125,8 +127,8 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
     err = Errors(loc)
 
     for key in data:
-        if key not in ("system", "bus", "channel"):
-            err.general(f"unknown section [{key}] (expected [system], [bus], [[channel]])")
+        if key not in ("system", "bus", "channel", "board"):
+            err.general(f"unknown section [{key}] (expected [system], [bus], [board.<name>], [[channel]])")
 
     # ---- [system]
     sysd = data.get("system")
@@ -293,8 +295,13 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
                 ok = False
 
         kind = cd.get("kind", "copy")
-        if kind not in ("copy", "time", "status"):
-            err.channel(i, label, "kind", f"{_describe(kind)}: expected \"copy\", \"time\" or \"status\"")
+        layout = THREE_BUFFER
+        if kind in LAYOUTS:         # a copy channel of that kind ("copy" = "three_buffer")
+            kind, layout = "copy", kind
+        elif kind not in ("copy", "time", "status"):
+            err.channel(i, label, "kind", f"{_describe(kind)}: expected \"copy\" (= \"{THREE_BUFFER}\"), "
+                        f"\"{FOUR_SLOT}\" (a copy channel with the wait-free four-slot layout), "
+                        "\"time\" or \"status\"")
             kind, ok = "copy", False
 
         ctype = cd.get("type")
@@ -404,6 +411,11 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
                 err.channel(i, label, "sync", f"the sync channel must be a copy channel (the position), "
                             f"not {kind}")
                 ok = False
+            elif layout == FOUR_SLOT:
+                err.channel(i, label, "sync", f"the sync channel must be a three-buffer copy channel: the "
+                            f"sequencer's position poll compares the source's Actual with the controller's "
+                            f"ReadLocked copy, a three-buffer rule ({FOUR_SLOT} sync sources are not supported)")
+                ok = False
             elif n_sync > 1:
                 err.channel(i, label, "sync", "more than one sync channel (exactly one starts the cycle)")
                 ok = False
@@ -417,11 +429,18 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
             err.channel(i, label, "max_slots", f"{_describe(max_slots)} is not a positive integer")
             max_slots, ok = None, False
 
+        mip = cd.get("max_import_passes")
+        if mip is not None and (not _is_int(mip) or mip < 2):
+            err.channel(i, label, "max_import_passes", f"{_describe(mip)} is not an integer >= 2 (an Import "
+                        "that finds a new value stores ReadLocked at least once, and the bound is finite only "
+                        "from 2 passes up)")
+            mip, ok = None, False
+
         if ok:
             channels.append(Channel(index=i, name=cname, kind=kind, ctype=ctype, size=size,
                                     words=words, producer=producer, consumers=consumers,
                                     max_period_us=mp, sync=sync, priority=prio,
-                                    max_slots=max_slots))
+                                    max_slots=max_slots, layout=layout, max_import_passes=mip))
 
     if len(chans) > bus.n_chan:
         err.general(f"too many channels: {len(chans)} channels but the controller has "
@@ -434,8 +453,12 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
                    "(the position channel that starts the cycle)")
     err.raise_if_any()
 
+    timing = parse_board_timing(data.get("board", {}), boards, clock_hz, err, _describe)
+    err.raise_if_any()
+
     system = System(name=name, clock_hz=clock_hz, boards=boards, ram_bytes=ram_bytes,
-                    mode=mode, types_header=types_header, bus=bus, channels=channels, source=path)
+                    mode=mode, types_header=types_header, bus=bus, channels=channels, source=path,
+                    timing=timing)
     for ch in channels:
         ch.period_clocks = ch.max_period_us * clock_hz // 1_000_000
         if ch.period_clocks < 1:

@@ -3,13 +3,15 @@
 from __future__ import annotations
 
 from .contract import load as load_contract
+from .fourslot import THREE_BUFFER, channel_bytes as kind_channel_bytes
 from .model import ScheduleError, System
 from .rom import MAX_BASE_WORD
 
 
-def channel_bytes(payload: int) -> int:
-    """ALB_CHANNEL_BYTES: the control bytes + the buffers of the word-rounded payload."""
-    return load_contract().channel_bytes(payload)
+def channel_bytes(payload: int, layout: str = THREE_BUFFER) -> int:
+    """ALB_CHANNEL_BYTES: the control bytes + the buffers of the word-rounded
+    payload (three buffers; four for a four-slot channel)."""
+    return kind_channel_bytes(payload, layout)
 
 
 def allocate_ram(system: System):
@@ -21,12 +23,12 @@ def allocate_ram(system: System):
     for ch in system.channels:
         ch.dst_bases = []
         if ch.producer is not None:
-            size = channel_bytes(ch.size)
+            size = channel_bytes(ch.size, ch.layout)
             ch.src_base = nxt[ch.producer]
             layout[ch.producer].append((ch, "source", ch.src_base, size))
             nxt[ch.producer] += size
         for b in ch.consumers:
-            size = channel_bytes(ch.dst_size)
+            size = channel_bytes(ch.dst_size, ch.layout)
             ch.dst_bases.append(nxt[b])
             layout[b].append((ch, "destination", nxt[b], size))
             nxt[b] += size

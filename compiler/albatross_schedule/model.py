@@ -31,8 +31,10 @@ BUS_MINIMUM = {
 }
 
 SYSTEM_KEYS = {"name", "clock_hz", "boards", "ram_bytes", "mode", "types_header"}
+# [board.<name>]: a consumer board's Import loop timing (compiler/albatross_schedule/termination.py)
+BOARD_KEYS = {"core", "clock_hz", "import_t_clocks", "import_v_clocks"}
 CHANNEL_KEYS = {"name", "kind", "type", "size", "producer", "consumers",
-                "max_period_us", "sync", "priority", "max_slots"}
+                "max_period_us", "sync", "priority", "max_slots", "max_import_passes"}
 
 IDENT_RE = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
 CTYPE_RE = re.compile(r"^((struct|union|enum)\s+)?[A-Za-z_][A-Za-z0-9_]*$")
@@ -94,6 +96,8 @@ class Channel:
     sync: bool = False
     priority: int = 0
     max_slots: Optional[int] = None
+    layout: str = "three_buffer"    # channel kind: three_buffer | four_slot (copy only)
+    max_import_passes: Optional[int] = None   # three-buffer consumers: passes per Import at most
     # filled by the plan
     src_base: Optional[int] = None  # byte offset in the producer's RAM
     dst_bases: list = dataclasses.field(default_factory=list)
@@ -120,6 +124,17 @@ class Channel:
 
 
 @dataclasses.dataclass
+class BoardTiming:
+    """A board's three-buffer Import loop (issue 13 section 2), in controller clocks:
+    t = the longest time between two loads of Actual in the loop, v = from the load
+    whose value is stored into ReadLocked to the next load.  source says where
+    the figures come from (a core type of the table, or the description)."""
+    t: int
+    v: int
+    source: str
+
+
+@dataclasses.dataclass
 class System:
     name: str
     clock_hz: int
@@ -130,6 +145,7 @@ class System:
     bus: Bus
     channels: list
     source: str = "<description>"
+    timing: dict = dataclasses.field(default_factory=dict)  # board index -> BoardTiming
 
     @property
     def sync_mode(self) -> bool:

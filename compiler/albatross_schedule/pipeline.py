@@ -15,6 +15,7 @@ from .picture import render_svg
 from .plan import build_plan, channel_gaps
 from .report import build_report, render_report_txt
 from .rom import encode_rom, rom_hex, verify_rom
+from .termination import enforce as enforce_termination, violations
 
 
 def self_check(system: System, plan: Plan, rom: list, layout: dict):
@@ -30,6 +31,8 @@ def self_check(system: System, plan: Plan, rom: list, layout: dict):
             problems.append(f"channel {ch.name} has no slot")
         elif max(channel_gaps(ch.slots, plan.cycle)) > ch.period_clocks:
             problems.append(f"channel {ch.name}: guaranteed period exceeds max_period")
+    for ch, who in violations(system, plan):
+        problems.append(f"channel {ch.name}: three-buffer Import over its bound at {', '.join(w[0] for w in who)}")
     if system.sync_mode and plan.slots[-1].start + plan.slots[-1].length + system.bus.poll_cycles > plan.cycle:
         problems.append("no poll window at the end of the cycle")
     if problems:
@@ -38,7 +41,7 @@ def self_check(system: System, plan: Plan, rom: list, layout: dict):
 
 def compile_system(system: System):
     layout = allocate_ram(system)
-    plan = build_plan(system)
+    plan = enforce_termination(system, build_plan)   # build_plan, spacing slots for bounded Imports
     rom = encode_rom(system, plan)
     self_check(system, plan, rom, layout)
     rep = build_report(system, plan)

@@ -9,6 +9,7 @@ from .layout import channel_bytes
 from .model import Plan, System, us
 from .cgen import board_instances
 from .plan import channel_bounds, pub_offset
+from .termination import channel_termination, termination_summary
 
 
 def build_report(system: System, plan: Plan) -> dict:
@@ -26,13 +27,20 @@ def build_report(system: System, plan: Plan) -> dict:
         busy_bus += n * bus.access_cycles * ch.accesses
         busy_ctl += n * pub_offset(ch, bus, False)
         fill += n * ch.slot_len
+        term = channel_termination(system, plan, ch)
+        src_bytes = channel_bytes(ch.size, ch.layout) if ch.producer is not None else None
+        dst_bytes = channel_bytes(ch.dst_size, ch.layout)
         entry = {
-            "name": ch.name, "id": ch.id, "kind": ch.kind, "type": ch.type_name,
+            "name": ch.name, "id": ch.id, "kind": ch.kind, "channel_kind": ch.layout, "type": ch.type_name,
             "size": ch.size, "words": ch.words,
             "producer": ({"board": system.boards[ch.producer], "board_index": ch.producer,
-                          "base": ch.src_base} if ch.producer is not None else None),
-            "consumers": [{"board": system.boards[c], "board_index": c, "base": base}
-                          for c, base in zip(ch.consumers, ch.dst_bases)],
+                          "base": ch.src_base, "ram_bytes": src_bytes} if ch.producer is not None else None),
+            "consumers": [{"board": system.boards[c], "board_index": c, "base": base, "ram_bytes": dst_bytes,
+                           "termination": t}
+                          for c, base, t in zip(ch.consumers, ch.dst_bases, term)],
+            "ram_bytes": (src_bytes or 0) + len(ch.consumers) * dst_bytes,
+            "spaced_for_termination": bool(getattr(ch, "spaced_for_termination", False)),
+            "max_import_passes": ch.max_import_passes,
             "sync": ch.sync, "priority": ch.priority,
             "max_period": t(ch.period_clocks), "max_period_us_required": ch.max_period_us,
             "accesses": ch.accesses, "slot_length": ch.slot_len,
@@ -52,7 +60,7 @@ def build_report(system: System, plan: Plan) -> dict:
     boards = []
     for bi, name in enumerate(system.boards):
         insts = [{"channel": ch.name, "role": role, "base": base,
-                  "bytes": channel_bytes(ch.size if role == "source" else ch.dst_size)}
+                  "bytes": channel_bytes(ch.size if role == "source" else ch.dst_size, ch.layout)}
                  for ch, role, base in board_instances(system, bi)]
         boards.append({"name": name, "index": bi, "ram_bytes": system.ram_bytes[bi],
                        "used_bytes": sum(i["bytes"] for i in insts), "instances": insts})
@@ -74,6 +82,13 @@ def build_report(system: System, plan: Plan) -> dict:
             "bus_utilisation": "sum over slots of access_cycles*A (fault-free bus-busy clocks) / cycle",
             "controller_busy": "sum over slots of fetch + first_access_extra + access_cycles*A / cycle",
             "schedule_fill": "sum of slot lengths / cycle",
+            "channel_kind": "three_buffer (the paper's channel) or four_slot (wait-free Import; 4 buffers, "
+                            "E0 flag four_slot on every entry)",
+            "termination": "per consumer: D = shortest time between two publishes to it (slot i+1 start + "
+                           "fetch + access*(E-1) - slot i end), T / V = its Import loop (controller clocks); "
+                           "three-buffer: unbounded if D <= T, else max_passes = ReadLocked stores per Import = "
+                           "1 + ceil(V / (D - T)), max_accesses = 1 + 2*max_passes + Wd; four-slot: 1 pass, "
+                           "3 + Wd accesses; accesses_old = 1 + Wd; Wd = W + 1 (value and taken_at)",
         },
         "bus_utilisation": round(busy_bus / plan.cycle, 4),
         "controller_busy": round(busy_ctl / plan.cycle, 4),
@@ -97,7 +112,7 @@ def render_report_txt(rep: dict) -> str:
     L.append(f"bus utilisation {100 * rep['bus_utilisation']:.1f} % (fault-free accesses), controller busy "
              f"{100 * rep['controller_busy']:.1f} %, slots fill {100 * rep['schedule_fill']:.1f} % of the cycle")
     L.append("")
-    hdr = ["id", "channel", "kind", "route", "W", "A", "L", "slots", "max period", "guar. period",
+    hdr = ["id", "channel", "kind", "route", "W", "A", "L", "RAM B", "slots", "max period", "guar. period",
            "latency ff", "latency retry", "age ff", "age retry"]
     rows = []
     for c in rep["channels"]:
@@ -105,8 +120,10 @@ def render_report_txt(rep: dict) -> str:
         route = f"{src}->{','.join(d['board'] for d in c['consumers'])}"
         lat = c["latency"]
         age = c["age_bound"]
-        rows.append([str(c["id"]), c["name"] + (" (sync)" if c["sync"] else ""), c["kind"], route,
-                     str(c["words"]), str(c["accesses"]), str(c["slot_length"]), str(c["redundancy"]),
+        kind = c["kind"] + (" 4-slot" if c["channel_kind"] == "four_slot" else "")
+        rows.append([str(c["id"]), c["name"] + (" (sync)" if c["sync"] else ""), kind, route,
+                     str(c["words"]), str(c["accesses"]), str(c["slot_length"]), str(c["ram_bytes"]),
+                     str(c["redundancy"]),
                      f(c["max_period"]["us"]), f(c["guaranteed_period"]["us"]),
                      f(lat["fault_free"]["us"]) if lat else "-", f(lat["with_retries"]["us"]) if lat else "-",
                      f(age["fault_free"]["us"]) if age else "-", f(age["with_retries"]["us"]) if age else "-"])
@@ -115,7 +132,17 @@ def render_report_txt(rep: dict) -> str:
     L.append("  ".join("-" * w for w in widths))
     for r in rows:
         L.append("  ".join(v.ljust(w) if i < 4 else v.rjust(w) for i, (v, w) in enumerate(zip(r, widths))))
-    L.append("(times in us; W words, A fault-free accesses, L slot clocks; slots = redundancy factor)")
+    L.append("(times in us; W words, A fault-free accesses, L slot clocks, RAM B = bytes of all its "
+             "instances; slots = redundancy factor; 4-slot = the wait-free four-slot kind)")
+    L.append("")
+    L.append("Import termination per consumer (clocks; D = shortest time between two publishes to it, "
+             "T, V = its Import loop)")
+    for c in rep["channels"]:
+        for d in c["consumers"]:
+            t = d["termination"]
+            tv = "" if t["T_clocks"] is None else f", T {t['T_clocks']}, V {t['V_clocks']}"
+            spaced = " (slots spaced)" if c["spaced_for_termination"] else ""
+            L.append(f"  {c['name']} -> {d['board']}: D {t['D_clocks']}{tv}: {termination_summary(t)}{spaced}")
     L.append("")
     L.append("RAM per board (byte offsets)")
     for b in rep["boards"]:

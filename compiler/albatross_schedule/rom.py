@@ -6,6 +6,7 @@ from __future__ import annotations
 import re
 
 from . import contract
+from .fourslot import FOUR_SLOT, buffers as kind_buffers, flag_four_slot
 from .model import Plan, Slot, System
 
 # The contract (rtl/albatross_contract.toml) gives every field and constant.
@@ -23,6 +24,7 @@ MAX_DESTS = C.max_dests
 KIND_CODE = dict(C.kind)
 KIND_NAME = {v: k for k, v in KIND_CODE.items()}
 FLAG_SYNC = C.flag("entry", "sync")
+FLAG_FOUR_SLOT = flag_four_slot()            # a COPY of a four-slot channel
 HFLAG_SYNC_MODE = C.flag("header", "sync_mode")
 
 
@@ -50,7 +52,8 @@ def _pack(words, values) -> list:
 
 def encode_entry(slot: Slot) -> list:
     ch = slot.channel
-    v = {("E0", "kind"): KIND_CODE[ch.kind], ("E0", "flags"): FLAG_SYNC if slot.sync else 0,
+    flags = (FLAG_SYNC if slot.sync else 0) | (FLAG_FOUR_SLOT if ch.layout == FOUR_SLOT else 0)
+    v = {("E0", "kind"): KIND_CODE[ch.kind], ("E0", "flags"): flags,
          ("E0", "id"): ch.id, ("E0", "nd"): len(ch.consumers), ("E0", "w"): ch.words,
          ("E1", "start"): slot.start, ("E2", "length"): slot.length}
     if ch.kind == "copy":
@@ -145,6 +148,12 @@ def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None
             problems.append(f"{tag}: unknown kind {kind}")
             continue
         problems += [f"{tag}: {x.name} (reserved) is not 0" for x in C.entry if x.reserved and e[x.index] != 0]
+        if flags & ~sum(C.flag("entry", n) for n in C.entry_flags):
+            problems.append(f"{tag}: reserved E0 flag bits set ({flags:#x})")
+        if flags & FLAG_FOUR_SLOT and kind != copy:
+            problems.append(f"{tag}: FOUR_SLOT flag on a {KIND_NAME[kind]} entry (only a COPY may be four-slot)")
+        if flags & FLAG_SYNC and flags & FLAG_FOUR_SLOT:
+            problems.append(f"{tag}: SYNC on a FOUR_SLOT entry (the sync channel is three-buffer)")
         if flags & FLAG_SYNC and (k != 0 or not sync_mode):
             problems.append(f"{tag}: SYNC flag outside entry 0 of a position-synchronised ROM")
         if sync_mode and k == 0 and not (flags & FLAG_SYNC and kind == copy and start == 0):
@@ -169,7 +178,8 @@ def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None
                 problems.append(f"{tag}: board {board} >= NB {n_boards}")
                 continue
             rw = ram_words[board] if isinstance(ram_words, (list, tuple)) else ram_words
-            if base + C.control_words + C.buffers * stride > rw:
+            nbuf = kind_buffers(FOUR_SLOT) if flags & FLAG_FOUR_SLOT else C.buffers
+            if base + C.control_words + nbuf * stride > rw:
                 problems.append(f"{tag}: channel at board {board} word {base} (stride {stride}) "
                                 f"ends past the RAM ({rw} words)")
         if start < prev_end:

@@ -40,6 +40,10 @@ EXAMPLE_FILES = ["mobot3.toml", "mobot3_possync.toml"]
 # channel base; buffer index values; words after a destination value).
 ORACLE_LAYOUT = {"off_actual": 0, "off_readlocked": 1, "off_buffers": 4, "buffer1": 1, "buffers": 3,
                  "taken_at_words": 1}
+# The four-slot kind (issue 13): E0 flag bit 1, a fourth buffer, the producer's
+# slot bytes Slot0/Slot1 at offsets 2 and 3 (both 0 at the start).  Buffer b is
+# pair (b-1)>>1, slot (b-1)&1; buf(p, s) = 1 + 2p + s.
+ORACLE_FOUR_SLOT = {"flag": 2, "buffers": 4, "off_slot": (2, 3), "initial_slot": 0}
 
 
 def crc(words):
@@ -131,10 +135,16 @@ def rom_problems(words, n_chan, ram_words):
         exts = [(b, w, e["w"] + 1) for b, w in e["dst"]]
         if e["kind"] == 1:
             exts.append((e["src_board"], e["src_word"], e["w"]))
+        four = e["flags"] & ORACLE_FOUR_SLOT["flag"]
+        if four and e["kind"] != 1:
+            p.append(f"entry {k}: FOUR_SLOT flag on a non-COPY")
+        if e["flags"] & ~(1 | ORACLE_FOUR_SLOT["flag"]):
+            p.append(f"entry {k}: reserved flag bits")
+        nbuf = ORACLE_FOUR_SLOT["buffers"] if four else 3
         for b, base, stride in exts:
             if b >= len(ram_words):
                 p.append(f"entry {k}: board {b} does not exist")
-            elif base + 1 + 3 * stride > ram_words[b]:
+            elif base + 1 + nbuf * stride > ram_words[b]:
                 p.append(f"entry {k}: extent outside the RAM")
         if e["flags"] & 1 and not (k == 0 and sync):
             p.append(f"entry {k}: SYNC flag misplaced")
@@ -234,7 +244,49 @@ class ControllerModel:
 
     def st(self, e):
         return self.state.setdefault(e["id"], {"rl": 1, "version": 0, "taken_at": 0, "value": None,
-                                               "actual": [1] * 4, "delivered": [0] * 4})
+                                               "actual": [1] * 4, "delivered": [0] * 4,
+                                               "last": 0})     # four-slot: the buffer read last (0: none)
+
+    @staticmethod
+    def fs_buf(pair, slot):
+        return 1 + 2 * pair + slot
+
+    def import_four_slot(self, st, ram, base, w):
+        """The four-slot consumer's Import (the mapping of issue 13, with the rule
+        test_four_slot_mapping.py shows it needs: reading the buffer read last is
+        Old): 1 + W accesses when Actual is the buffer read last, else 3 + W."""
+        lay, fs = ORACLE_LAYOUT, ORACLE_FOUR_SLOT
+        a = ram.rd8(base + lay["off_actual"])
+        if a == st["last"]:
+            return False
+        ram.wr8(base + lay["off_readlocked"], a)                  # announces pair(a)
+        pair = (a - 1) >> 1
+        slot = ram.rd8(base + fs["off_slot"][pair])                # the control word loaded again
+        b = self.fs_buf(pair, slot)
+        if b == st["last"]:
+            return False                                           # the same buffer: nothing new
+        addr = base + lay["off_buffers"] + (b - 1) * 4 * w
+        st["value"] = [ram.rd32(addr + 4 * i) for i in range(w)]
+        st["last"] = b
+        return True
+
+    def export_four_slot(self, board, base_word, words, taken_at):
+        """The four-slot producer's Export into a destination: the pair not
+        announced by ReadLocked, the slot of that pair not completed last."""
+        lay, fs = ORACLE_LAYOUT, ORACLE_FOUR_SLOT
+        ram = self.rams[board]
+        base = 4 * base_word
+        r = ram.rd8(base + lay["off_readlocked"])
+        pair = 1 - ((r - 1) >> 1)
+        slot = 1 - ram.rd8(base + fs["off_slot"][pair])
+        b = self.fs_buf(pair, slot)
+        stride = 4 * (len(words) + lay["taken_at_words"])
+        addr = base + lay["off_buffers"] + (b - 1) * stride
+        for i, w in enumerate(words):
+            ram.wr32(addr + 4 * i, w)
+        ram.wr32(addr + 4 * len(words), taken_at)
+        ram.wr8(base + fs["off_slot"][pair], slot)
+        ram.wr8(base + lay["off_actual"], b)
 
     def export(self, st, k, board, base_word, words, taken_at):
         lay = ORACLE_LAYOUT
@@ -256,7 +308,16 @@ class ControllerModel:
         for e in self.entries:
             self.time = c0 + e["start"]
             st = self.st(e)
-            if e["kind"] == 1:                       # COPY: Import from the source
+            if e["kind"] == 1 and e["flags"] & ORACLE_FOUR_SLOT["flag"]:     # COPY, four-slot
+                src = self.rams[e["src_board"]]
+                if self.import_four_slot(st, src, 4 * e["src_word"], e["w"]):
+                    st["version"] += 1
+                    st["taken_at"] = self.time
+                for k, (b, bw) in enumerate(e["dst"]):
+                    if st["delivered"][k] != st["version"]:
+                        self.export_four_slot(b, bw, st["value"], st["taken_at"])
+                        st["delivered"][k] = st["version"]
+            elif e["kind"] == 1:                     # COPY: Import from the source
                 lay = ORACLE_LAYOUT
                 src = self.rams[e["src_board"]]
                 base = 4 * e["src_word"]
