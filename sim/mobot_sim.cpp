@@ -109,7 +109,13 @@ int main(int argc, char **argv)
     const uint64_t bucket_len = (o.cycles + n_buckets - 1) / n_buckets;
     for (Series &s : series) s.bucket_max.assign(n_buckets, 0);
 
-    Verilated::commandArgs(argc, argv);
+    // The boards' clock drift: board_memmap's +drift<c>=PPM plusargs.
+    std::vector<std::string> vargs(argv, argv + argc);
+    for (int c = 0; c < NB; ++c)
+        if (o.drift_ppm[c]) vargs.push_back("+drift" + std::to_string(c) + "=" + std::to_string(o.drift_ppm[c]));
+    std::vector<const char *> vargv;
+    for (const std::string &a : vargs) vargv.push_back(a.c_str());
+    Verilated::commandArgs(int(vargv.size()), vargv.data());
     auto m = std::make_unique<Vpico_boards>();
     // The wave's time base: clock cycles since power-up, reset included (two
     // time steps per cycle, one dump per step), so its times only grow; the
@@ -201,6 +207,7 @@ int main(int argc, char **argv)
         if (p.second.ch->src_board == o.crash_board) crash_prod = &p.second;
     if (o.crash_board >= 0 && !crash_prod)
         return usage(("--crash: board " + plan.board_names[o.crash_board] + " produces no copy channel").c_str());
+    LocalClock clocks[NB];
     uint64_t stale_events = 0, stale_before_crash = 0, fresh_events = 0, first_stale = 0, status_reads = 0;
     uint32_t status_retries = 0, status_abandoned = 0;
 
@@ -218,6 +225,13 @@ int main(int argc, char **argv)
         const uint64_t now = m->time_o;
         for (int c = 0; c < NB; ++c) {
             if (((m->done_o >> c) & 1u) && !done_at[c]) done_at[c] = cycle;
+            if ((m->timer_rd_o >> c) & 1u) {  // a TIMER read completes: the controller's time now
+                LocalClock &k = clocks[c];
+                k.last_read_time = now;
+                k.last_read_value = m->timer_o[c];
+                if (!k.reads++) { k.first_read_cycle = cycle; k.first_read_value = k.last_read_value; }
+                k.last_read_cycle = cycle;
+            }
             const uint32_t adr = (m->dp_adr_o >> (10 * c)) & 0x3ffu, sel = (m->dp_sel_o >> (4 * c)) & 0xfu;
             // a load: when a consumer read a control word (its Actual) last
             if (((m->dp_ack_o >> c) & 1u) && !((m->dp_we_o >> c) & 1u)) last_load[c][adr] = now;
@@ -281,6 +295,20 @@ int main(int argc, char **argv)
                 if (crash_phase != 3) ++stale_before_crash;
             } else if (kind == EV_FRESH) {
                 ++fresh_events;
+            } else if (kind == EV_CLOCK) {  // id: alb_clock_state, ARG: the estimate at the last TIMER read
+                LocalClock &k = clocks[c];
+                const int64_t err = int64_t(int32_t(arg - uint32_t(k.last_read_time)));
+                ++k.estimates;
+                if (id >= 2) {
+                    if (!k.synced++) { k.first_synced_cycle = cycle; k.err_min = k.err_max = err; }
+                    k.err_min = std::min(k.err_min, err);
+                    k.err_max = std::max(k.err_max, err);
+                    k.err_sum += double(err);
+                    k.abs_sum += double(err < 0 ? -err : err);
+                } else {
+                    ++k.warmup;
+                    if ((err < 0 ? -err : err) > (k.warm_worst < 0 ? -k.warm_worst : k.warm_worst)) k.warm_worst = err;
+                }
             } else if (kind == EV_STATUS) {
                 ++status_reads;
                 status_retries = arg;
@@ -307,14 +335,22 @@ int main(int argc, char **argv)
 #endif
 
     // ---- bounds and checks ----
-    for (Series &s : series) {
-        const PlanChannel &c = *s.ch;
-        s.bound = age_bound(s);
-        const double limit = o.age_scale * double(s.bound);
-        // ages of a crashed producer's channel grow without bound: not checked
-        if (!(crash_prod && crash_prod->ch == &c))
-            for (uint64_t v : s.bucket_max) if (double(v) > limit) ++s.over_bound;
-    }
+    // Local time (alb_clock, docs/robot.md "Local time"): an estimate lags the
+    // controller's time by at most the time channel's age bound (latency with
+    // retries: from taken_at to the Import's load of Actual) plus the rest of
+    // that Import and the sync (at most the board's longest GlobalTime Import,
+    // measured, plus kClockTail clocks) plus a rate residual of kClockRho over
+    // two update periods; it leads by at most kClockRho over two windows (its
+    // anchors are real samples, each a lower bound of the controller's time).
+    const double kClockRho = 200e-6, kClockWindow = 65536, kClockTail = 64;
+    const uint64_t clock_sync_cycles = 4 * 65536;
+    auto clock_bound = [&](const PlanChannel &t, int board) -> double {
+        double import_max = 0;
+        for (const Series &s : series)
+            if (s.ch == &t && s.board == board) import_max = double(s.import_cycles.max);
+        return double(t.latency_retry) + import_max + kClockTail + kClockRho * 2 * double(t.period);
+    };
+    const double clock_lead = kClockRho * 2 * kClockWindow;
     std::map<std::string, std::string> failed;  // check -> first failure
     auto fail = [&](const char *check, const std::string &msg) { if (!failed.count(check)) failed[check] = msg; };
     char b[512];
@@ -369,6 +405,28 @@ int main(int argc, char **argv)
             fail("liveness", b);
         }
 
+    }
+    // Local time: every synced estimate within its bound (see clock_bound above).
+    const PlanChannel *time_ch = nullptr;
+    for (const PlanChannel &ch : plan.channels)
+        if (ch.kind == "time") time_ch = &ch;
+    for (int c = 0; c < NB; ++c) {
+        LocalClock &k = clocks[c];
+        k.bound = time_ch ? clock_bound(*time_ch, c) : 0;
+        const double lag = o.clock_scale * k.bound, lead = o.clock_scale * clock_lead;
+        if (!check_ages || (crash_run && c == o.crash_board) || !time_ch || !k.estimates) continue;
+        if (k.synced && (double(-k.err_min) > lag || double(k.err_max) > lead)) {
+            std::snprintf(b, sizeof b, "expected every local-time estimate of %s within [-%.0f, +%.0f] clocks of the "
+                          "controller's time, got %lld..%lld over %llu estimates (drift %ld ppm)",
+                          plan.board_names[c].c_str(), lag, lead, (long long)k.err_min, (long long)k.err_max,
+                          (unsigned long long)k.synced, o.drift_ppm[c]);
+            fail("clock", b);
+        } else if (!k.synced && cycle >= clock_sync_cycles) {
+            std::snprintf(b, sizeof b, "expected %s's local clock to have its rate after %llu cycles, it reported "
+                          "%llu estimates, none with it", plan.board_names[c].c_str(),
+                          (unsigned long long)cycle, (unsigned long long)k.estimates);
+            fail("clock", b);
+        }
     }
     const bool radar_crash = crash_run && crash_phase == 3 && crash_prod->ch->name == "RadarMap";
     if (radar_crash && stale_events == 0 && !cpu_failed)
@@ -440,6 +498,32 @@ int main(int argc, char **argv)
         r.num((plan.board_names[c] + "_done_cycle").c_str(), double(done_at[c]))
          .num((plan.board_names[c] + "_code").c_str(), code[c]);
     }
+    std::printf("  %-11s %8s %9s %9s %8s %9s %9s %9s %9s %9s %7s %9s\n", "local time", "drift", "measured",
+                "estimates", "synced", "err min", "err mean", "err max", "|err| max", "|err| mean", "lag bnd",
+                "warm-up");
+    js = "[";
+    for (int c = 0; c < NB; ++c) {
+        const LocalClock &k = clocks[c];
+        const double span = double(k.last_read_cycle - k.first_read_cycle);
+        const double measured = span > 0 ? (double(uint32_t(k.last_read_value - k.first_read_value)) / span - 1) * 1e6 : 0;
+        const int64_t worst = std::max(-k.err_min, k.err_max);
+        const double mean = k.synced ? k.err_sum / double(k.synced) : 0, amean = k.synced ? k.abs_sum / double(k.synced) : 0;
+        std::printf("  %-11s %+8ld %+9.1f %9llu %8llu %9lld %9.1f %9lld %9lld %9.1f %7.0f %9lld\n",
+                    plan.board_names[c].c_str(), o.drift_ppm[c], measured, (unsigned long long)k.estimates,
+                    (unsigned long long)k.synced, (long long)k.err_min, mean, (long long)k.err_max, (long long)worst,
+                    amean, o.clock_scale * k.bound, (long long)k.warm_worst);
+        JsonReport e;
+        e.str("board", plan.board_names[c]).num("drift_ppm", double(o.drift_ppm[c])).num("measured_ppm", measured)
+         .num("timer_reads", double(k.reads)).num("estimates", double(k.estimates)).num("synced", double(k.synced))
+         .num("first_synced_cycle", double(k.first_synced_cycle)).num("err_min", double(k.err_min))
+         .num("err_mean", mean).num("err_max", double(k.err_max)).num("abs_err_max", double(worst))
+         .num("abs_err_mean", amean).num("lag_bound", k.bound).num("lead_bound", clock_lead)
+         .num("clock_scale", o.clock_scale)
+         .num("warmup_estimates", double(k.warmup)).num("warmup_worst_err", double(k.warm_worst));
+        std::string t = e.text();
+        js += (js.size() > 1 ? ",\n  " : "\n  ") + t.substr(0, t.size() - 1);
+    }
+    r.raw("local_time", js + "]");
     if (crash_run) {
         uint64_t after = 0;
         for (const Series &s : series) after += s.news_after_crash;

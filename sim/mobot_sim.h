@@ -10,16 +10,18 @@
 #include "report.h"
 
 const int NB = 4;
-enum : uint32_t { EV_NEW = 1, EV_OLD, EV_ERROR, EV_BEGIN, EV_EXPORT, EV_STALE, EV_FRESH, EV_STATUS };
-const char *const kChecks[] = {"cpu", "liveness", "age", "staleness", "faults"};
+enum : uint32_t { EV_NEW = 1, EV_OLD, EV_ERROR, EV_BEGIN, EV_EXPORT, EV_STALE, EV_FRESH, EV_STATUS, EV_CLOCK };
+const char *const kChecks[] = {"cpu", "liveness", "age", "staleness", "faults", "clock"};
 
 struct Options {
-    std::string plan, report, ages, trace, label = "mobot-sim", expect, crash_arg, hang_arg;
+    std::string plan, report, ages, trace, label = "mobot-sim", expect, crash_arg, hang_arg, drift_arg;
     uint64_t cycles = 2000000, seed = 1, stall = 0, trace_from = 0, trace_cycles = 20000, progress = 10;
     double fault_rate = 0, age_scale = 1;
     int crash_board = -1, hang_board = -1;
     bool require_done = false;
     uint64_t crash_at = 0, hang_at = 0;
+    long drift_ppm[NB] = {0, 0, 0, 0};  // --drift-ppm: each board's clock against the controller's
+    double clock_scale = 1;             // --clock-scale: check the local-time error against X times its bound
 };
 
 struct Stat {  // min / mean / max of a series of integers
@@ -47,6 +49,15 @@ struct Series {  // one channel at one consumer
     Stat age, import_cycles;
     uint64_t news = 0, olds = 0, news_after_crash = 0, over_bound = 0, bound = 0;
     std::vector<uint64_t> bucket_max;  // worst age per time bucket (picture)
+};
+
+struct LocalClock {  // one board's local time (alb_clock): its estimates against the controller's time
+    uint64_t reads = 0, estimates = 0, synced = 0, warmup = 0, first_synced_cycle = 0, over_bound = 0;
+    uint64_t last_read_time = 0, first_read_cycle = 0, last_read_cycle = 0;
+    uint32_t last_read_value = 0, first_read_value = 0;
+    int64_t err_min = 0, err_max = 0, warm_worst = 0;  // signed: estimate - controller time (synced)
+    double err_sum = 0, abs_sum = 0;
+    double bound = 0;
 };
 
 struct Producer {  // a copy channel's producer

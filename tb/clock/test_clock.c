@@ -16,6 +16,8 @@
  *     never ahead by more than the rate residual);
  *   - the mean lag is below D_MIN + (D_MAX - D_MIN) / 8 (the window minimum
  *     works: far below the mean delay).
+ * And the read path's short multiply: alb_clock_at within 3 ticks of the
+ * exact line for random spans up to 2^22 ticks and skews up to +-2^31.
  * Built with -DALB_CLOCK_NO_RATE (the estimator without rate correction)
  * the drifting cases must fail (make test-clock-unit-negative).
  * Last line: "clock-unit: N checks, F failed"; exit 1 if F > 0.
@@ -109,10 +111,35 @@ static void run(long ppm, uint32_t g_offset, uint32_t l_offset)
     }
 }
 
+/* alb_clock_at against the exact line (double) on a hand-set state. */
+static void scale_check(void)
+{
+    alb_clock_t c;
+    unsigned k, bad = 0u;
+    double worst = 0;
+    alb_clock_init(&c);
+    c.state = ALB_CLOCK_RATE;
+    c.g0 = 1000000u;
+    c.l0 = 5000000u;
+    for (k = 0u; k < 200000u; ++k) {
+        int32_t d = (int32_t)(next() % (1u << 23)) - (1 << 22);
+        double x, diff;
+        c.skew = (int32_t)(next() << 1 ^ next());
+        x = (double)c.g0 + d + (double)d * (double)c.skew / 4294967296.0;
+        diff = (double)(int32_t)(alb_clock_at(&c, c.l0 + (uint32_t)d) - c.g0) - (x - (double)c.g0);
+        if (diff < 0) diff = -diff;
+        if (diff > worst) worst = diff;
+        bad += diff > 3.0;
+    }
+    check(bad == 0u, "alb_clock_at within 3 ticks of the exact line (worst, bound)", 0, worst, 3.0);
+    printf("read path: worst deviation from the exact line %.2f ticks over %u spans\n", worst, k);
+}
+
 int main(void)
 {
     static const long drifts[] = {0, 300, -1000, 5000, -20000};
     unsigned k;
+    scale_check();
     for (k = 0u; k < sizeof drifts / sizeof drifts[0]; ++k)
         run(drifts[k], 0xFFF00000u + 977u * k, 0xFFFF0000u - 12345u * k);  /* both wrap early */
     printf("clock-unit: %lu checks, %lu failed\n", checks, failed);
