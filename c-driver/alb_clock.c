@@ -5,23 +5,35 @@
 #include "alb_clock.h"
 #include "alb_port.h"
 
+/* a * b mod 2^32 by shift and add over the bits of b (rv32i has no multiply
+ * instruction; b is the short factor, so few steps). */
+static uint32_t alb_clock_mul(uint32_t a, uint32_t b)
+{
+    uint32_t r = 0u;
+    while (b != 0u) {
+        if (b & 1u)
+            r += a;
+        a <<= 1;
+        b >>= 1;
+    }
+    return r;
+}
+
 /* d * skew / 2^32 for a signed tick difference d, rounded towards zero,
- * within 3 ticks.  rv32i has no multiply instruction (each * is a libgcc
- * shift-add loop over the bits of its second operand, a 64-bit product
- * several of them): for |d| < 2^20 two 32-bit products with the short factor
- * second (12 and 8 bits of d) do; skew's low 12 bits are dropped (at most
- * |d| / 2^20 < 1 tick).  Longer spans take the 64-bit product. */
+ * within 3 ticks.  For |d| < 2^18 (four windows) and |skew| < 2^28 (a
+ * drift under 6 %) one short product: (|d| / 4) * (|skew| / 2^14) / 2^16,
+ * where the second factor is the drift in units of 2^-18 (a 1000 ppm drift:
+ * 262, nine steps); the dropped low bits cost < 1 tick each.  Otherwise the
+ * 64-bit product (libgcc). */
 static int32_t alb_clock_scale(int32_t d, int32_t skew)
 {
     uint32_t ud = d < 0 ? 0u - (uint32_t)d : (uint32_t)d;
     uint32_t us = skew < 0 ? 0u - (uint32_t)skew : (uint32_t)skew;
     uint32_t p;
-    if (ud < (1u << 20)) {
-        uint32_t s12 = us >> 12;  /* < 2^20 */
-        p = ((s12 * (ud >> 8)) >> 12) + ((s12 * (ud & 255u)) >> 20);
-    } else {
+    if (ud < (1u << 18) && us < (1u << 28))
+        p = alb_clock_mul(ud >> 2, us >> 14) >> 16;
+    else
         p = (uint32_t)(((uint64_t)ud * us) >> 32);
-    }
     return (d < 0) != (skew < 0) ? -(int32_t)p : (int32_t)p;
 }
 
@@ -51,19 +63,42 @@ uint32_t alb_clock_at(const alb_clock_t *c, uint32_t local)
     return alb_clock_line(c->g0, c->l0, c->skew, local);
 }
 
+#ifndef ALB_CLOCK_NO_RATE
+/* floor(n * 2^32 / d) for n < d < 2^31: 32 steps of shift-and-subtract
+ * (rv32i has no divide instruction; libgcc's 64-bit division costs some ten
+ * thousand cycles on PicoRV32, one such pause per window was enough to
+ * stretch a robot board's loop past its budget). */
+static uint32_t alb_clock_frac(uint32_t n, uint32_t d)
+{
+    uint32_t q = 0u, k;
+    for (k = 0u; k < 32u; ++k) {
+        n <<= 1;  /* n < d < 2^31: no overflow */
+        q <<= 1;
+        if (n >= d) {
+            n -= d;
+            q |= 1u;
+        }
+    }
+    return q;
+}
+#endif
+
 /* The rate between the oldest and the newest ring sample. */
 static void alb_clock_rate(alb_clock_t *c)
 {
 #ifndef ALB_CLOCK_NO_RATE
     const alb_clock_sample_t *o = &c->ring[(c->head + ALB_CLOCK_RING - c->n_ring) % ALB_CLOCK_RING];
     const alb_clock_sample_t *n = &c->ring[(c->head + ALB_CLOCK_RING - 1u) % ALB_CLOCK_RING];
-    uint32_t dl = n->l - o->l;
+    uint32_t dl = n->l - o->l, q;
     int32_t diff = (int32_t)((n->g - o->g) - dl);
-    int64_t s;
+    uint32_t ud = diff < 0 ? 0u - (uint32_t)diff : (uint32_t)diff;
     if (dl == 0u || dl >= 0x80000000u)
         return;
-    s = (int64_t)diff * 4294967296LL / (int64_t)dl;
-    c->skew = s > 0x7FFFFFFFLL ? 0x7FFFFFFF : s < -0x7FFFFFFFLL ? -0x7FFFFFFF : (int32_t)s;
+    /* |skew| = |diff| / dl in Q32, saturating below 1/2 (a 50 % drift) */
+    q = ud >= dl / 2u ? 0x7FFFFFFFu : alb_clock_frac(ud, dl);
+    if (q > 0x7FFFFFFFu)
+        q = 0x7FFFFFFFu;
+    c->skew = diff < 0 ? -(int32_t)q : (int32_t)q;
     c->state = ALB_CLOCK_RATE;
 #else
     c->state = ALB_CLOCK_RATE;  /* claims a rate, keeps 1: the negative test's estimator */

@@ -299,6 +299,8 @@ int main(int argc, char **argv)
                 LocalClock &k = clocks[c];
                 const int64_t err = int64_t(int32_t(arg - uint32_t(k.last_read_time)));
                 ++k.estimates;
+                k.now_cycles.add(cyc & 0xfffu);
+                if (cyc >> 12) k.sync_cycles.add(cyc >> 12);
                 if (id >= 2) {
                     if (!k.synced++) { k.first_synced_cycle = cycle; k.err_min = k.err_max = err; }
                     k.err_min = std::min(k.err_min, err);
@@ -498,9 +500,9 @@ int main(int argc, char **argv)
         r.num((plan.board_names[c] + "_done_cycle").c_str(), double(done_at[c]))
          .num((plan.board_names[c] + "_code").c_str(), code[c]);
     }
-    std::printf("  %-11s %8s %9s %9s %8s %9s %9s %9s %9s %9s %7s %9s\n", "local time", "drift", "measured",
+    std::printf("  %-11s %8s %9s %9s %8s %9s %9s %9s %9s %9s %7s %9s %13s\n", "local time", "drift", "measured",
                 "estimates", "synced", "err min", "err mean", "err max", "|err| max", "|err| mean", "lag bnd",
-                "warm-up");
+                "warm-up", "cyc now/sync");
     js = "[";
     for (int c = 0; c < NB; ++c) {
         const LocalClock &k = clocks[c];
@@ -508,10 +510,10 @@ int main(int argc, char **argv)
         const double measured = span > 0 ? (double(uint32_t(k.last_read_value - k.first_read_value)) / span - 1) * 1e6 : 0;
         const int64_t worst = std::max(-k.err_min, k.err_max);
         const double mean = k.synced ? k.err_sum / double(k.synced) : 0, amean = k.synced ? k.abs_sum / double(k.synced) : 0;
-        std::printf("  %-11s %+8ld %+9.1f %9llu %8llu %9lld %9.1f %9lld %9lld %9.1f %7.0f %9lld\n",
+        std::printf("  %-11s %+8ld %+9.1f %9llu %8llu %9lld %9.1f %9lld %9lld %9.1f %7.0f %9lld %6.0f/%6.0f\n",
                     plan.board_names[c].c_str(), o.drift_ppm[c], measured, (unsigned long long)k.estimates,
                     (unsigned long long)k.synced, (long long)k.err_min, mean, (long long)k.err_max, (long long)worst,
-                    amean, o.clock_scale * k.bound, (long long)k.warm_worst);
+                    amean, o.clock_scale * k.bound, (long long)k.warm_worst, k.now_cycles.mean(), k.sync_cycles.mean());
         JsonReport e;
         e.str("board", plan.board_names[c]).num("drift_ppm", double(o.drift_ppm[c])).num("measured_ppm", measured)
          .num("timer_reads", double(k.reads)).num("estimates", double(k.estimates)).num("synced", double(k.synced))
@@ -519,7 +521,8 @@ int main(int argc, char **argv)
          .num("err_mean", mean).num("err_max", double(k.err_max)).num("abs_err_max", double(worst))
          .num("abs_err_mean", amean).num("lag_bound", k.bound).num("lead_bound", clock_lead)
          .num("clock_scale", o.clock_scale)
-         .num("warmup_estimates", double(k.warmup)).num("warmup_worst_err", double(k.warm_worst));
+         .num("warmup_estimates", double(k.warmup)).num("warmup_worst_err", double(k.warm_worst))
+         .raw("now_cycles", k.now_cycles.json()).raw("sync_cycles", k.sync_cycles.json());
         std::string t = e.text();
         js += (js.size() > 1 ? ",\n  " : "\n  ") + t.substr(0, t.size() - 1);
     }

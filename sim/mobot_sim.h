@@ -58,6 +58,7 @@ struct LocalClock {  // one board's local time (alb_clock): its estimates agains
     int64_t err_min = 0, err_max = 0, warm_worst = 0;  // signed: estimate - controller time (synced)
     double err_sum = 0, abs_sum = 0;
     double bound = 0;
+    Stat now_cycles, sync_cycles;  // rdcycle counts of alb_clock_now and of the last alb_clock_sync
 };
 
 struct Producer {  // a copy channel's producer

@@ -82,20 +82,30 @@ static inline int mobot_import(alb_channel_t *ch, uint32_t id, void *msg, const 
 #include "alb_clock.h"
 #include "alb_port.h"
 typedef alb_clock_t mobot_clock_t;
+static uint32_t mobot_sync_cycles;  /* rdcycle count of the last alb_clock_sync */
 /* After the Import of GlobalTime that returned r: a New value is a sample. */
 static inline void mobot_clock_sync(mobot_clock_t *clk, int r, uint32_t taken_at)
 {
-    if (r == ALB_NEW)
-        alb_clock_sync(clk, taken_at, alb_local_time());
+    uint32_t c0;
+    if (r != ALB_NEW)
+        return;
+    c0 = board_cycles();
+    alb_clock_sync(clk, taken_at, alb_local_time());
+    mobot_sync_cycles = board_cycles() - c0;
 }
-/* The estimate now, as an event (nothing before the first sample). */
+/* The estimate now, as an event (nothing before the first sample); the
+ * cycles field: the rdcycle counts of this alb_clock_now (bits 0..11) and
+ * of the last alb_clock_sync (bits 12..23), each saturating at 4095. */
 static inline void mobot_clock_report(const mobot_clock_t *clk)
 {
-    uint32_t est;
+    uint32_t est, c0, c1;
     if (alb_clock_state(clk) == ALB_CLOCK_EMPTY)
         return;
+    c0 = board_cycles();
     est = alb_clock_now(clk);
-    mobot_event(MOBOT_EV_CLOCK, (uint32_t)alb_clock_state(clk), 0u, est);
+    c1 = board_cycles() - c0;
+    mobot_event(MOBOT_EV_CLOCK, (uint32_t)alb_clock_state(clk),
+                (c1 > 4095u ? 4095u : c1) | (mobot_sync_cycles > 4095u ? 4095u : mobot_sync_cycles) << 12, est);
 }
 #define mobot_clock_init(clk) alb_clock_init(clk)
 #else
