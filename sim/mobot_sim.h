@@ -59,6 +59,7 @@ struct LocalClock {  // one board's local time (alb_clock): its estimates agains
     double err_sum = 0, abs_sum = 0;
     double bound = 0;
     Stat now_cycles, sync_cycles;  // rdcycle counts of alb_clock_now and of the last alb_clock_sync
+    uint64_t last_new_time = 0, max_new_gap = 0;  // New GlobalTime Imports: the longest gap (clocks)
 };
 
 struct Producer {  // a copy channel's producer

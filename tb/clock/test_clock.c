@@ -32,7 +32,7 @@ uint32_t unit_local_now;
 #define D_MIN         40u     /* delivery delay range (controller clocks) */
 #define D_MAX         1500u
 #define SLACK         40      /* clocks: rate residual over two windows, rounding */
-#define RATE_TOL_PPM  250.0  /* statistical: the window minima of this delay spread, fixed seed */
+#define RATE_TOL_PPM  250.0  /* statistical (window minima of this delay spread, fixed seed); also kClockRho of sim/mobot_sim.cpp */
 
 static unsigned long checks, failed;
 static uint64_t rng = 0x9E3779B97F4A7C15ull;
