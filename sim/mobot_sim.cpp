@@ -11,6 +11,7 @@
 //             [--trace FILE.vcd [--trace-from N] [--trace-cycles N]]
 //             [--report FILE] [--ages FILE.csv] [--label NAME] [--progress K]
 //             [--age-scale X] [--require-done] [--expect-caught-by CHECK]
+//             [--drift-ppm BOARD=PPM[,/BOARD=PPM...]|random:MAX] [--clock-scale X]
 //
 // The cores report every Import and Export as board events (EVENT/ARG,
 // sim/firmware/mobot_check.h).  The harness watches every core's DPRAM port: it
@@ -29,6 +30,11 @@
 //   --hang B@C      board B freezes at cycle C without telling the checks
 //                   (the negative test of the liveness check)
 //   --age-scale X   check ages against X times the bound (negative test)
+//   --drift-ppm S   the boards' clocks drift against the controller's: the
+//                   named boards' TIMERs run PPM parts per million fast (> 0)
+//                   or slow (board_memmap +drift<c>=PPM); random:MAX draws
+//                   each board's from the seed in [-MAX, MAX]
+//   --clock-scale X check local-time errors against X times their bounds
 //
 // A crashed producer's half-written buffer is never published: its
 // consumers' checks (cpu) would see the torn value or a New without a newer
@@ -53,9 +59,15 @@
 //              fault-free bus, never before it and never without one
 //   faults     with faults injected, the controller's STATUS (read by the
 //              navigation core) counts retries
+//   clock      runs without faults, boards whose firmware has the local
+//              clock (MOBOT_EV_CLOCK): every estimate with the rate known
+//              lies within the board's lag and lead bounds of the
+//              controller's time at its TIMER read, and the rate is known
+//              after four windows (sim/mobot_sim_clock.cpp)
 // Exit status 0 = verdict pass, 1 = fail, 2 = bad arguments.
 // The command line is parsed in sim/mobot_sim_options.cpp, the --ages CSV
-// written by sim/mobot_sim_ages.cpp; sim/mobot_sim.h holds what they share.
+// written by sim/mobot_sim_ages.cpp, local time judged and reported by
+// sim/mobot_sim_clock.cpp; sim/mobot_sim.h holds what they share.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -225,13 +237,7 @@ int main(int argc, char **argv)
         const uint64_t now = m->time_o;
         for (int c = 0; c < NB; ++c) {
             if (((m->done_o >> c) & 1u) && !done_at[c]) done_at[c] = cycle;
-            if ((m->timer_rd_o >> c) & 1u) {  // a TIMER read completes: the controller's time now
-                LocalClock &k = clocks[c];
-                k.last_read_time = now;
-                k.last_read_value = m->timer_o[c];
-                if (!k.reads++) { k.first_read_cycle = cycle; k.first_read_value = k.last_read_value; }
-                k.last_read_cycle = cycle;
-            }
+            if ((m->timer_rd_o >> c) & 1u) clocks[c].read(now, m->timer_o[c], cycle);  // a TIMER read completes
             const uint32_t adr = (m->dp_adr_o >> (10 * c)) & 0x3ffu, sel = (m->dp_sel_o >> (4 * c)) & 0xfu;
             // a load: when a consumer read a control word (its Actual) last
             if (((m->dp_ack_o >> c) & 1u) && !((m->dp_we_o >> c) & 1u)) last_load[c][adr] = now;
@@ -272,11 +278,7 @@ int main(int argc, char **argv)
                 s->import_cycles.add(cyc);
                 const uint64_t k = std::min<uint64_t>(cycle / bucket_len, n_buckets - 1);
                 s->bucket_max[k] = std::max(s->bucket_max[k], age);
-                if (kind == EV_NEW && s->ch->kind == "time") {  // a sync of the board's local clock
-                    LocalClock &k = clocks[c];
-                    if (k.last_new_time) k.max_new_gap = std::max(k.max_new_gap, cycle - k.last_new_time);
-                    k.last_new_time = cycle;
-                }
+                if (kind == EV_NEW && s->ch->kind == "time") clocks[c].new_time(cycle);  // the board's clock syncs
                 if (kind == EV_NEW) {
                     ++s->news;
                     if (crash_phase == 3 && crash_prod && s->ch == crash_prod->ch) ++s->news_after_crash;
@@ -301,21 +303,7 @@ int main(int argc, char **argv)
             } else if (kind == EV_FRESH) {
                 ++fresh_events;
             } else if (kind == EV_CLOCK) {  // id: alb_clock_state, ARG: the estimate at the last TIMER read
-                LocalClock &k = clocks[c];
-                const int64_t err = int64_t(int32_t(arg - uint32_t(k.last_read_time)));
-                ++k.estimates;
-                k.now_cycles.add(cyc & 0xfffu);
-                if (cyc >> 12) k.sync_cycles.add(cyc >> 12);
-                if (id >= 2) {
-                    if (!k.synced++) { k.first_synced_cycle = cycle; k.err_min = k.err_max = err; }
-                    k.err_min = std::min(k.err_min, err);
-                    k.err_max = std::max(k.err_max, err);
-                    k.err_sum += double(err);
-                    k.abs_sum += double(err < 0 ? -err : err);
-                } else {
-                    ++k.warmup;
-                    if ((err < 0 ? -err : err) > (k.warm_worst < 0 ? -k.warm_worst : k.warm_worst)) k.warm_worst = err;
-                }
+                clocks[c].estimate(id, cyc, arg, cycle);
             } else if (kind == EV_STATUS) {
                 ++status_reads;
                 status_retries = arg;
@@ -342,26 +330,6 @@ int main(int argc, char **argv)
 #endif
 
     // ---- bounds and checks ----
-    // Local time (alb_clock, docs/robot.md "Local time between updates"): an
-    // estimate lags the controller's time by at most the time channel's age
-    // bound (latency with retries: taken_at to the Import's load of Actual),
-    // plus the rest of that Import and the sync's TIMER read (at most the
-    // board's longest GlobalTime Import, measured, plus kClockTail clocks),
-    // plus the rate residual kClockRho over the board's longest gap between
-    // two New GlobalTime values; it leads by at most kClockRho over two
-    // windows and that gap (every anchor is a sample, a lower bound).
-    // kClockRho is the rate tolerance tb/clock/test_clock.c checks.
-    const double kClockRho = 250e-6, kClockWindow = 65536, kClockTail = 64;
-    const uint64_t clock_sync_cycles = 4 * 65536;
-    auto clock_bound = [&](const PlanChannel &t, int board) -> double {
-        double import_max = 0;
-        for (const Series &s : series)
-            if (s.ch == &t && s.board == board) import_max = double(s.import_cycles.max);
-        return double(t.latency_retry) + import_max + kClockTail + kClockRho * double(clocks[board].max_new_gap);
-    };
-    auto clock_lead = [&](int board) -> double {
-        return kClockRho * (2 * kClockWindow + double(clocks[board].max_new_gap));
-    };
     for (Series &s : series) {
         const PlanChannel &c = *s.ch;
         s.bound = age_bound(s);
@@ -425,27 +393,12 @@ int main(int argc, char **argv)
         }
 
     }
-    // Local time: every synced estimate within its bound (see clock_bound above).
-    const PlanChannel *time_ch = nullptr;
-    for (const PlanChannel &ch : plan.channels)
-        if (ch.kind == "time") time_ch = &ch;
+    // Local time: every estimate with the rate within its bounds (sim/mobot_sim_clock.cpp).
+    clock_bounds(clocks, series, plan);
     for (int c = 0; c < NB; ++c) {
-        LocalClock &k = clocks[c];
-        k.bound = time_ch ? clock_bound(*time_ch, c) : 0;
-        const double lag = o.clock_scale * k.bound, lead = o.clock_scale * clock_lead(c);
-        if (!check_ages || (crash_run && c == o.crash_board) || !time_ch || !k.estimates) continue;
-        if (k.synced && (double(-k.err_min) > lag || double(k.err_max) > lead)) {
-            std::snprintf(b, sizeof b, "expected every local-time estimate of %s within [-%.0f, +%.0f] clocks of the "
-                          "controller's time, got %lld..%lld over %llu estimates (drift %ld ppm)",
-                          plan.board_names[c].c_str(), lag, lead, (long long)k.err_min, (long long)k.err_max,
-                          (unsigned long long)k.synced, o.drift_ppm[c]);
-            fail("clock", b);
-        } else if (!k.synced && cycle >= clock_sync_cycles) {
-            std::snprintf(b, sizeof b, "expected %s's local clock to have its rate after %llu cycles, it reported "
-                          "%llu estimates, none with it", plan.board_names[c].c_str(),
-                          (unsigned long long)cycle, (unsigned long long)k.estimates);
-            fail("clock", b);
-        }
+        std::string msg;
+        if (check_ages && !(crash_run && c == o.crash_board) && !clock_verdict(clocks[c], c, o, plan, cycle, msg))
+            fail("clock", msg);
     }
     const bool radar_crash = crash_run && crash_phase == 3 && crash_prod->ch->name == "RadarMap";
     if (radar_crash && stale_events == 0 && !cpu_failed)
@@ -517,34 +470,7 @@ int main(int argc, char **argv)
         r.num((plan.board_names[c] + "_done_cycle").c_str(), double(done_at[c]))
          .num((plan.board_names[c] + "_code").c_str(), code[c]);
     }
-    std::printf("  %-11s %8s %9s %9s %8s %9s %9s %9s %9s %9s %7s %8s %9s %13s\n", "local time", "drift", "measured",
-                "estimates", "synced", "err min", "err mean", "err max", "|err| max", "|err| mean", "lag bnd",
-                "lead bnd", "warm-up", "cyc now/sync");
-    js = "[";
-    for (int c = 0; c < NB; ++c) {
-        const LocalClock &k = clocks[c];
-        const double span = double(k.last_read_cycle - k.first_read_cycle);
-        const double measured = span > 0 ? (double(uint32_t(k.last_read_value - k.first_read_value)) / span - 1) * 1e6 : 0;
-        const int64_t worst = std::max(-k.err_min, k.err_max);
-        const double mean = k.synced ? k.err_sum / double(k.synced) : 0, amean = k.synced ? k.abs_sum / double(k.synced) : 0;
-        std::printf("  %-11s %+8ld %+9.1f %9llu %8llu %9lld %9.1f %9lld %9lld %9.1f %7.0f %8.0f %9lld %6.0f/%6.0f\n",
-                    plan.board_names[c].c_str(), o.drift_ppm[c], measured, (unsigned long long)k.estimates,
-                    (unsigned long long)k.synced, (long long)k.err_min, mean, (long long)k.err_max, (long long)worst,
-                    amean, o.clock_scale * k.bound, o.clock_scale * clock_lead(c), (long long)k.warm_worst, k.now_cycles.mean(), k.sync_cycles.mean());
-        JsonReport e;
-        e.str("board", plan.board_names[c]).num("drift_ppm", double(o.drift_ppm[c])).num("measured_ppm", measured)
-         .num("timer_reads", double(k.reads)).num("estimates", double(k.estimates)).num("synced", double(k.synced))
-         .num("first_synced_cycle", double(k.first_synced_cycle)).num("err_min", double(k.err_min))
-         .num("err_mean", mean).num("err_max", double(k.err_max)).num("abs_err_max", double(worst))
-         .num("abs_err_mean", amean).num("lag_bound", k.bound).num("lead_bound", clock_lead(c))
-         .num("max_sync_gap", double(k.max_new_gap))
-         .num("clock_scale", o.clock_scale)
-         .num("warmup_estimates", double(k.warmup)).num("warmup_worst_err", double(k.warm_worst))
-         .raw("now_cycles", k.now_cycles.json()).raw("sync_cycles", k.sync_cycles.json());
-        std::string t = e.text();
-        js += (js.size() > 1 ? ",\n  " : "\n  ") + t.substr(0, t.size() - 1);
-    }
-    r.raw("local_time", js + "]");
+    r.raw("local_time", clock_report(clocks, o, plan));
     if (crash_run) {
         uint64_t after = 0;
         for (const Series &s : series) after += s.news_after_crash;
