@@ -10,6 +10,9 @@
  *   void     alb_fence(void);                        full fence: orders every
  *                                                    earlier access (loads and
  *                                                    stores) before every later one
+ *   uint32_t alb_local_time(void);                   the board's free-running local
+ *                                                    timer (only alb_clock.c uses it;
+ *                                                    one read, disturbs nothing)
  *
  * Each call is exactly one access of the RAM port: never merged, split,
  * elided or reordered by the compiler.  Targets:

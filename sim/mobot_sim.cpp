@@ -11,6 +11,7 @@
 //             [--trace FILE.vcd [--trace-from N] [--trace-cycles N]]
 //             [--report FILE] [--ages FILE.csv] [--label NAME] [--progress K]
 //             [--age-scale X] [--require-done] [--expect-caught-by CHECK]
+//             [--drift-ppm BOARD=PPM[,/BOARD=PPM...]|random:MAX] [--clock-scale X]
 //
 // The cores report every Import and Export as board events (EVENT/ARG,
 // sim/firmware/mobot_check.h).  The harness watches every core's DPRAM port: it
@@ -29,6 +30,11 @@
 //   --hang B@C      board B freezes at cycle C without telling the checks
 //                   (the negative test of the liveness check)
 //   --age-scale X   check ages against X times the bound (negative test)
+//   --drift-ppm S   the boards' clocks drift against the controller's: the
+//                   named boards' TIMERs run PPM parts per million fast (> 0)
+//                   or slow (board_memmap +drift<c>=PPM); random:MAX draws
+//                   each board's from the seed in [-MAX, MAX]
+//   --clock-scale X check local-time errors against X times their bounds
 //
 // A crashed producer's half-written buffer is never published: its
 // consumers' checks (cpu) would see the torn value or a New without a newer
@@ -53,9 +59,15 @@
 //              fault-free bus, never before it and never without one
 //   faults     with faults injected, the controller's STATUS (read by the
 //              navigation core) counts retries
+//   clock      runs without faults, boards whose firmware has the local
+//              clock (MOBOT_EV_CLOCK): every estimate with the rate known
+//              lies within the board's lag and lead bounds of the
+//              controller's time at its TIMER read, and the rate is known
+//              after four windows (sim/mobot_sim_clock.cpp)
 // Exit status 0 = verdict pass, 1 = fail, 2 = bad arguments.
 // The command line is parsed in sim/mobot_sim_options.cpp, the --ages CSV
-// written by sim/mobot_sim_ages.cpp; sim/mobot_sim.h holds what they share.
+// written by sim/mobot_sim_ages.cpp, local time judged and reported by
+// sim/mobot_sim_clock.cpp; sim/mobot_sim.h holds what they share.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -109,7 +121,13 @@ int main(int argc, char **argv)
     const uint64_t bucket_len = (o.cycles + n_buckets - 1) / n_buckets;
     for (Series &s : series) s.bucket_max.assign(n_buckets, 0);
 
-    Verilated::commandArgs(argc, argv);
+    // The boards' clock drift: board_memmap's +drift<c>=PPM plusargs.
+    std::vector<std::string> vargs(argv, argv + argc);
+    for (int c = 0; c < NB; ++c)
+        if (o.drift_ppm[c]) vargs.push_back("+drift" + std::to_string(c) + "=" + std::to_string(o.drift_ppm[c]));
+    std::vector<const char *> vargv;
+    for (const std::string &a : vargs) vargv.push_back(a.c_str());
+    Verilated::commandArgs(int(vargv.size()), vargv.data());
     auto m = std::make_unique<Vpico_boards>();
     // The wave's time base: clock cycles since power-up, reset included (two
     // time steps per cycle, one dump per step), so its times only grow; the
@@ -201,6 +219,7 @@ int main(int argc, char **argv)
         if (p.second.ch->src_board == o.crash_board) crash_prod = &p.second;
     if (o.crash_board >= 0 && !crash_prod)
         return usage(("--crash: board " + plan.board_names[o.crash_board] + " produces no copy channel").c_str());
+    LocalClock clocks[NB];
     uint64_t stale_events = 0, stale_before_crash = 0, fresh_events = 0, first_stale = 0, status_reads = 0;
     uint32_t status_retries = 0, status_abandoned = 0;
 
@@ -218,6 +237,7 @@ int main(int argc, char **argv)
         const uint64_t now = m->time_o;
         for (int c = 0; c < NB; ++c) {
             if (((m->done_o >> c) & 1u) && !done_at[c]) done_at[c] = cycle;
+            if ((m->timer_rd_o >> c) & 1u) clocks[c].read(now, m->timer_o[c], cycle);  // a TIMER read completes
             const uint32_t adr = (m->dp_adr_o >> (10 * c)) & 0x3ffu, sel = (m->dp_sel_o >> (4 * c)) & 0xfu;
             // a load: when a consumer read a control word (its Actual) last
             if (((m->dp_ack_o >> c) & 1u) && !((m->dp_we_o >> c) & 1u)) last_load[c][adr] = now;
@@ -258,6 +278,7 @@ int main(int argc, char **argv)
                 s->import_cycles.add(cyc);
                 const uint64_t k = std::min<uint64_t>(cycle / bucket_len, n_buckets - 1);
                 s->bucket_max[k] = std::max(s->bucket_max[k], age);
+                if (kind == EV_NEW && s->ch->kind == "time") clocks[c].new_time(cycle);  // the board's clock syncs
                 if (kind == EV_NEW) {
                     ++s->news;
                     if (crash_phase == 3 && crash_prod && s->ch == crash_prod->ch) ++s->news_after_crash;
@@ -281,6 +302,8 @@ int main(int argc, char **argv)
                 if (crash_phase != 3) ++stale_before_crash;
             } else if (kind == EV_FRESH) {
                 ++fresh_events;
+            } else if (kind == EV_CLOCK) {  // id: alb_clock_state, ARG: the estimate at the last TIMER read
+                clocks[c].estimate(id, cyc, arg, cycle);
             } else if (kind == EV_STATUS) {
                 ++status_reads;
                 status_retries = arg;
@@ -370,6 +393,13 @@ int main(int argc, char **argv)
         }
 
     }
+    // Local time: every estimate with the rate within its bounds (sim/mobot_sim_clock.cpp).
+    clock_bounds(clocks, series, plan);
+    for (int c = 0; c < NB; ++c) {
+        std::string msg;
+        if (check_ages && !(crash_run && c == o.crash_board) && !clock_verdict(clocks[c], c, o, plan, cycle, msg))
+            fail("clock", msg);
+    }
     const bool radar_crash = crash_run && crash_phase == 3 && crash_prod->ch->name == "RadarMap";
     if (radar_crash && stale_events == 0 && !cpu_failed)
         fail("staleness", "expected navigation to report RadarMap stale after the radar crashed, it never did");
@@ -440,6 +470,7 @@ int main(int argc, char **argv)
         r.num((plan.board_names[c] + "_done_cycle").c_str(), double(done_at[c]))
          .num((plan.board_names[c] + "_code").c_str(), code[c]);
     }
+    r.raw("local_time", clock_report(clocks, o, plan));
     if (crash_run) {
         uint64_t after = 0;
         for (const Series &s : series) after += s.news_after_crash;

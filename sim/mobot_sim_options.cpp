@@ -29,6 +29,37 @@ bool parse_board_at(const std::string &s, const Plan &plan, int &board, uint64_t
         if (plan.board_names[b] == name) board = int(b);
     return board >= 0 && parse_u64(s.substr(p + 1).c_str(), at);
 }
+// --drift-ppm: BOARD=PPM[,BOARD=PPM...] (or / between them) or random:MAX (each board's PPM drawn
+// from the seed, uniform in [-MAX, MAX]).
+bool parse_drift(const std::string &s, const Plan &plan, Options &o)
+{
+    const long limit = 100000;  // 10 %
+    if (s.rfind("random:", 0) == 0) {
+        char *end = nullptr;
+        const long max = std::strtol(s.c_str() + 7, &end, 0);
+        if (*end || max < 0 || max >= limit) return false;
+        uint64_t r = o.seed * 0xD1B54A32D192ED03ull + 0x2545F4914F6CDD1Dull;
+        for (int b = 0; b < NB; ++b) {
+            r ^= r << 13; r ^= r >> 7; r ^= r << 17;
+            o.drift_ppm[b] = long(r % uint64_t(2 * max + 1)) - max;
+        }
+        return true;
+    }
+    for (size_t p = 0; p < s.size();) {
+        const size_t q = std::min(s.find_first_of(",/", p), s.size()), e = s.find('=', p);
+        if (e == std::string::npos || e > q) return false;
+        const std::string name = s.substr(p, e - p), val = s.substr(e + 1, q - e - 1);
+        int board = -1;
+        for (size_t b = 0; b < plan.board_names.size(); ++b)
+            if (plan.board_names[b] == name) board = int(b);
+        char *end = nullptr;
+        const long ppm = std::strtol(val.c_str(), &end, 0);
+        if (board < 0 || val.empty() || *end || ppm <= -limit || ppm >= limit) return false;
+        o.drift_ppm[board] = ppm;
+        p = q + 1;
+    }
+    return true;
+}
 }  // namespace
 
 int usage(const char *msg)
@@ -38,7 +69,8 @@ int usage(const char *msg)
                  "                 [--seed S] [--stall P] [--fault-rate R] [--crash BOARD@CYCLE] [--hang BOARD@CYCLE]\n"
                  "                 [--trace FILE.vcd [--trace-from N] [--trace-cycles N]] [--report FILE]\n"
                  "                 [--ages FILE.csv] [--label NAME] [--progress K] [--age-scale X] [--require-done]\n"
-                 "                 [--expect-caught-by cpu|liveness|age|staleness|faults]\n", msg);
+                 "                 [--drift-ppm BOARD=PPM[,BOARD=PPM...]|random:MAX] [--clock-scale X]\n"
+                 "                 [--expect-caught-by cpu|liveness|age|staleness|faults|clock]\n", msg);
     return 2;
 }
 
@@ -77,7 +109,12 @@ int parse_options(int argc, char **argv, Options &o, Plan &plan, std::vector<std
         else if (a == "--expect-caught-by") o.expect = v;
         else if (a == "--crash") crash_arg = v;
         else if (a == "--hang") hang_arg = v;
-        else if (a == "--fault-rate" || a == "--age-scale") {
+        else if (a == "--drift-ppm") o.drift_arg = v;
+        else if (a == "--clock-scale") {
+            char *end = nullptr;
+            o.clock_scale = std::strtod(v, &end);
+            if (*end || !(o.clock_scale > 0)) return usage("--clock-scale: expected a number > 0");
+        } else if (a == "--fault-rate" || a == "--age-scale") {
             char *end = nullptr;
             const double x = std::strtod(v, &end);
             if (*end || !(x >= 0) || (a == "--fault-rate" && x >= 1))
@@ -111,6 +148,9 @@ int parse_options(int argc, char **argv, Options &o, Plan &plan, std::vector<std
         return usage(("--crash: expected BOARD@CYCLE with a board of the plan, got " + crash_arg).c_str());
     if (!hang_arg.empty() && !parse_board_at(hang_arg, plan, o.hang_board, o.hang_at))
         return usage(("--hang: expected BOARD@CYCLE with a board of the plan, got " + hang_arg).c_str());
+    if (!o.drift_arg.empty() && !parse_drift(o.drift_arg, plan, o))
+        return usage(("--drift-ppm: expected BOARD=PPM[,BOARD=PPM...] with boards of the plan and |PPM| < 100000, "
+                      "or random:MAX (each board drawn from the seed in [-MAX, MAX]), got " + o.drift_arg).c_str());
 #if !VM_TRACE
     if (!o.trace.empty()) return usage("--trace needs the model built with Verilator --trace (make sim TRACE=1)");
 #endif

@@ -20,6 +20,10 @@
 // the controller itself).  Board index c is the compiler's board index; NB is
 // at most 4 (four plusarg names).  Core c uses the flattened outputs' bits
 // [c*w +: w].  stall_i[c] holds core c's local-RAM accesses for a clock.
+// Local timers (simulation only, by hierarchical reference into each board's
+// board_memmap; 0 under SYNTHESIS): timer_rd_o[c] is high in the clock a read
+// of board c's TIMER register completes, timer_o the value it returns; the
+// board's clock drift is its board_memmap's +drift<c>=PPM plusarg.
 `default_nettype none
 
 module pico_boards #(
@@ -55,7 +59,9 @@ module pico_boards #(
     output wire              m_cyc_o,    // the controller's bus cycle (bus load figure)
     output wire              m_stb_o,    // its strobe (controller side of the injector)
     output wire              m_ack_o,    // the answer it gets: ack
-    output wire              m_err_o     //                     err
+    output wire              m_err_o,    //                     err
+    output wire [NB-1:0]     timer_rd_o, // core c's read of its TIMER completes this clock (simulation only)
+    output wire [NB*32-1:0]  timer_o     // core c's local timer, the value such a read returns
 );
 
     localparam BA = 4 + ADDR_WIDTH;  // bus address {board[3:0], word}
@@ -106,6 +112,24 @@ module pico_boards #(
         .b_cyc_o(i_cyc), .b_stb_o(i_stb), .b_we_o(i_we), .b_adr_o(i_adr), .b_sel_o(i_sel),
         .b_dat_o(i_wdat), .b_dat_i(i_rdat), .b_ack_i(i_ack), .b_err_i(i_err)
     );
+
+`ifndef SYNTHESIS  // simulation only: each board's local timer, read where board_memmap keeps it
+    genvar t;
+    generate
+        for (t = 0; t < NB; t = t + 1) begin : g_timer
+            if (((SERV_MASK >> t) & 1) != 0) begin : g_serv
+                assign timer_rd_o[t]         = u_sys.g_board[t].g_core.u_core.g_serv.u_core.u_map.timer_read;
+                assign timer_o[t*32 +: 32]   = u_sys.g_board[t].g_core.u_core.g_serv.u_core.u_map.timer_q;
+            end else begin : g_pico
+                assign timer_rd_o[t]         = u_sys.g_board[t].g_core.u_core.g_pico.u_core.u_map.timer_read;
+                assign timer_o[t*32 +: 32]   = u_sys.g_board[t].g_core.u_core.g_pico.u_core.u_map.timer_q;
+            end
+        end
+    endgenerate
+`else
+    assign timer_rd_o = {NB{1'b0}};
+    assign timer_o    = {NB*32{1'b0}};
+`endif
 
 `ifndef SYNTHESIS  // simulation only: +ram<c>=FILE is the start image of board c's DPRAM
     genvar c;

@@ -13,12 +13,26 @@
 //                +0x20 EVENT: a store pulses ev_valid_o for one clock with
 //                      ev_data_o = the value, ev_arg_o = ARG
 //                +0x24 ARG: the argument of the next EVENT
+//                +0x40 TIMER (read-only): the board's local timer, a 32-bit
+//                      count of ticks since reset, one per clock of clk_i;
+//                      the value read is the count in the clock the access
+//                      completes; reading it changes nothing, a store to it
+//                      is ignored
 //   other        bus_err_o is set (sticky); the access completes, reads 0
 // stall_i holds the local-RAM access (instruction fetches included) while
 // high: a harness varies the core's speed with it, as an interrupt or a slow
 // memory would, or freezes the core for good (a crash).  DPRAM accesses are
 // never held.  Reset (synchronous, active high) clears control state, never
 // the RAM.
+// Local timer: TIMER counts one tick per clock (timer_q, wrapping at 2^32);
+// synthesis always counts every clock.  Simulation only: +drift<CORE>=PPM
+// (a signed integer, |PPM| < 1000000) makes this board's clock run PPM parts
+// per million fast (> 0) or slow (< 0) against the controller's: a
+// fractional accumulator adds |PPM| each clock and, each time it passes
+// 10^6, the timer counts 2 ticks in that clock (fast) or none (slow), so it
+// runs at 1 + PPM/10^6 ticks per clock.  timer_read (a TIMER read completes
+// in this clock) and timer_q are for a harness's hierarchical reference
+// (sim/pico_boards.v).
 `default_nettype none
 
 module board_memmap #(
@@ -130,6 +144,52 @@ module board_memmap #(
     always @(posedge clk_i)
         if (reg_wr && addr_i[7:4] == 4'h1) stat_q[addr_i[3:2]] <= wdata_i;
 
+    // Local timer (TIMER, +0x40): one-cycle read like the other registers.
+    reg  [31:0] timer_q;
+    reg         timer_rd_q;  // the register access being answered reads TIMER
+    wire [1:0]  timer_inc;   // ticks this clock: 1 (0 or 2 under simulated drift)
+    always @(posedge clk_i) begin
+        if (rst_i) begin
+            timer_q    <= 32'd0;
+            timer_rd_q <= 1'b0;
+        end else begin
+            timer_q    <= timer_q + {30'd0, timer_inc};
+            timer_rd_q <= sel_regs & ~regs_ready_q & ~(|wstrb_i) && addr_i[7:0] == 8'h40;
+        end
+    end
+    wire timer_read = regs_ready_q & timer_rd_q;  // harness probe: a TIMER read completes
+`ifndef SYNTHESIS  // simulation only: the board clock's drift, +drift<CORE>=PPM
+    integer drift_ppm, drift_acc, have_drift;
+    reg     drift_step_q;  // this clock counts 2 ticks (PPM > 0) or none (PPM < 0)
+    initial begin
+        drift_ppm = 0;
+        drift_acc = 0;
+        drift_step_q = 1'b0;
+        case (CORE)
+            0:       have_drift = $value$plusargs("drift0=%d", drift_ppm);
+            1:       have_drift = $value$plusargs("drift1=%d", drift_ppm);
+            2:       have_drift = $value$plusargs("drift2=%d", drift_ppm);
+            default: have_drift = $value$plusargs("drift3=%d", drift_ppm);
+        endcase
+        if (have_drift != 0 && (drift_ppm <= -1000000 || drift_ppm >= 1000000)) begin
+            $display("board_memmap: +drift%0d=%0d out of range (|PPM| < 1000000): no drift", CORE, drift_ppm);
+            drift_ppm = 0;
+        end
+    end
+    always @(posedge clk_i) begin
+        drift_step_q <= 1'b0;
+        if (drift_acc + (drift_ppm < 0 ? -drift_ppm : drift_ppm) >= 1000000) begin
+            drift_acc    <= drift_acc + (drift_ppm < 0 ? -drift_ppm : drift_ppm) - 1000000;
+            drift_step_q <= 1'b1;
+        end else begin
+            drift_acc    <= drift_acc + (drift_ppm < 0 ? -drift_ppm : drift_ppm);
+        end
+    end
+    assign timer_inc = drift_step_q ? (drift_ppm > 0 ? 2'd2 : 2'd0) : 2'd1;
+`else
+    assign timer_inc = 2'd1;
+`endif
+
     // DPRAM window through the adapter.
     wire        dp_ready;
     wire [31:0] dp_rdata;
@@ -151,7 +211,7 @@ module board_memmap #(
     );
 
     assign ready_o    = ram_ready_q | regs_ready_q | dp_ready;
-    assign rdata_o    = ram_ready_q ? ram_rdata_q : dp_ready ? dp_rdata : 32'd0;
+    assign rdata_o    = ram_ready_q ? ram_rdata_q : dp_ready ? dp_rdata : timer_read ? timer_q : 32'd0;
 
     assign done_o     = done_q;
     assign code_o     = code_q;

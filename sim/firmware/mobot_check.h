@@ -15,6 +15,13 @@
  * (board_event, soc/firmware/board.h): EVENT = kind | channel id << 4 |
  * cycles << 8, where cycles (24 bits, saturating) is the rdcycle count of the
  * call, and ARG as listed at MOBOT_EV_*.
+ * Local time (issue 13 §4, built with -DALB_LOCAL_TIMER_ADDR=... and
+ * c-driver/alb_clock.c; without it mobot_clock_* do nothing): each board
+ * syncs its alb_clock_t on every New GlobalTime (taken_at, TIMER read right
+ * after the Import) and, once per loop, reports alb_clock_now() as
+ * MOBOT_EV_CLOCK with the clock's state (alb_clock_state) in the channel-id
+ * field; the harness compares it with the controller's time at that
+ * estimate's TIMER read (the board's last one before the event).
  */
 #ifndef MOBOT_CHECK_H
 #define MOBOT_CHECK_H
@@ -41,6 +48,8 @@
 #define MOBOT_EV_FRESH   7u  /* ... and fresh again (the age)                 */
 #define MOBOT_EV_STATUS  8u  /* a new STATUS (retries summed over channels;
                                 the cycles field: abandoned summed)           */
+#define MOBOT_EV_CLOCK   9u  /* the global-time estimate alb_clock_now() (the
+                                id field: alb_clock_state)                    */
 
 #define MOBOT_CODE(chk, id, seq) ((uint32_t)(chk) | ((uint32_t)(id) << 4) | ((uint32_t)(seq) << 12))
 
@@ -68,6 +77,43 @@ static inline int mobot_import(alb_channel_t *ch, uint32_t id, void *msg, const 
         mobot_event(MOBOT_EV_ERROR, id, c1 - c0, (uint32_t)r);
     return r;
 }
+
+#ifdef ALB_LOCAL_TIMER_ADDR
+#include "alb_clock.h"
+#include "alb_port.h"
+typedef alb_clock_t mobot_clock_t;
+static uint32_t mobot_sync_cycles;  /* rdcycle count of the last alb_clock_sync */
+/* After the Import of GlobalTime that returned r: a New value is a sample. */
+static inline void mobot_clock_sync(mobot_clock_t *clk, int r, uint32_t taken_at)
+{
+    uint32_t c0;
+    if (r != ALB_NEW)
+        return;
+    c0 = board_cycles();
+    alb_clock_sync(clk, taken_at, alb_local_time());
+    mobot_sync_cycles = board_cycles() - c0;
+}
+/* The estimate now, as an event (nothing before the first sample); the
+ * cycles field: the rdcycle counts of this alb_clock_now (bits 0..11) and
+ * of the last alb_clock_sync (bits 12..23), each saturating at 4095. */
+static inline void mobot_clock_report(const mobot_clock_t *clk)
+{
+    uint32_t est, c0, c1;
+    if (alb_clock_state(clk) == ALB_CLOCK_EMPTY)
+        return;
+    c0 = board_cycles();
+    est = alb_clock_now(clk);
+    c1 = board_cycles() - c0;
+    mobot_event(MOBOT_EV_CLOCK, (uint32_t)alb_clock_state(clk),
+                (c1 > 4095u ? 4095u : c1) | (mobot_sync_cycles > 4095u ? 4095u : mobot_sync_cycles) << 12, est);
+}
+#define mobot_clock_init(clk) alb_clock_init(clk)
+#else
+typedef int mobot_clock_t;
+#define mobot_clock_init(clk)           ((void)(clk))
+#define mobot_clock_sync(clk, r, t)     ((void)(clk), (void)(r), (void)(t))
+#define mobot_clock_report(clk)         ((void)(clk))
+#endif
 
 /* alb_export with its two events (begin, end). */
 static inline int mobot_export(alb_channel_t *ch, uint32_t id, const void *v, uint32_t seq)

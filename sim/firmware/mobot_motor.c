@@ -13,6 +13,7 @@ int main(void)
 {
     static MotorCmd_msg cmd;
     static GlobalTime_msg gt;
+    static mobot_clock_t clk;
     mobot_track_t tm = {0u, 0u, 0u, 0u}, tt = {0u, 0u, 0u, 0u};
     uint32_t code, reported = 0u;
     int r;
@@ -20,12 +21,15 @@ int main(void)
     r = alb_motor_attach_all(BOARD_DPRAM_BASE);
     if (r != ALB_OK)
         return (int)MOBOT_CODE(2, 0xfu, (uint32_t)-r);
+    mobot_clock_init(&clk);
     for (;;) {
+        mobot_clock_report(&clk);
         r = mobot_import(&alb_ch_MotorCmd, ALB_MOTORCMD_ID, &cmd, &cmd.taken_at);
         code = mobot_check(&tm, ALB_MOTORCMD_ID, r, motor_ok0(&cmd.value), motor_seq(&cmd.value));
         if (code)
             return (int)code;
         r = mobot_import(&alb_ch_GlobalTime, ALB_GLOBALTIME_ID, &gt, &gt.taken_at);
+        mobot_clock_sync(&clk, r, gt.taken_at);
         code = mobot_check(&tt, ALB_GLOBALTIME_ID, r, 1, gt.value);
         if (code)
             return (int)code;

@@ -35,6 +35,7 @@ int main(void)
     static RadarMap_msg map;
     static Position_msg pos;
     static GlobalTime_msg gt;
+    static mobot_clock_t clk;
     static Status_msg st;
     static MotorCommand cmd;
     mobot_track_t tr = {0u, 0u, 0u, 0u}, tp = {0u, 0u, 0u, 0u}, tt = {0u, 0u, 0u, 0u};
@@ -44,7 +45,9 @@ int main(void)
     r = alb_navigation_attach_all(BOARD_DPRAM_BASE);
     if (r != ALB_OK)
         return (int)MOBOT_CODE(2, 0xfu, (uint32_t)-r);
+    mobot_clock_init(&clk);
     for (;;) {
+        mobot_clock_report(&clk);
         r = mobot_import(&alb_ch_RadarMap, ALB_RADARMAP_ID, &map, &map.taken_at);
         code = mobot_check(&tr, ALB_RADARMAP_ID, r, radar_ok0(&map.value), radar_seq(&map.value));
         if (code)
@@ -54,6 +57,7 @@ int main(void)
         if (code)
             return (int)code;
         r = mobot_import(&alb_ch_GlobalTime, ALB_GLOBALTIME_ID, &gt, &gt.taken_at);
+        mobot_clock_sync(&clk, r, gt.taken_at);
         code = mobot_check(&tt, ALB_GLOBALTIME_ID, r, 1, gt.value);
         if (code)
             return (int)code;

@@ -13,6 +13,7 @@ int main(void)
 {
     static RobotPosition p;
     static GlobalTime_msg gt;
+    static mobot_clock_t clk;
     mobot_track_t tt = {0u, 0u, 0u, 0u};
     uint32_t seq = 0u, code, reported = 0u, k;
     int r;
@@ -20,11 +21,14 @@ int main(void)
     r = alb_odometry_attach_all(BOARD_DPRAM_BASE);
     if (r != ALB_OK)
         return (int)MOBOT_CODE(2, 0xfu, (uint32_t)-r);
+    mobot_clock_init(&clk);
     for (;;) {
+        mobot_clock_report(&clk);
         position_make(&p, ++seq);
         if (mobot_export(&alb_ch_Position, ALB_POSITION_ID, &p, seq) != ALB_OK)
             return (int)MOBOT_CODE(7, ALB_POSITION_ID, seq);
         r = mobot_import(&alb_ch_GlobalTime, ALB_GLOBALTIME_ID, &gt, &gt.taken_at);
+        mobot_clock_sync(&clk, r, gt.taken_at);
         code = mobot_check(&tt, ALB_GLOBALTIME_ID, r, 1, gt.value);
         if (code)
             return (int)code;

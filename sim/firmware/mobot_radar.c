@@ -16,6 +16,7 @@ int main(void)
     static RadarShot shot;
     static Position_msg pos;
     static GlobalTime_msg gt;
+    static mobot_clock_t clk;
     mobot_track_t tp = {0u, 0u, 0u, 0u}, tt = {0u, 0u, 0u, 0u};
     uint32_t seq = 0u, code, reported = 0u;
     int r;
@@ -23,7 +24,9 @@ int main(void)
     r = alb_radar_attach_all(BOARD_DPRAM_BASE);
     if (r != ALB_OK)
         return (int)MOBOT_CODE(2, 0xfu, (uint32_t)-r);
+    mobot_clock_init(&clk);
     for (;;) {
+        mobot_clock_report(&clk);
         radar_make(&shot, ++seq);
         if (mobot_export(&alb_ch_RadarMap, ALB_RADARMAP_ID, &shot, seq) != ALB_OK)
             return (int)MOBOT_CODE(7, ALB_RADARMAP_ID, seq);
@@ -32,6 +35,7 @@ int main(void)
         if (code)
             return (int)code;
         r = mobot_import(&alb_ch_GlobalTime, ALB_GLOBALTIME_ID, &gt, &gt.taken_at);
+        mobot_clock_sync(&clk, r, gt.taken_at);
         code = mobot_check(&tt, ALB_GLOBALTIME_ID, r, 1, gt.value);
         if (code)
             return (int)code;

@@ -12,6 +12,11 @@
  *   0x2000_0020   word    EVENT: a store hands the value and ARG to the
  *                         harness in that clock (soc/board_memmap.v)
  *   0x2000_0024   word    ARG: the argument of the next EVENT
+ *   0x2000_0040   word    TIMER (read-only): the board's local timer, ticks
+ *                         since reset, one per board clock (a load never
+ *                         stalls and changes nothing; stores are ignored).
+ *                         The driver reads it as alb_local_time() with
+ *                         -DALB_LOCAL_TIMER_ADDR=0x20000040u (c-driver/alb_clock.h)
  */
 #ifndef BOARD_H
 #define BOARD_H
@@ -23,6 +28,7 @@
 #define BOARD_STAT0        0x20000010
 #define BOARD_EVENT        0x20000020
 #define BOARD_EVENT_ARG    0x20000024
+#define BOARD_TIMER        0x20000040
 
 #ifndef __ASSEMBLER__
 #include <stdint.h>
@@ -43,6 +49,12 @@ static inline void board_event(uint32_t ev, uint32_t arg)
 {
     *(volatile uint32_t *)(uintptr_t)BOARD_EVENT_ARG = arg;
     *(volatile uint32_t *)(uintptr_t)BOARD_EVENT = ev;
+}
+
+/* The local timer (TIMER): one load. */
+static inline uint32_t board_timer(void)
+{
+    return *(volatile const uint32_t *)(uintptr_t)BOARD_TIMER;
 }
 
 /* Cycle and retired-instruction counters.  By default the CSRs cycle and

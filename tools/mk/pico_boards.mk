@@ -3,7 +3,7 @@
 # with its own albatross_dpram, joined by albatross_bus and
 # albatross_controller behind a bus fault injector (sim/pico_boards.v: the
 # shared soc/albatross_system.v, the injector and the images' plusargs);
-# harness sim/mobot_sim.cpp with sim/mobot_sim_options.cpp, sim/mobot_sim_ages.cpp
+# harness sim/mobot_sim.cpp with sim/mobot_sim_options.cpp, sim/mobot_sim_ages.cpp, sim/mobot_sim_clock.cpp
 # and sim/mobot_sim.h (make sim runs the same model, tools/mk/sim.mk).
 # Each board's firmware is sim/firmware/mobot_<board>.c linked with the
 # compiler-generated <board>.c and the real driver; the DPRAMs start from the
@@ -29,17 +29,35 @@ PB_RTL      := sim/pico_boards.v soc/albatross_system.v soc/board_core.v soc/pic
                tb/common/bus_fault_injector.v soc/pico_wb_adapter.v rtl/albatross_dpram.v rtl/albatross_wb_cdc.v \
                rtl/albatross_bus.v $(CTRL_RTL)
 PB_VFLAGS   := -Wall --timescale 1ns/1ps $(VLIB) --top-module pico_boards tb/pico/picorv32.vlt
-PB_SRC      := sim/mobot_sim.cpp sim/mobot_sim_options.cpp sim/mobot_sim_ages.cpp tb/common/plan.cpp
+PB_SRC      := sim/mobot_sim.cpp sim/mobot_sim_options.cpp sim/mobot_sim_ages.cpp sim/mobot_sim_clock.cpp tb/common/plan.cpp
 PB_HDR      := sim/mobot_sim.h tb/common/report.h tb/common/plan.h tb/common/albatross_contract.h
 
 # $(1) = board: sim/firmware/mobot_<board>.c + the generated <board>.c of the
 # schedule build/schedule/<sched>/ + the driver -> $(PB_DIR)/<sched>/fw/.
+# Local time (issue 13 section 4): fw-clock/ also links c-driver/alb_clock.c
+# and reads TIMER (soc/board_memmap.v) as alb_local_time(), so every board
+# syncs its clock and reports its estimates (tools/mk/sim.mk, test-sim-clock*);
+# fw-clock-norate/ is the same without rate correction (-DALB_CLOCK_NO_RATE,
+# the negative test).  The clock costs each loop some hundred cycles on
+# rv32i (no multiply instruction), so the scenario tests above keep fw/.
+PB_CLOCK_FLAGS := -DALB_LOCAL_TIMER_ADDR=0x20000040u
+PB_CLOCK_DEPS  := c-driver/alb_clock.c c-driver/alb_clock.h
 define pb_fw
 $(PB_DIR)/%/fw/$(1).elf: sim/firmware/mobot_$(1).c sim/firmware/mobot_check.h $(BUILD)/schedule/%/rom.hex $(FW_DEPS)
 	@$$(DRV_RV_NEED)
 	@mkdir -p $$(@D)
 	$(DRV_RV_CC) $(FW_CFLAGS) -I$(BUILD)/schedule/$$* -Isim -o $$@ soc/firmware/crt0.S \
 	    sim/firmware/mobot_$(1).c $(BUILD)/schedule/$$*/$(1).c c-driver/albatross.c $(FW_LDFLAGS)
+$(PB_DIR)/%/fw-clock/$(1).elf: sim/firmware/mobot_$(1).c sim/firmware/mobot_check.h $(BUILD)/schedule/%/rom.hex $(FW_DEPS) $(PB_CLOCK_DEPS)
+	@$$(DRV_RV_NEED)
+	@mkdir -p $$(@D)
+	$(DRV_RV_CC) $(FW_CFLAGS) $(PB_CLOCK_FLAGS) -I$(BUILD)/schedule/$$* -Isim -o $$@ soc/firmware/crt0.S \
+	    sim/firmware/mobot_$(1).c $(BUILD)/schedule/$$*/$(1).c c-driver/albatross.c c-driver/alb_clock.c $(FW_LDFLAGS)
+$(PB_DIR)/%/fw-clock-norate/$(1).elf: sim/firmware/mobot_$(1).c sim/firmware/mobot_check.h $(BUILD)/schedule/%/rom.hex $(FW_DEPS) $(PB_CLOCK_DEPS)
+	@$$(DRV_RV_NEED)
+	@mkdir -p $$(@D)
+	$(DRV_RV_CC) $(FW_CFLAGS) $(PB_CLOCK_FLAGS) -DALB_CLOCK_NO_RATE -I$(BUILD)/schedule/$$* -Isim -o $$@ soc/firmware/crt0.S \
+	    sim/firmware/mobot_$(1).c $(BUILD)/schedule/$$*/$(1).c c-driver/albatross.c c-driver/alb_clock.c $(FW_LDFLAGS)
 endef
 $(foreach b,$(PB_BOARDS),$(eval $(call pb_fw,$(b))))
 

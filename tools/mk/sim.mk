@@ -8,6 +8,10 @@
 # build/sim/mobot.vcd.
 #   make sim [SIM_CYCLES=N] [FAULT_RATE=R] [CRASH=board@cycle] [STALL=P]
 #            [TRACE=0|1] [TRACE_FROM=N] [TRACE_CYCLES=N] [SIM_DESC=file.toml] [SEED=S]
+#            [DRIFT=BOARD=PPM/BOARD=PPM...|random:MAX]
+# The boards run the firmware with the local clock (fw-clock/, c-driver/alb_clock.c):
+# the report's local_time gives each board's estimate error against the
+# controller's time; DRIFT makes board clocks drift (mobot_sim --drift-ppm).
 # SIM_DESC must describe the boards radar, odometry, navigation and motor and
 # the channels of sim/mobot3.toml (the firmware uses them), for
 # example sim/mobot3_possync.toml.
@@ -16,7 +20,8 @@ SIM_DIR      := $(BUILD)/sim
 SIM_DESC     ?= sim/mobot3.toml
 SIM_NAME     := $(basename $(notdir $(SIM_DESC)))
 SIM_SCHED    := $(BUILD)/schedule/$(SIM_NAME)
-SIM_FWDIR    := $(PB_DIR)/$(SIM_NAME)/fw
+SIM_FWDIR    := $(PB_DIR)/$(SIM_NAME)/fw-clock
+DRIFT        ?=
 SIM_CYCLES   ?= 2000000
 FAULT_RATE   ?= 0
 CRASH        ?=
@@ -35,12 +40,12 @@ endif
 endif
 
 .PHONY: sim
-sim: $(SIM_BIN) $(foreach b,$(PB_BOARDS),$(SIM_FWDIR)/$(b).hex) $(SIM_SCHED)/tb_plan.txt ## main demonstration: the robot (SIM_CYCLES=, FAULT_RATE=, CRASH=board@cycle, TRACE=0|1, SIM_DESC=)
+sim: $(SIM_BIN) $(foreach b,$(PB_BOARDS),$(SIM_FWDIR)/$(b).hex) $(SIM_SCHED)/tb_plan.txt ## main demonstration: the robot (SIM_CYCLES=, FAULT_RATE=, CRASH=board@cycle, DRIFT=, TRACE=0|1, SIM_DESC=)
 	@test -f $(SIM_DESC) || { echo "sim: no description $(SIM_DESC)"; exit 2; }
 	@mkdir -p $(SIM_DIR) $(REPORTS)
 	$(SIM_BIN) $(call pb_args,$(SIM_SCHED),$(SIM_FWDIR),$(SIM_FWDIR)/radar.hex,$(SIM_FWDIR)/navigation.hex) \
 	    --cycles $(SIM_CYCLES) --seed $(SEED) --stall $(STALL) --fault-rate $(FAULT_RATE) \
-	    $(if $(CRASH),--crash $(CRASH)) --label sim --report $(REPORTS)/sim.json --ages $(SIM_DIR)/ages.csv \
+	    $(if $(CRASH),--crash $(CRASH)) $(if $(DRIFT),--drift-ppm $(DRIFT)) --label sim --report $(REPORTS)/sim.json --ages $(SIM_DIR)/ages.csv \
 	    $(if $(filter 1,$(TRACE)),--trace $(SIM_DIR)/mobot.vcd --trace-from $(TRACE_FROM) --trace-cycles $(TRACE_CYCLES))
 	@$(PYTHON) sim/plot_ages.py $(SIM_DIR)/ages.csv $(REPORTS)/sim.json $(SIM_DIR)/ages.svg
 	@echo "sim: report $(REPORTS)/sim.json, picture $(SIM_DIR)/ages.svg$(if $(filter 1,$(TRACE)), wave $(SIM_DIR)/mobot.vcd)"
@@ -57,3 +62,63 @@ bench-sim-speed: $(PB_BIN) $(SIM_ICARUS) $(PB_FW) $(PB_SCHED)/tb_plan.txt
 	$(PYTHON) sim/bench_speed.py --report $(REPORTS)/sim_speed.json \
 	    --verilator-cycles 2000000 --verilator "$(PB_BIN) $(PB_FW_ARGS) --cycles 2000000 --progress 0 --label bench" \
 	    --icarus-cycles 40000 --icarus "vvp -n $(SIM_ICARUS) $(filter +%,$(PB_FW_ARGS)) +cycles=40000"
+
+# Local time (issue 13 section 4, docs/robot.md "Local time between updates"): the robot with
+# every board syncing c-driver/alb_clock.c on GlobalTime and reporting its
+# estimates ($(PB_DIR)/mobot3/fw-clock/, tools/mk/pico_boards.mk); the check
+# "clock" of sim/mobot_sim.cpp bounds each board's error against the
+# controller's time.  Per-board figures: build/reports/sim_clock*.json
+# (local_time) and the console.
+#   test-sim-clock           no drift
+#   test-sim-clock-drift     the boards' clocks +5000, -3000, +1000, -5000 ppm
+#   test-sim-clock-negative  the same drift, estimator without rate correction
+#                            (-DALB_CLOCK_NO_RATE): must be caught by clock
+SIM_CLOCK_FW     := $(PB_DIR)/mobot3/fw-clock
+SIM_CLOCK_DRIFT  := radar=5000/odometry=-3000/navigation=1000/motor=-5000
+SIM_CLOCK_CYCLES ?= 1500000
+sim_clock_args = $(call pb_args,$(PB_SCHED),$(1),$(1)/radar.hex,$(1)/navigation.hex) --cycles $(SIM_CLOCK_CYCLES) \
+                 --seed $(SEED) --require-done
+SIM_CLOCK_TESTS := \
+  sim-clock:fw-clock: \
+  sim-clock-drift:fw-clock:--drift-ppm,$(SIM_CLOCK_DRIFT) \
+  sim-clock-negative:fw-clock-norate:--drift-ppm,$(SIM_CLOCK_DRIFT),--expect-caught-by,clock
+# No --stall here: under stall bursts navigation's own RadarMap staleness
+# arithmetic fires on a healthy bus (its age includes navigation's work since
+# the map's Import; seen without the clock too, more often with the clock's
+# cost in every loop: some hundred cycles per alb_clock_now, about a thousand
+# per alb_clock_sync on PicoRV32 without a multiplier).  docs/robot.md.
+define sim_clock_test
+TESTS += $(call neg_field,$(1),1)
+.PHONY: test-$(call neg_field,$(1),1)
+test-$(call neg_field,$(1),1): $(PB_BIN) $(foreach b,$(PB_BOARDS),$(PB_DIR)/mobot3/$(call neg_field,$(1),2)/$(b).hex) $(PB_SCHED)/tb_plan.txt
+	@tools/run_test.sh $(call neg_field,$(1),1) $(PB_BIN) $(call sim_clock_args,$(PB_DIR)/mobot3/$(call neg_field,$(1),2)) \
+	    --label $(call neg_field,$(1),1) $(subst $(comma), ,$(call neg_field,$(1),3)) \
+	    --report $(REPORTS)/$(subst -,_,$(call neg_field,$(1),1)).json
+endef
+$(foreach t,$(SIM_CLOCK_TESTS),$(eval $(call sim_clock_test,$(t))))
+
+# Host unit test of c-driver/alb_clock.c (tb/clock/test_clock.c) and its
+# negative: the estimator without rate correction must fail it.  clock-unit
+# also needs the warning-free builds of alb_clock.c with the memory-mapped
+# port: rv32i at -Os and -O2, and the host.
+CLOCK_UNIT := $(BUILD)/clock
+CLOCK_OBJS := $(CLOCK_UNIT)/alb_clock-rv32i-Os.o $(CLOCK_UNIT)/alb_clock-rv32i-O2.o $(CLOCK_UNIT)/alb_clock-host.o
+$(CLOCK_UNIT)/alb_clock-rv32i-%.o: c-driver/alb_clock.c c-driver/alb_clock.h $(DRV_HDRS)
+	@$(DRV_RV_NEED)
+	@mkdir -p $(@D)
+	$(DRV_RV_CC) $(DRV_RV_FLAGS) -DALB_LOCAL_TIMER_ADDR=0x20000040u -$* -c -o $@ $<
+$(CLOCK_UNIT)/alb_clock-host.o: c-driver/alb_clock.c c-driver/alb_clock.h $(DRV_HDRS)
+	@mkdir -p $(@D)
+	$(DRV_HOST_CC) $(DRV_CFLAGS) -O2 -DALB_LOCAL_TIMER_ADDR=0x20000040u -Ic-driver -Ic-driver/port/mmio -c -o $@ $<
+$(CLOCK_UNIT)/test_clock-%: tb/clock/test_clock.c tb/clock/port/alb_port_impl.h c-driver/alb_clock.c c-driver/alb_clock.h tools/mk/sim.mk
+	@mkdir -p $(@D)
+	$(DRV_HOST_CC) $(DRV_CFLAGS) -O2 $(if $(filter norate,$*),-DALB_CLOCK_NO_RATE) -Itb/clock/port -Ic-driver -o $@ \
+	    tb/clock/test_clock.c c-driver/alb_clock.c
+TESTS += clock-unit clock-unit-negative
+.PHONY: test-clock-unit test-clock-unit-negative
+test-clock-unit: $(CLOCK_UNIT)/test_clock-rate $(CLOCK_OBJS)
+	@tools/run_test.sh clock-unit $<
+test-clock-unit-negative: $(CLOCK_UNIT)/test_clock-norate
+	@tools/run_test.sh clock-unit-negative bash -c '$< > $<.log; rc=$$?; tail -n 1 $<.log; \
+	    if [ $$rc -eq 1 ] && tail -n 1 $<.log | grep -q "failed$$" && ! tail -n 1 $<.log | grep -q " 0 failed$$"; then \
+	    echo "clock-unit-negative: caught (no rate correction fails the unit test)"; else echo "NOT CAUGHT"; exit 1; fi'

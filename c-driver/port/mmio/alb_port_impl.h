@@ -40,4 +40,14 @@ static inline void alb_fence(void)
 #endif
 }
 
+/* The board's local timer (alb_clock.c): one load of the 32-bit read-only
+ * register at ALB_LOCAL_TIMER_ADDR, which the target's build defines (the
+ * soft-core boards: soc/firmware/board.h BOARD_TIMER, 0x2000_0040). */
+#ifdef ALB_LOCAL_TIMER_ADDR
+static inline uint32_t alb_local_time(void)
+{
+    return *(volatile const uint32_t *)(uintptr_t)(ALB_LOCAL_TIMER_ADDR);
+}
+#endif
+
 #endif

@@ -45,4 +45,18 @@ static inline void alb_fence(void)
 {
 }
 
+/* The current simulated CPU's local timer (alb_clock.c), supplied by a
+ * testbench that links alb_clock.c. */
+#ifdef __cplusplus
+extern "C" {
+#endif
+uint32_t tb_local_time(void);
+#ifdef __cplusplus
+}
+#endif
+static inline uint32_t alb_local_time(void)
+{
+    return tb_local_time();
+}
+
 #endif
