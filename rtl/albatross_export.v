@@ -254,6 +254,15 @@ module albatross_export #(
         if (!known_d) copy_d = 2'd0;
     end
 
+    // d_q's 3-bit fields as a mask (a part-select at 3*d_q would be a barrel shifter).
+    wire [3*DESTS-1:0] d_mask3;
+    genvar g;
+    generate
+        for (g = 0; g < DESTS; g = g + 1) begin : g_mask3
+            assign d_mask3[3*g +: 3] = {3{d_bit[g]}};
+        end
+    endgenerate
+
     wire [7:0] act_byte  = wb_dat_i[ACT_BIT +: 8];
     wire [7:0] rl_byte   = wb_dat_i[RL_BIT +: 8];
     // A control byte names a buffer: 1..3, four-slot 1..4.
@@ -303,7 +312,8 @@ module albatross_export #(
     /* verilator lint_on UNUSEDSIGNAL */
     wire [ADDR_WIDTH-1:0] w_ext   = w_wide[ADDR_WIDTH-1:0];
     wire [ADDR_WIDTH-1:0] stride  = w_ext + TAKEN_WORDS[ADDR_WIDTH-1:0];
-    wire [ADDR_WIDTH-1:0] buf_off = ({ADDR_WIDTH{buf_m1[0]}} & stride) + ({ADDR_WIDTH{buf_m1[1]}} & (stride << 1));
+    wire [ADDR_WIDTH-1:0] buf_off = buf_d == 3'd1 ? {ADDR_WIDTH{1'b0}} : buf_d == 3'd2 ? stride :
+                                    buf_d == 3'd3 ? (stride << 1) : (stride << 1) + stride;
     wire                  ctrl    = state_q == S_LOAD_ACTUAL || state_q == S_LOAD_RL || state_q == S_STORE_ACTUAL ||
                                     state_q == S_STORE_SLOT;
     wire [ADDR_WIDTH-1:0] word_k1 = state_q == S_STORE_TAKEN ? stride : k_wide[ADDR_WIDTH-1:0];  // k + 1
@@ -354,7 +364,7 @@ module albatross_export #(
             fail1_q <= fail1_q | d_bit;
             if (state_q == S_STORE_ACTUAL) begin
                 act_known_q <= act_known_q & ~d_bit;
-                tried_q[3*d_q +: 3] <= buf_d;
+                tried_q <= (tried_q & ~d_mask3) | ({DESTS{buf_d}} & d_mask3);
             end
         end else if (retry_q && !drop_q) begin
             // The same access again if one may begin, else the cut-off.
@@ -389,7 +399,7 @@ module albatross_export #(
                     else begin_access(known_in || four_i ? S_LOAD_RL : S_LOAD_ACTUAL, first_in);
                 end
                 S_LOAD_ACTUAL: if (adv) begin
-                    if (ack) tried_q[3*d_q +: 3] <= 3'd0;            // read back
+                    if (ack) tried_q <= tried_q & ~d_mask3;          // read back
                     if (ack && act_valid) begin
                         act_q[2*d_q +: 2]  <= act_byte[1:0];
                         act_known_q <= act_known_q | d_bit;
@@ -399,9 +409,9 @@ module albatross_export #(
                     if (landed) published_q <= published_q | d_bit;  // the failed store had landed
                 end
                 S_LOAD_RL: if (adv) begin
-                    buf_q[3*d_q +: 3] <= pick;
+                    buf_q <= (buf_q & ~d_mask3) | ({DESTS{pick}} & d_mask3);
                     if (ack && (!rl_valid || (four_q && !act_valid))) corrupt_q <= corrupt_q | d_bit;
-                    if (ack && four_q) tried_q[3*d_q +: 3] <= 3'd0;  // read back
+                    if (ack && four_q) tried_q <= tried_q & ~d_mask3; // read back
                     if (landed) published_q <= published_q | d_bit;  // the failed store had landed
                 end
                 S_STORE_ACTUAL: if (adv) begin
@@ -409,7 +419,7 @@ module albatross_export #(
                         act_q[2*d_q +: 2]   <= buf_d[1:0];  // (four-slot: not used)
                         act_known_q         <= act_known_q | d_bit;
                         published_q         <= published_q | d_bit;
-                        tried_q[3*d_q +: 3] <= 3'd0;
+                        tried_q             <= tried_q & ~d_mask3;
                     end
                 end
                 default: ;
