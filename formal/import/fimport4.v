@@ -41,6 +41,12 @@
 //   fs_count          an Import with no err and not cut off makes exactly 1
 //                     (Old) or 3 (New) control accesses, and at most W word
 //                     loads (corrupt: 1, no load); covers show all W;
+//   fs_wait_free      whatever the producer does (err and cut-off included),
+//                     at most 3 control accesses of an Import are acked;
+//   fs_count_words    ... and exactly W word loads when the last word was taken;
+//   fs_no_idle        from its first access to selected_o (or its end) the
+//                     Import keeps a request on the bus but in the clock after
+//                     an err: its control accesses are back to back;
 //   fs_copy           after an Import that was not cut off with a word read,
 //                     rl_o is the buffer read.
 // Covers: Old, New, a New whose buffer differs from the Actual it announced
@@ -49,7 +55,8 @@
 
 module fimport4 #(
     parameter ADDR_WIDTH  = 4,  // word-address bits of the port
-    parameter WORDS_WIDTH = 2   // bits of words_i (W = 1..2)
+    parameter WORDS_WIDTH = 2,  // bits of words_i (W = 1..2)
+    parameter PULL        = 1   // the engine's PULL (1 the controller's, 0 the endpoint's)
 ) (
     input  wire                   clk_i,
     input  wire                   rst_i,
@@ -82,7 +89,7 @@ module fimport4 #(
     wire [31:0]   wdat;
     reg  [31:0]   rdat;
 
-    albatross_import #(.ADDR_WIDTH(AW), .WORDS_WIDTH(WW), .COUNT_WIDTH(2), .PULL(1)) dut (
+    albatross_import #(.ADDR_WIDTH(AW), .WORDS_WIDTH(WW), .COUNT_WIDTH(2), .PULL(PULL)) dut (
         .clk_i(clk_i), .rst_i(rst_i),
         .start_i(start_i), .four_i(1'b1), .base_i(f_base), .words_i(f_w), .rl_known_i(rl_known), .rl_i(rl),
         .may_access_i(may_access_i), .idle_o(idle),
@@ -152,6 +159,9 @@ module fimport4 #(
     reg [7:0]  h_old;             // buffer b holds a value older than Actual at start
     reg [7:0]  h_dirty = 8'd0;    // buffer b was begun by the producer since the engine chose it last
     reg        h_read;            // a word was loaded in this Import
+    reg        h_last;            // the last word (W - 1) was taken
+    reg        h_sel;             // selected_o was seen (phase 1 over)
+    reg        h_err1 = 1'b0;     // an access failed in the previous clock
     wire       a_pair  = h_a[2] | (h_a[1] & h_a[0]);
     wire [2:0] slot_b  = {1'b0, a_pair, a_pair ? m_s1 : m_s0} + 3'd1;
     wire       start   = start_i && idle;
@@ -171,11 +181,16 @@ module fimport4 #(
             h_nctrl <= 3'd0;
             h_nword <= 3'd0;
             h_read  <= 1'b0;
+            h_last  <= 1'b0;
+            h_sel   <= 1'b0;
             for (bi = 1; bi <= 4; bi = bi + 1)
                 h_old[bi] <= !(bi[2:0] == m_act || (p_ph == 2'd2 && bi[2:0] == p_wb) ||
                                (p_go_i && p_ph == 2'd1 && bi[2:0] == p_wb));
         end
         if (h_run && req && err_i) h_err <= 1'b1;
+        h_err1 <= req && err_i;
+        if (h_run && selected) h_sel <= 1'b1;
+        if (h_run && word_valid && word_ready_i && word_index == f_w - 1'b1) h_last <= 1'b1;
         if (h_run && req && ack_i && is_ctrl) h_nctrl <= h_nctrl + 3'd1;
         if (h_run && word_ld && ack_i) begin h_nword <= h_nword + 3'd1; h_read <= 1'b1; end
         if (h_run && ctrl_ld && ack_i && !h_a_ok) begin
@@ -210,6 +225,10 @@ module fimport4 #(
             fs_count: assert(h_nctrl == (corrupt ? 3'd1 : new_v ? 3'd3 : 3'd1) &&
                              (corrupt ? h_nword == 3'd0 : h_nword <= {1'b0, f_w}));
         if (done && !cut && h_read) fs_copy: assert(rl_known && rl == h_b);
+        if (h_run) fs_wait_free: assert(h_nctrl <= 3'd3);
+        if (done && !h_err && !cut && h_last) fs_count_words: assert(h_nword == {1'b0, f_w});
+        // phase 1 has no idle bus clock: 1 or 3 back-to-back control accesses
+        if (h_run && !h_sel && !done && !h_err1) fs_no_idle: assert(req);
     end
     reg h_streamed;   // every word was loaded in this Import (count check)
     always @* h_streamed = h_nword == {1'b0, f_w};
