@@ -17,9 +17,9 @@
 //     Actual stores leaves Actual one value behind the buffer the last Import
 //     read, which would then be New twice).  Else store ReadLocked := A,
 //     load the control word again and take b = 1 + 2p + Slot_p with p =
-//     pair(A) = (A - 1) >> 1 and Slot_p bit 0 of byte 2 + p (the index never
-//     comes from Actual: the producer may be writing buffer A's pair's other
-//     slot); L := b, New, phase 2 reads buffer b.  An Actual outside 1..4
+//     pair(A) = (A - 1) >> 1 and Slot_p bit 0 of byte 2 + p (never b = A: a
+//     producer that loaded ReadLocked before the store may be rewriting A
+//     itself); L := b, New, phase 2 reads buffer b.  An Actual outside 1..4
 //     ends the Import with corrupt_o.  Undisturbed: exactly 1 (Old) or 3
 //     (New) control accesses plus W loads, whatever the producer does; the
 //     Old/New decision is made at the first load.  A cut-off after the
@@ -131,8 +131,9 @@ module albatross_import #(
     localparam                  SLOT0_BIT   = 8 * (OFF_SLOT0 % ALB_CH_WORD_BYTES);
     localparam                  SLOT1_BIT   = 8 * (OFF_SLOT1 % ALB_CH_WORD_BYTES);
 
-    // The engine relies on: both control bytes in one word, the buffers from
-    // the next word on, three buffers numbered 1..3 (2 bits).
+    // The engine relies on: both control bytes (four-slot: all four) in one
+    // word, the buffers from the next word on, three buffers numbered 1..3
+    // (four-slot: 1..4, 3 bits).
     generate
         if (ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES != ALB_CH_OFF_READLOCKED / ALB_CH_WORD_BYTES ||
             BUF_WORD_I != CTRL_WORD_I + 1 ||
