@@ -292,4 +292,29 @@ void scenario_four() {
     CHECK_HEX(G_DATA, "four: STATUS channel 0 {abandoned, corrupt}", 0u, got[2]);
     CHECK_HEX(G_DATA, "four: STATUS channel 1 {transfers, retries}", 6u << 16 | 0u, got[3]);
     CHECK_HEX(G_DATA, "four: STATUS channel 1 {abandoned, corrupt}", 0u, got[4]);
+
+    // Entry checks of the flag: a fourth buffer past the RAM (base + 4 * (W + 1)
+    // = 1024 for a destination at 0x3F0; three buffers would fit) and SYNC with
+    // FOUR_SLOT make the entry invalid: skipped, rom_errors + 1 a cycle.
+    struct Case { const char *what; unsigned hflags, flags, dbase; size_t errs; };
+    const Case cases[] = {
+        {"three-buffer COPY to 0x3F0 (3 buffers fit)", 0, 0, 0x3F0, 0},
+        {"four-slot COPY to 0x3F0 (the fourth buffer does not fit)", 0, FS, 0x3F0, 1},
+        {"sync mode, entry 0 SYNC with FOUR_SLOT", C::HFLAG_SYNC_MODE, C::EFLAG_SYNC | FS, DST_BASE, 1},
+    };
+    for (const Case &k : cases) {
+        std::vector<Entry> e2 = es;
+        e2[0].flags = k.flags;
+        e2[0].dst[0].base = k.dbase;
+        write_rom(build_rom(H1, k.hflags, e2));
+        Sim s2;
+        s2.run_until(T0 + TAIL);
+        char m[128];
+        std::snprintf(m, sizeof m, "four: %s: rom_errors_o after cycle 0", k.what);
+        CHECK_EQ(G_ROM, m, k.errs, s2.top->rom_errors_o);
+        std::snprintf(m, sizeof m, "four: %s: accesses in the COPY slot", k.what);
+        check(G_ROM, (s2.attempts(T0 + S_COPY, T0 + S_COPY + L_COPY).size() == 0) == (k.errs != 0),
+              "%s: expected %s, got %zu", m, k.errs ? "none" : "some",
+              s2.attempts(T0 + S_COPY, T0 + S_COPY + L_COPY).size());
+    }
 }
