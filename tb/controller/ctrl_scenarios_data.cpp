@@ -293,6 +293,46 @@ void scenario_four() {
     CHECK_HEX(G_DATA, "four: STATUS channel 1 {transfers, retries}", 6u << 16 | 0u, got[3]);
     CHECK_HEX(G_DATA, "four: STATUS channel 1 {abandoned, corrupt}", 0u, got[4]);
 
+    // A destination Actual store that lands but times out, then the link is
+    // down to the slot end: the next cycle's control-word load reads it back
+    // (the tried buffer, 3 bits in the state RAM) and publishes nothing.
+    const uint64_t C3 = T0 + 4 * H1;                            // (cycle 3's COPY ran during the STATUS read)
+    s.run_until(C3 - H1 + TAIL);
+    sb = prod.publish(s, value(3));
+    size_t seen = 0;
+    s.fault = [&](const Attempt &a) {
+        if (a.start < C3 || a.start >= C3 + L_COPY) return 0;
+        if (++seen == A_NEW) {
+            s.dead_next = 1u << 1;   // link down from the attempt's second clock on
+            return 3;
+        }
+        return 0;
+    };
+    s.run_until(C3 + L_COPY);
+    s.fault = nullptr;
+    s.top->fi_dead_i = 0;
+    s.run_until(C3 + TAIL);
+    uint32_t ctl3 = s.rd(1, DST_BASE);
+    isnew = cons.import(s, got);
+    check(G_FAULT, isnew && got[0] == value(3)[0],
+          "four: landed Actual store: the consumer sees the value once: expected New 0x%08x, got %s 0x%08x",
+          value(3)[0], isnew ? "New" : "Old", got[0]);
+    const uint64_t C4 = C3 + H1;
+    s.run_until(C4 + TAIL);
+    std::vector<Attempt> v4 = s.attempts(C4 + S_COPY, C4 + S_COPY + L_COPY);
+    CHECK_EQ(G_FAULT, "four: next cycle: 2 accesses (source control load: Old; destination control load: landed)",
+             2, v4.size());
+    if (v4.size() >= 2) CHECK_HEX(G_FAULT, "four: next cycle: access 2 loads the destination control word",
+                                  (uint64_t)ba(1, DST_BASE), v4[1].adr);
+    CHECK_HEX(G_FAULT, "four: next cycle: the destination's Actual and slot bytes are unchanged", ctl3 & 0xFFFF00FFu,
+              s.rd(1, DST_BASE) & 0xFFFF00FFu);
+    isnew = cons.import(s, got);
+    CHECK_EQ(G_FAULT, "four: next cycle: the consumer's Import returns Old (not published twice)", 0, isnew);
+    isnew = stat.import(s, got);
+    CHECK_EQ(G_FAULT, "four: STATUS channel 0 transfers (the landed store counted once, in the next cycle)", 3,
+             got[1] >> 16);
+    CHECK_EQ(G_FAULT, "four: STATUS channel 0 abandoned (the slot of the landed store)", 1, got[2] >> 16);
+
     // Entry checks of the flag: a fourth buffer past the RAM (base + 4 * (W + 1)
     // = 1024 for a destination at 0x3F0; three buffers would fit) and SYNC with
     // FOUR_SLOT make the entry invalid: skipped, rom_errors + 1 a cycle.

@@ -29,7 +29,9 @@
 //            (Import 3 + W / 1 access, Export W + 4 per destination), the
 //            control bytes after each Export, New / Old, the consumer's fixed
 //            access count, TIME on two four-slot destinations, STATUS counts;
-//            a fourth buffer past the RAM and SYNC with FOUR_SLOT are invalid
+//            a landed Actual store that timed out is read back (the 3-bit
+//            tried buffer) and not published twice; a fourth buffer past the
+//            RAM and SYNC with FOUR_SLOT are invalid
 // Each check prints what it expected and what it got.  Exit status 0 if all
 // pass, else 64 + a bit mask of the failed groups (1 timing, 2 data, 4 rom,
 // 8 faults, 16 dead).  --inject=timing makes the timing checker expect one
