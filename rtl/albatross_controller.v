@@ -17,10 +17,14 @@
 // Rules:
 //   * Per-channel state (one RAM word per channel id, read while the entry is
 //     fetched, written back when its slot ends; cleared after reset, never
-//     reset): the source ReadLocked copy (0 unknown), the destinations that
-//     still need the current value, each destination's Actual copy (0
-//     unknown) and the buffer of its failed Actual store (0 none), and the
-//     current value's taken_at.
+//     reset): the source ReadLocked copy (0 unknown; four-slot: L, the buffer
+//     read last), the destinations that still need the current value, each
+//     destination's Actual copy (0 unknown; four-slot: not used) and the
+//     buffer of its failed Actual store (0 none), and the current value's
+//     taken_at.
+//   * Four-slot (E0 flag FOUR_SLOT, any kind but SYNC): both engines run the
+//     four-slot side for the entry (the source's Import, every destination's
+//     Export); the glue is the same.
 //   * COPY: the Import runs; when it has chosen (the ack clock of its last
 //     Actual load) the destinations that need the value are those in need,
 //     or all of them if the value is New (taken_at := time_o of that clock).
@@ -71,9 +75,9 @@ module albatross_controller #(
 
     localparam AW      = ADDR_WIDTH;
     localparam CH_BITS = (N_CHAN > 1) ? $clog2(N_CHAN) : 1;
-    localparam ST_W    = 8 + 8 + 4 + 2 + 32;            // {tried, act, need, rl, taken}
+    localparam ST_W    = 12 + 8 + 4 + 3 + 32;           // {tried, act, need, rl, taken}
     // The state RAM has 32 words from N_CHAN = 4 up (Yosys maps a RAM of only
-    // a few words to flip-flops; 32 x 54 bits is block RAM); fewer channels
+    // a few words to flip-flops; 32 x 59 bits is block RAM); fewer channels
     // (the formal harness) keep N_CHAN words.
     localparam ST_DEPTH = (N_CHAN >= 4) ? 32 : N_CHAN;
     localparam ST_AW    = (ST_DEPTH > 1) ? $clog2(ST_DEPTH) : 1;
@@ -92,7 +96,7 @@ module albatross_controller #(
     endfunction
 
     // ------------------------------------------------------------ sequencer
-    wire          go, may_access, sync_entry, poll_cyc, cycle_start;
+    wire          go, may_access, sync_entry, poll_cyc, cycle_start, four;
     wire [1:0]    kind;
     wire [4:0]    chan5;
     wire [2:0]    nd;
@@ -114,7 +118,7 @@ module albatross_controller #(
         .clk_i(clk_i), .rst_i(rst_i), .enable_i(ready_q && cnt_ready),
         .go_o(go), .kind_o(kind), .chan_o(chan5), .nd_o(nd), .words_o(words),
         .src_board_o(src_board), .src_base_o(src_base), .dst_board_o(dst_board), .dst_base_o(dst_base),
-        .slot_time_o(slot_time), .sync_entry_o(sync_entry), .may_access_o(may_access), .slot_done_i(slot_end),
+        .slot_time_o(slot_time), .sync_entry_o(sync_entry), .four_o(four), .may_access_o(may_access), .slot_done_i(slot_end),
         .poll_cyc_o(poll_cyc), .poll_board_o(poll_board), .poll_adr_o(poll_adr), .poll_dat_i(bus_rdat),
         .poll_ack_i(r_ack[2]), .poll_err_i(r_err[2]), .sync_rl_i(sync_rl_q),
         .time_o(time_o), .cycle_o(cycle_start), .error_o(error_o), .rom_errors_o(rom_errors_o), .cycles_o(cycles));
@@ -146,16 +150,16 @@ module albatross_controller #(
     always @(posedge clk_i) begin
         if (st_wr) begin
             if (wr_tkn) st_mem[st_wa][31:0]  <= st_d[31:0];
-            if (wr_imp) st_mem[st_wa][33:32] <= st_d[33:32];
-            if (wr_exp) st_mem[st_wa][53:34] <= st_d[53:34];
+            if (wr_imp) st_mem[st_wa][34:32] <= st_d[34:32];
+            if (wr_exp) st_mem[st_wa][58:35] <= st_d[58:35];
         end else begin
             st_q <= st_mem[st_ix];
         end
     end
-    wire [7:0]  st_tried = st_q[53:46];
-    wire [7:0]  st_act   = st_q[45:38];
-    wire [3:0]  st_need  = st_q[37:34];
-    wire [1:0]  st_rl    = st_q[33:32];
+    wire [11:0] st_tried = st_q[58:47];
+    wire [7:0]  st_act   = st_q[46:39];
+    wire [3:0]  st_need  = st_q[38:35];
+    wire [2:0]  st_rl    = st_q[34:32];
     wire [31:0] st_taken = st_q[31:0];
 
     // ------------------------------------------------------------ engines
@@ -166,13 +170,14 @@ module albatross_controller #(
     reg [3:0]   need_q;            // destinations the Export serves
     reg [31:0]  taken_q;           // taken_at of the slot's value
     wire        imp_idle, imp_sel, imp_done, imp_new, imp_corrupt, imp_cut, imp_rl_known, imp_fails;
-    wire [1:0]  imp_rl;
+    wire [2:0]  imp_rl;
     wire [31:0] imp_word;
     wire        imp_word_valid;
     wire [11:0] imp_index;
     wire        exp_idle, exp_done, exp_cut, exp_fails, exp_ready;
     wire [3:0]  exp_published, exp_corrupt, exp_known;
-    wire [7:0]  exp_act, exp_tried;
+    wire [7:0]  exp_act;
+    wire [11:0] exp_tried;
     wire [1:0]  exp_dest;
     wire [11:0] exp_index;
     wire [2:0]  r_cyc, r_we;
@@ -188,7 +193,7 @@ module albatross_controller #(
     wire [3:0]  need_now   = (imp_new ? 4'hF : st_need) & active;
     wire        exp_start  = (go && !k_copy) || (choose && need_now != 4'd0);
     wire [3:0]  exp_need   = go ? active : need_now;
-    wire [7:0]  exp_tried_in = (go || imp_new) ? 8'd0 : st_tried;
+    wire [11:0] exp_tried_in = (go || imp_new) ? 12'd0 : st_tried;
     wire [31:0] exp_taken  = go ? slot_time : imp_new ? time_o : st_taken;
     wire [7:0]  act_known_in;
     genvar g;
@@ -205,7 +210,8 @@ module albatross_controller #(
 
     albatross_import #(.ADDR_WIDTH(AW), .WORDS_WIDTH(12), .COUNT_WIDTH(1), .PULL(1)) u_import (
         .clk_i(clk_i), .rst_i(rst_i),
-        .start_i(go && k_copy), .base_i(src_base), .words_i(words), .rl_known_i(st_rl != 2'd0), .rl_i(st_rl),
+        .start_i(go && k_copy), .four_i(four), .base_i(src_base), .words_i(words), .rl_known_i(st_rl != 3'd0),
+        .rl_i(st_rl),
         .may_access_i(may_access), .idle_o(imp_idle),
         .selected_o(imp_sel), .stream_i(choose && need_now != 4'd0),
         .skip_i((choose && need_now == 4'd0) || (exp_run_q && exp_done)),   // nothing needed; the Export gave up
@@ -217,7 +223,7 @@ module albatross_controller #(
 
     albatross_export #(.ADDR_WIDTH(AW), .WORDS_WIDTH(12), .COUNT_WIDTH(1), .TAKEN_AT(1), .DESTS(4), .DROP(1)) u_export (
         .clk_i(clk_i), .rst_i(rst_i),
-        .start_i(exp_start), .base_i(dst_base), .need_i(exp_need), .words_i(words), .taken_at_i(exp_taken),
+        .start_i(exp_start), .four_i(four), .base_i(dst_base), .need_i(exp_need), .words_i(words), .taken_at_i(exp_taken),
         .act_known_i(known_in), .act_i(st_act), .tried_i(exp_tried_in),
         .may_access_i(may_access), .idle_o(exp_idle),
         .word_i(word), .word_valid_i(word_ok), .word_ready_o(exp_ready), .word_index_o(exp_index),
@@ -257,10 +263,10 @@ module albatross_controller #(
     always @* begin
         slot_end    = (exp_run_q && exp_done) || (imp_run_q && !exp_run_q && imp_done);
         st_d[31:0]  = taken_q;
-        st_d[33:32] = imp_rl_known ? imp_rl : 2'd0;
-        st_d[37:34] = need_q & ~exp_published;
-        st_d[45:38] = act_after;
-        st_d[53:46] = exp_tried;
+        st_d[34:32] = imp_rl_known ? imp_rl : 3'd0;
+        st_d[38:35] = need_q & ~exp_published;
+        st_d[46:39] = act_after;
+        st_d[58:47] = exp_tried;
     end
 
     always @(posedge clk_i) begin
@@ -297,7 +303,7 @@ module albatross_controller #(
             if (slot_end) begin
                 imp_run_q <= 1'b0;
                 exp_run_q <= 1'b0;
-                if (sync_entry) sync_rl_q <= st_d[33:32];
+                if (sync_entry) sync_rl_q <= st_d[33:32];      // (SYNC is never four-slot: entry_check)
             end
         end
     end
@@ -308,7 +314,7 @@ module albatross_controller #(
     wire [2:0] corrupts = ((imp_run_q && imp_done && imp_corrupt) ? 3'd1 : 3'd0) +
                           ((exp_run_q && exp_done) ? popcount4(exp_corrupt) : 3'd0);
     // need after the slot: the state RAM's copy if the Export did not run.
-    wire [3:0] need_end = exp_run_q ? st_d[37:34] : st_need;
+    wire [3:0] need_end = exp_run_q ? st_d[38:35] : st_need;
     wire [2:0] abandons = popcount4(need_end & active);
     albatross_counters #(.N_CHAN(N_CHAN), .INDEX_WIDTH(12)) u_counters (
         .clk_i(clk_i), .rst_i(rst_i), .ready_o(cnt_ready),

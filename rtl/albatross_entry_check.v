@@ -3,14 +3,16 @@
 // one ROM word a clock.
 // Rules (bad_o high: the entry being fetched is invalid):
 //   * FETCH clock 1 (E0): kind above 3; the SYNC flag on other than entry 0
-//     of a sync-mode ROM with kind COPY; a non-IDLE entry with ND outside
+//     of a sync-mode ROM with kind COPY; SYNC with FOUR_SLOT (the sync-mode
+//     poll compares Actual with a three-buffer ReadLocked copy); a non-IDLE entry with ND outside
 //     1..4 or a channel id >= N_CHAN; COPY with W = 0, TIME with W != 1,
 //     STATUS with W != 2*N_CHAN+1; or the background check's bad mark.
 //   * Clock 2 (E2, length): E1 did not fit (start_bad_i), the length does
 //     not fit in TIME_BITS or is below MIN_LEN, the slot ends after the
 //     cycle (e2_end_i > H1), or it starts before the previous slot's end.
 //   * Clocks 3..5 (E3..E5): a place (source of a COPY, destinations 1..ND)
-//     with board >= NB or base + 3*(W or W+1) past 2^ADDR_WIDTH.
+//     with board >= NB or base + 3*(W or W+1) past 2^ADDR_WIDTH (FOUR_SLOT,
+//     on any kind: 4 buffers, base + 4*(W or W+1)).
 `default_nettype none
 
 module albatross_entry_check #(
@@ -26,8 +28,9 @@ module albatross_entry_check #(
     input  wire                 smode_i,      // the ROM is position-synchronised
     input  wire                 bad_mark_i,   // the background check marked the entry bad
     input  wire [1:0]           kind_i,       // E0's kind (from clock 2 on)
+    input  wire                 four_i,       // E0's FOUR_SLOT flag (from clock 2 on)
     input  wire [2:0]           nd_i,         // E0's ND (from clock 2 on)
-    input  wire [13:0]          e3_i,         // 3 * W
+    input  wire [13:0]          e3_i,         // 3 * W (four_i: 4 * W)
     input  wire [TIME_BITS-1:0] start_i,      // E1
     input  wire                 start_bad_i,  // E1 did not fit in TIME_BITS
     input  wire [TIME_BITS-1:0] cycle_i,      // H1
@@ -42,6 +45,7 @@ module albatross_entry_check #(
     localparam integer W_STATUS_I = 2 * N_CHAN + 1;
     localparam [11:0]  W_STATUS   = W_STATUS_I[11:0];   // W of a STATUS entry
     localparam         EFLAG_SYNC = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_SYNC; // E0's SYNC flag
+    localparam         EFLAG_FOUR = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_FOUR_SLOT; // E0's FOUR_SLOT flag
 
     // x < k for a constant k, as logic: Yosys maps a relational operator to
     // a carry chain with a LUT per bit even when one side is constant.
@@ -67,7 +71,7 @@ module albatross_entry_check #(
     wire [11:0] e0_w    = rom_i[ALB_ROM_E0_W_LSB +: 12];
     wire        e0_idle = e0_kind == ALB_KIND_IDLE;
     wire        e0_bad  = e0_kind[3:2] != 2'd0 ||
-                          (rom_i[EFLAG_SYNC] && !(ent0_i && smode_i && e0_kind == ALB_KIND_COPY)) ||
+                          (rom_i[EFLAG_SYNC] && !(ent0_i && smode_i && e0_kind == ALB_KIND_COPY && !rom_i[EFLAG_FOUR])) ||
                           (!e0_idle && (e0_nd == 4'd0 || !below({28'd0, e0_nd}, 32'd5) ||
                                         !below({24'd0, e0_id}, N_CHAN))) ||
                           (e0_kind == ALB_KIND_COPY && e0_w == 12'd0) ||
@@ -84,7 +88,7 @@ module albatross_entry_check #(
             place_ok = below({28'd0, p[ALB_ROM_PLACE_BOARD_LSB +: 4]}, NB) && (ext >> ADDR_WIDTH) == 15'd0;
         end
     endfunction
-    wire [13:0] e3d    = e3_i + 14'd3;                               // 3 * (W + 1)
+    wire [13:0] e3d    = e3_i + (four_i ? 14'd4 : 14'd3);            // 3 (four: 4) * (W + 1)
     wire        lo_ok  = place_ok(rom_i[15:0], e3d);
     wire        hi_ok  = place_ok(rom_i[31:16], e3d);
     always @* begin

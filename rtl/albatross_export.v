@@ -5,8 +5,23 @@
 // keeps no per-channel state beyond the transfer (each destination's copy of
 // Actual comes in with start_i and goes out on act_known_o/act_o), so a
 // controller can run many channels through one engine and
-// albatross_export_endpoint can keep one channel in registers.
+// albatross_export_endpoint can keep one channel in registers.  With four_i
+// at start every destination is of the four-slot kind (issue 13,
+// rtl/albatross_contract.toml [layout.four_slot]).
 // Rules:
+//   * Four-slot (four_i), for the destinations d in need_i: 1. per d: load
+//     the control word (all four lanes; the Actual copy is not used): R =
+//     ReadLocked, p = 1 - pair(R) (R outside 1..4: 1 - pair(Actual), and
+//     corrupt_o[d]; an Actual outside 1..4 also sets corrupt_o[d]), s = 1 -
+//     bit 0 of Slot_p (byte 2 + p), the picked buffer 1 + 2p + s; an Actual
+//     equal to tried_i[d] != 0 is the landed read-back below; 2., 3. as
+//     below; 4. per d: store the byte Slot_p := s; 5. per d: store Actual :=
+//     the picked buffer.  Undisturbed: ND * (W + TAKEN_AT + 3) accesses, one
+//     byte store per destination more than the three-buffer kind with known
+//     copies.  Buffers (1..4) at base + 1 + (b - 1) * S.  Failures, drop,
+//     tried (3 bits, 1..4) and cut-off as below; a Slot store that landed
+//     while its Actual store was never made leaves a complete value that a
+//     consumer may read (and take as New again later).
 //   * Access order, for the destinations d set in need_i, in index order:
 //     1. per d: if its Actual copy is unknown, load Actual (read back; one
 //        that names no buffer sets corrupt_o[d] and excludes no buffer); then
@@ -66,13 +81,14 @@ module albatross_export #(
     input  wire                    rst_i,        // synchronous, active high
     // command and the destinations' state
     input  wire                    start_i,      // begin an Export (taken when idle_o)
+    input  wire                    four_i,       // the destinations are of the four-slot kind (sampled at start)
     input  wire [DESTS*ADDR_WIDTH-1:0] base_i,   // destination d's base at [d*ADDR_WIDTH +: ADDR_WIDTH]
     input  wire [DESTS-1:0]        need_i,       // destinations that take this value
     input  wire [WORDS_WIDTH-1:0]  words_i,      // W, the value's words (>= 1)
     input  wire [31:0]             taken_at_i,   // TAKEN_AT = 1: the word stored after the value
     input  wire [DESTS-1:0]        act_known_i,  // destination d's Actual copy is known ...
     input  wire [2*DESTS-1:0]      act_i,        // ... and is this buffer (1..3), at [2d +: 2]
-    input  wire [2*DESTS-1:0]      tried_i,      // buffer of d's failed Actual store (0: none), at [2d +: 2]
+    input  wire [3*DESTS-1:0]      tried_i,      // buffer of d's failed Actual store (0: none), at [3d +: 3]
     input  wire                    may_access_i, // 1: an access may begin (deadline); tie 1 if none
     output wire                    idle_o,       // no Export under way: start_i is taken
     // the value, one word per take
@@ -88,7 +104,7 @@ module albatross_export #(
     output wire [COUNT_WIDTH-1:0]  fails_o,      // accesses answered with err in this Export
     output wire [DESTS-1:0]        act_known_o,  // the copies after the Export (live)
     output wire [2*DESTS-1:0]      act_o,
-    output wire [2*DESTS-1:0]      tried_o,
+    output wire [3*DESTS-1:0]      tried_o,
     output wire [1:0]              dest_o,       // destination of the current access
     // Wishbone B4 classic master
     output wire                    wb_cyc_o,
@@ -119,12 +135,22 @@ module albatross_export #(
     localparam [1:0]            BUFFER2     = BUFFER1 + 2'd1;
     localparam [1:0]            BUFFER3     = ALB_CH_BUFFER_LAST[1:0];
     localparam integer          TAKEN_WORDS = TAKEN_AT ? ALB_CH_TAKEN_AT_WORDS : 0;
+    // Four-slot: the slot bytes Slot0, Slot1 (rtl/albatross_contract.toml
+    // [layout.four_slot]: offsets 2 and 3; derived here until the generated
+    // ALB_CH_OFF_SLOT0/1 exist).
+    localparam integer          OFF_SLOT0   = 2;
+    localparam integer          OFF_SLOT1   = 3;
+    localparam                  SLOT0_BIT   = 8 * (OFF_SLOT0 % ALB_CH_WORD_BYTES);
+    localparam                  SLOT1_BIT   = 8 * (OFF_SLOT1 % ALB_CH_WORD_BYTES);
+    localparam [3:0]            SEL_SLOT0   = 4'b0001 << (OFF_SLOT0 % ALB_CH_WORD_BYTES);
+    localparam [3:0]            SEL_SLOT1   = 4'b0001 << (OFF_SLOT1 % ALB_CH_WORD_BYTES);
 
     // The engine relies on: both control bytes in one word, three buffers
     // numbered 1..3 (2 bits), one taken_at word.
     generate
         if (ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES != ALB_CH_OFF_READLOCKED / ALB_CH_WORD_BYTES ||
             ALB_CH_BUFFER1 != 1 || ALB_CH_BUFFER_LAST != 3 || ALB_CH_BUFFERS != 3 ||
+            OFF_SLOT0 / ALB_CH_WORD_BYTES != CTRL_WORD_I || OFF_SLOT1 / ALB_CH_WORD_BYTES != CTRL_WORD_I ||
             ALB_CH_WORD_BYTES != 4 || ALB_CH_TAKEN_AT_WORDS != 1 || ADDR_WIDTH < 2 ||
             WORDS_WIDTH < 1 || COUNT_WIDTH < 1 || DESTS < 1 || DESTS > 4 ||
             (TAKEN_AT != 0 && TAKEN_AT != 1)) begin : g_contract_check
@@ -139,11 +165,13 @@ module albatross_export #(
                      S_WAIT_WORD    = 3'd3,  // waiting for word word_index_o of the stream
                      S_STORE_WORD   = 3'd4,  // store word take_k_q - 1 to destination d
                      S_STORE_TAKEN  = 3'd5,  // store taken_at to destination d
-                     S_STORE_ACTUAL = 3'd6;  // store destination d's Actual := its buffer
+                     S_STORE_ACTUAL = 3'd6,  // store destination d's Actual := its buffer
+                     S_STORE_SLOT   = 3'd7;  // four-slot: store destination d's Slot_p := s
 
     (* fsm_encoding = "none" *)         // binary as written: 5 LUT4 fewer than yosys's one-hot recode
     reg [2:0]                  state_q;
     reg                        stb_q;          // cyc = stb: an access is on the bus
+    reg                        four_q;         // four-slot destinations
     reg [1:0]                  d_q;            // current destination
     reg [DESTS*ADDR_WIDTH-1:0] base_q;
     reg [DESTS-1:0]            need_q;
@@ -153,13 +181,13 @@ module albatross_export #(
     reg [31:0]                 taken_q;
     reg [DESTS-1:0]            act_known_q;
     reg [2*DESTS-1:0]          act_q;
-    reg [2*DESTS-1:0]          buf_q;          // d's picked buffer
+    reg [3*DESTS-1:0]          buf_q;          // d's picked buffer
     reg [DESTS-1:0]            published_q;
     reg [DESTS-1:0]            corrupt_q;
     reg                        cut_q;
     reg                        done_q;
     reg [COUNT_WIDTH-1:0]      fails_q;
-    reg [2*DESTS-1:0]          tried_q;
+    reg [3*DESTS-1:0]          tried_q;
     reg [DESTS-1:0]            fail1_q;        // d had a failed access in this Export
     reg                        retry_q;        // the clock after a failed access: cyc low
     reg                        drop_q;         // ... and its destination is dropped
@@ -174,9 +202,9 @@ module albatross_export #(
 
     // The current destination's fields.
     reg [ADDR_WIDTH-1:0] base_d;
-    reg [1:0]            buf_d;
+    reg [2:0]            buf_d;
     reg [1:0]            copy_d;               // its Actual copy, 0 when unknown
-    reg [1:0]            tried_d;              // its tried buffer
+    reg [2:0]            tried_d;              // its tried buffer
     reg                  known_d;
     reg [DESTS-1:0]      need_m;               // need_q without d_q if it leaves now
     reg                  has_next;             // a destination after d_q takes part
@@ -190,10 +218,10 @@ module albatross_export #(
     integer i;
     always @* begin
         base_d   = base_q[0 +: ADDR_WIDTH];
-        buf_d    = buf_q[1:0];
+        buf_d    = buf_q[2:0];
         copy_d   = act_q[1:0];
         known_d  = act_known_q[0];
-        tried_d  = tried_q[1:0];
+        tried_d  = tried_q[2:0];
         need_m   = need_q & ~(leave ? d_bit0 : {DESTS{1'b0}});
         has_next = 1'b0;
         next_d   = 2'd0;
@@ -207,9 +235,9 @@ module albatross_export #(
             if (d_q == i[1:0]) begin
                 d_bit[i] = 1'b1;
                 base_d  = base_q[i*ADDR_WIDTH +: ADDR_WIDTH];
-                buf_d   = buf_q[2*i +: 2];
+                buf_d   = buf_q[3*i +: 3];
                 copy_d  = act_q[2*i +: 2];
-                tried_d = tried_q[2*i +: 2];
+                tried_d = tried_q[3*i +: 3];
                 known_d = act_known_q[i];
             end
             if (need_q[i] && i[1:0] > d_q) begin
@@ -226,30 +254,56 @@ module albatross_export #(
         if (!known_d) copy_d = 2'd0;
     end
 
+    // d_q's 3-bit fields as a mask (a part-select at 3*d_q would be a barrel shifter).
+    wire [3*DESTS-1:0] d_mask3;
+    genvar g;
+    generate
+        for (g = 0; g < DESTS; g = g + 1) begin : g_mask3
+            assign d_mask3[3*g +: 3] = {3{d_bit[g]}};
+        end
+    endgenerate
+
     wire [7:0] act_byte  = wb_dat_i[ACT_BIT +: 8];
     wire [7:0] rl_byte   = wb_dat_i[RL_BIT +: 8];
-    wire       act_valid = act_byte[7:2] == 6'd0 && act_byte[1:0] != 2'd0;
-    wire       rl_valid  = rl_byte[7:2] == 6'd0 && rl_byte[1:0] != 2'd0;
+    // A control byte names a buffer: 1..3, four-slot 1..4.
+    wire       act_valid = act_byte[7:3] == 5'd0 && act_byte[2:0] != 3'd0 &&
+                           (four_q ? act_byte[2:0] <= 3'd4 : !act_byte[2]);
+    wire       rl_valid  = rl_byte[7:3] == 5'd0 && rl_byte[2:0] != 3'd0 &&
+                           (four_q ? rl_byte[2:0] <= 3'd4 : !rl_byte[2]);
     wire [1:0] rl_lock   = rl_valid ? rl_byte[1:0] : 2'd0;
     // Figure 4: the last of Buffer1..3 that is neither Actual nor ReadLocked.
-    wire [1:0] pick      = (copy_d != BUFFER3 && rl_lock != BUFFER3) ? BUFFER3 :
+    wire [1:0] pick3     = (copy_d != BUFFER3 && rl_lock != BUFFER3) ? BUFFER3 :
                            (copy_d != BUFFER2 && rl_lock != BUFFER2) ? BUFFER2 : BUFFER1;
+    // Four-slot: p = 1 - pair(ReadLocked) (else 1 - pair(Actual)), s = 1 - Slot_p,
+    // the buffer 1 + 2p + s; pair(x) = (x - 1) >> 1 for x = 1..4.
+    wire       rl_pair   = rl_byte[2] | (rl_byte[1] & rl_byte[0]);
+    wire       act_pair  = act_byte[2] | (act_byte[1] & act_byte[0]);
+    wire       pick_p    = rl_valid ? !rl_pair : act_valid ? !act_pair : 1'b1;
+    wire       pick_s    = !(pick_p ? wb_dat_i[SLOT1_BIT] : wb_dat_i[SLOT0_BIT]);
+    wire [2:0] pick4     = {1'b0, pick_p, pick_s} + 3'd1;
+    wire [2:0] pick      = four_q ? pick4 : {1'b0, pick3};
+    // Four-slot, S_STORE_SLOT: d's p and s from its buffer (b - 1 = {p, s}).
+    wire [1:0] buf_m1    = buf_d[1:0] - 2'd1;
     // In S_STORE_WORD the last word is being stored when every word was taken.
     wire       last_word = take_k_q == words_q;
     wire       ack       = wb_ack_i && stb_q;
     wire       ctrl_ld   = state_q == S_LOAD_ACTUAL || state_q == S_LOAD_RL;
     assign drop_now = retry_q && drop_q;
-    assign landed   = ack && state_q == S_LOAD_ACTUAL && act_valid && act_byte[1:0] == tried_d && tried_d != 2'd0;
+    assign landed   = ack && (state_q == S_LOAD_ACTUAL || (four_q && state_q == S_LOAD_RL)) && act_valid &&
+                      act_byte[2:0] == tried_d && tried_d != 3'd0;
     assign leave    = drop_now || landed;
     assign adv      = ack || drop_now;             // go on to the next access
     assign ctrl_end = adv && (state_q == S_LOAD_RL || (state_q == S_LOAD_ACTUAL && leave));
+    // After the value (and taken_at): the slot bytes (four-slot), then Actual.
+    wire [2:0] after_data = four_q ? S_STORE_SLOT : S_STORE_ACTUAL;
     // The clock where the engine takes a word from the stream.
     wire       want_word = state_q == S_WAIT_WORD ||
                            (!has_next && need_m != {DESTS{1'b0}} &&
                             (ctrl_end || (adv && state_q == S_STORE_WORD && !last_word)));
 
     // Address of the current access: a control word, or word k of d's buffer
-    // base + BUF_WORD + (buf - 1) * S + k, S = W + TAKEN_WORDS (no multiplier).
+    // base + BUF_WORD + (buf - 1) * S + k, S = W + TAKEN_WORDS (no multiplier;
+    // (buf - 1) * S = 0, S, 2S or, four-slot, 3S).
     // Word k is stored (S_STORE_WORD) when take_k_q = k + 1, taken_at (word W,
     // S_STORE_TAKEN, TAKEN_AT = 1) at S - 1 = W: the -1 goes into the constant.
     /* verilator lint_off UNUSEDSIGNAL */
@@ -258,8 +312,10 @@ module albatross_export #(
     /* verilator lint_on UNUSEDSIGNAL */
     wire [ADDR_WIDTH-1:0] w_ext   = w_wide[ADDR_WIDTH-1:0];
     wire [ADDR_WIDTH-1:0] stride  = w_ext + TAKEN_WORDS[ADDR_WIDTH-1:0];
-    wire [ADDR_WIDTH-1:0] buf_off = buf_d == BUFFER1 ? {ADDR_WIDTH{1'b0}} : buf_d == BUFFER2 ? stride : (stride << 1);
-    wire                  ctrl    = state_q == S_LOAD_ACTUAL || state_q == S_LOAD_RL || state_q == S_STORE_ACTUAL;
+    wire [ADDR_WIDTH-1:0] buf_off = buf_d == 3'd1 ? {ADDR_WIDTH{1'b0}} : buf_d == 3'd2 ? stride :
+                                    buf_d == 3'd3 ? (stride << 1) : (stride << 1) + stride;
+    wire                  ctrl    = state_q == S_LOAD_ACTUAL || state_q == S_LOAD_RL || state_q == S_STORE_ACTUAL ||
+                                    state_q == S_STORE_SLOT;
     wire [ADDR_WIDTH-1:0] word_k1 = state_q == S_STORE_TAKEN ? stride : k_wide[ADDR_WIDTH-1:0];  // k + 1
     wire [ADDR_WIDTH-1:0] adr     = base_d + (ctrl ? CTRL_WORD : BUF_WORD - 1'b1 + buf_off + word_k1);
 
@@ -287,6 +343,7 @@ module albatross_export #(
         if (rst_i) begin
             state_q     <= S_IDLE;
             stb_q       <= 1'b0;
+            four_q      <= 1'b0;
             d_q         <= 2'd0;
             need_q      <= {DESTS{1'b0}};
             act_known_q <= {DESTS{1'b0}};
@@ -294,7 +351,7 @@ module albatross_export #(
             corrupt_q   <= {DESTS{1'b0}};
             cut_q       <= 1'b0;
             fails_q     <= {COUNT_WIDTH{1'b0}};
-            tried_q     <= {2*DESTS{1'b0}};
+            tried_q     <= {3*DESTS{1'b0}};
             retry_q     <= 1'b0;
             drop_q      <= 1'b0;
         end else if (wb_err_i && stb_q) begin
@@ -307,7 +364,7 @@ module albatross_export #(
             fail1_q <= fail1_q | d_bit;
             if (state_q == S_STORE_ACTUAL) begin
                 act_known_q <= act_known_q & ~d_bit;
-                tried_q[2*d_q +: 2] <= buf_d;
+                tried_q <= (tried_q & ~d_mask3) | ({DESTS{buf_d}} & d_mask3);
             end
         end else if (retry_q && !drop_q) begin
             // The same access again if one may begin, else the cut-off.
@@ -324,6 +381,7 @@ module albatross_export #(
             case (state_q)
                 S_IDLE: if (start_i) begin
                     base_q      <= base_i;
+                    four_q      <= four_i;
                     need_q      <= need_i;
                     words_q     <= words_i;
                     taken_q     <= taken_at_i;
@@ -338,10 +396,10 @@ module albatross_export #(
                     fails_q     <= {COUNT_WIDTH{1'b0}};
                     take_k_q    <= {WORDS_WIDTH{1'b0}};
                     if (!any_in) done_q <= 1'b1;          // no destination: nothing to do
-                    else begin_access(known_in ? S_LOAD_RL : S_LOAD_ACTUAL, first_in);
+                    else begin_access(known_in || four_i ? S_LOAD_RL : S_LOAD_ACTUAL, first_in);
                 end
                 S_LOAD_ACTUAL: if (adv) begin
-                    if (ack) tried_q[2*d_q +: 2] <= 2'd0;            // read back
+                    if (ack) tried_q <= tried_q & ~d_mask3;          // read back
                     if (ack && act_valid) begin
                         act_q[2*d_q +: 2]  <= act_byte[1:0];
                         act_known_q <= act_known_q | d_bit;
@@ -351,15 +409,17 @@ module albatross_export #(
                     if (landed) published_q <= published_q | d_bit;  // the failed store had landed
                 end
                 S_LOAD_RL: if (adv) begin
-                    buf_q[2*d_q +: 2] <= pick;
-                    if (ack && !rl_valid) corrupt_q <= corrupt_q | d_bit;
+                    buf_q <= (buf_q & ~d_mask3) | ({DESTS{pick}} & d_mask3);
+                    if (ack && (!rl_valid || (four_q && !act_valid))) corrupt_q <= corrupt_q | d_bit;
+                    if (ack && four_q) tried_q <= tried_q & ~d_mask3; // read back
+                    if (landed) published_q <= published_q | d_bit;  // the failed store had landed
                 end
                 S_STORE_ACTUAL: if (adv) begin
                     if (ack) begin
-                        act_q[2*d_q +: 2]   <= buf_d;
+                        act_q[2*d_q +: 2]   <= buf_d[1:0];  // (four-slot: not used)
                         act_known_q         <= act_known_q | d_bit;
                         published_q         <= published_q | d_bit;
-                        tried_q[2*d_q +: 2] <= 2'd0;
+                        tried_q             <= tried_q & ~d_mask3;
                     end
                 end
                 default: ;
@@ -374,10 +434,11 @@ module albatross_export #(
                     state_q <= S_IDLE;
                     done_q  <= 1'b1;
                 end else if (state_q == S_LOAD_ACTUAL && !leave) begin_access(S_LOAD_RL, d_q);
-                else if (has_next) begin_access(ctrl_ld ? (known_next ? S_LOAD_RL : S_LOAD_ACTUAL) : state_q, next_d);
+                else if (has_next) begin_access(ctrl_ld ? (known_next || four_q ? S_LOAD_RL : S_LOAD_ACTUAL) : state_q, next_d);
                 else if (state_q == S_STORE_WORD) begin
-                    if (last_word) begin_access(TAKEN_AT ? S_STORE_TAKEN : S_STORE_ACTUAL, first_d);
-                end else if (state_q == S_STORE_TAKEN) begin_access(S_STORE_ACTUAL, first_d);
+                    if (last_word) begin_access(TAKEN_AT ? S_STORE_TAKEN : after_data, first_d);
+                end else if (state_q == S_STORE_TAKEN) begin_access(after_data, first_d);
+                else if (state_q == S_STORE_SLOT) begin_access(S_STORE_ACTUAL, first_d);
                 else if (state_q == S_STORE_ACTUAL) begin
                     stb_q   <= 1'b0;
                     state_q <= S_IDLE;
@@ -414,12 +475,16 @@ module albatross_export #(
     assign dest_o       = d_q;
     assign wb_cyc_o     = stb_q;
     assign wb_stb_o     = stb_q;
-    assign wb_we_o      = state_q == S_STORE_WORD || state_q == S_STORE_TAKEN || state_q == S_STORE_ACTUAL;
+    assign wb_we_o      = state_q == S_STORE_WORD || state_q == S_STORE_TAKEN || state_q == S_STORE_ACTUAL ||
+                          state_q == S_STORE_SLOT;
     assign wb_adr_o     = adr;
     assign wb_sel_o     = state_q == S_LOAD_ACTUAL || state_q == S_STORE_ACTUAL ? SEL_ACT :
-                          state_q == S_LOAD_RL ? SEL_RL : 4'hF;
+                          state_q == S_LOAD_RL ? (four_q ? 4'hF : SEL_RL) :
+                          state_q == S_STORE_SLOT ? (buf_m1[1] ? SEL_SLOT1 : SEL_SLOT0) : 4'hF;
     assign wb_dat_o     = state_q == S_STORE_WORD  ? word_q :
-                          state_q == S_STORE_TAKEN ? taken_q : ({30'd0, buf_d} << ACT_BIT);
+                          state_q == S_STORE_TAKEN ? taken_q :
+                          state_q == S_STORE_SLOT  ? ({31'd0, buf_m1[0]} << (buf_m1[1] ? SLOT1_BIT : SLOT0_BIT)) :
+                          ({29'd0, buf_d} << ACT_BIT);
 
 endmodule
 

@@ -25,13 +25,18 @@
 //   * done_o is high for one clock after the store of Actual: the value is
 //     published; corrupt_o holds until the next Export.
 //   * An access answered with err is repeated (never given up).
+//   * FOUR_SLOT = 1: the channel is of the four-slot kind (4 buffers; its
+//     consumer a four-slot one): one control-word load, the value, a Slot
+//     byte store and the Actual store: WORDS + TAKEN_AT + 3 accesses, no
+//     read-back of Actual after reset.
 `default_nettype none
 
 module albatross_export_endpoint #(
     parameter ADDR_WIDTH = 10, // word-address bits of the DPRAM port
     parameter BASE       = 0,  // the channel's base, word address in that RAM
     parameter WORDS      = 4,  // W, the value's words (>= 1)
-    parameter TAKEN_AT   = 0   // 1: a taken_at word follows the value in each buffer
+    parameter TAKEN_AT   = 0,  // 1: a taken_at word follows the value in each buffer
+    parameter FOUR_SLOT  = 0   // 1: the channel is of the four-slot kind
 ) (
     input  wire                  clk_i,
     input  wire                  rst_i,        // synchronous, active high
@@ -61,20 +66,21 @@ module albatross_export_endpoint #(
     localparam [15:0]           WORDS_W = WORDS[15:0];
 
     generate
-        if (WORDS < 1 || WORDS > 65534 || BASE < 0 || BASE >= (1 << ADDR_WIDTH)) begin : g_param_check
+        if (WORDS < 1 || WORDS > 65534 || (FOUR_SLOT != 0 && FOUR_SLOT != 1) || BASE < 0 || BASE >= (1 << ADDR_WIDTH)) begin : g_param_check
             albatross_export_endpoint_parameter_out_of_range u_error ();
         end
     endgenerate
 
     wire       idle, act_known, published, cut;
-    wire [1:0] act, tried, dest;
+    wire [1:0] act, dest;
+    wire [2:0] tried;
     wire [7:0] fails;
     wire       unused = &{1'b0, published, cut, fails, dest};
 
     albatross_export #(.ADDR_WIDTH(ADDR_WIDTH), .WORDS_WIDTH(16), .COUNT_WIDTH(8), .TAKEN_AT(TAKEN_AT),
                        .DESTS(1)) u_export (
         .clk_i(clk_i), .rst_i(rst_i),
-        .start_i(publish_i), .base_i(BASE_W), .need_i(1'b1), .words_i(WORDS_W),
+        .start_i(publish_i), .four_i(FOUR_SLOT != 0), .base_i(BASE_W), .need_i(1'b1), .words_i(WORDS_W),
         .taken_at_i(taken_at_i),
         .act_known_i(act_known), .act_i(act),       // the copy stays in the engine
         .tried_i(tried),

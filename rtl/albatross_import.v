@@ -5,7 +5,26 @@
 // own beyond the transfer (the ReadLocked copy comes in with start_i and goes
 // out on rl_known_o/rl_o), so a controller can run many channels through one
 // engine and albatross_import_endpoint can keep one channel in registers.
+// With four_i at start it runs the consumer of the four-slot kind instead
+// (Simpson's four-slot mechanism on single-writer bytes, issue 13;
+// rtl/albatross_contract.toml [layout.four_slot]): wait-free, a fixed number
+// of accesses whatever the producer does.
 // Rules:
+//   * Four-slot (four_i): the copy (rl_i/rl_o) is L, the buffer 1..4 read
+//     last (0 unknown).  Load the control word (all four lanes): Actual A
+//     and c = 1 + 2 pair(A) + Slot_pair(A) of that word.  If c is L: Old,
+//     phase 2 reads buffer L (not "A is L": a producer between its Slot and
+//     Actual stores leaves Actual one value behind the buffer the last Import
+//     read, which would then be New twice).  Else store ReadLocked := A,
+//     load the control word again and take b = 1 + 2p + Slot_p with p =
+//     pair(A) = (A - 1) >> 1 and Slot_p bit 0 of byte 2 + p (never b = A: a
+//     producer that loaded ReadLocked before the store may be rewriting A
+//     itself); L := b, New, phase 2 reads buffer b.  An Actual outside 1..4
+//     ends the Import with corrupt_o.  Undisturbed: exactly 1 (Old) or 3
+//     (New) control accesses plus W loads, whatever the producer does; the
+//     Old/New decision is made at the first load.  A cut-off after the
+//     ReadLocked store and before the second load's ack forgets L (the next
+//     Import takes the value as New).
 //   * Access order.  Phase 1: load Actual.  If the ReadLocked copy is unknown
 //     or differs from it, store ReadLocked := Actual and load Actual again,
 //     until a load equals the copy: the result is New if ReadLocked was
@@ -60,8 +79,9 @@ module albatross_import #(
     input  wire                   start_i,      // begin an Import (taken when idle_o)
     input  wire [ADDR_WIDTH-1:0]  base_i,       // channel base, word address
     input  wire [WORDS_WIDTH-1:0] words_i,      // W, the value's words (>= 1)
-    input  wire                   rl_known_i,   // the ReadLocked copy is known ...
-    input  wire [1:0]             rl_i,         // ... and is this buffer (1..3)
+    input  wire                   four_i,       // the channel is of the four-slot kind (sampled at start)
+    input  wire                   rl_known_i,   // the ReadLocked copy (four-slot: L) is known ...
+    input  wire [2:0]             rl_i,         // ... and is this buffer (1..3; four-slot 1..4)
     input  wire                   may_access_i, // 1: an access may begin (deadline); tie 1 if none
     output wire                   idle_o,       // no Import under way: start_i is taken
     // end of phase 1
@@ -80,7 +100,7 @@ module albatross_import #(
     output wire                   cut_o,        // ended by may_access_i
     output wire [COUNT_WIDTH-1:0] fails_o,      // accesses answered with err in this Import
     output wire                   rl_known_o,   // the copy after the Import (live)
-    output wire [1:0]             rl_o,         // ... its buffer (0 while unknown)
+    output wire [2:0]             rl_o,         // ... its buffer (0 while unknown)
     // Wishbone B4 classic master
     output wire                   wb_cyc_o,
     output wire                   wb_stb_o,
@@ -103,16 +123,22 @@ module albatross_import #(
     localparam                  RL_BIT      = 8 * (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
     localparam [3:0]            SEL_ACT     = 4'b0001 << (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
     localparam [3:0]            SEL_RL      = 4'b0001 << (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
-    localparam [1:0]            BUFFER1     = ALB_CH_BUFFER1[1:0];
-    localparam [1:0]            BUFFER2     = BUFFER1 + 2'd1;
-    localparam [1:0]            BUFFER3     = BUFFER1 + 2'd2;
+    // Four-slot: the slot bytes Slot0, Slot1 (rtl/albatross_contract.toml
+    // [layout.four_slot]: offsets 2 and 3; derived here until the generated
+    // ALB_CH_OFF_SLOT0/1 exist).
+    localparam integer          OFF_SLOT0   = 2;
+    localparam integer          OFF_SLOT1   = 3;
+    localparam                  SLOT0_BIT   = 8 * (OFF_SLOT0 % ALB_CH_WORD_BYTES);
+    localparam                  SLOT1_BIT   = 8 * (OFF_SLOT1 % ALB_CH_WORD_BYTES);
 
-    // The engine relies on: both control bytes in one word, the buffers from
-    // the next word on, three buffers numbered 1..3 (2 bits).
+    // The engine relies on: both control bytes (four-slot: all four) in one
+    // word, the buffers from the next word on, three buffers numbered 1..3
+    // (four-slot: 1..4, 3 bits).
     generate
         if (ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES != ALB_CH_OFF_READLOCKED / ALB_CH_WORD_BYTES ||
             BUF_WORD_I != CTRL_WORD_I + 1 ||
             ALB_CH_BUFFER1 != 1 || ALB_CH_BUFFER_LAST != 3 || ALB_CH_BUFFERS != 3 ||
+            OFF_SLOT0 / ALB_CH_WORD_BYTES != CTRL_WORD_I || OFF_SLOT1 / ALB_CH_WORD_BYTES != CTRL_WORD_I ||
             ALB_CH_WORD_BYTES != 4 || ADDR_WIDTH < 2 || WORDS_WIDTH < 1 || COUNT_WIDTH < 1) begin : g_contract_check
             albatross_import_contract_mismatch u_error ();
         end
@@ -125,14 +151,16 @@ module albatross_import #(
                      S_SELECTED    = 3'd3,  // phase 1 over: waiting for stream_i or skip_i
                      S_LOAD_WORD   = 3'd4,  // load word k of buffer ReadLocked
                      S_HOLD_WORD   = 3'd5,  // word k loaded, not yet taken by the consumer
-                     S_WAIT_PULL   = 3'd6;  // PULL: word k is next, waiting for word_ready_i
+                     S_WAIT_PULL   = 3'd6,  // PULL: word k is next, waiting for word_ready_i
+                     S_LOAD_SLOT   = 3'd7;  // four-slot: load the control word again, pick b
 
     reg [2:0]             state_q;
     reg [ADDR_WIDTH-1:0]  adr_q;
     reg [WORDS_WIDTH-1:0] words_q;
     reg [WORDS_WIDTH-1:0] k_q;          // word index in phase 2
-    reg [1:0]             act_q;        // the Actual last loaded: the next ReadLocked store
-    reg [1:0]             rl_q;         // the ReadLocked copy: a buffer 1..3, 0 unknown
+    reg                   four_q;       // the four-slot kind
+    reg [2:0]             act_q;        // the Actual last loaded: the next ReadLocked store
+    reg [2:0]             rl_q;         // the ReadLocked copy (four-slot: L): a buffer, 0 unknown
     reg                   new_q;
     reg                   corrupt_q;
     reg                   cut_q;
@@ -143,20 +171,35 @@ module albatross_import #(
 
     // The request follows the state: cyc = stb in an access state except in
     // the clock after a failed access; we in the ReadLocked store; sel the
-    // ReadLocked lane there, all four lanes in phase 2 (state_q[2]), else the
-    // Actual lane.
+    // ReadLocked lane there, all four lanes in phase 2 and S_LOAD_SLOT
+    // (state_q[2]) and in a four-slot Actual load, else the Actual lane.
     wire       phase2     = state_q[2];
-    wire       stb        = (state_q == S_LOAD_ACTUAL || state_q == S_STORE_RL || state_q == S_LOAD_WORD) && !retry_q;
+    wire       slot_ld    = state_q == S_LOAD_SLOT;
+    wire       stb        = (state_q == S_LOAD_ACTUAL || state_q == S_STORE_RL || state_q == S_LOAD_WORD ||
+                             slot_ld) && !retry_q;
     wire       we         = state_q == S_STORE_RL;
-    wire [3:0] sel        = phase2 ? 4'hF : we ? SEL_RL : SEL_ACT;
+    wire [3:0] sel        = (phase2 || four_q) && !we ? 4'hF : we ? SEL_RL : SEL_ACT;
 
     wire [7:0] act_byte   = wb_dat_i[ACT_BIT +: 8];
-    wire       act_valid  = act_byte[7:2] == 6'd0 && act_byte[1:0] != 2'd0;
-    wire       rl_known   = rl_q != 2'd0;
-    wire       act_match  = act_byte[1:0] == rl_q;    // with act_valid: the copy is known and equal
+    // Actual names a buffer: 1..3, four-slot 1..4.
+    wire       act_valid  = act_byte[7:3] == 5'd0 && act_byte[2:0] != 3'd0 &&
+                            (four_q ? act_byte[2:0] <= 3'd4 : !act_byte[2]);
+    wire       rl_known   = rl_q != 3'd0;
+    // Four-slot, the first load: c = buf(pair(A), Slot[pair(A)]) of this word,
+    // the newest complete buffer of Actual's pair.
+    wire       pair_n     = act_byte[2] | (act_byte[1] & act_byte[0]);
+    wire [2:0] cur_b      = {1'b0, pair_n, pair_n ? wb_dat_i[SLOT1_BIT] : wb_dat_i[SLOT0_BIT]} + 3'd1;
+    // Old: three-buffer, Actual is the copy; four-slot, c is L (with act_valid:
+    // the copy is known and equal).
+    wire       act_match  = four_q ? cur_b == rl_q : act_byte[2:0] == rl_q;
+    // Four-slot, S_LOAD_SLOT: b = buf(pair(A), Slot[pair(A)]) = 1 + 2p + s.
+    wire       pair_a     = act_q[2] | (act_q[1] & act_q[0]);   // (A - 1) >> 1 for A = 1..4
+    wire       slot_a     = pair_a ? wb_dat_i[SLOT1_BIT] : wb_dat_i[SLOT0_BIT];
+    wire [2:0] pick_b     = {1'b0, pair_a, slot_a} + 3'd1;
     wire [WORDS_WIDTH-1:0] k_inc = k_q + 1'b1;
     wire       last_word  = k_inc == words_q;     // k = W - 1, without a subtractor
-    wire       end_phase1 = state_q == S_LOAD_ACTUAL && wb_ack_i && act_valid && act_match;
+    wire       end_phase1 = (state_q == S_LOAD_ACTUAL && wb_ack_i && act_valid && act_match) ||
+                            (slot_ld && wb_ack_i);
     wire       word_ack   = state_q == S_LOAD_WORD && wb_ack_i;
     wire       hold       = state_q == S_HOLD_WORD;
     wire       taken      = (word_ack || hold) && word_ready_i;
@@ -164,7 +207,8 @@ module albatross_import #(
     // Next address: adr + 1 + m, one adder.  In phase 1 and S_SELECTED adr_q
     // is the control word (base + CTRL_WORD), so the first word of buffer
     // ReadLocked, base + BUF_WORD_I + (rl - 1) * W, is adr + 1 + m with
-    // m = (rl - 1) * W = 0, W or 2W (no multiplier, no base register); in
+    // m = (rl - 1) * W = 0, W, 2W or (four-slot) 3W (no multiplier, no base
+    // register; the buffer is b itself in the ack clock of S_LOAD_SLOT); in
     // phase 2 m = 0: the next word.  W as an address offset (widened, then
     // cut to ADDR_WIDTH bits: a channel never reaches past the port's address
     // space).
@@ -172,9 +216,11 @@ module albatross_import #(
     wire [ADDR_WIDTH+WORDS_WIDTH-1:0] w_wide = {{ADDR_WIDTH{1'b0}}, words_q};
     /* verilator lint_on UNUSEDSIGNAL */
     wire [ADDR_WIDTH-1:0] w_ext   = w_wide[ADDR_WIDTH-1:0];
-    wire                  m_w     = !phase2 && rl_q == BUFFER2;
-    wire                  m_2w    = !phase2 && rl_q == BUFFER3;
-    wire [ADDR_WIDTH-1:0] m       = ({ADDR_WIDTH{m_w}} & w_ext) | ({ADDR_WIDTH{m_2w}} & (w_ext << 1));
+    wire [1:0]            rd_buf  = slot_ld ? pick_b[1:0] : rl_q[1:0];
+    wire [1:0]            rd_m1   = rd_buf - 2'd1;               // b - 1 (b = 1..4: 4 is 2'b00)
+    wire                  m_w     = (!phase2 || slot_ld) && rd_m1[0];
+    wire                  m_2w    = (!phase2 || slot_ld) && rd_m1[1];
+    wire [ADDR_WIDTH-1:0] m       = ({ADDR_WIDTH{m_w}} & w_ext) + ({ADDR_WIDTH{m_2w}} & (w_ext << 1));
     wire [ADDR_WIDTH-1:0] adr_inc = adr_q + m + 1'b1;
 
     // The next step (no err in this clock): the state nst; due: an access
@@ -193,9 +239,9 @@ module albatross_import #(
                 nst = S_LOAD_ACTUAL;
                 due = 1'b1;
             end
-            S_LOAD_ACTUAL: if (wb_ack_i) begin
-                if (!act_valid) fin = 1'b1;                // names no buffer: read nothing
-                else if (!act_match) begin                 // ReadLocked := Actual
+            S_LOAD_ACTUAL, S_LOAD_SLOT: if (wb_ack_i) begin
+                if (!slot_ld && !act_valid) fin = 1'b1;    // names no buffer: read nothing
+                else if (!slot_ld && !act_match) begin     // ReadLocked := Actual
                     nst = S_STORE_RL;
                     due = 1'b1;
                 end else if (skip_i && !stream_i) fin = 1'b1;
@@ -205,7 +251,7 @@ module albatross_import #(
                 end else nst = S_SELECTED;
             end
             S_STORE_RL: if (wb_ack_i) begin
-                nst = S_LOAD_ACTUAL;
+                nst = four_q ? S_LOAD_SLOT : S_LOAD_ACTUAL;
                 due = 1'b1;
             end
             S_SELECTED: if (stream_i) begin
@@ -233,13 +279,15 @@ module albatross_import #(
     end
     wire cut_now = due && !may_access_i;
     // Cut off with ReadLocked stored (or maybe stored) and not confirmed: forget the copy.
-    wire forget  = state_q == S_STORE_RL || (state_q == S_LOAD_ACTUAL && new_q && !end_phase1);
+    wire forget  = state_q == S_STORE_RL || (state_q == S_LOAD_ACTUAL && new_q && !end_phase1) ||
+                   (slot_ld && !end_phase1);
 
     always @(posedge clk_i) begin
         done_q <= 1'b0;
         if (rst_i) begin
             state_q    <= S_IDLE;
-            rl_q       <= 2'd0;
+            rl_q       <= 3'd0;
+            four_q     <= 1'b0;
             new_q      <= 1'b0;
             corrupt_q  <= 1'b0;
             cut_q      <= 1'b0;
@@ -253,7 +301,8 @@ module albatross_import #(
             if (wb_err_i && stb && ~&fails_q) fails_q <= fails_q + 1'b1;
             if (state_q == S_IDLE && start_i) begin
                 words_q    <= words_i;
-                rl_q       <= rl_known_i ? rl_i : 2'd0;
+                four_q     <= four_i;
+                rl_q       <= rl_known_i ? rl_i : 3'd0;
                 new_q      <= 1'b0;
                 corrupt_q  <= 1'b0;
                 cut_q      <= 1'b0;
@@ -261,13 +310,14 @@ module albatross_import #(
                 adr_q      <= base_i + CTRL_WORD;
             end
             if (state_q == S_LOAD_ACTUAL && wb_ack_i) begin
-                act_q <= act_byte[1:0];
+                act_q <= act_byte[2:0];
                 if (!act_valid) corrupt_q <= 1'b1;
                 else if (!act_match) new_q <= 1'b1;
             end
-            if (state_q == S_STORE_RL && wb_ack_i) begin
+            if (state_q == S_STORE_RL && wb_ack_i && !four_q) begin
                 rl_q       <= act_q;
             end
+            if (slot_ld && wb_ack_i) rl_q <= pick_b;       // four-slot: L := b
             if (selected_o && stream_i) begin          // phase 2 from word 0
                 adr_q <= adr_inc;
                 k_q   <= {WORDS_WIDTH{1'b0}};
@@ -281,7 +331,7 @@ module albatross_import #(
                 state_q <= S_IDLE;
                 cut_q   <= 1'b1;
                 done_q  <= 1'b1;
-                if (forget) rl_q <= 2'd0;
+                if (forget) rl_q <= 3'd0;
             end else if (fin) begin
                 state_q <= S_IDLE;
                 done_q  <= 1'b1;
@@ -306,7 +356,7 @@ module albatross_import #(
     assign wb_we_o      = we;
     assign wb_adr_o     = adr_q;
     assign wb_sel_o     = sel;
-    assign wb_dat_o     = {30'd0, act_q} << RL_BIT;
+    assign wb_dat_o     = {29'd0, act_q} << RL_BIT;
 
 endmodule
 

@@ -21,12 +21,17 @@
 //     before (figure 3's New).  corrupt_o: Actual named no buffer, nothing
 //     was read (the channel is not initialised or the RAM is upset).
 //   * An access answered with err is repeated (never given up).
+//   * FOUR_SLOT = 1: the channel is of the four-slot kind (4 buffers, its
+//     producer a four-slot one): wait-free, 2 (Old) or 6 (New) clocks of
+//     control accesses whatever the producer does; at reset the copy (the
+//     buffer read last) is unknown, so the first Import is New.
 `default_nettype none
 
 module albatross_import_endpoint #(
     parameter ADDR_WIDTH = 10, // word-address bits of the DPRAM port
     parameter BASE       = 0,  // the channel's base, word address in that RAM
-    parameter WORDS      = 4   // W, the value's words (>= 1)
+    parameter WORDS      = 4,  // W, the value's words (>= 1)
+    parameter FOUR_SLOT  = 0   // 1: the channel is of the four-slot kind
 ) (
     input  wire                  clk_i,
     input  wire                  rst_i,        // synchronous, active high
@@ -56,20 +61,20 @@ module albatross_import_endpoint #(
     localparam [15:0]           WORDS_W = WORDS[15:0];
 
     generate
-        if (WORDS < 1 || WORDS > 65535 || BASE < 0 || BASE >= (1 << ADDR_WIDTH)) begin : g_param_check
+        if (WORDS < 1 || WORDS > 65535 || (FOUR_SLOT != 0 && FOUR_SLOT != 1) || BASE < 0 || BASE >= (1 << ADDR_WIDTH)) begin : g_param_check
             albatross_import_endpoint_parameter_out_of_range u_error ();
         end
     endgenerate
 
     wire       idle, selected, rl_known, cut;
-    wire [1:0] rl;
+    wire [2:0] rl;
     wire [7:0] fails;
     wire       unused = &{1'b0, selected, cut, fails};
 
     albatross_import #(.ADDR_WIDTH(ADDR_WIDTH), .WORDS_WIDTH(16), .COUNT_WIDTH(8)) u_import (
         .clk_i(clk_i), .rst_i(rst_i),
         .start_i(import_i), .base_i(BASE_W), .words_i(WORDS_W),
-        .rl_known_i(rl_known), .rl_i(rl),          // the copy stays in the engine
+        .four_i(FOUR_SLOT != 0), .rl_known_i(rl_known), .rl_i(rl),          // the copy stays in the engine
         .may_access_i(1'b1), .idle_o(idle),
         .selected_o(selected), .stream_i(1'b1), .skip_i(1'b0),
         .word_o(word_o), .word_valid_o(word_valid_o), .word_ready_i(word_ready_i),

@@ -69,6 +69,7 @@ module albatross_sequencer #(
     output wire [4*ADDR_WIDTH-1:0] dst_base_o,     // destination d at [d*ADDR_WIDTH +: ADDR_WIDTH]
     output wire [31:0]             slot_time_o,    // S, the slot's nominal start
     output wire                    sync_entry_o,   // the entry is the SYNC COPY (entry 0, sync mode)
+    output wire                    four_o,         // E0 flag FOUR_SLOT: the channel is of the four-slot kind
     output wire                    may_access_o,   // an access begun next clock ends before D
     input  wire                    slot_done_i,    // one clock: the transfer is over
     // sync-mode poll: a Wishbone B4 classic read of the SYNC source's control word
@@ -106,6 +107,7 @@ module albatross_sequencer #(
     localparam [7:0]          NE_MAX8     = NE_MAX[7:0];
     localparam                HFLAG_SYNC  = ALB_ROM_H0_FLAGS_LSB + ALB_ROM_HFLAG_SYNC_MODE;
     localparam                EFLAG_SYNC  = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_SYNC;
+    localparam                EFLAG_FOUR  = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_FOUR_SLOT;
 
     generate
         if (NB < 1 || NB > 16 || ADDR_WIDTH < 3 || ADDR_WIDTH > ALB_ROM_PLACE_BASE_W || N_CHAN < 1 ||
@@ -158,10 +160,11 @@ module albatross_sequencer #(
     reg                bad_q;         // the entry being fetched is invalid
     reg [1:0]          kind_q;
     reg                sflag_q;
+    reg                four_q;        // E0 flag FOUR_SLOT
     reg [4:0]          chan_q;
     reg [2:0]          nd_q;
     reg [11:0]         w_q;
-    reg [13:0]         e3_q;          // 3 * W
+    reg [13:0]         e3_q;          // 3 * W (four-slot: 4 * W)
     reg [3:0]          sbrd_q;
     reg [ADDR_WIDTH-1:0] sbase_q;
     reg [15:0]         dbrd_q;
@@ -272,7 +275,7 @@ module albatross_sequencer #(
     albatross_entry_check #(.NB(NB), .ADDR_WIDTH(ADDR_WIDTH), .N_CHAN(N_CHAN), .TIME_BITS(TB),
                             .MIN_LEN(MIN_LEN_I)) u_entry_check (
         .step_i(step_q), .rom_i(rom_q), .ent0_i(ent_q == 8'd0), .smode_i(smode_q), .bad_mark_i(bad_mark),
-        .kind_i(kind_q), .nd_i(nd_q), .e3_i(e3_q), .start_i(start_q), .start_bad_i(start_bad_q),
+        .kind_i(kind_q), .four_i(four_q), .nd_i(nd_q), .e3_i(e3_q), .start_i(start_q), .start_bad_i(start_bad_q),
         .cycle_i(cycle_q), .prev_end_i(prev_end_q), .e2_end_i(e2_end), .bad_o(bad_now));
 
     // ------------------------------------------------------------ control
@@ -354,7 +357,8 @@ module albatross_sequencer #(
                             chan_q  <= e0_id;
                             nd_q    <= e0_nd;
                             w_q     <= e0_w;
-                            e3_q    <= {2'b00, e0_w} + {1'b0, e0_w, 1'b0};
+                            four_q  <= rom_q[EFLAG_FOUR];
+                            e3_q    <= rom_q[EFLAG_FOUR] ? {e0_w, 2'b00} : {2'b00, e0_w} + {1'b0, e0_w, 1'b0};
                         end
                         3'd2: end_q <= e2_end;                                  // E2
                         3'd3: begin                                             // E3
@@ -419,6 +423,7 @@ module albatross_sequencer #(
     assign dst_base_o   = dbase_q;
     assign slot_time_o  = slot_time_q;
     assign sync_entry_o = sflag_q;
+    assign four_o       = four_q;
     assign may_access_o = (state_q == ST_TRANSFER || go_now) && {1'b0, rel_q} < end_q - MARGIN_T; // c + 1 + MARGIN <= D (D >= MIN_LEN > MARGIN)
     assign poll_cyc_o   = poll_q;
     assign poll_board_o = sync_brd_q;

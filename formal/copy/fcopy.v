@@ -112,7 +112,9 @@ module fcopy #(
     reg  [7:0]  st_act, st_tried;
     reg  [31:0] st_taken;
     wire        imp_idle, imp_sel, imp_done, imp_new, imp_corrupt, imp_cut, imp_rl_known, imp_fails;
-    wire [1:0]  imp_rl;
+    wire [2:0]  imp_rl3;       // the engines' 3-bit fields (four-slot buffers 1..4): three-buffer only here
+    wire [1:0]  imp_rl = imp_rl3[1:0];
+    wire [11:0] exp_tried12;
     wire [31:0] imp_word;
     wire        imp_word_valid;
     wire [WW-1:0] imp_index;
@@ -139,6 +141,9 @@ module fcopy #(
     wire        exp_start  = choose && need_now != 4'd0;
     wire [3:0]  exp_need   = need_now;
     wire [7:0]  exp_tried_in = imp_new ? 8'd0 : st_tried;
+    wire [11:0] exp_tried_in12 = {1'b0, exp_tried_in[7:6], 1'b0, exp_tried_in[5:4], 1'b0, exp_tried_in[3:2],
+                                  1'b0, exp_tried_in[1:0]};
+    assign exp_tried = {exp_tried12[10:9], exp_tried12[7:6], exp_tried12[4:3], exp_tried12[1:0]};
     wire [31:0] exp_taken  = imp_new ? time_i : st_taken;
     wire [3:0]  known_in;
     wire [7:0]  act_after;
@@ -152,24 +157,25 @@ module fcopy #(
 
     albatross_import #(.ADDR_WIDTH(AW), .WORDS_WIDTH(WW), .COUNT_WIDTH(1), .PULL(1)) u_import (
         .clk_i(clk_i), .rst_i(rst_i),
-        .start_i(go), .base_i(src_base), .words_i(words), .rl_known_i(st_rl != 2'd0), .rl_i(st_rl),
+        .start_i(go), .four_i(1'b0), .base_i(src_base), .words_i(words), .rl_known_i(st_rl != 2'd0),
+        .rl_i({1'b0, st_rl}),
         .may_access_i(may_access_i), .idle_o(imp_idle),
         .selected_o(imp_sel), .stream_i(choose && need_now != 4'd0),
         .skip_i((choose && need_now == 4'd0) || (exp_run_q && exp_done)),
         .word_o(imp_word), .word_valid_o(imp_word_valid), .word_ready_i(exp_ready), .word_index_o(imp_index),
         .done_o(imp_done), .new_o(imp_new), .corrupt_o(imp_corrupt), .cut_o(imp_cut), .fails_o(imp_fails),
-        .rl_known_o(imp_rl_known), .rl_o(imp_rl),
+        .rl_known_o(imp_rl_known), .rl_o(imp_rl3),
         .wb_cyc_o(r_cyc[0]), .wb_stb_o(imp_stb), .wb_we_o(r_we[0]), .wb_adr_o(r_adr[0 +: AW]), .wb_sel_o(r_sel[0 +: 4]),
         .wb_dat_o(r_wdat[0 +: 32]), .wb_dat_i(bus_rdat), .wb_ack_i(r_ack[0]), .wb_err_i(r_err[0]));
 
     albatross_export #(.ADDR_WIDTH(AW), .WORDS_WIDTH(WW), .COUNT_WIDTH(1), .TAKEN_AT(1), .DESTS(4), .DROP(1)) u_export (
         .clk_i(clk_i), .rst_i(rst_i),
-        .start_i(exp_start), .base_i(dst_base), .need_i(exp_need), .words_i(words), .taken_at_i(exp_taken),
-        .act_known_i(known_in), .act_i(st_act), .tried_i(exp_tried_in),
+        .start_i(exp_start), .four_i(1'b0), .base_i(dst_base), .need_i(exp_need), .words_i(words), .taken_at_i(exp_taken),
+        .act_known_i(known_in), .act_i(st_act), .tried_i(exp_tried_in12),
         .may_access_i(may_access_i), .idle_o(exp_idle),
         .word_i(imp_word), .word_valid_i(imp_word_valid), .word_ready_o(exp_ready), .word_index_o(exp_index),
         .done_o(exp_done), .published_o(exp_published), .corrupt_o(exp_corrupt), .cut_o(exp_cut),
-        .fails_o(exp_fails), .act_known_o(exp_known), .act_o(exp_act), .tried_o(exp_tried), .dest_o(exp_dest),
+        .fails_o(exp_fails), .act_known_o(exp_known), .act_o(exp_act), .tried_o(exp_tried12), .dest_o(exp_dest),
         .wb_cyc_o(r_cyc[1]), .wb_stb_o(exp_stb), .wb_we_o(r_we[1]), .wb_adr_o(r_adr[AW +: AW]), .wb_sel_o(r_sel[4 +: 4]),
         .wb_dat_o(r_wdat[32 +: 32]), .wb_dat_i(bus_rdat), .wb_ack_i(r_ack[1]), .wb_err_i(r_err[1]));
 

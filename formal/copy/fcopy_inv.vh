@@ -16,7 +16,10 @@
     (* keep *) wire          fi_retry;   // u_import.retry_q
     (* keep *) wire [AW-1:0] fi_adr;     // u_import.adr_q
     (* keep *) wire [WW-1:0] fi_words;   // u_import.words_q
-    (* keep *) wire [1:0]    fi_act;     // u_import.act_q
+    (* keep *) wire [2:0]    fi_act3;    // u_import.act_q
+    wire [1:0]               fi_act = fi_act3[1:0];
+    (* keep *) wire          fi_four;    // u_import.four_q
+    (* keep *) wire          fe_four;    // u_export.four_q
     (* keep *) wire          fi_we;      // u_import.we
     (* keep *) wire [3:0]    fi_sel;     // u_import.sel
     (* keep *) wire [2:0]    fe_state;   // u_export.state_q
@@ -28,7 +31,8 @@
     wire [WW-1:0]            fe_sk = exp_index - 1'b1; // S_STORE_WORD: the word stored (take_k_q - 1)
     (* keep *) wire [31:0]   fe_word;    // u_export.word_q
     (* keep *) wire [31:0]   fe_taken;   // u_export.taken_q
-    (* keep *) wire [7:0]    fe_buf;     // u_export.buf_q
+    (* keep *) wire [11:0]   fe_buf12;   // u_export.buf_q (3-bit fields)
+    wire [7:0]               fe_buf = {fe_buf12[10:9], fe_buf12[7:6], fe_buf12[4:3], fe_buf12[1:0]};
     (* keep *) wire [1:0]    fb_owner;   // u_bus.owner_q
     (* keep *) wire          fb_gap;     // u_bus.gap_q
     (* keep *) wire [1:0]    fb_tmo;     // u_bus.tmo_q
@@ -105,6 +109,11 @@
     end
     always @* begin
         if (!init_q) begin
+            // three-buffer runs only: the engines' four-slot bits stay clear
+            inv_three:     assert(!fi_four && !fe_four && !imp_rl3[2] && (fi_state != I_STORE_RL || !fi_act3[2]) &&
+                                  !exp_tried12[2] && !exp_tried12[5] && !exp_tried12[8] && !exp_tried12[11] &&
+                                  (!(fe_state != E_IDLE && fe_need[0] && picked(1'b0)) || !fe_buf12[2]) &&
+                                  (!(fe_state != E_IDLE && fe_need[1] && picked(1'b1)) || !fe_buf12[5]));
             inv_d_rl:      assert(ok_rl);
             inv_d_copy:    assert(ok_copy);
             inv_d_pick:    assert(ok_pick);

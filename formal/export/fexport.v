@@ -107,6 +107,8 @@ module fexport #(
     wire          idle, ready, done, cut;
     wire [1:0]    windex, published, corrupt, known_o, dest;
     wire [3:0]    act_o, tried_o;
+    wire [5:0]    tried_o6;     // the engine's 3-bit fields (four-slot buffers 1..4); three-buffer only here
+    assign tried_o = {tried_o6[4:3], tried_o6[1:0]};
     wire [1:0]    fails_o;
     wire          cyc, stb, we;
     wire [AW-1:0] adr;
@@ -117,10 +119,11 @@ module fexport #(
                        .DESTS(DESTS), .DROP(DROP)) dut (
         .clk_i(clk_i), .rst_i(rst_i),
         .start_i(start_i), .base_i(f_base), .need_i(need_i), .words_i(W[1:0]), .taken_at_i(taken_at_i),
-        .act_known_i(act_known_i), .act_i(act_i), .tried_i(tried_i), .may_access_i(may_access_i),
+        .act_known_i(act_known_i), .act_i(act_i),
+        .tried_i({1'b0, tried_i[3:2], 1'b0, tried_i[1:0]}), .four_i(1'b0), .may_access_i(may_access_i),
         .idle_o(idle), .word_i(word_i), .word_valid_i(word_valid_i), .word_ready_o(ready),
         .word_index_o(windex), .done_o(done), .published_o(published), .corrupt_o(corrupt),
-        .cut_o(cut), .fails_o(fails_o), .act_known_o(known_o), .act_o(act_o), .tried_o(tried_o),
+        .cut_o(cut), .fails_o(fails_o), .act_known_o(known_o), .act_o(act_o), .tried_o(tried_o6),
         .dest_o(dest), .wb_cyc_o(cyc), .wb_stb_o(stb), .wb_we_o(we), .wb_adr_o(adr), .wb_sel_o(sel),
         .wb_dat_o(dat), .wb_dat_i(wb_dat_i), .wb_ack_i(wb_ack_i), .wb_err_i(wb_err_i)
     );
@@ -350,6 +353,8 @@ module fexport #(
         if (DROP != 0) drop_dead: assert(f2(fails_x, a_d) != 2'd2);
         landed_leave: assert(!f1(landed_x, a_d));
     end
+    // The engine's 3-bit tried fields keep their top bit clear (three-buffer runs only here).
+    always @* if (chk) three_tried: assert(!tried_o6[5] && !tried_o6[2]);
     always @* if (chk && take) word_order: assert(windex == takes_x && takes_x < W);
     always @* if (chk && open_q && !done && !dist_x) no_idle: assert(stb);
     always @* if (chk && open_q && done) exact_accesses: assert(dist_x ? acks_x <= expect_n : acks_x == expect_n);

@@ -42,7 +42,9 @@ module fexport_inv #(
     (* keep *) wire [2:0]      f_state;     // dut.state_q
     (* keep *) wire [1:0]      f_need;      // dut.need_q
     wire [1:0]                 f_store_k = windex_i - 2'd1; // S_STORE_WORD: the word stored (take_k_q - 1)
-    (* keep *) wire [3:0]      f_buf;       // dut.buf_q
+    (* keep *) wire [5:0]      f_buf6;      // dut.buf_q (3-bit fields: four-slot buffers 1..4)
+    (* keep *) wire            f_four;      // dut.four_q
+    wire [3:0]                 f_buf = {f_buf6[4:3], f_buf6[1:0]};
     (* keep *) wire [1:0]      f_fail1;     // dut.fail1_q (DROP = 1 only: else optimised away)
     (* keep *) wire            f_retry;     // dut.retry_q
     (* keep *) wire            f_drop;      // dut.drop_q (DROP = 1 only)
@@ -142,7 +144,7 @@ module fexport_inv #(
                                (f_retry && f_drop && e_d_i == gd));
         assign v_loads[g] = idle_i || !live || (la_ok_x_i[g] == (!known_x_i[g] && {3'd0, gd, 1'b0} < kcur) &&
                                                 rl_ok_x_i[g] == ({3'd0, gd, 1'b1} < kcur) &&
-                                                (!rl_ok_x_i[g] || bq == pk) &&
+                                                (!rl_ok_x_i[g] || (bq == pk && !f_buf6[3*g+2])) &&
                                                 sa_ack_x_i[g] == sa_k && (!sa_err_x_i[g] || sa_k || kcur == {PH_SA, gd, 1'b0}));
         assign v_copy[g] = idle_i || !live || !pre_sa || (known_o_i[g] == (cx != 2'd0) && (!known_o_i[g] || act_o_i[2*g +: 2] == cx) &&
                            (fails_x_i[2*g +: 2] == 2'd0 || {3'd0, gd, known_x_i[g]} <= kcur));
@@ -160,6 +162,7 @@ module fexport_inv #(
                                                !rl_ok_x_i[g] && pre_sa && la_ok_x_i[g]);
     end endgenerate
     always @* if (chk_i) begin
+        inv_three: assert(idle_i || !f_four);
         inv_wr: assert(&v_wr);
         inv_need: assert(&v_need);
         inv_fails: assert(&v_fails);

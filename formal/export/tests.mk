@@ -9,5 +9,14 @@ FSBY_TESTS_SPEC += \
     formal-export-negative-early_publish:export:neg_early_publish:complete_publish \
     formal-export-negative-writes_locked:export:neg_writes_locked:no_locked_write \
     formal-export-negative-ignore_actual:export:neg_ignore_actual:no_actual_write \
-    formal-export-negative-extra_access:export:neg_extra_access:exact_accesses
-FSBY_MUTANTS += export:early_publish export:writes_locked export:ignore_actual export:extra_access
+    formal-export-negative-extra_access:export:neg_extra_access:exact_accesses \
+    formal-export-four-pdr:export:four_pdr:pass \
+    formal-export-four-cover:export:four_cover:pass \
+    formal-export-four-negative-ignore_rl4:export:four_neg_ignore_rl4:fs_other_pair|fs_pick|fs_no_write_read \
+    formal-export-four-negative-same_slot4:export:four_neg_same_slot4:fs_pick|fs_slot_store|fs_no_write_read \
+    formal-export-four-negative-actual_first4:export:four_neg_actual_first4:fs_actual_store \
+    formal-export-four-negative-early_slot4:export:four_neg_early_slot4:fs_slot_store|fs_actual_store|fs_count \
+    formal-export-four-negative-extra_load4:export:four_neg_extra_load4:fs_count|fs_ctrl_lanes
+FSBY_MUTANTS += export:early_publish export:writes_locked export:ignore_actual export:extra_access \
+                export:ignore_rl4 export:same_slot4 export:actual_first4 export:early_slot4 \
+                export:extra_load4

@@ -115,7 +115,8 @@ module fimport #(
     wire [31:0]   word;
     wire [WW-1:0] word_index;
     wire [1:0]    fails;
-    wire [1:0]    rl;
+    wire [2:0]    rl3;      // the engine's copy: 3 bits (four-slot L), here three-buffer only
+    wire [1:0]    rl = rl3[1:0];
     wire          cyc, stb, we;
     wire [AW-1:0] adr;
     wire [3:0]    sel;
@@ -124,12 +125,12 @@ module fimport #(
 
     albatross_import #(.ADDR_WIDTH(AW), .WORDS_WIDTH(WW), .COUNT_WIDTH(2), .PULL(PULL)) dut (
         .clk_i(clk_i), .rst_i(rst_i),
-        .start_i(start_i), .base_i(base_i), .words_i(words_i), .rl_known_i(rl_known_i), .rl_i(rl_i),
-        .may_access_i(may_access_i), .idle_o(idle),
+        .start_i(start_i), .base_i(base_i), .words_i(words_i), .four_i(1'b0), .rl_known_i(rl_known_i),
+        .rl_i({1'b0, rl_i}), .may_access_i(may_access_i), .idle_o(idle),
         .selected_o(selected), .stream_i(stream_i), .skip_i(skip_i),
         .word_o(word), .word_valid_o(word_valid), .word_ready_i(word_ready_i), .word_index_o(word_index),
         .done_o(done), .new_o(new_v), .corrupt_o(corrupt), .cut_o(cut), .fails_o(fails),
-        .rl_known_o(rl_known), .rl_o(rl),
+        .rl_known_o(rl_known), .rl_o(rl3),
         .wb_cyc_o(cyc), .wb_stb_o(stb), .wb_we_o(we), .wb_adr_o(adr), .wb_sel_o(sel),
         .wb_dat_o(wdat), .wb_dat_i(rdat), .wb_ack_i(ack_i), .wb_err_i(err_i)
     );
@@ -350,11 +351,14 @@ module fimport #(
     (* keep *) wire [AW-1:0] f_adr;      // dut.adr_q
     (* keep *) wire [WW-1:0] f_dwords;   // dut.words_q
     (* keep *) wire [WW-1:0] f_dk;       // dut.k_q
-    (* keep *) wire [1:0]    f_dact;     // dut.act_q
+    (* keep *) wire [2:0]    f_dact3;    // dut.act_q
+    (* keep *) wire          f_dfour;    // dut.four_q
+    wire [1:0] f_dact = f_dact3[1:0];
     (* keep *) wire          f_dretry;   // dut.retry_q
     (* keep *) wire          f_dnew;     // dut.new_q
     (* keep *) wire          f_drlk;     // dut.rl_known
-    (* keep *) wire [1:0]    f_drl;      // dut.rl_q
+    (* keep *) wire [2:0]    f_drl3;     // dut.rl_q
+    wire [1:0] f_drl = f_drl3[1:0];
     (* keep *) wire [31:0]   f_dword;    // dut.word_q
     (* keep *) wire          f_dwe;      // dut.we
     (* keep *) wire [3:0]    f_dsel;     // dut.sel
@@ -370,6 +374,7 @@ module fimport #(
     wire [2:0] dk3     = {{(3-WW){1'b0}}, f_dk};
     always @* begin
         if (!init_q) begin
+            inv_three:  assert(!f_dfour && (f_state != S_STORE_RL || !f_dact3[2]) && !f_drl3[2]);  // three-buffer only
             inv_state:  assert(f_state <= S_WAIT_PULL && (PULL != 0 || f_state != S_WAIT_PULL));
             inv_stb:    assert(f_stb == (accessing && !f_dretry));
             inv_retry:  assert(!f_dretry || accessing);

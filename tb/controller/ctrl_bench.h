@@ -303,6 +303,7 @@ void check_slot_timing(const char *what, const std::vector<Attempt> &v, uint64_t
 // ctrl_scenarios_data.cpp
 void scenario_basic();
 void scenario_corrupt();
+void scenario_four();
 // ctrl_scenarios_faults.cpp
 void scenario_faults();
 void scenario_dead();

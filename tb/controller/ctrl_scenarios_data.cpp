@@ -156,3 +156,205 @@ void scenario_corrupt() {
         CHECK_EQ(G_ROM, m, 0, s.att.size() + (s.in_att ? 1 : 0));
     }
 }
+
+// ------------------------------------------------------------------ four-slot (issue 13)
+// The four-slot layout (rtl/albatross_contract.toml [layout.four_slot]):
+// Actual, ReadLocked, Slot0, Slot1 in byte lanes 0..3 of the control word,
+// Buffer1..4 from word 1; buffer b is pair (b-1)>>1, slot (b-1)&1.
+static unsigned fs_buf(unsigned p, unsigned s) { return 1 + 2 * p + s; }
+static unsigned fs_pair(unsigned b) { return (b - 1) >> 1; }
+
+struct Producer4 {                      // the four-slot Export on one board
+    int board;
+    unsigned base, w;
+    void init(Sim &s) { s.wr(board, base, 0xF, 0x00000101); }   // Actual = ReadLocked = 1, slots 0
+    unsigned publish(Sim &s, const std::vector<uint32_t> &v) {
+        uint32_t c = s.rd(board, base);
+        unsigned r = c >> 8 & 0xFF;
+        unsigned p = 1 - fs_pair(r), sl = 1 - (c >> (16 + 8 * p) & 1);
+        unsigned b = fs_buf(p, sl);
+        for (unsigned i = 0; i < w; ++i) s.wr(board, base + 1 + (b - 1) * w + i, 0xF, v[i]);
+        s.wr(board, base, 1u << (2 + p), sl << (16 + 8 * p));   // Slot_p := s
+        s.wr(board, base, 0x1, b);                              // Actual := b
+        return b;
+    }
+};
+
+struct Consumer4 {                      // the four-slot Import on one board: wait-free
+    int board;
+    unsigned base, words, l = 0;        // words: value + taken_at; l: the buffer read last (0 none)
+    unsigned accesses = 0;              // control accesses of the last Import
+    void init(Sim &s) { s.wr(board, base, 0xF, 0x00000101); l = 0; }
+    bool import(Sim &s, std::vector<uint32_t> &out) {
+        uint32_t c = s.rd(board, base);
+        unsigned a = c & 0xFF, pa = fs_pair(a);
+        bool isnew = fs_buf(pa, c >> (16 + 8 * pa) & 1) != l;
+        accesses = 1;
+        if (isnew) {
+            s.wr(board, base, 0x2, a << 8);                     // ReadLocked := A
+            c = s.rd(board, base);
+            l = fs_buf(pa, c >> (16 + 8 * pa) & 1);
+            accesses = 3;
+        }
+        out.resize(words);
+        for (unsigned i = 0; i < words; ++i) out[i] = s.rd(board, base + 1 + (l - 1) * words + i);
+        return isnew;
+    }
+};
+
+void scenario_four() {
+    std::printf("== four: a four-slot COPY and a four-slot TIME (E0 flag FOUR_SLOT) beside a three-buffer STATUS\n");
+    const unsigned FS = C::EFLAG_FOUR_SLOT;
+    std::vector<Entry> es = {
+        {COPY, FS, 0, W_COPY, S_COPY, L_COPY, 0, SRC_BASE, {{1, DST_BASE}}},
+        {TIME, FS, 1, 1, S_TIME, L_TIME, 0, 0, {{0, TIME_BASE}, {1, TIME_BASE}}},
+        {STATUS, 0, 2, W_STAT, S_STAT, L_STAT, 0, 0, {{1, STAT_BASE}}},
+    };
+    write_rom(build_rom(H1, 0, es));
+    Sim s;
+    Producer4 prod{0, SRC_BASE, W_COPY};
+    Consumer4 cons{1, DST_BASE, W_COPY + 1}, time0{0, TIME_BASE, 2}, time1{1, TIME_BASE, 2};
+    Consumer stat{1, STAT_BASE, W_STAT + 1};
+    prod.init(s);
+    cons.init(s);
+    time0.init(s);
+    time1.init(s);
+    s.wr(1, STAT_BASE, 0x3, 0x0101);
+    const uint64_t T0 = t0_of((int)es.size());
+    // Import New (3 control + W loads), Export: control load, W words, taken_at, Slot, Actual
+    const size_t A_NEW = 3 + W_COPY + (1 + W_COPY + 1 + 2);
+    unsigned sb = prod.publish(s, value(0));
+    CHECK_EQ(G_DATA, "four: the producer's first buffer (ReadLocked 1: pair 1, Slot1 0)", 4, sb);
+    std::vector<uint32_t> got;
+    for (unsigned c = 0; c < 3; ++c) {
+        const uint64_t Cs = T0 + c * H1;
+        s.run_until(Cs + TAIL);
+        char m[128];
+        std::vector<Attempt> cp = s.attempts(Cs + S_COPY, Cs + S_COPY + L_COPY);
+        bool fresh = c != 1;                                    // a value published before cycles 0 and 2
+        std::snprintf(m, sizeof m, "four cycle %u COPY (%s)", c, fresh ? "New" : "Old: one control load");
+        check_slot_timing(m, cp, Cs + S_COPY, fresh ? A_NEW : 1);
+        if (fresh && cp.size() == A_NEW) {
+            // source: load, ReadLocked store, load; dest: control load; words; taken_at; Slot; Actual
+            unsigned db = c == 0 ? 4 : 2;                       // dest ReadLocked 1 (pair 0) / 4 (pair 1)
+            std::vector<std::pair<bool, uint32_t>> exp = {
+                {false, ba(0, SRC_BASE)}, {true, ba(0, SRC_BASE)}, {false, ba(0, SRC_BASE)},
+                {false, ba(1, DST_BASE)}};
+            for (unsigned i = 0; i < W_COPY; ++i) {
+                exp.push_back({false, ba(0, SRC_BASE + 1 + (sb - 1) * W_COPY + i)});
+                exp.push_back({true, ba(1, DST_BASE + 1 + (db - 1) * (W_COPY + 1) + i)});
+            }
+            exp.push_back({true, ba(1, DST_BASE + 1 + (db - 1) * (W_COPY + 1) + W_COPY)});
+            exp.push_back({true, ba(1, DST_BASE)});
+            exp.push_back({true, ba(1, DST_BASE)});
+            for (size_t k = 0; k < A_NEW; ++k) {
+                std::snprintf(m, sizeof m, "four cycle %u COPY access %zu: {we, board, word}", c, k + 1);
+                CHECK_HEX(G_DATA, m, (uint64_t)exp[k].first << 16 | exp[k].second,
+                          (uint64_t)cp[k].we << 16 | cp[k].adr);
+            }
+            uint32_t ctl = s.rd(1, DST_BASE);
+            std::snprintf(m, sizeof m, "four cycle %u: destination control word {Slot1, Slot0, ReadLocked, Actual}", c);
+            CHECK_HEX(G_DATA, m, c == 0 ? 0x01000104u : 0x01010402u, ctl);
+        }
+        bool isnew = cons.import(s, got);
+        std::snprintf(m, sizeof m, "four cycle %u: consumer Import returns %s", c, fresh ? "New" : "Old");
+        CHECK_EQ(G_DATA, m, fresh, isnew);
+        std::snprintf(m, sizeof m, "four cycle %u: consumer control accesses (wait-free)", c);
+        CHECK_EQ(G_DATA, m, fresh ? 3 : 1, cons.accesses);
+        std::snprintf(m, sizeof m, "four cycle %u: value word 0", c);
+        CHECK_HEX(G_DATA, m, value(c < 2 ? 0 : 1)[0], got[0]);
+        if (fresh && cp.size() >= 3) {
+            std::snprintf(m, sizeof m, "four cycle %u: taken_at = time_o in the ack clock of the Import's last control load", c);
+            CHECK_EQ(G_DATA, m, cp[2].end, got[W_COPY]);
+        }
+        isnew = cons.import(s, got);
+        std::snprintf(m, sizeof m, "four cycle %u: a second Import returns Old", c);
+        CHECK_EQ(G_DATA, m, 0, isnew);
+        // TIME, four-slot, two destinations: per destination load, value, taken_at, Slot, Actual
+        std::vector<Attempt> tm = s.attempts(Cs + S_TIME, Cs + S_TIME + L_TIME);
+        std::snprintf(m, sizeof m, "four cycle %u TIME (2 four-slot destinations)", c);
+        check_slot_timing(m, tm, Cs + S_TIME, 2 * (1 + 1 + 1 + 2));
+        for (int b = 0; b < 2; ++b) {
+            Consumer4 &t = b ? time1 : time0;
+            isnew = t.import(s, got);
+            std::snprintf(m, sizeof m, "four cycle %u TIME on board %d: New, value = taken_at = slot start", c, b);
+            check(G_DATA, isnew && got[0] == Cs + S_TIME && got[1] == Cs + S_TIME,
+                  "%s: expected New %" PRIu64 "/%" PRIu64 ", got %s %u/%u", m, Cs + S_TIME, Cs + S_TIME,
+                  isnew ? "New" : "Old", got[0], got[1]);
+        }
+        if (c == 1) sb = prod.publish(s, value(1));
+        if (c == 1) CHECK_EQ(G_DATA, "four: the producer's second buffer (ReadLocked 4: pair 0, Slot0 0)", 2, sb);
+    }
+    // STATUS (three-buffer): channel 0 delivered twice, channel 1 (TIME) 2 destinations x 3 cycles
+    bool isnew = stat.import(s, got);
+    CHECK_EQ(G_DATA, "four: STATUS Import New", 1, isnew);
+    CHECK_HEX(G_DATA, "four: STATUS channel 0 {transfers, retries}", 2u << 16 | 0u, got[1]);
+    CHECK_HEX(G_DATA, "four: STATUS channel 0 {abandoned, corrupt}", 0u, got[2]);
+    CHECK_HEX(G_DATA, "four: STATUS channel 1 {transfers, retries}", 6u << 16 | 0u, got[3]);
+    CHECK_HEX(G_DATA, "four: STATUS channel 1 {abandoned, corrupt}", 0u, got[4]);
+
+    // A destination Actual store that lands but times out, then the link is
+    // down to the slot end: the next cycle's control-word load reads it back
+    // (the tried buffer, 3 bits in the state RAM) and publishes nothing.
+    const uint64_t C3 = T0 + 4 * H1;                            // (cycle 3's COPY ran during the STATUS read)
+    s.run_until(C3 - H1 + TAIL);
+    sb = prod.publish(s, value(3));
+    size_t seen = 0;
+    s.fault = [&](const Attempt &a) {
+        if (a.start < C3 || a.start >= C3 + L_COPY) return 0;
+        if (++seen == A_NEW) {
+            s.dead_next = 1u << 1;   // link down from the attempt's second clock on
+            return 3;
+        }
+        return 0;
+    };
+    s.run_until(C3 + L_COPY);
+    s.fault = nullptr;
+    s.top->fi_dead_i = 0;
+    s.run_until(C3 + TAIL);
+    uint32_t ctl3 = s.rd(1, DST_BASE);
+    isnew = cons.import(s, got);
+    check(G_FAULT, isnew && got[0] == value(3)[0],
+          "four: landed Actual store: the consumer sees the value once: expected New 0x%08x, got %s 0x%08x",
+          value(3)[0], isnew ? "New" : "Old", got[0]);
+    const uint64_t C4 = C3 + H1;
+    s.run_until(C4 + TAIL);
+    std::vector<Attempt> v4 = s.attempts(C4 + S_COPY, C4 + S_COPY + L_COPY);
+    CHECK_EQ(G_FAULT, "four: next cycle: 2 accesses (source control load: Old; destination control load: landed)",
+             2, v4.size());
+    if (v4.size() >= 2) CHECK_HEX(G_FAULT, "four: next cycle: access 2 loads the destination control word",
+                                  (uint64_t)ba(1, DST_BASE), v4[1].adr);
+    CHECK_HEX(G_FAULT, "four: next cycle: the destination's Actual and slot bytes are unchanged", ctl3 & 0xFFFF00FFu,
+              s.rd(1, DST_BASE) & 0xFFFF00FFu);
+    isnew = cons.import(s, got);
+    CHECK_EQ(G_FAULT, "four: next cycle: the consumer's Import returns Old (not published twice)", 0, isnew);
+    isnew = stat.import(s, got);
+    CHECK_EQ(G_FAULT, "four: STATUS channel 0 transfers (the landed store counted once, in the next cycle)", 3,
+             got[1] >> 16);
+    CHECK_EQ(G_FAULT, "four: STATUS channel 0 abandoned (the slot of the landed store)", 1, got[2] >> 16);
+
+    // Entry checks of the flag: a fourth buffer past the RAM (base + 4 * (W + 1)
+    // = 1024 for a destination at 0x3F0; three buffers would fit) and SYNC with
+    // FOUR_SLOT make the entry invalid: skipped, rom_errors + 1 a cycle.
+    struct Case { const char *what; unsigned hflags, flags, dbase; size_t errs; };
+    const Case cases[] = {
+        {"three-buffer COPY to 0x3F0 (3 buffers fit)", 0, 0, 0x3F0, 0},
+        {"four-slot COPY to 0x3F0 (the fourth buffer does not fit)", 0, FS, 0x3F0, 1},
+        {"sync mode, entry 0 SYNC with FOUR_SLOT", C::HFLAG_SYNC_MODE, C::EFLAG_SYNC | FS, DST_BASE, 1},
+    };
+    for (const Case &k : cases) {
+        std::vector<Entry> e2 = es;
+        e2[0].flags = k.flags;
+        e2[0].dst[0].base = k.dbase;
+        write_rom(build_rom(H1, k.hflags, e2));
+        Sim s2;
+        s2.run_until(T0 + TAIL);
+        char m[128];
+        std::snprintf(m, sizeof m, "four: %s: rom_errors_o after cycle 0", k.what);
+        CHECK_EQ(G_ROM, m, k.errs, s2.top->rom_errors_o);
+        std::snprintf(m, sizeof m, "four: %s: accesses in the COPY slot", k.what);
+        check(G_ROM, (s2.attempts(T0 + S_COPY, T0 + S_COPY + L_COPY).size() == 0) == (k.errs != 0),
+              "%s: expected %s, got %zu", m, k.errs ? "none" : "some",
+              s2.attempts(T0 + S_COPY, T0 + S_COPY + L_COPY).size());
+    }
+}

@@ -24,6 +24,14 @@
 //   dead     a board's link is down for a whole cycle: the slots still start on
 //            time, no access starts after its deadline, a dead destination is
 //            dropped after two failed accesses and the others are still served
+//   four     the COPY and TIME entries with E0 flag FOUR_SLOT (issue 13), a C++
+//            four-slot producer and consumer: exact timing and access sequence
+//            (Import 3 + W / 1 access, Export W + 4 per destination), the
+//            control bytes after each Export, New / Old, the consumer's fixed
+//            access count, TIME on two four-slot destinations, STATUS counts;
+//            a landed Actual store that timed out is read back (the 3-bit
+//            tried buffer) and not published twice; a fourth buffer past the
+//            RAM and SYNC with FOUR_SLOT are invalid
 // Each check prints what it expected and what it got.  Exit status 0 if all
 // pass, else 64 + a bit mask of the failed groups (1 timing, 2 data, 4 rom,
 // 8 faults, 16 dead).  --inject=timing makes the timing checker expect one
@@ -31,7 +39,7 @@
 // Options: --dir=DIR (work directory for the ROM file, created)  --inject=timing
 //          --scenario=NAME (default: all)
 // Files: ctrl_bench.h/.cpp (checks, ROM builder, model wrapper, CPU protocol),
-//        ctrl_scenarios_data.cpp (basic, corrupt), ctrl_scenarios_faults.cpp (faults, dead, sync).
+//        ctrl_scenarios_data.cpp (basic, corrupt, four), ctrl_scenarios_faults.cpp (faults, dead, sync).
 #include "ctrl_bench.h"
 
 // ------------------------------------------------------------------ main
@@ -51,7 +59,7 @@ int main(int argc, char **argv) {
             }
         }
         else {
-            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|sync]\n",
+            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|sync|four]\n",
                          argv[0]);
             return 2;
         }
@@ -59,7 +67,7 @@ int main(int argc, char **argv) {
     if (g_inject_timing) std::printf("injected: the timing checker expects every completion one clock late\n");
     struct { const char *name; void (*fn)(); } sc[] = {
         {"basic", scenario_basic}, {"corrupt", scenario_corrupt}, {"faults", scenario_faults}, {"dead", scenario_dead},
-        {"sync", scenario_sync}};
+        {"sync", scenario_sync}, {"four", scenario_four}};
     for (auto &x : sc)
         if (only.empty() || only == x.name) x.fn();
     std::printf("test_controller: %u checks, %u failed%s\n", g_checks, g_fails,
