@@ -1,6 +1,8 @@
 /*
  * albatross.c -- Import and Export of the three-buffer channel (seed 3.1,
- * figures 3 and 4), written to follow the paper line by line.
+ * figures 3 and 4), written to follow the paper line by line, and of the
+ * wait-free four-slot channel (docs/four_slot.md: the statement order and
+ * why each other order fails).
  *
  * Memory ordering.  The consumer stores ReadLocked and then loads Actual; the
  * producer stores Actual and, in its next Export, loads ReadLocked.  That is
@@ -10,7 +12,11 @@
  * also needs its data stores ordered before the store of Actual (release) and
  * the consumer its load of Actual before the data loads (acquire).  Each is an
  * alb_fence() below; on in-order cores without a store buffer they cost
- * almost nothing.  None of them is a RAM access.
+ * almost nothing.  None of them is a RAM access.  The four-slot kind has the
+ * same pattern (the ReadLocked store before the second control-word load,
+ * the Actual store before the next Export's control-word load) and orders
+ * its data stores before the Slot store and the Slot store before the
+ * Actual store.
  */
 #include "albatross.h"
 #include "alb_port.h"
@@ -31,10 +37,10 @@ typedef uint32_t alb_word;
 #define ALB_INLINE static inline
 #endif
 
-/* Address of buffer 1..3: base + 4 + (buffer - 1) * stride, without a
+/* Address of buffer 1..4: base + 4 + (buffer - 1) * stride, without a
  * multiply (rv32i has none).  Only the low two bits of buffer - 1 count, so
- * a buffer index of 0 (impossible with valid control bytes) lands just past
- * Buffer3, never on a control byte. */
+ * a buffer index of 0 (impossible with valid control bytes) lands on Buffer4
+ * (just past Buffer3), never on a control byte. */
 ALB_INLINE uintptr_t buffer_addr(const alb_channel_t *ch, uint8_t buffer)
 {
     uint32_t stride = ALB_STRIDE(ch->size), k = (uint32_t)buffer - 1u;
@@ -111,21 +117,160 @@ ALB_INLINE void write_to(const alb_channel_t *ch, uint8_t buffer, const void *sr
     }
 }
 
-int alb_channel_setup(alb_channel_t *ch, uintptr_t base, uint32_t size)
+/* The byte at offset off (0..3) of a control word loaded with alb_rd32. */
+ALB_INLINE uint8_t ctl_byte(uint32_t word, uint32_t off)
 {
-    if (ch == 0 || (base & 3u) != 0u || size == 0u)
+    return (uint8_t)(word >> (8u * off));
+}
+
+int alb_channel_setup_kind(alb_channel_t *ch, uintptr_t base, uint32_t size, unsigned kind)
+{
+    if (ch == 0 || (base & 3u) != 0u || size == 0u ||
+        (kind != ALB_THREE_BUFFER && kind != ALB_FOUR_SLOT))
         return ALB_ERR_ARG;
     ch->base = base;
     ch->size = size;
+    ch->kind = (uint8_t)kind;
     ch->actual = 0u;
     ch->read_locked = 0u;
+    ch->last = 0u;
+    ch->slot[0] = ch->slot[1] = 0u;
     return ALB_OK;
 }
+
+int alb_channel_setup(alb_channel_t *ch, uintptr_t base, uint32_t size)
+{
+    return alb_channel_setup_kind(ch, base, size, ALB_THREE_BUFFER);
+}
+
+/* ------------------------------------------------------------------------
+ * The four-slot kind.  Buffer b (1..4) is pair (b-1)>>1, slot (b-1)&1.  The
+ * producer owns Actual, Slot0 and Slot1 (private copies, it is their only
+ * writer), the consumer ReadLocked and its private L (ch->last), the buffer
+ * it read last.  Export: the three-buffer Export plus one byte store;
+ * Import: 1 + W accesses if Actual still names L, else 3 + W.
+ */
+static int fs_producer_init(alb_channel_t *ch, const void *initial)
+{
+    write_to(ch, ALB_BUFFER1, initial);
+    alb_fence();                 /* release: the data before the control bytes */
+    alb_wr8(ch->base + ALB_OFF_SLOT0, (uint8_t)ALB_FS_INITIAL_SLOT);
+    alb_wr8(ch->base + ALB_OFF_SLOT1, (uint8_t)ALB_FS_INITIAL_SLOT);
+    alb_fence();                                 /* the slot bytes before Actual */
+    alb_wr8(ch->base + ALB_OFF_ACTUAL, ALB_BUFFER1);
+    ch->slot[0] = ch->slot[1] = (uint8_t)ALB_FS_INITIAL_SLOT;
+    ch->actual = ALB_BUFFER1;
+    return ALB_OK;
+}
+
+static int fs_producer_attach(alb_channel_t *ch)
+{
+    uint32_t word = alb_rd32(ch->base);
+    uint8_t actual = ctl_byte(word, ALB_OFF_ACTUAL);
+    uint8_t s0 = ctl_byte(word, ALB_OFF_SLOT0), s1 = ctl_byte(word, ALB_OFF_SLOT1);
+
+    if (!ALB_FS_VALID_INDEX(actual) || !ALB_FS_VALID_SLOT(s0) || !ALB_FS_VALID_SLOT(s1))
+        return ALB_ERR_CORRUPT;
+    ch->actual = actual;
+    ch->slot[0] = s0;
+    ch->slot[1] = s1;
+    return ALB_OK;
+}
+
+static int fs_export(alb_channel_t *ch, const void *src)
+{
+    uint32_t word;
+    uint8_t read_locked, buffer;
+    unsigned pair, slot;
+    int result = ALB_OK;
+
+    if (!ALB_FS_VALID_INDEX(ch->actual))
+        return ALB_ERR_ARG;
+    /* 1. the consumer's pair: write the other one */
+    alb_fence();       /* the last store of Actual before loading ReadLocked */
+    word = alb_rd32(ch->base);
+    read_locked = ctl_byte(word, ALB_OFF_READLOCKED);
+    if (ALB_FS_VALID_INDEX(read_locked)) {
+        pair = 1u - ALB_FS_PAIR(read_locked);
+    } else {
+        pair = 1u - ALB_FS_PAIR(ch->actual);   /* a faulty consumer: keep going */
+        result = ALB_ERR_CORRUPT;
+    }
+    /* 2. the slot of that pair not completed last */
+    slot = 1u - ch->slot[pair];
+    buffer = (uint8_t)ALB_FS_BUFFER(pair, slot);
+    /* 3. the payload */
+    write_to(ch, buffer, src);
+    alb_fence();                 /* release: the data before the slot byte */
+    /* 4. the pair's slot byte names the completed slot */
+    alb_wr8(ch->base + ALB_OFF_SLOT(pair), (uint8_t)slot);
+    ch->slot[pair] = (uint8_t)slot;
+    alb_fence();                       /* the slot byte before Actual */
+    /* 5. Actual names the completed buffer */
+    alb_wr8(ch->base + ALB_OFF_ACTUAL, buffer);
+    ch->actual = buffer;
+    return result;
+}
+
+static int fs_consumer_attach(alb_channel_t *ch)
+{
+    uint8_t read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
+
+    if (!ALB_FS_VALID_INDEX(read_locked))
+        return ALB_ERR_CORRUPT;
+    ch->read_locked = read_locked;
+    ch->last = 0u;                     /* forgotten: the next Import is New */
+    return ALB_OK;
+}
+
+static int fs_import(alb_channel_t *ch, void *dst)
+{
+    uint32_t word;
+    uint8_t actual, slot, buffer;
+    unsigned pair;
+    int result;
+
+    if (!ALB_FS_VALID_INDEX(ch->read_locked))
+        return ALB_ERR_ARG;
+    /* 1. the latest buffer */
+    word = alb_rd32(ch->base);
+    actual = ctl_byte(word, ALB_OFF_ACTUAL);
+    if (!ALB_FS_VALID_INDEX(actual))
+        return ALB_ERR_CORRUPT;
+    /* 2. nothing new: the buffer read last, still protected by ReadLocked */
+    if (actual == ch->last) {
+        alb_fence();              /* acquire: the control load before the data */
+        read_from(ch, actual, dst);
+        return ALB_OLD;
+    }
+    /* 3. announce its pair: from now on the producer writes the other one */
+    pair = ALB_FS_PAIR(actual);
+    alb_wr8(ch->base + ALB_OFF_READLOCKED, actual);
+    ch->read_locked = actual;
+    alb_fence();          /* store ReadLocked before loading the slot byte */
+    /* 4. the slot of that pair completed last, loaded after the announcement */
+    word = alb_rd32(ch->base);
+    slot = ctl_byte(word, ALB_OFF_SLOT(pair));
+    if (!ALB_FS_VALID_SLOT(slot))
+        return ALB_ERR_CORRUPT;
+    buffer = (uint8_t)ALB_FS_BUFFER(pair, slot);
+    alb_fence();                  /* acquire: the slot load before the data */
+    /* 5. the payload; New unless it is the buffer read last */
+    read_from(ch, buffer, dst);
+    result = buffer == ch->last ? ALB_OLD : ALB_NEW;
+    ch->last = buffer;
+    return result;
+}
+
+/* ------------------------------------------------------------------------
+ * Set-up and the three-buffer kind. */
 
 int alb_producer_init(alb_channel_t *ch, const void *initial)
 {
     if (ch == 0 || ch->size == 0u || initial == 0)
         return ALB_ERR_ARG;
+    if (ch->kind == ALB_FOUR_SLOT)
+        return fs_producer_init(ch, initial);
     write_to(ch, ALB_BUFFER1, initial);
     alb_fence();
     alb_wr8(ch->base + ALB_OFF_ACTUAL, ALB_BUFFER1);
@@ -139,6 +284,8 @@ int alb_producer_attach(alb_channel_t *ch)
 
     if (ch == 0 || ch->size == 0u)
         return ALB_ERR_ARG;
+    if (ch->kind == ALB_FOUR_SLOT)
+        return fs_producer_attach(ch);
     actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
     if (!ALB_VALID_INDEX(actual))
         return ALB_ERR_CORRUPT;
@@ -153,6 +300,7 @@ int alb_consumer_init(alb_channel_t *ch)
     alb_wr8(ch->base + ALB_OFF_READLOCKED, ALB_BUFFER1);
     alb_fence();
     ch->read_locked = ALB_BUFFER1;
+    ch->last = ALB_BUFFER1;         /* four-slot: Buffer1's value counts as read */
     return ALB_OK;
 }
 
@@ -162,6 +310,8 @@ int alb_consumer_attach(alb_channel_t *ch)
 
     if (ch == 0 || ch->size == 0u)
         return ALB_ERR_ARG;
+    if (ch->kind == ALB_FOUR_SLOT)
+        return fs_consumer_attach(ch);
     read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
     if (!ALB_VALID_INDEX(read_locked))
         return ALB_ERR_CORRUPT;
@@ -174,6 +324,8 @@ int alb_import(alb_channel_t *ch, void *dst)
     int result = ALB_OLD;
     uint8_t actual;
 
+    if (ch != 0 && dst != 0 && ch->kind == ALB_FOUR_SLOT)
+        return fs_import(ch, dst);
     if (ch == 0 || dst == 0 || !ALB_VALID_INDEX(ch->read_locked))
         return ALB_ERR_ARG;
 
@@ -200,6 +352,8 @@ int alb_export(alb_channel_t *ch, const void *src)
     uint8_t buffer, write_buffer = 0u, copy_of_read_locked;
     int result = ALB_OK;
 
+    if (ch != 0 && src != 0 && ch->kind == ALB_FOUR_SLOT)
+        return fs_export(ch, src);
     if (ch == 0 || src == 0 || !ALB_VALID_INDEX(ch->actual))
         return ALB_ERR_ARG;
 
