@@ -226,7 +226,7 @@ static int fs_consumer_attach(alb_channel_t *ch)
 static int fs_import(alb_channel_t *ch, void *dst)
 {
     uint32_t word;
-    uint8_t actual, slot, buffer;
+    uint8_t latest, slot, buffer;
     unsigned pair;
     int result;
 
@@ -234,22 +234,22 @@ static int fs_import(alb_channel_t *ch, void *dst)
         return ALB_ERR_ARG;
     /* 1. the latest buffer */
     word = alb_rd32(ch->base);
-    actual = ctl_byte(word, ALB_OFF_ACTUAL);
-    if (!ALB_FS_VALID_INDEX(actual))
+    latest = ctl_byte(word, ALB_OFF_ACTUAL);
+    if (!ALB_FS_VALID_INDEX(latest))
         return ALB_ERR_CORRUPT;
     /* 2. nothing new: the buffer read last, still protected by ReadLocked */
-    if (actual == ch->last) {
+    if (latest == ch->last) {
         alb_fence();              /* acquire: the control load before the data */
-        read_from(ch, actual, dst);
+        read_from(ch, latest, dst);
         return ALB_OLD;
     }
     /* 3. announce its pair: from now on the producer writes the other one */
-    pair = ALB_FS_PAIR(actual);
-    alb_wr8(ch->base + ALB_OFF_READLOCKED, actual);
-    ch->read_locked = actual;
+    pair = ALB_FS_PAIR(latest);
+    alb_wr8(ch->base + ALB_OFF_READLOCKED, latest);
+    ch->read_locked = latest;
     alb_fence();          /* store ReadLocked before loading the slot byte */
     /* 4. the slot of that pair completed last, loaded after the announcement */
-    word = alb_rd32(ch->base);
+    word = alb_rd32(ch->base);                     /* after the announcement */
     slot = ctl_byte(word, ALB_OFF_SLOT(pair));
     if (!ALB_FS_VALID_SLOT(slot))
         return ALB_ERR_CORRUPT;
