@@ -232,6 +232,11 @@ int mode_ratio(const Options &o)
         pts.push_back(std::atof(list.substr(i, j - i).c_str()));
         i = j + 1;
     }
+    // A reader held at 1/100 of the writer's speed spends about 10^4 cycles
+    // per Import (3 + W accesses, each gap 0-2 CPU cycles of 100 RAM cycles,
+    // with stalls): the drifting model's budget of 2000 per Import is for a
+    // mix of speeds.
+    g_limits.segment_cycles_per_import = 50000;
     std::printf("ratio: %s channels, %llu Imports per speed ratio, seed %llu\n", kind_label(),
                 static_cast<unsigned long long>(o.imports), static_cast<unsigned long long>(o.seed));
     std::printf("  %-14s %10s %10s %12s %12s\n", "writer:reader", "imports", "new", "mean ctl acc", "worst ctl acc");

@@ -165,3 +165,16 @@ soak: $(TB) ## 100 million checked Imports (SOAK_IMPORTS=N to change)
 BENCHES += bench-tb
 bench-tb: $(TB)
 	$(TB) bench --imports 300000 --seed $(SEED) --report $(REPORTS)/bench_tb.json
+
+# The figure of issue 13: accesses per Import beyond the payload against the
+# writer:reader speed ratio (held fixed, 1:100 .. 100:1), both kinds, checkers
+# on: build/reports/import_accesses_by_ratio.{json,svg}.  About 5 s of CPU.
+BENCHES += bench-import-accesses
+FIG_IMPORTS ?= 10000
+.PHONY: bench-import-accesses
+bench-import-accesses: $(TB) ## accesses per Import against the speed ratio, both kinds -> build/reports/import_accesses_by_ratio.svg
+	@mkdir -p $(REPORTS)
+	$(TB) ratio --kind three_buffer --imports $(FIG_IMPORTS) --seed $(SEED) --report $(REPORTS)/ratio_three_buffer.json
+	$(TB) ratio --kind four_slot --imports $(FIG_IMPORTS) --seed $(SEED) --report $(REPORTS)/ratio_four_slot.json
+	$(PYTHON) tb/dpram/plot_import_accesses.py $(REPORTS)/ratio_three_buffer.json $(REPORTS)/ratio_four_slot.json \
+	    $(REPORTS)/import_accesses_by_ratio.json $(REPORTS)/import_accesses_by_ratio.svg
