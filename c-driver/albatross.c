@@ -148,21 +148,11 @@ int alb_channel_setup(alb_channel_t *ch, uintptr_t base, uint32_t size)
  * producer owns Actual, Slot0 and Slot1 (private copies, it is their only
  * writer), the consumer ReadLocked and its private L (ch->last), the buffer
  * it read last.  Export: the three-buffer Export plus one byte store;
- * Import: 1 + W accesses if Actual still names L, else 3 + W.
+ * Import: 1 + W accesses if Actual still names L, else 3 + W.  The helpers
+ * below make the control accesses only: the payload copy is the one in
+ * alb_import / alb_export, shared by both kinds, so that the driver holds
+ * one inlined copy loop per direction (a board's program RAM is small).
  */
-static int fs_producer_init(alb_channel_t *ch, const void *initial)
-{
-    write_to(ch, ALB_BUFFER1, initial);
-    alb_fence();                 /* release: the data before the control bytes */
-    alb_wr8(ch->base + ALB_OFF_SLOT0, (uint8_t)ALB_FS_INITIAL_SLOT);
-    alb_wr8(ch->base + ALB_OFF_SLOT1, (uint8_t)ALB_FS_INITIAL_SLOT);
-    alb_fence();                                 /* the slot bytes before Actual */
-    alb_wr8(ch->base + ALB_OFF_ACTUAL, ALB_BUFFER1);
-    ch->slot[0] = ch->slot[1] = (uint8_t)ALB_FS_INITIAL_SLOT;
-    ch->actual = ALB_BUFFER1;
-    return ALB_OK;
-}
-
 static int fs_producer_attach(alb_channel_t *ch)
 {
     uint32_t word = alb_rd32(ch->base);
@@ -177,15 +167,27 @@ static int fs_producer_attach(alb_channel_t *ch)
     return ALB_OK;
 }
 
-static int fs_export(alb_channel_t *ch, const void *src)
+static int fs_consumer_attach(alb_channel_t *ch)
+{
+    uint8_t read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
+
+    if (!ALB_FS_VALID_INDEX(read_locked))
+        return ALB_ERR_CORRUPT;
+    ch->read_locked = read_locked;
+    ch->last = 0u;                     /* forgotten: the next Import is New */
+    return ALB_OK;
+}
+
+/* Export steps 1 and 2: the buffer to write, *buffer.  ALB_OK, or
+ * ALB_ERR_CORRUPT for an invalid ReadLocked (the value is published all the
+ * same, in the pair other than Actual's). */
+static int fs_select_write(alb_channel_t *ch, uint8_t *buffer)
 {
     uint32_t word;
-    uint8_t read_locked, buffer;
+    uint8_t read_locked;
     unsigned pair, slot;
     int result = ALB_OK;
 
-    if (!ALB_FS_VALID_INDEX(ch->actual))
-        return ALB_ERR_ARG;
     /* 1. the consumer's pair: write the other one */
     alb_fence();       /* the last store of Actual before loading ReadLocked */
     word = alb_rd32(ch->base);
@@ -198,35 +200,27 @@ static int fs_export(alb_channel_t *ch, const void *src)
     }
     /* 2. the slot of that pair not completed last */
     slot = 1u - ch->slot[pair];
-    buffer = (uint8_t)ALB_FS_BUFFER(pair, slot);
-    /* 3. the payload */
-    write_to(ch, buffer, src);
-    alb_fence();                 /* release: the data before the slot byte */
-    /* 4. the pair's slot byte names the completed slot */
-    alb_wr8(ch->base + ALB_OFF_SLOT(pair), (uint8_t)slot);
-    ch->slot[pair] = (uint8_t)slot;
-    alb_fence();                       /* the slot byte before Actual */
-    /* 5. Actual names the completed buffer */
-    alb_wr8(ch->base + ALB_OFF_ACTUAL, buffer);
-    ch->actual = buffer;
+    *buffer = (uint8_t)ALB_FS_BUFFER(pair, slot);
     return result;
 }
 
-static int fs_consumer_attach(alb_channel_t *ch)
+/* Export step 4 (after the payload and a release fence): the pair's slot
+ * byte names the completed slot; then a fence, the slot byte before Actual. */
+static void fs_complete(alb_channel_t *ch, uint8_t buffer)
 {
-    uint8_t read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
+    unsigned pair = ALB_FS_PAIR(buffer), slot = ALB_FS_SLOT(buffer);
 
-    if (!ALB_FS_VALID_INDEX(read_locked))
-        return ALB_ERR_CORRUPT;
-    ch->read_locked = read_locked;
-    ch->last = 0u;                     /* forgotten: the next Import is New */
-    return ALB_OK;
+    alb_wr8(ch->base + ALB_OFF_SLOT(pair), (uint8_t)slot);
+    ch->slot[pair] = (uint8_t)slot;
+    alb_fence();                       /* the slot byte before Actual */
 }
 
-static int fs_import(alb_channel_t *ch, void *dst)
+/* Import steps 1 to 4: the buffer to read, *buffer, and the result:
+ * ALB_NEW, ALB_OLD, ALB_ERR_CORRUPT (nothing to read) or ALB_ERR_ARG. */
+static int fs_select_read(alb_channel_t *ch, uint8_t *buffer)
 {
     uint32_t word;
-    uint8_t latest, slot, buffer;
+    uint8_t latest, slot;
     unsigned pair;
     int result;
 
@@ -239,8 +233,7 @@ static int fs_import(alb_channel_t *ch, void *dst)
         return ALB_ERR_CORRUPT;
     /* 2. nothing new: the buffer read last, still protected by ReadLocked */
     if (latest == ch->last) {
-        alb_fence();              /* acquire: the control load before the data */
-        read_from(ch, latest, dst);
+        *buffer = latest;
         return ALB_OLD;
     }
     /* 3. announce its pair: from now on the producer writes the other one */
@@ -253,26 +246,28 @@ static int fs_import(alb_channel_t *ch, void *dst)
     slot = ctl_byte(word, ALB_OFF_SLOT(pair));
     if (!ALB_FS_VALID_SLOT(slot))
         return ALB_ERR_CORRUPT;
-    buffer = (uint8_t)ALB_FS_BUFFER(pair, slot);
-    alb_fence();                  /* acquire: the slot load before the data */
-    /* 5. the payload; New unless it is the buffer read last */
-    read_from(ch, buffer, dst);
-    result = buffer == ch->last ? ALB_OLD : ALB_NEW;
-    ch->last = buffer;
+    *buffer = (uint8_t)ALB_FS_BUFFER(pair, slot);
+    /* 5. (the caller reads it) New unless it is the buffer read last */
+    result = *buffer == ch->last ? ALB_OLD : ALB_NEW;
+    ch->last = *buffer;
     return result;
 }
 
 /* ------------------------------------------------------------------------
- * Set-up and the three-buffer kind. */
+ * Set-up, and the three-buffer kind with the four-slot steps in their places. */
 
 int alb_producer_init(alb_channel_t *ch, const void *initial)
 {
     if (ch == 0 || ch->size == 0u || initial == 0)
         return ALB_ERR_ARG;
-    if (ch->kind == ALB_FOUR_SLOT)
-        return fs_producer_init(ch, initial);
     write_to(ch, ALB_BUFFER1, initial);
     alb_fence();
+    if (ch->kind == ALB_FOUR_SLOT) {   /* both slot bytes, then Actual */
+        alb_wr8(ch->base + ALB_OFF_SLOT0, (uint8_t)ALB_FS_INITIAL_SLOT);
+        alb_wr8(ch->base + ALB_OFF_SLOT1, (uint8_t)ALB_FS_INITIAL_SLOT);
+        ch->slot[0] = ch->slot[1] = (uint8_t)ALB_FS_INITIAL_SLOT;
+        alb_fence();
+    }
     alb_wr8(ch->base + ALB_OFF_ACTUAL, ALB_BUFFER1);
     ch->actual = ALB_BUFFER1;
     return ALB_OK;
@@ -324,26 +319,32 @@ int alb_import(alb_channel_t *ch, void *dst)
     int result = ALB_OLD;
     uint8_t actual;
 
-    if (ch != 0 && dst != 0 && ch->kind == ALB_FOUR_SLOT)
-        return fs_import(ch, dst);
-    if (ch == 0 || dst == 0 || !ALB_VALID_INDEX(ch->read_locked))
-        return ALB_ERR_ARG;
+    if (ch != 0 && dst != 0 && ch->kind == ALB_FOUR_SLOT) {
+        /* --- four-slot steps 1-4 (wait-free): the buffer into actual */
+        result = fs_select_read(ch, &actual);
+        if (result < 0)
+            return result;
+    } else {
+        if (ch == 0 || dst == 0 || !ALB_VALID_INDEX(ch->read_locked))
+            return ALB_ERR_ARG;
 
-    /* --- Phase 1: select a buffer for read-access */
-    actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
-    while (actual != ch->read_locked) {
-        if (!ALB_VALID_INDEX(actual))
-            return ALB_ERR_CORRUPT;
-        ch->read_locked = actual;                           /* ReadLocked:= Actual */
-        alb_wr8(ch->base + ALB_OFF_READLOCKED, actual);
-        alb_fence();                  /* store ReadLocked before loading Actual */
+        /* --- Phase 1: select a buffer for read-access */
         actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
-        result = ALB_NEW;
+        while (actual != ch->read_locked) {
+            if (!ALB_VALID_INDEX(actual))
+                return ALB_ERR_CORRUPT;
+            ch->read_locked = actual;                           /* ReadLocked:= Actual */
+            alb_wr8(ch->base + ALB_OFF_READLOCKED, actual);
+            alb_fence();                  /* store ReadLocked before loading Actual */
+            actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
+            result = ALB_NEW;
+        }
     }
     alb_fence();                  /* acquire: load Actual before the data loads */
 
-    /* --- Phase 2: read-access to the selected buffer */
-    read_from(ch, ch->read_locked, dst);
+    /* --- Phase 2: read-access to the selected buffer (ReadLocked; four-slot:
+     * the buffer its slot byte named) */
+    read_from(ch, actual, dst);
     return result;
 }
 
@@ -351,24 +352,30 @@ int alb_export(alb_channel_t *ch, const void *src)
 {
     uint8_t buffer, write_buffer = 0u, copy_of_read_locked;
     int result = ALB_OK;
+    const int four_slot = ch != 0 && src != 0 && ch->kind == ALB_FOUR_SLOT;
 
-    if (ch != 0 && src != 0 && ch->kind == ALB_FOUR_SLOT)
-        return fs_export(ch, src);
-    if (ch == 0 || src == 0 || !ALB_VALID_INDEX(ch->actual))
+    if (ch == 0 || src == 0 || !(four_slot ? ALB_FS_VALID_INDEX(ch->actual) : ALB_VALID_INDEX(ch->actual)))
         return ALB_ERR_ARG;
 
-    /* --- Phase 1: select a buffer for write-access */
-    alb_fence();         /* the last store of Actual before loading ReadLocked */
-    copy_of_read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
-    if (!ALB_VALID_INDEX(copy_of_read_locked))
-        result = ALB_ERR_CORRUPT;   /* it excludes no buffer: one stays free */
-    for (buffer = ALB_BUFFER1; buffer <= ALB_BUFFER3; ++buffer)
-        if (buffer != ch->actual && buffer != copy_of_read_locked)
-            write_buffer = buffer;
+    if (four_slot) {
+        /* --- four-slot steps 1-2: the other pair's slot not completed last */
+        result = fs_select_write(ch, &write_buffer);
+    } else {
+        /* --- Phase 1: select a buffer for write-access */
+        alb_fence();         /* the last store of Actual before loading ReadLocked */
+        copy_of_read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
+        if (!ALB_VALID_INDEX(copy_of_read_locked))
+            result = ALB_ERR_CORRUPT;   /* it excludes no buffer: one stays free */
+        for (buffer = ALB_BUFFER1; buffer <= ALB_BUFFER3; ++buffer)
+            if (buffer != ch->actual && buffer != copy_of_read_locked)
+                write_buffer = buffer;
+    }
 
     /* --- Phase 2: write-access to the selected buffer */
     write_to(ch, write_buffer, src);
     alb_fence();                 /* release: the data before the store of Actual */
+    if (four_slot)
+        fs_complete(ch, write_buffer);  /* step 4: Slot[pair] := slot, fence */
 
     /* --- Phase 3: assign completely written buffer as actual */
     alb_wr8(ch->base + ALB_OFF_ACTUAL, write_buffer);
