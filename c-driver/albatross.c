@@ -133,6 +133,8 @@ int alb_channel_setup_kind(alb_channel_t *ch, uintptr_t base, uint32_t size, uns
     ch->kind = (uint8_t)kind;
     ch->actual = 0u;
     ch->read_locked = 0u;
+    ch->fs_actual = 0u;
+    ch->fs_read_locked = 0u;
     ch->last = 0u;
     ch->slot[0] = ch->slot[1] = 0u;
     return ALB_OK;
@@ -161,7 +163,7 @@ static int fs_producer_attach(alb_channel_t *ch)
 
     if (!ALB_FS_VALID_INDEX(actual) || !ALB_FS_VALID_SLOT(s0) || !ALB_FS_VALID_SLOT(s1))
         return ALB_ERR_CORRUPT;
-    ch->actual = actual;
+    ch->fs_actual = actual;
     ch->slot[0] = s0;
     ch->slot[1] = s1;
     return ALB_OK;
@@ -173,7 +175,7 @@ static int fs_consumer_attach(alb_channel_t *ch)
 
     if (!ALB_FS_VALID_INDEX(read_locked))
         return ALB_ERR_CORRUPT;
-    ch->read_locked = read_locked;
+    ch->fs_read_locked = read_locked;
     ch->last = 0u;                     /* forgotten: the next Import is New */
     return ALB_OK;
 }
@@ -195,7 +197,7 @@ static int fs_select_write(alb_channel_t *ch, uint8_t *buffer)
     if (ALB_FS_VALID_INDEX(read_locked)) {
         pair = 1u - ALB_FS_PAIR(read_locked);
     } else {
-        pair = 1u - ALB_FS_PAIR(ch->actual);   /* a faulty consumer: keep going */
+        pair = 1u - ALB_FS_PAIR(ch->fs_actual);   /* a faulty consumer: keep going */
         result = ALB_ERR_CORRUPT;
     }
     /* 2. the slot of that pair not completed last */
@@ -224,7 +226,7 @@ static int fs_select_read(alb_channel_t *ch, uint8_t *buffer)
     unsigned pair;
     int result;
 
-    if (!ALB_FS_VALID_INDEX(ch->read_locked))
+    if (!ALB_FS_VALID_INDEX(ch->fs_read_locked))
         return ALB_ERR_ARG;
     /* 1. the latest buffer */
     word = alb_rd32(ch->base);
@@ -239,7 +241,7 @@ static int fs_select_read(alb_channel_t *ch, uint8_t *buffer)
     /* 3. announce its pair: from now on the producer writes the other one */
     pair = ALB_FS_PAIR(latest);
     alb_wr8(ch->base + ALB_OFF_READLOCKED, latest);
-    ch->read_locked = latest;
+    ch->fs_read_locked = latest;
     alb_fence();          /* store ReadLocked before loading the slot byte */
     /* 4. the slot of that pair completed last, loaded after the announcement */
     word = alb_rd32(ch->base);                     /* after the announcement */
@@ -253,8 +255,56 @@ static int fs_select_read(alb_channel_t *ch, uint8_t *buffer)
     return result;
 }
 
+/* The four-slot Import and Export: the helpers above, and one copy loop per
+ * direction of their own, out of line (fs_copy_in, fs_copy_out) so that the
+ * three-buffer path, below, keeps the paper's code and its cost: a load and
+ * a branch for the kind are all it pays. */
+#ifdef __GNUC__
+#define ALB_NOINLINE static __attribute__((__noinline__))
+#else
+#define ALB_NOINLINE static
+#endif
+ALB_NOINLINE void fs_copy_in(const alb_channel_t *ch, uint8_t buffer, void *dst)
+{
+    read_from(ch, buffer, dst);
+}
+
+ALB_NOINLINE void fs_copy_out(const alb_channel_t *ch, uint8_t buffer, const void *src)
+{
+    write_to(ch, buffer, src);
+}
+
+ALB_NOINLINE int fs_import(alb_channel_t *ch, void *dst)
+{
+    uint8_t buffer;
+    int result = fs_select_read(ch, &buffer);   /* steps 1-4 */
+
+    if (result < 0)
+        return result;
+    alb_fence();              /* acquire: the control loads before the data */
+    fs_copy_in(ch, buffer, dst);                 /* step 5 */
+    return result;
+}
+
+ALB_NOINLINE int fs_export(alb_channel_t *ch, const void *src)
+{
+    uint8_t buffer;
+    int result;
+
+    if (!ALB_FS_VALID_INDEX(ch->fs_actual))
+        return ALB_ERR_ARG;
+    result = fs_select_write(ch, &buffer);      /* steps 1-2 */
+    fs_copy_out(ch, buffer, src);               /* step 3 */
+    alb_fence();                 /* release: the data before the slot byte */
+    fs_complete(ch, buffer);                     /* step 4, fence */
+    alb_wr8(ch->base + ALB_OFF_ACTUAL, buffer);  /* step 5 */
+    ch->fs_actual = buffer;
+    return result;
+}
+
 /* ------------------------------------------------------------------------
- * Set-up, and the three-buffer kind with the four-slot steps in their places. */
+ * Set-up, and the three-buffer kind (the four-slot kind branches off at the
+ * top of each function). */
 
 int alb_producer_init(alb_channel_t *ch, const void *initial)
 {
@@ -267,6 +317,9 @@ int alb_producer_init(alb_channel_t *ch, const void *initial)
         alb_wr8(ch->base + ALB_OFF_SLOT1, (uint8_t)ALB_FS_INITIAL_SLOT);
         ch->slot[0] = ch->slot[1] = (uint8_t)ALB_FS_INITIAL_SLOT;
         alb_fence();
+        alb_wr8(ch->base + ALB_OFF_ACTUAL, ALB_BUFFER1);
+        ch->fs_actual = ALB_BUFFER1;
+        return ALB_OK;
     }
     alb_wr8(ch->base + ALB_OFF_ACTUAL, ALB_BUFFER1);
     ch->actual = ALB_BUFFER1;
@@ -294,8 +347,12 @@ int alb_consumer_init(alb_channel_t *ch)
         return ALB_ERR_ARG;
     alb_wr8(ch->base + ALB_OFF_READLOCKED, ALB_BUFFER1);
     alb_fence();
+    if (ch->kind == ALB_FOUR_SLOT) {
+        ch->fs_read_locked = ALB_BUFFER1;
+        ch->last = ALB_BUFFER1;        /* Buffer1's value counts as read */
+        return ALB_OK;
+    }
     ch->read_locked = ALB_BUFFER1;
-    ch->last = ALB_BUFFER1;         /* four-slot: Buffer1's value counts as read */
     return ALB_OK;
 }
 
@@ -319,32 +376,26 @@ int alb_import(alb_channel_t *ch, void *dst)
     int result = ALB_OLD;
     uint8_t actual;
 
-    if (ch != 0 && dst != 0 && ch->kind == ALB_FOUR_SLOT) {
-        /* --- four-slot steps 1-4 (wait-free): the buffer into actual */
-        result = fs_select_read(ch, &actual);
-        if (result < 0)
-            return result;
-    } else {
-        if (ch == 0 || dst == 0 || !ALB_VALID_INDEX(ch->read_locked))
-            return ALB_ERR_ARG;
+    /* A four-slot channel keeps ch->read_locked at 0: it takes the branch
+     * for a side never set up, so the three-buffer path pays nothing. */
+    if (ch == 0 || dst == 0 || !ALB_VALID_INDEX(ch->read_locked))
+        return ch != 0 && dst != 0 && ch->kind == ALB_FOUR_SLOT ? fs_import(ch, dst) : ALB_ERR_ARG;
 
-        /* --- Phase 1: select a buffer for read-access */
+    /* --- Phase 1: select a buffer for read-access */
+    actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
+    while (actual != ch->read_locked) {
+        if (!ALB_VALID_INDEX(actual))
+            return ALB_ERR_CORRUPT;
+        ch->read_locked = actual;                           /* ReadLocked:= Actual */
+        alb_wr8(ch->base + ALB_OFF_READLOCKED, actual);
+        alb_fence();                  /* store ReadLocked before loading Actual */
         actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
-        while (actual != ch->read_locked) {
-            if (!ALB_VALID_INDEX(actual))
-                return ALB_ERR_CORRUPT;
-            ch->read_locked = actual;                           /* ReadLocked:= Actual */
-            alb_wr8(ch->base + ALB_OFF_READLOCKED, actual);
-            alb_fence();                  /* store ReadLocked before loading Actual */
-            actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
-            result = ALB_NEW;
-        }
+        result = ALB_NEW;
     }
     alb_fence();                  /* acquire: load Actual before the data loads */
 
-    /* --- Phase 2: read-access to the selected buffer (ReadLocked; four-slot:
-     * the buffer its slot byte named) */
-    read_from(ch, actual, dst);
+    /* --- Phase 2: read-access to the selected buffer */
+    read_from(ch, ch->read_locked, dst);
     return result;
 }
 
@@ -352,30 +403,23 @@ int alb_export(alb_channel_t *ch, const void *src)
 {
     uint8_t buffer, write_buffer = 0u, copy_of_read_locked;
     int result = ALB_OK;
-    const int four_slot = ch != 0 && src != 0 && ch->kind == ALB_FOUR_SLOT;
 
-    if (ch == 0 || src == 0 || !(four_slot ? ALB_FS_VALID_INDEX(ch->actual) : ALB_VALID_INDEX(ch->actual)))
-        return ALB_ERR_ARG;
+    /* A four-slot channel keeps ch->actual at 0 (see alb_import). */
+    if (ch == 0 || src == 0 || !ALB_VALID_INDEX(ch->actual))
+        return ch != 0 && src != 0 && ch->kind == ALB_FOUR_SLOT ? fs_export(ch, src) : ALB_ERR_ARG;
 
-    if (four_slot) {
-        /* --- four-slot steps 1-2: the other pair's slot not completed last */
-        result = fs_select_write(ch, &write_buffer);
-    } else {
-        /* --- Phase 1: select a buffer for write-access */
-        alb_fence();         /* the last store of Actual before loading ReadLocked */
-        copy_of_read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
-        if (!ALB_VALID_INDEX(copy_of_read_locked))
-            result = ALB_ERR_CORRUPT;   /* it excludes no buffer: one stays free */
-        for (buffer = ALB_BUFFER1; buffer <= ALB_BUFFER3; ++buffer)
-            if (buffer != ch->actual && buffer != copy_of_read_locked)
-                write_buffer = buffer;
-    }
+    /* --- Phase 1: select a buffer for write-access */
+    alb_fence();         /* the last store of Actual before loading ReadLocked */
+    copy_of_read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
+    if (!ALB_VALID_INDEX(copy_of_read_locked))
+        result = ALB_ERR_CORRUPT;   /* it excludes no buffer: one stays free */
+    for (buffer = ALB_BUFFER1; buffer <= ALB_BUFFER3; ++buffer)
+        if (buffer != ch->actual && buffer != copy_of_read_locked)
+            write_buffer = buffer;
 
     /* --- Phase 2: write-access to the selected buffer */
     write_to(ch, write_buffer, src);
     alb_fence();                 /* release: the data before the store of Actual */
-    if (four_slot)
-        fs_complete(ch, write_buffer);  /* step 4: Slot[pair] := slot, fence */
 
     /* --- Phase 3: assign completely written buffer as actual */
     alb_wr8(ch->base + ALB_OFF_ACTUAL, write_buffer);

@@ -61,9 +61,12 @@ typedef struct alb_channel {
     uint8_t   kind;        /* ALB_THREE_BUFFER or ALB_FOUR_SLOT                */
     uint8_t   actual;      /* producer's private copy of Actual (0: none)      */
     uint8_t   read_locked; /* consumer's private copy of ReadLocked (0: none)  */
-    uint8_t   last;        /* four-slot consumer: the buffer it read last
-                              (0: none, after a restart)                       */
-    uint8_t   slot[2];     /* four-slot producer: private copies of Slot0/1    */
+    /* The four-slot kind keeps actual and read_locked at 0 and uses these: */
+    uint8_t   fs_actual;   /* producer's private copy of Actual (0: none)      */
+    uint8_t   fs_read_locked; /* consumer's private copy of ReadLocked (0: none) */
+    uint8_t   last;        /* consumer: the buffer it read last (0: none,
+                              after a restart)                                 */
+    uint8_t   slot[2];     /* producer: private copies of Slot0 and Slot1      */
 } alb_channel_t;
 
 /* Describe a three-buffer channel; no RAM access.  ALB_ERR_ARG if base is

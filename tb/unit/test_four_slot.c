@@ -55,7 +55,7 @@ static void fs_setup(void)
     memset(&ch, 0x55, sizeof ch);
     check_int("four-slot", ALB_OK, alb_channel_setup_kind(&ch, ch_base, 8u, ALB_FOUR_SLOT));
     check_int("kind kept", ALB_FOUR_SLOT, ch.kind);
-    check_int("no copies yet", 0, ch.actual | ch.read_locked | ch.last | ch.slot[0] | ch.slot[1]);
+    check_int("no copies yet", 0, ch.actual | ch.read_locked | ch.fs_actual | ch.fs_read_locked | ch.last | ch.slot[0] | ch.slot[1]);
     check_int("alb_channel_setup is three-buffer", ALB_OK, alb_channel_setup(&ch, ch_base, 8u));
     check_int("three-buffer kind", ALB_THREE_BUFFER, ch.kind);
     check_int("set-up makes no RAM access", 0, (long)ram_accesses());
@@ -102,7 +102,8 @@ static void fs_init_attach(void)
     port_reset(ch_base, ch_base + ALB_FS_CHANNEL_BYTES(8u));
     check_int("producer attach", ALB_OK, alb_producer_attach(&p));
     check_counts("producer attach", 0, 0, 1, 0);
-    check_int("Actual copy", 4, p.actual);
+    check_int("Actual copy", 4, p.fs_actual);
+    check_int("three-buffer copies stay 0", 0, p.actual | c.read_locked);
     check_int("Slot1 copy", 1, p.slot[1]);
     check_int("Slot0 copy", 0, p.slot[0]);
     check_int("consumer attach", ALB_OK, alb_consumer_attach(&c));
