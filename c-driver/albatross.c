@@ -1,6 +1,8 @@
 /*
  * albatross.c -- Import and Export of the three-buffer channel (seed 3.1,
- * figures 3 and 4), written to follow the paper line by line.
+ * figures 3 and 4), written to follow the paper line by line, and of the
+ * wait-free four-slot channel (docs/four_slot.md: the statement order and
+ * why each other order fails).
  *
  * Memory ordering.  The consumer stores ReadLocked and then loads Actual; the
  * producer stores Actual and, in its next Export, loads ReadLocked.  That is
@@ -10,7 +12,11 @@
  * also needs its data stores ordered before the store of Actual (release) and
  * the consumer its load of Actual before the data loads (acquire).  Each is an
  * alb_fence() below; on in-order cores without a store buffer they cost
- * almost nothing.  None of them is a RAM access.
+ * almost nothing.  None of them is a RAM access.  The four-slot kind has the
+ * same pattern (the ReadLocked store before the second control-word load,
+ * the Actual store before the next Export's control-word load) and orders
+ * its data stores before the Slot store and the Slot store before the
+ * Actual store.
  */
 #include "albatross.h"
 #include "alb_port.h"
@@ -31,10 +37,10 @@ typedef uint32_t alb_word;
 #define ALB_INLINE static inline
 #endif
 
-/* Address of buffer 1..3: base + 4 + (buffer - 1) * stride, without a
+/* Address of buffer 1..4: base + 4 + (buffer - 1) * stride, without a
  * multiply (rv32i has none).  Only the low two bits of buffer - 1 count, so
- * a buffer index of 0 (impossible with valid control bytes) lands just past
- * Buffer3, never on a control byte. */
+ * a buffer index of 0 (impossible with valid control bytes) lands on Buffer4
+ * (just past Buffer3), never on a control byte. */
 ALB_INLINE uintptr_t buffer_addr(const alb_channel_t *ch, uint8_t buffer)
 {
     uint32_t stride = ALB_STRIDE(ch->size), k = (uint32_t)buffer - 1u;
@@ -111,16 +117,194 @@ ALB_INLINE void write_to(const alb_channel_t *ch, uint8_t buffer, const void *sr
     }
 }
 
-int alb_channel_setup(alb_channel_t *ch, uintptr_t base, uint32_t size)
+/* The byte at offset off (0..3) of a control word loaded with alb_rd32. */
+ALB_INLINE uint8_t ctl_byte(uint32_t word, uint32_t off)
 {
-    if (ch == 0 || (base & 3u) != 0u || size == 0u)
+    return (uint8_t)(word >> (8u * off));
+}
+
+int alb_channel_setup_kind(alb_channel_t *ch, uintptr_t base, uint32_t size, unsigned kind)
+{
+    if (ch == 0 || (base & 3u) != 0u || size == 0u ||
+        (kind != ALB_THREE_BUFFER && kind != ALB_FOUR_SLOT))
         return ALB_ERR_ARG;
     ch->base = base;
     ch->size = size;
+    ch->kind = (uint8_t)kind;
     ch->actual = 0u;
     ch->read_locked = 0u;
+    ch->fs_actual = 0u;
+    ch->fs_read_locked = 0u;
+    ch->last = 0u;
+    ch->slot[0] = ch->slot[1] = 0u;
     return ALB_OK;
 }
+
+int alb_channel_setup(alb_channel_t *ch, uintptr_t base, uint32_t size)
+{
+    return alb_channel_setup_kind(ch, base, size, ALB_THREE_BUFFER);
+}
+
+/* ------------------------------------------------------------------------
+ * The four-slot kind.  Buffer b (1..4) is pair (b-1)>>1, slot (b-1)&1.  The
+ * producer owns Actual, Slot0 and Slot1 (private copies, it is their only
+ * writer), the consumer ReadLocked and its private L (ch->last), the buffer
+ * it read last.  Export: the three-buffer Export plus one byte store;
+ * Import: 1 + W accesses if Actual still names L, else 3 + W.  The helpers
+ * below make the control accesses only: the payload copy is the one in
+ * alb_import / alb_export, shared by both kinds, so that the driver holds
+ * one inlined copy loop per direction (a board's program RAM is small).
+ */
+static int fs_producer_attach(alb_channel_t *ch)
+{
+    uint32_t word = alb_rd32(ch->base);
+    uint8_t actual = ctl_byte(word, ALB_OFF_ACTUAL);
+    uint8_t s0 = ctl_byte(word, ALB_OFF_SLOT0), s1 = ctl_byte(word, ALB_OFF_SLOT1);
+
+    if (!ALB_FS_VALID_INDEX(actual) || !ALB_FS_VALID_SLOT(s0) || !ALB_FS_VALID_SLOT(s1))
+        return ALB_ERR_CORRUPT;
+    ch->fs_actual = actual;
+    ch->slot[0] = s0;
+    ch->slot[1] = s1;
+    return ALB_OK;
+}
+
+static int fs_consumer_attach(alb_channel_t *ch)
+{
+    uint8_t read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
+
+    if (!ALB_FS_VALID_INDEX(read_locked))
+        return ALB_ERR_CORRUPT;
+    ch->fs_read_locked = read_locked;
+    ch->last = 0u;                     /* forgotten: the next Import is New */
+    return ALB_OK;
+}
+
+/* Export steps 1 and 2: the buffer to write, *buffer.  ALB_OK, or
+ * ALB_ERR_CORRUPT for an invalid ReadLocked (the value is published all the
+ * same, in the pair other than Actual's). */
+static int fs_select_write(alb_channel_t *ch, uint8_t *buffer)
+{
+    uint32_t word;
+    uint8_t read_locked;
+    unsigned pair, slot;
+    int result = ALB_OK;
+
+    /* 1. the consumer's pair: write the other one */
+    alb_fence();       /* the last store of Actual before loading ReadLocked */
+    word = alb_rd32(ch->base);
+    read_locked = ctl_byte(word, ALB_OFF_READLOCKED);
+    if (ALB_FS_VALID_INDEX(read_locked)) {
+        pair = 1u - ALB_FS_PAIR(read_locked);
+    } else {
+        pair = 1u - ALB_FS_PAIR(ch->fs_actual);   /* a faulty consumer: keep going */
+        result = ALB_ERR_CORRUPT;
+    }
+    /* 2. the slot of that pair not completed last */
+    slot = 1u - ch->slot[pair];
+    *buffer = (uint8_t)ALB_FS_BUFFER(pair, slot);
+    return result;
+}
+
+/* Export step 4 (after the payload and a release fence): the pair's slot
+ * byte names the completed slot; then a fence, the slot byte before Actual. */
+static void fs_complete(alb_channel_t *ch, uint8_t buffer)
+{
+    unsigned pair = ALB_FS_PAIR(buffer), slot = ALB_FS_SLOT(buffer);
+
+    alb_wr8(ch->base + ALB_OFF_SLOT(pair), (uint8_t)slot);
+    ch->slot[pair] = (uint8_t)slot;
+    alb_fence();                       /* the slot byte before Actual */
+}
+
+/* Import steps 1 to 4: the buffer to read, *buffer, and the result:
+ * ALB_NEW, ALB_OLD, ALB_ERR_CORRUPT (nothing to read) or ALB_ERR_ARG. */
+static int fs_select_read(alb_channel_t *ch, uint8_t *buffer)
+{
+    uint32_t word;
+    uint8_t latest, slot;
+    unsigned pair;
+    int result;
+
+    if (!ALB_FS_VALID_INDEX(ch->fs_read_locked))
+        return ALB_ERR_ARG;
+    /* 1. the latest buffer */
+    word = alb_rd32(ch->base);
+    latest = ctl_byte(word, ALB_OFF_ACTUAL);
+    if (!ALB_FS_VALID_INDEX(latest))
+        return ALB_ERR_CORRUPT;
+    /* 2. nothing new: the buffer read last, still protected by ReadLocked */
+    if (latest == ch->last) {
+        *buffer = latest;
+        return ALB_OLD;
+    }
+    /* 3. announce its pair: from now on the producer writes the other one */
+    pair = ALB_FS_PAIR(latest);
+    alb_wr8(ch->base + ALB_OFF_READLOCKED, latest);
+    ch->fs_read_locked = latest;
+    alb_fence();          /* store ReadLocked before loading the slot byte */
+    /* 4. the slot of that pair completed last, loaded after the announcement */
+    word = alb_rd32(ch->base);                     /* after the announcement */
+    slot = ctl_byte(word, ALB_OFF_SLOT(pair));
+    if (!ALB_FS_VALID_SLOT(slot))
+        return ALB_ERR_CORRUPT;
+    *buffer = (uint8_t)ALB_FS_BUFFER(pair, slot);
+    /* 5. (the caller reads it) New unless it is the buffer read last */
+    result = *buffer == ch->last ? ALB_OLD : ALB_NEW;
+    ch->last = *buffer;
+    return result;
+}
+
+/* The four-slot Import and Export: the helpers above, and one copy loop per
+ * direction of their own, out of line (fs_copy_in, fs_copy_out) so that the
+ * three-buffer path, below, keeps the paper's code and its cost: a load and
+ * a branch for the kind are all it pays. */
+#ifdef __GNUC__
+#define ALB_NOINLINE static __attribute__((__noinline__))
+#else
+#define ALB_NOINLINE static
+#endif
+ALB_NOINLINE void fs_copy_in(const alb_channel_t *ch, uint8_t buffer, void *dst)
+{
+    read_from(ch, buffer, dst);
+}
+
+ALB_NOINLINE void fs_copy_out(const alb_channel_t *ch, uint8_t buffer, const void *src)
+{
+    write_to(ch, buffer, src);
+}
+
+ALB_NOINLINE int fs_import(alb_channel_t *ch, void *dst)
+{
+    uint8_t buffer;
+    int result = fs_select_read(ch, &buffer);   /* steps 1-4 */
+
+    if (result < 0)
+        return result;
+    alb_fence();              /* acquire: the control loads before the data */
+    fs_copy_in(ch, buffer, dst);                 /* step 5 */
+    return result;
+}
+
+ALB_NOINLINE int fs_export(alb_channel_t *ch, const void *src)
+{
+    uint8_t buffer;
+    int result;
+
+    if (!ALB_FS_VALID_INDEX(ch->fs_actual))
+        return ALB_ERR_ARG;
+    result = fs_select_write(ch, &buffer);      /* steps 1-2 */
+    fs_copy_out(ch, buffer, src);               /* step 3 */
+    alb_fence();                 /* release: the data before the slot byte */
+    fs_complete(ch, buffer);                     /* step 4, fence */
+    alb_wr8(ch->base + ALB_OFF_ACTUAL, buffer);  /* step 5 */
+    ch->fs_actual = buffer;
+    return result;
+}
+
+/* ------------------------------------------------------------------------
+ * Set-up, and the three-buffer kind (the four-slot kind branches off at the
+ * top of each function). */
 
 int alb_producer_init(alb_channel_t *ch, const void *initial)
 {
@@ -128,6 +312,15 @@ int alb_producer_init(alb_channel_t *ch, const void *initial)
         return ALB_ERR_ARG;
     write_to(ch, ALB_BUFFER1, initial);
     alb_fence();
+    if (ch->kind == ALB_FOUR_SLOT) {   /* both slot bytes, then Actual */
+        alb_wr8(ch->base + ALB_OFF_SLOT0, (uint8_t)ALB_FS_INITIAL_SLOT);
+        alb_wr8(ch->base + ALB_OFF_SLOT1, (uint8_t)ALB_FS_INITIAL_SLOT);
+        ch->slot[0] = ch->slot[1] = (uint8_t)ALB_FS_INITIAL_SLOT;
+        alb_fence();
+        alb_wr8(ch->base + ALB_OFF_ACTUAL, ALB_BUFFER1);
+        ch->fs_actual = ALB_BUFFER1;
+        return ALB_OK;
+    }
     alb_wr8(ch->base + ALB_OFF_ACTUAL, ALB_BUFFER1);
     ch->actual = ALB_BUFFER1;
     return ALB_OK;
@@ -139,6 +332,8 @@ int alb_producer_attach(alb_channel_t *ch)
 
     if (ch == 0 || ch->size == 0u)
         return ALB_ERR_ARG;
+    if (ch->kind == ALB_FOUR_SLOT)
+        return fs_producer_attach(ch);
     actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
     if (!ALB_VALID_INDEX(actual))
         return ALB_ERR_CORRUPT;
@@ -152,6 +347,11 @@ int alb_consumer_init(alb_channel_t *ch)
         return ALB_ERR_ARG;
     alb_wr8(ch->base + ALB_OFF_READLOCKED, ALB_BUFFER1);
     alb_fence();
+    if (ch->kind == ALB_FOUR_SLOT) {
+        ch->fs_read_locked = ALB_BUFFER1;
+        ch->last = ALB_BUFFER1;        /* Buffer1's value counts as read */
+        return ALB_OK;
+    }
     ch->read_locked = ALB_BUFFER1;
     return ALB_OK;
 }
@@ -162,6 +362,8 @@ int alb_consumer_attach(alb_channel_t *ch)
 
     if (ch == 0 || ch->size == 0u)
         return ALB_ERR_ARG;
+    if (ch->kind == ALB_FOUR_SLOT)
+        return fs_consumer_attach(ch);
     read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
     if (!ALB_VALID_INDEX(read_locked))
         return ALB_ERR_CORRUPT;
@@ -174,8 +376,10 @@ int alb_import(alb_channel_t *ch, void *dst)
     int result = ALB_OLD;
     uint8_t actual;
 
+    /* A four-slot channel keeps ch->read_locked at 0: it takes the branch
+     * for a side never set up, so the three-buffer path pays nothing. */
     if (ch == 0 || dst == 0 || !ALB_VALID_INDEX(ch->read_locked))
-        return ALB_ERR_ARG;
+        return ch != 0 && dst != 0 && ch->kind == ALB_FOUR_SLOT ? fs_import(ch, dst) : ALB_ERR_ARG;
 
     /* --- Phase 1: select a buffer for read-access */
     actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
@@ -200,8 +404,9 @@ int alb_export(alb_channel_t *ch, const void *src)
     uint8_t buffer, write_buffer = 0u, copy_of_read_locked;
     int result = ALB_OK;
 
+    /* A four-slot channel keeps ch->actual at 0 (see alb_import). */
     if (ch == 0 || src == 0 || !ALB_VALID_INDEX(ch->actual))
-        return ALB_ERR_ARG;
+        return ch != 0 && src != 0 && ch->kind == ALB_FOUR_SLOT ? fs_export(ch, src) : ALB_ERR_ARG;
 
     /* --- Phase 1: select a buffer for write-access */
     alb_fence();         /* the last store of Actual before loading ReadLocked */

@@ -1,5 +1,7 @@
 /*
- * albatross.h -- the ALBATROSS three-buffer channel (seed 3.1, figures 2-4).
+ * albatross.h -- the ALBATROSS channel: the paper's three-buffer kind (seed
+ * 3.1, figures 2-4) and the wait-free four-slot kind (issue 13; Simpson's
+ * four-slot mechanism on single-writer bytes, docs/four_slot.md).
  *
  * A channel carries one variable from one producer to one consumer through a
  * dual-ported RAM, without locks, interrupts or waiting: alb_export() never
@@ -19,6 +21,18 @@
  *   alb_import, no new data    1  (load Actual)
  *   alb_import, new data       3  (load Actual, store ReadLocked, load Actual)
  * and the payload takes ceil(size / 4) word accesses.
+ *
+ * The four-slot kind (alb_channel_setup_kind(..., ALB_FOUR_SLOT)) uses the
+ * reserved bytes 2 and 3 as the producer's slot bytes and a fourth buffer
+ * (ALB_FS_CHANNEL_BYTES).  Its Import is wait-free, whatever the producer does:
+ *   alb_export                 3  (load control word, store Slot, store Actual)
+ *   alb_import, no new data    1  (load control word)
+ *   alb_import, otherwise      3  (load control word, store ReadLocked,
+ *                                  load control word)
+ * plus the payload.  Both sides of a channel must use the same kind (the
+ * compiler guarantees it).  A four-slot consumer that restarts
+ * (alb_consumer_attach) has forgotten the last value it read: its first
+ * Import returns ALB_NEW.
  */
 #ifndef ALBATROSS_H
 #define ALBATROSS_H
@@ -38,32 +52,50 @@ enum {
                               side was never initialised or attached           */
 };
 
+/* Channel kinds (alb_channel_setup_kind). */
+enum { ALB_THREE_BUFFER = 0, ALB_FOUR_SLOT = 1 };
+
 typedef struct alb_channel {
     uintptr_t base;        /* channel address in this CPU's view of the RAM   */
     uint32_t  size;        /* payload bytes                                    */
+    uint8_t   kind;        /* ALB_THREE_BUFFER or ALB_FOUR_SLOT                */
     uint8_t   actual;      /* producer's private copy of Actual (0: none)      */
     uint8_t   read_locked; /* consumer's private copy of ReadLocked (0: none)  */
+    /* The four-slot kind keeps actual and read_locked at 0 and uses these: */
+    uint8_t   fs_actual;   /* producer's private copy of Actual (0: none)      */
+    uint8_t   fs_read_locked; /* consumer's private copy of ReadLocked (0: none) */
+    uint8_t   last;        /* consumer: the buffer it read last (0: none,
+                              after a restart)                                 */
+    uint8_t   slot[2];     /* producer: private copies of Slot0 and Slot1      */
 } alb_channel_t;
 
-/* Describe a channel; no RAM access.  ALB_ERR_ARG if base is not 4-aligned
- * or size is 0. */
+/* Describe a three-buffer channel; no RAM access.  ALB_ERR_ARG if base is
+ * not 4-aligned or size is 0. */
 int alb_channel_setup(alb_channel_t *ch, uintptr_t base, uint32_t size);
+/* The same for either kind (ALB_THREE_BUFFER, ALB_FOUR_SLOT); ALB_ERR_ARG
+ * also for an unknown kind. */
+int alb_channel_setup_kind(alb_channel_t *ch, uintptr_t base, uint32_t size, unsigned kind);
 
-/* Producer, cold start: Buffer1 := *initial, Actual := Buffer1. */
+/* Producer, cold start: Buffer1 := *initial, (four-slot: Slot0 := Slot1 :=
+ * 0,) Actual := Buffer1. */
 int alb_producer_init(alb_channel_t *ch, const void *initial);
-/* Producer, restart while the consumer runs: private copy := Actual.
- * ALB_ERR_CORRUPT if the RAM holds no valid index. */
+/* Producer, restart while the consumer runs: private copies := Actual (and
+ * four-slot: Slot0, Slot1, from one load of the control word).
+ * ALB_ERR_CORRUPT if the RAM holds no valid index (or slot). */
 int alb_producer_attach(alb_channel_t *ch);
-/* Consumer, cold start: ReadLocked := Buffer1. */
+/* Consumer, cold start: ReadLocked := Buffer1 (Buffer1's value counts as
+ * read). */
 int alb_consumer_init(alb_channel_t *ch);
-/* Consumer, restart: private copy := ReadLocked (ALB_ERR_CORRUPT if invalid). */
+/* Consumer, restart: private copy := ReadLocked (ALB_ERR_CORRUPT if invalid).
+ * Four-slot: the last value read is forgotten, the next Import returns New. */
 int alb_consumer_attach(alb_channel_t *ch);
 
 /* Import (seed figure 3): copy the newest published value into *dst.
  * Returns ALB_NEW or ALB_OLD.  ALB_ERR_CORRUPT if Actual is out of range:
- * then no buffer is read and *dst is unchanged.  Lock-free, not wait-free:
- * the selection loop repeats only while the producer publishes again between
- * two loads of Actual. */
+ * then no buffer is read and *dst is unchanged.  Three-buffer: lock-free, not
+ * wait-free: the selection loop repeats only while the producer publishes
+ * again between two loads of Actual.  Four-slot: wait-free, 1 + W or 3 + W
+ * accesses; ALB_ERR_CORRUPT also for a slot byte that is not 0 or 1. */
 int alb_import(alb_channel_t *ch, void *dst);
 
 /* Export (seed figure 4): publish *src.  Never blocks; a fixed number of

@@ -38,4 +38,26 @@
 /* A control byte value names a buffer. */
 #define ALB_VALID_INDEX(v)        ((v) >= ALB_BUFFER1 && (v) <= ALB_BUFFER3)
 
+/* The four-slot kind (docs/four_slot.md): the same control bytes, the two
+ * reserved bytes as the producer's slot bytes (Slot0, Slot1: 0 or 1, the
+ * slot of each pair completed last) and a fourth buffer.  Buffer b
+ * (1..4) is pair (b - 1) >> 1, slot (b - 1) & 1. */
+#define ALB_OFF_SLOT0       2u
+#define ALB_OFF_SLOT1       3u
+#define ALB_FS_BUFFERS      4u
+#define ALB_BUFFER4         4u
+#define ALB_FS_INITIAL_SLOT 0u
+/* Bytes one four-slot channel occupies in the dual-ported RAM. */
+#define ALB_FS_CHANNEL_BYTES(size) (ALB_OFF_BUFFERS + ALB_FS_BUFFERS * ALB_STRIDE(size))
+/* A control byte value names a buffer of the four-slot kind. */
+#define ALB_FS_VALID_INDEX(v)     ((v) >= ALB_BUFFER1 && (v) <= ALB_BUFFER4)
+/* A slot byte value names a slot. */
+#define ALB_FS_VALID_SLOT(v)      ((v) <= 1u)
+/* Pair and slot of buffer b, and the buffer of pair p, slot s. */
+#define ALB_FS_PAIR(b)            ((unsigned)((b) - ALB_BUFFER1) >> 1)
+#define ALB_FS_SLOT(b)            ((unsigned)((b) - ALB_BUFFER1) & 1u)
+#define ALB_FS_BUFFER(p, s)       (ALB_BUFFER1 + 2u * (p) + (s))
+/* Byte offset of the slot byte of pair p (0 or 1). */
+#define ALB_OFF_SLOT(p)           (ALB_OFF_SLOT0 + (p) * (ALB_OFF_SLOT1 - ALB_OFF_SLOT0))
+
 #endif

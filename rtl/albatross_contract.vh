@@ -61,4 +61,11 @@ localparam ALB_CH_BUFFER1        = 1;
 localparam ALB_CH_BUFFER_LAST    = 3;
 localparam ALB_CH_INITIAL_INDEX  = 1;
 localparam ALB_CH_TAKEN_AT_WORDS = 1;  // destination stride: W + TAKEN_AT_WORDS
+// four-slot kind (E0 flag FOUR_SLOT): slot bytes, buffers 1..FS_BUFFERS, buffer b is
+// pair (b-1)>>1, slot (b-1)&1
+localparam ALB_CH_OFF_SLOT0      = 2;
+localparam ALB_CH_OFF_SLOT1      = 3;
+localparam ALB_FS_BUFFERS        = 4;
+localparam ALB_FS_BUFFER_LAST    = 4;
+localparam ALB_FS_INITIAL_SLOT   = 0;
 /* verilator lint_on UNUSEDPARAM */

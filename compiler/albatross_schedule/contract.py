@@ -139,6 +139,14 @@ class Contract:
         self.taken_at_words = int(lay["taken_at_words"])
         self.control = {c["name"]: ControlByte(c["name"], int(c["offset"]), int(c["size"]), c["contents"],
                                                c["writer"]) for c in lay["control"]}
+        fs = lay["four_slot"]
+        unknown = set(fs) - {"buffers", "initial_slot", "control"}
+        if unknown:
+            raise ValueError(f"layout.four_slot: unknown keys {sorted(unknown)}")
+        self.fs_buffers = int(fs["buffers"])
+        self.fs_initial_slot = int(fs["initial_slot"])
+        self.fs_control = {c["name"]: ControlByte(c["name"], int(c["offset"]), int(c["size"]), c["contents"],
+                                                  c["writer"]) for c in fs["control"]}
 
     def _problems(self):
         p = []
@@ -197,6 +205,31 @@ class Contract:
         for name in ("actual", "readlocked"):
             if name not in self.control:
                 p.append(f"layout: no control byte '{name}'")
+        p += self._four_slot_problems()
+        return p
+
+    def _four_slot_problems(self):
+        """[layout.four_slot]: four buffers in two pairs, slot bytes slot0 and
+        slot1 of one byte each inside the control word (the bytes before
+        Buffer1 that one word load reads), overlapping nothing."""
+        p = []
+        if self.fs_buffers != 4:
+            p.append(f"layout.four_slot: buffers {self.fs_buffers}, expected 4 (two pairs of two slots)")
+        if self.fs_initial_slot not in (0, 1):
+            p.append(f"layout.four_slot: initial_slot {self.fs_initial_slot}, expected 0 or 1")
+        if sorted(self.fs_control) != ["slot0", "slot1"]:
+            p.append(f"layout.four_slot: control bytes {sorted(self.fs_control)}, expected slot0 and slot1")
+        for cb in self.fs_control.values():
+            if cb.size != 1:
+                p.append(f"layout.four_slot: {cb.name} is {cb.size} bytes, expected 1 (a byte store is indivisible)")
+            if cb.offset < 0 or cb.offset + cb.size > min(self.word_bytes, self.buffers_offset):
+                p.append(f"layout.four_slot: {cb.name} at offset {cb.offset} is outside the control word "
+                         f"(bytes 0..{min(self.word_bytes, self.buffers_offset) - 1})")
+        every = list(self.control.values()) + list(self.fs_control.values())
+        offs = sorted((c.offset, c.offset + c.size, c.name) for c in every)
+        for a, b in zip(offs, offs[1:]):
+            if a[1] > b[0]:
+                p.append(f"layout.four_slot: control byte {b[2]} overlaps {a[2]}")
         return p
 
     def _need(self, p, word, name):
@@ -285,6 +318,20 @@ class Contract:
     def control_words(self) -> int:
         """Words before Buffer1 (the control bytes and the reserved bytes)."""
         return self.buffers_offset // self.word_bytes
+
+    def fs_channel_bytes(self, payload: int) -> int:
+        """Bytes of a four-slot channel: the control word, then four buffers."""
+        return self.buffers_offset + self.fs_buffers * self.stride(payload)
+
+    @property
+    def fs_buffer_last(self) -> int:
+        return self.buffer1 + self.fs_buffers - 1
+
+    def fs_initial_control_word(self) -> int:
+        """The first word of a fresh four-slot channel: Actual = ReadLocked =
+        initial_index, both slot bytes = initial_slot."""
+        return self.initial_control_word() | sum(self.fs_initial_slot << (8 * c.offset)
+                                                 for c in self.fs_control.values())
 
     def initial_control_word(self) -> int:
         """The first word of a freshly initialised channel (every control byte = initial_index)."""

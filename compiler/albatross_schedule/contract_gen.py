@@ -19,7 +19,7 @@ GENERATOR = "make contract (compiler/albatross_schedule/contract_gen.py)"
 VH_PATH = "rtl/albatross_contract.vh"
 C_LAYOUT_PATH = "c-driver/albatross_layout.h"
 CXX_PATH = "tb/common/albatross_contract.h"
-BLOCKS = ("rom-header", "rom-entry", "channel-layout")
+BLOCKS = ("rom-header", "rom-entry", "channel-layout", "four-slot-layout")
 
 
 def _stamp(comment: str) -> str:
@@ -92,6 +92,13 @@ def render_vh(c: Contract) -> str:
     L.append(f"localparam ALB_CH_BUFFER_LAST    = {c.buffer_last};")
     L.append(f"localparam ALB_CH_INITIAL_INDEX  = {c.initial_index};")
     L.append(f"localparam ALB_CH_TAKEN_AT_WORDS = {c.taken_at_words};  // destination stride: W + TAKEN_AT_WORDS")
+    L.append("// four-slot kind (E0 flag FOUR_SLOT): slot bytes, buffers 1..FS_BUFFERS, buffer b is")
+    L.append("// pair (b-1)>>1, slot (b-1)&1")
+    for cb in sorted(c.fs_control.values(), key=lambda x: x.offset):
+        L.append(f"localparam ALB_CH_OFF_{cb.name.upper():<10} = {cb.offset};")
+    L.append(f"localparam ALB_FS_BUFFERS        = {c.fs_buffers};")
+    L.append(f"localparam ALB_FS_BUFFER_LAST    = {c.fs_buffer_last};")
+    L.append(f"localparam ALB_FS_INITIAL_SLOT   = {c.fs_initial_slot};")
     L.append("/* verilator lint_on UNUSEDPARAM */")
     return "\n".join(L) + "\n"
 
@@ -118,6 +125,30 @@ def layout_rows(c: Contract):
     for i in range(c.buffers):
         off = str(c.buffers_offset) + ("" if i == 0 else f" + {'' if i == 1 else i}S")
         rows.append((off, "S", f"Buffer{i + 1}", producer))
+    return rows
+
+
+def fs_layout_rows(c: Contract):
+    """(offset, size, contents, writer) of the four-slot channel layout."""
+    every = list(c.control.values()) + list(c.fs_control.values())
+    rows, end = [], 0
+    for cb in sorted(every, key=lambda x: x.offset):
+        if cb.offset > end:
+            rows.append((str(end), str(cb.offset - end), "reserved, 0", "—"))
+        contents = cb.contents
+        if cb.name == "actual":
+            contents = f"`Actual`: {c.buffer1}..{c.fs_buffer_last} (Buffer1..{c.fs_buffers}), the latest buffer"
+        elif cb.name == "readlocked":
+            contents = (f"`ReadLocked`: {c.buffer1}..{c.fs_buffer_last}, the consumer's pair: the producer "
+                        "writes the other one")
+        rows.append((str(cb.offset), str(cb.size), contents, cb.writer))
+        end = cb.offset + cb.size
+    if c.buffers_offset > end:
+        rows.append((str(end), str(c.buffers_offset - end), "reserved, 0", "—"))
+    producer = c.control["actual"].writer
+    for i in range(c.fs_buffers):
+        off = str(c.buffers_offset) + ("" if i == 0 else f" + {'' if i == 1 else i}S")
+        rows.append((off, "S", f"Buffer{i + 1} (pair {i >> 1}, slot {i & 1})", producer))
     return rows
 
 
@@ -160,6 +191,27 @@ def render_c_layout(c: Contract) -> str:
          f"#define ALB_CHANNEL_BYTES(size)   (ALB_OFF_BUFFERS + {c.buffers}u * ALB_STRIDE(size))",
          "/* A control byte value names a buffer. */",
          "#define ALB_VALID_INDEX(v)        ((v) >= ALB_BUFFER1 && (v) <= ALB_BUFFER3)",
+         "",
+         "/* The four-slot kind (docs/four_slot.md): the same control bytes, the two",
+         " * reserved bytes as the producer's slot bytes (Slot0, Slot1: 0 or 1, the",
+         " * slot of each pair completed last) and a fourth buffer.  Buffer b",
+         f" * ({c.buffer1}..{c.fs_buffer_last}) is pair (b - {c.buffer1}) >> 1, slot (b - {c.buffer1}) & 1. */",
+         ] + [f"#define {'ALB_OFF_' + cb.name.upper():<19} {cb.offset}u" for cb in sorted(c.fs_control.values(), key=lambda x: x.offset)] + [
+         f"#define ALB_FS_BUFFERS      {c.fs_buffers}u",
+         f"#define ALB_BUFFER4         {c.fs_buffer_last}u",
+         f"#define ALB_FS_INITIAL_SLOT {c.fs_initial_slot}u",
+         "/* Bytes one four-slot channel occupies in the dual-ported RAM. */",
+         "#define ALB_FS_CHANNEL_BYTES(size) (ALB_OFF_BUFFERS + ALB_FS_BUFFERS * ALB_STRIDE(size))",
+         "/* A control byte value names a buffer of the four-slot kind. */",
+         "#define ALB_FS_VALID_INDEX(v)     ((v) >= ALB_BUFFER1 && (v) <= ALB_BUFFER4)",
+         "/* A slot byte value names a slot. */",
+         "#define ALB_FS_VALID_SLOT(v)      ((v) <= 1u)",
+         "/* Pair and slot of buffer b, and the buffer of pair p, slot s. */",
+         "#define ALB_FS_PAIR(b)            ((unsigned)((b) - ALB_BUFFER1) >> 1)",
+         "#define ALB_FS_SLOT(b)            ((unsigned)((b) - ALB_BUFFER1) & 1u)",
+         "#define ALB_FS_BUFFER(p, s)       (ALB_BUFFER1 + 2u * (p) + (s))",
+         "/* Byte offset of the slot byte of pair p (0 or 1). */",
+         "#define ALB_OFF_SLOT(p)           (ALB_OFF_SLOT0 + (p) * (ALB_OFF_SLOT1 - ALB_OFF_SLOT0))",
          "",
          "#endif"]
     if wb & (wb - 1):
@@ -226,6 +278,9 @@ def render_cxx(c: Contract) -> str:
           f"constexpr uint32_t WORD_BYTES = {c.word_bytes}, BUFFERS = {c.buffers}, BUFFER1 = {c.buffer1}, "
           f"INITIAL_INDEX = {c.initial_index};",
           f"constexpr uint32_t TAKEN_AT_WORDS = {c.taken_at_words};",
+          "// four-slot kind: slot bytes, four buffers; buffer b is pair (b-1)>>1, slot (b-1)&1",
+          f"constexpr uint32_t OFF_SLOT0 = {c.fs_control['slot0'].offset}, OFF_SLOT1 = {c.fs_control['slot1'].offset};",
+          f"constexpr uint32_t FS_BUFFERS = {c.fs_buffers}, FS_INITIAL_SLOT = {c.fs_initial_slot};",
           "// Bytes of a destination payload: the value's words, then taken_at.",
           "constexpr uint32_t dest_bytes(uint32_t words) { return WORD_BYTES * (words + TAKEN_AT_WORDS); }",
           "// Byte offset of taken_at in a destination payload.",
@@ -261,6 +316,9 @@ def render_markdown_block(c: Contract, name: str) -> str:
     elif name == "channel-layout":
         L = ["| offset | size | contents | written only by |", "|---|---|---|---|"]
         L += [f"| {o} | {s} | {t} | {w} |" for o, s, t, w in layout_rows(c)]
+    elif name == "four-slot-layout":
+        L = ["| offset | size | contents | written only by |", "|---|---|---|---|"]
+        L += [f"| {o} | {s} | {t} | {w} |" for o, s, t, w in fs_layout_rows(c)]
     else:
         raise ContractError(f"unknown contract block '{name}' (known: {', '.join(BLOCKS)})")
     return "\n".join([f"<!-- {_stamp('').strip()} -->"] + L)

@@ -162,6 +162,17 @@ class LayoutOracle(unittest.TestCase):
         self.assertEqual(lay["buffers"], C.buffers)
         self.assertEqual(lay["taken_at_words"], C.taken_at_words)
 
+    def test_four_slot_layout(self):
+        """The four-slot mapping of issue 13 (docs/four_slot.md), written out
+        independently: slot bytes at offsets 2 and 3 of the control word, four
+        buffers after it, both slot bytes 0 at the start."""
+        self.assertEqual(C.fs_control["slot0"].offset, 2)
+        self.assertEqual(C.fs_control["slot1"].offset, 3)
+        self.assertEqual(C.fs_buffers, 4)
+        self.assertEqual(C.fs_initial_slot, 0)
+        self.assertEqual(C.fs_channel_bytes(5), 4 + 4 * 8)
+        self.assertEqual(C.fs_initial_control_word(), 0x0101)
+
 
 class DefinitionChecks(unittest.TestCase):
     """The loader rejects an inconsistent definition, naming the problem."""
@@ -196,6 +207,26 @@ class DefinitionChecks(unittest.TestCase):
         with self.assertRaises(contract.ContractError) as cm:
             self.load_edited('word = "H3"\ncrc = true', 'word = "H3"\ncrc = false')
         self.assertIn("exactly one CRC word", str(cm.exception))
+
+    def test_four_slot_slot_outside_control_word(self):
+        with self.assertRaises(contract.ContractError) as cm:
+            self.load_edited('{ name = "slot1", offset = 3,', '{ name = "slot1", offset = 4,')
+        self.assertIn("slot1 at offset 4 is outside the control word", str(cm.exception))
+
+    def test_four_slot_overlap(self):
+        with self.assertRaises(contract.ContractError) as cm:
+            self.load_edited('{ name = "slot0", offset = 2,', '{ name = "slot0", offset = 1,')
+        self.assertIn("control byte slot0 overlaps readlocked", str(cm.exception))
+
+    def test_four_slot_wide_slot(self):
+        with self.assertRaises(contract.ContractError) as cm:
+            self.load_edited('{ name = "slot0", offset = 2, size = 1,', '{ name = "slot0", offset = 2, size = 2,')
+        self.assertIn("slot0 is 2 bytes", str(cm.exception))
+
+    def test_four_slot_buffers(self):
+        with self.assertRaises(contract.ContractError) as cm:
+            self.load_edited("buffers      = 4", "buffers      = 3")
+        self.assertIn("layout.four_slot: buffers 3, expected 4", str(cm.exception))
 
     def test_markdown_block(self):
         text = "intro\n<!-- contract:rom-entry -->\nold table\n<!-- /contract:rom-entry -->\nend\n"

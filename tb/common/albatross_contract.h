@@ -77,6 +77,9 @@ constexpr uint32_t place(uint32_t board, uint32_t base_word) {
 constexpr uint32_t OFF_ACTUAL = 0, OFF_READLOCKED = 1, OFF_BUFFERS = 4;
 constexpr uint32_t WORD_BYTES = 4, BUFFERS = 3, BUFFER1 = 1, INITIAL_INDEX = 1;
 constexpr uint32_t TAKEN_AT_WORDS = 1;
+// four-slot kind: slot bytes, four buffers; buffer b is pair (b-1)>>1, slot (b-1)&1
+constexpr uint32_t OFF_SLOT0 = 2, OFF_SLOT1 = 3;
+constexpr uint32_t FS_BUFFERS = 4, FS_INITIAL_SLOT = 0;
 // Bytes of a destination payload: the value's words, then taken_at.
 constexpr uint32_t dest_bytes(uint32_t words) { return WORD_BYTES * (words + TAKEN_AT_WORDS); }
 // Byte offset of taken_at in a destination payload.

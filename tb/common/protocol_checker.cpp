@@ -27,11 +27,13 @@ const char *ProtocolChecker::kind_name(int k)
     return n[k];
 }
 
-ProtocolChecker::ProtocolChecker(uint32_t base, uint32_t size, int producer_port, int consumer_port)
+ProtocolChecker::ProtocolChecker(uint32_t base, uint32_t size, int producer_port, int consumer_port, int kind)
     : base_(base), size_(size), words_((size + 3) / 4), prod_(producer_port), cons_(consumer_port),
+      kind_(kind), bytes_(kind == ALB_FOUR_SLOT ? ALB_FS_CHANNEL_BYTES(size) : ALB_CHANNEL_BYTES(size)),
       expect_(size)
 {
     publish_cycle_[0] = 0;   // the initial value, in Buffer1 from the start
+    complete_cycle_[0] = 0;
 }
 
 uint64_t ProtocolChecker::total_violations() const
@@ -53,7 +55,8 @@ void ProtocolChecker::violation(Kind k, const std::string &msg)
         std::snprintf(line, sizeof line, "    cycle %8llu  %s %s %-11s lanes %x  data %08x\n",
                       static_cast<unsigned long long>(a.serve_cycle), a.port == prod_ ? "producer" : "consumer",
                       a.req.we ? "write" : "read ",
-                      b == 0 ? (a.req.sel & 1 ? "Actual" : "ReadLocked") : b > 0 ? ("Buffer" + std::to_string(b)).c_str() : "outside",
+                      b == 0 ? (a.req.sel == 0xFu ? "control" : a.req.sel & 1 ? "Actual" : a.req.sel & 2 ? "ReadLocked"
+                                : a.req.sel & 4 ? "Slot0" : "Slot1") : b > 0 ? ("Buffer" + std::to_string(b)).c_str() : "outside",
                       a.req.sel, a.req.we ? a.req.wdata : a.rdata);
         first_context += line;
     }
@@ -61,7 +64,7 @@ void ProtocolChecker::violation(Kind k, const std::string &msg)
 
 int ProtocolChecker::buffer_of(uint32_t addr) const
 {
-    if (addr < base_ || addr >= base_ + ALB_CHANNEL_BYTES(size_)) return -1;
+    if (addr < base_ || addr >= base_ + bytes_) return -1;
     uint32_t off = addr - base_;
     if (off < ALB_OFF_BUFFERS) return 0;
     return 1 + static_cast<int>((off - ALB_OFF_BUFFERS) / ALB_STRIDE(size_));
@@ -78,14 +81,23 @@ void ProtocolChecker::on_access(const Access &a)
         ++export_acc_;
         if (importing_) imp_contended_ = true;
         if (a.req.we) {
-            if (ctrl_rl || (b == 0 && (a.req.sel & 0xCu))) {
-                std::snprintf(msg, sizeof msg, "producer wrote control lanes 0x%x at cycle %llu: it owns only Actual",
-                              a.req.sel, static_cast<unsigned long long>(a.serve_cycle));
+            const bool fs = kind_ == ALB_FOUR_SLOT;
+            if (ctrl_rl || (b == 0 && !fs && (a.req.sel & 0xCu))) {
+                std::snprintf(msg, sizeof msg, "producer wrote control lanes 0x%x at cycle %llu: it owns only Actual%s",
+                              a.req.sel, static_cast<unsigned long long>(a.serve_cycle), fs ? ", Slot0 and Slot1" : "");
                 violation(OWNERSHIP, msg);
+            }
+            if (fs && b == 0 && (a.req.sel & 0xCu) && exporting_) {
+                ++exp_slot_stores_;
+                complete_cycle_.emplace(cur_seq_, a.serve_cycle);
+                newest_complete_ = std::max(newest_complete_, cur_seq_);
             }
             if (b >= 1) buffer_writes_[b].push_back(a.serve_cycle);
             if (ctrl_actual && exporting_) {
                 publish_cycle_[cur_seq_] = a.serve_cycle;
+                if (kind_ == ALB_FOUR_SLOT) complete_cycle_.emplace(cur_seq_, a.serve_cycle);  // kind mismatch
+                else complete_cycle_[cur_seq_] = a.serve_cycle;   // three-buffer: complete = published
+                newest_complete_ = std::max(newest_complete_, cur_seq_);
                 newest_pub_ = std::max(newest_pub_, cur_seq_);
                 ++published;
             }
@@ -101,8 +113,8 @@ void ProtocolChecker::on_access(const Access &a)
             } else {
                 ++imp_iter_;
             }
-        } else if (ctrl_actual) {
-            imp_last_actual_ = a.serve_cycle;
+        } else if (ctrl_actual || (b == 0 && kind_ == ALB_FOUR_SLOT)) {
+            imp_last_actual_ = a.serve_cycle;   // four-slot: the last control-word load
         } else if (b >= 1) {
             if (imp_buffer_ == 0) {
                 imp_buffer_ = b;
@@ -128,6 +140,7 @@ void ProtocolChecker::export_begin(uint64_t seq)
     exporting_ = true;
     exp_contended_ = false;
     export_acc_ = 0;
+    exp_slot_stores_ = 0;
 }
 
 void ProtocolChecker::export_end(int rc)
@@ -140,7 +153,15 @@ void ProtocolChecker::export_end(int rc)
                       static_cast<unsigned long long>(cur_seq_), rc);
         violation(DRIVER_ERROR, msg);
     }
-    uint64_t fixed = 2 + words_;
+    const bool fs = kind_ == ALB_FOUR_SLOT;
+    if (fs && exp_slot_stores_ != 1) {
+        std::snprintf(msg, sizeof msg, "kind mismatch: Export of seq %llu on a four-slot channel made %llu Slot stores, "
+                      "expected exactly 1%s", static_cast<unsigned long long>(cur_seq_),
+                      static_cast<unsigned long long>(exp_slot_stores_),
+                      exp_slot_stores_ ? "" : " (a three-buffer producer?)");
+        violation(TERMINATION, msg);
+    }
+    uint64_t fixed = (fs ? 3 : 2) + words_;
     if (export_acc_ != fixed) {
         std::snprintf(msg, sizeof msg, "Export of seq %llu took %llu accesses, expected exactly %llu",
                       static_cast<unsigned long long>(cur_seq_),
@@ -174,7 +195,7 @@ void ProtocolChecker::import_begin(uint64_t now, int bucket)
     imp_limit_ = iteration_limit_;
     pub_at_start_ = newest_pub_;
     // Prune producer writes that can no longer overlap an Import.
-    for (int b = 1; b <= 3; ++b) {
+    for (int b = 1; b <= 4; ++b) {
         std::vector<uint64_t> &w = buffer_writes_[b];
         if (w.size() > 4096 || (!w.empty() && w.back() < now)) {
             w.erase(w.begin(), std::lower_bound(w.begin(), w.end(), now));
@@ -199,6 +220,16 @@ void ProtocolChecker::import_end(int rc, const uint8_t *value, uint64_t now)
         std::snprintf(msg, sizeof msg, "Import returned %d, expected ALB_NEW or ALB_OLD (control bytes valid)", rc);
         violation(DRIVER_ERROR, msg);
         return;
+    }
+    ++imports_counted;
+    import_ctl_sum += imp_acc_ - std::min<uint64_t>(imp_acc_, words_);
+    import_ctl_worst = std::max(import_ctl_worst, imp_acc_ - std::min<uint64_t>(imp_acc_, words_));
+    if (kind_ == ALB_FOUR_SLOT && imp_acc_ != 1 + words_ && imp_acc_ != 3 + words_) {
+        std::snprintf(msg, sizeof msg, "wait-free: four-slot Import begun at cycle %llu took %llu accesses, expected "
+                      "exactly 1 + %u = %u (nothing new) or 3 + %u = %u",
+                      static_cast<unsigned long long>(imp_start_), static_cast<unsigned long long>(imp_acc_),
+                      words_, 1 + words_, words_, 3 + words_);
+        violation(TERMINATION, msg);
     }
     if (imp_limit_ >= 0 && imp_iter_ > static_cast<uint64_t>(imp_limit_)) {
         std::snprintf(msg, sizeof msg, "Import begun at cycle %llu looped %llu times, expected at most %d",
@@ -238,11 +269,19 @@ void ProtocolChecker::import_end(int rc, const uint8_t *value, uint64_t now)
     uint64_t floor_seq = std::max(pub_at_start_, has_last_ ? last_seq_ : 0);
     bool found = false;
     uint64_t seq = 0;
+    // An Old Import that returns the bytes of the last value read is taken
+    // to have returned that value: a payload under 4 bytes repeats every
+    // 2^(8*size) exports, and a four-slot Old Import may read its buffer
+    // again while a newer export with the same bytes is complete elsewhere.
+    if (rc == ALB_OLD && has_last_) {
+        value_fn(last_seq_, expect_.data(), size_);
+        if (std::memcmp(expect_.data(), value, size_) == 0) { found = true; seq = last_seq_; }
+    }
     for (int pass = 0; pass < 2 && !found; ++pass) {
         for (uint64_t s = newest_started_ + 1; s-- > lo_seq;) {
             if (pass == 0) {
-                auto p = publish_cycle_.find(s);
-                if (s < floor_seq || p == publish_cycle_.end() || p->second > imp_last_actual_) continue;
+                auto p = complete_cycle_.find(s);
+                if (s < floor_seq || p == complete_cycle_.end() || p->second > imp_last_actual_) continue;
             }
             value_fn(s, expect_.data(), size_);
             if (std::memcmp(expect_.data(), value, size_) == 0) { found = true; seq = s; break; }
@@ -258,11 +297,14 @@ void ProtocolChecker::import_end(int rc, const uint8_t *value, uint64_t now)
         violation(DEFINITE, msg);
         return;
     }
-    auto pub = publish_cycle_.find(seq);
-    if (pub == publish_cycle_.end() || pub->second > imp_last_actual_) {
+    auto pub = complete_cycle_.find(seq);
+    if (pub == complete_cycle_.end() || pub->second > imp_last_actual_) {
         std::snprintf(msg, sizeof msg,
-                      "Import returned seq %llu, which was not published before its last load of Actual (cycle %llu)",
-                      static_cast<unsigned long long>(seq), static_cast<unsigned long long>(imp_last_actual_));
+                      "Import returned seq %llu, which was not %s before its last load of %s (cycle %llu)",
+                      static_cast<unsigned long long>(seq),
+                      kind_ == ALB_FOUR_SLOT ? "complete (Slot stored)" : "published",
+                      kind_ == ALB_FOUR_SLOT ? "the control word" : "Actual",
+                      static_cast<unsigned long long>(imp_last_actual_));
         violation(DEFINITE, msg);
     }
     if (seq < pub_at_start_) {

@@ -16,6 +16,16 @@
 //                     limit where one applies (a crashed partner).
 // Plus: each side writes only what it owns, and the driver reports no error
 // while the control bytes are valid.
+//
+// The four-slot kind (kind = ALB_FOUR_SLOT, docs/four_slot.md) is checked the
+// same way, with these differences: four buffers; the producer owns Actual
+// and the slot bytes; a value is complete at its Slot store (definite: the
+// value returned was complete before the consumer's last control-word load)
+// and published at its Actual store (actuality: not older than the newest
+// published when the Import began); Export takes exactly 3 + W accesses,
+// and every Import exactly 1 + W or 3 + W (wait-free: termination names the
+// count otherwise).  An Export without a Slot store on a four-slot channel
+// is named as a kind mismatch (a three-buffer producer).
 #pragma once
 #include <cstdint>
 #include <map>
@@ -32,7 +42,8 @@ public:
     enum Kind { MUTEX, DEFINITE, ACTUALITY, TERMINATION, OWNERSHIP, DRIVER_ERROR, KINDS };
     static const char *kind_name(int k);
 
-    ProtocolChecker(uint32_t base, uint32_t size, int producer_port, int consumer_port);
+    ProtocolChecker(uint32_t base, uint32_t size, int producer_port, int consumer_port, int kind = 0);
+    int kind() const { return kind_; }
 
     // The bytes of the seq-th exported value (make_value unless a bench's
     // producer exports other values, e.g. the pair test's sequence number
@@ -66,6 +77,8 @@ public:
     uint64_t imports = 0, imports_new = 0, exports = 0, published = 0;
     uint64_t worst_import_accesses = 0, worst_import_iterations = 0;
     uint64_t export_accesses = 0;       // the fixed count, once seen
+    // Accesses beyond the payload of every Import that returned a value.
+    uint64_t import_ctl_sum = 0, import_ctl_worst = 0, imports_counted = 0;
     static const int kBuckets = 8;      // log10(writer/reader speed) from -2 to 2
     uint64_t bucket_imports[kBuckets] = {}, bucket_worst_iter[kBuckets] = {};
     uint64_t bucket_worst_accesses[kBuckets] = {}, bucket_iter_sum[kBuckets] = {};
@@ -74,6 +87,7 @@ public:
     enum { IMPORT_OLD, IMPORT_NEW, EXPORT, CALL_KINDS };
     uint64_t overhead_min[CALL_KINDS] = {~0ull, ~0ull, ~0ull}, overhead_max[CALL_KINDS] = {};
     uint64_t newest_published_seq() const { return newest_pub_; }
+    uint64_t newest_complete_seq() const { return newest_complete_; }
     uint64_t last_seq() const { return last_seq_; }
     // Producer writes to buffer b at or after the given edge.
     bool producer_wrote_since(int b, uint64_t edge) const {
@@ -82,17 +96,20 @@ public:
 
 private:
     void violation(Kind k, const std::string &msg);
-    int buffer_of(uint32_t addr) const;   // 1..3, 0 control word, -1 outside
+    int buffer_of(uint32_t addr) const;   // 1..3 (four-slot 1..4), 0 control word, -1 outside
 
     uint32_t base_, size_, words_;
-    int prod_, cons_;
+    int prod_, cons_, kind_;
+    uint32_t bytes_;                               // the channel's bytes
+    std::map<uint64_t, uint64_t> complete_cycle_;  // four-slot: seq -> edge of its Slot store
+    uint64_t newest_complete_ = 0, exp_slot_stores_ = 0;
     // Producer side.
     uint64_t cur_seq_ = 0;
     bool exporting_ = false;
     uint64_t export_acc_ = 0;
     std::map<uint64_t, uint64_t> publish_cycle_;   // seq -> edge of its Actual store
     uint64_t newest_pub_ = 0, newest_started_ = 0;
-    std::vector<uint64_t> buffer_writes_[4];      // edges of producer writes per buffer
+    std::vector<uint64_t> buffer_writes_[5];      // edges of producer writes per buffer
     // Consumer side.
     bool importing_ = false;
     uint64_t imp_start_ = 0, imp_acc_ = 0, imp_iter_ = 0, imp_last_actual_ = 0;

@@ -13,6 +13,11 @@
 //       one side frozen or reset at every access point of Import and Export
 //   tb_dpram bench [--imports N]
 //       simulated-CPU access rate and cycles per second of wall time
+//   tb_dpram ratio [--imports N] [--ratios LOG10,...]
+//       accesses per Import at fixed writer:reader speed ratios (the figure)
+//
+// --kind four_slot runs every mode on the four-slot channel kind
+// (docs/four_slot.md) instead of the paper's three-buffer one.
 //
 // Every mode ends on its own: watchdogs in simulated cycles and RAM accesses
 // bound each Import and Export, each run (a channel's segment, a schedule, a
@@ -64,7 +69,8 @@ int mode_bench(const Options &o)
 int usage()
 {
     std::fprintf(stderr,
-                 "usage: tb_dpram exhaustive|random|crash|bench [--imports N] [--seed S] [--payload N]\n"
+                 "usage: tb_dpram exhaustive|random|crash|bench|ratio [--kind three_buffer|four_slot] [--imports N] [--seed S] [--payload N]\n"
+                 "                [--ratios LOG10,LOG10,...] (ratio mode: fixed writer:reader speed ratios)\n"
                  "                [--expect-violation] [--expect-caught-by CHECKER]... [--ignore CHECKER]... [--report FILE] [--variant NAME]\n"
                  "                [--trace FILE.vcd [--trace-cycles N]] [--max-schedules N]\n"
                  "checkers: mutual_exclusion definite_results actuality termination ownership\n"
@@ -106,6 +112,13 @@ int main(int argc, char **argv)
         else if (a == "--trace") o.trace = need("--trace");
         else if (a == "--trace-cycles") { if (!parse_u64(need("--trace-cycles"), v) || v == 0) { std::fprintf(stderr, "--trace-cycles: expected a positive integer\n"); return 2; } o.trace_cycles = v; }
         else if (a == "--variant") o.variant = need("--variant");
+        else if (a == "--kind") {
+            std::string k = need("--kind");
+            if (k == "three_buffer") g_kind = ALB_THREE_BUFFER;
+            else if (k == "four_slot") g_kind = ALB_FOUR_SLOT;
+            else { std::fprintf(stderr, "--kind: expected three_buffer or four_slot, got %s\n", k.c_str()); return 2; }
+        }
+        else if (a == "--ratios") o.ratios = need("--ratios");
         else if (a == "--expect-violation") o.expect_violation = true;
         else if (a == "--expect-caught-by") {
             std::string n = need("--expect-caught-by");
@@ -139,5 +152,6 @@ int main(int argc, char **argv)
     if (o.mode == "random") return mode_random(o);
     if (o.mode == "crash") return mode_crash(o);
     if (o.mode == "bench") return mode_bench(o);
+    if (o.mode == "ratio") return mode_ratio(o);
     return usage();
 }

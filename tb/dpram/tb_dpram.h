@@ -32,6 +32,7 @@ struct Options {
     std::string variant = "albatross";
     std::string trace;                 // VCD path (models built with --trace)
     uint64_t trace_cycles = 20000;
+    std::string ratios;                // ratio mode: log10(writer/reader) points, comma-separated
 };
 
 struct Channel {
@@ -40,6 +41,16 @@ struct Channel {
 };
 
 inline RamBus *g_bus = nullptr;
+// The channel kind both sides run (--kind): ALB_THREE_BUFFER or ALB_FOUR_SLOT.
+inline int g_kind = ALB_THREE_BUFFER;
+inline const char *kind_label() { return g_kind == ALB_FOUR_SLOT ? "four-slot" : "three-buffer"; }
+// Bytes of a channel of the current kind.
+inline uint32_t chan_bytes(uint32_t size)
+{
+    return g_kind == ALB_FOUR_SLOT ? ALB_FS_CHANNEL_BYTES(size) : ALB_CHANNEL_BYTES(size);
+}
+// Accesses of an Export beyond the payload (fixed): 2, four-slot 3.
+inline unsigned export_overhead() { return g_kind == ALB_FOUR_SLOT ? 3u : 2u; }
 inline int g_bucket = 0;   // current log-ratio bucket, for the termination figures
 // Checkers whose verdicts a negative test ignores (--ignore), to show that
 // the others catch the fault on their own.  Bits: the ProtocolChecker kinds,
@@ -107,7 +118,7 @@ struct Run {
     ProtocolChecker chk;
     SideCtx prod, cons;
 
-    Run(const Channel &c) : chan(c), chk(c.base, c.size, c.prod_port, c.cons_port) {
+    Run(const Channel &c) : chan(c), chk(c.base, c.size, c.prod_port, c.cons_port, g_kind) {
         RamBus &bus = *g_bus;
         bus.reset();
         load_image(bus, c);
@@ -116,7 +127,7 @@ struct Run {
         prod.chk = cons.chk = &chk;
         SimCpu &pc = bus.cpu[c.prod_port], &cc = bus.cpu[c.cons_port];
         pc.window_lo = cc.window_lo = c.base;
-        pc.window_hi = cc.window_hi = c.base + ALB_CHANNEL_BYTES(c.size);
+        pc.window_hi = cc.window_hi = c.base + chan_bytes(c.size);
         pc.faulted = cc.faulted = false;
         pc.context = &prod;
         cc.context = &cons;
@@ -163,10 +174,10 @@ struct Run {
             if (s == 0)
                 std::snprintf(m, sizeof m, "watchdog: the producer's Export of seq %llu (%u-byte payload), begun at cycle %llu, "
                               "has not returned after %llu cycles and %llu RAM accesses; expected it to return after "
-                              "exactly 2 + %u = %u accesses, within %llu cycles",
+                              "exactly %u + %u = %u accesses, within %llu cycles",
                               static_cast<unsigned long long>(x.next_seq), chan.size,
                               static_cast<unsigned long long>(x.call_start_cycle), static_cast<unsigned long long>(cyc),
-                              static_cast<unsigned long long>(acc), w, 2 + w,
+                              static_cast<unsigned long long>(acc), export_overhead(), w, export_overhead() + w,
                               static_cast<unsigned long long>(g_limits.call_cycles));
             else
                 std::snprintf(m, sizeof m, "watchdog: the consumer's Import number %llu (%u-byte payload), begun at cycle %llu, "
@@ -296,6 +307,7 @@ int mode_exhaustive(const Options &o);
 int mode_random(const Options &o);
 int mode_crash(const Options &o);
 int mode_bench(const Options &o);
+int mode_ratio(const Options &o);
 
 }  // namespace tbd
 #endif

@@ -16,7 +16,7 @@ void producer_program(SimCpu &cpu)
     alignas(8) uint8_t buf[kMaxPayload + 8];
     alb_channel_t ch;
     cpu.warmup = true;
-    alb_channel_setup(&ch, p.chan.base, p.chan.size);
+    alb_channel_setup_kind(&ch, p.chan.base, p.chan.size, static_cast<unsigned>(g_kind));
     p.attach_rc = alb_producer_attach(&ch);
     if (p.attach_rc != ALB_OK) return;
     for (uint64_t n = 0; n < p.limit; ++n) {
@@ -42,8 +42,11 @@ void consumer_program(SimCpu &cpu)
     alignas(8) uint8_t buf[kMaxPayload + 8];
     alb_channel_t ch;
     cpu.warmup = true;
-    alb_channel_setup(&ch, c.chan.base, c.chan.size);
-    c.attach_rc = alb_consumer_attach(&ch);
+    alb_channel_setup_kind(&ch, c.chan.base, c.chan.size, static_cast<unsigned>(g_kind));
+    // A four-slot consumer that attaches forgets the last value it read (its
+    // first Import is New): on a fresh channel it starts cold instead, with
+    // Buffer1's initial value counted as read, as the checker expects.
+    c.attach_rc = g_kind == ALB_FOUR_SLOT && c.calls == 0 ? alb_consumer_init(&ch) : alb_consumer_attach(&ch);
     if (c.attach_rc != ALB_OK) return;
     for (uint64_t n = 0; n < c.limit; ++n) {
         cpu.warmup = n < c.warmup_calls;
@@ -61,10 +64,11 @@ void consumer_program(SimCpu &cpu)
 }
 
 // The RAM image of a fresh channel: Actual = ReadLocked = Buffer1 holding the
-// initial value (seq 0); the other buffers hold garbage.
+// initial value (seq 0); the slot bytes (four-slot) and the reserved bytes 0;
+// the other buffers hold garbage.
 void load_image(RamBus &bus, const Channel &c)
 {
-    std::vector<uint8_t> img(ALB_CHANNEL_BYTES(c.size), 0xEE);
+    std::vector<uint8_t> img(chan_bytes(c.size), 0xEE);
     img[ALB_OFF_ACTUAL] = ALB_BUFFER1;
     img[ALB_OFF_READLOCKED] = ALB_BUFFER1;
     img[2] = img[3] = 0;

@@ -124,9 +124,9 @@ int mode_exhaustive(const Options &o)
         g_limits.schedules = 5000000;
         for (unsigned w = 3; w < (o.payload + 3) / 4 && g_limits.schedules < (1ull << 60); ++w) g_limits.schedules *= 10;
     }
-    std::printf("exhaustive: 2 Exports against 2 Imports of %u bytes (%u word accesses each), "
+    std::printf("exhaustive: %s channel, 2 Exports against 2 Imports of %u bytes (%u word accesses each), "
                 "every interleaving, same-cycle collisions in both orders\n",
-                o.payload, (o.payload + 3) / 4);
+                kind_label(), o.payload, (o.payload + 3) / 4);
     uint64_t total = 0, collisions = 0, imports = 0, imports_new = 0;
     Verdict all;
     JsonReport rep;
@@ -192,7 +192,7 @@ int mode_exhaustive(const Options &o)
                 static_cast<unsigned long long>(imports), static_cast<unsigned long long>(imports_new),
                 static_cast<unsigned long long>(all.total()));
     all.print();
-    rep.str("variant", o.variant).num("payload_bytes", o.payload).num("schedules", total)
+    rep.str("variant", o.variant).str("kind", kind_label()).num("payload_bytes", o.payload).num("schedules", total)
         .num("collisions", collisions).num("imports_checked", imports).num("imports_new", imports_new)
         .num("violations_total", all.total()).raw("violations", all.json()).raw("start_states", states + "]")
         .str("caught_by", all.caught_by());

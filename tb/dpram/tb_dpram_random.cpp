@@ -8,17 +8,22 @@ Channel random_channel(std::mt19937_64 &rng)
 {
     Channel c;
     c.size = 1 + static_cast<uint32_t>(rng() % kMaxPayload);
-    uint32_t bytes = ALB_CHANNEL_BYTES(c.size);
+    uint32_t bytes = chan_bytes(c.size);
     c.base = static_cast<uint32_t>(rng() % ((RamBus::kBytes - bytes) / 4 + 1)) * 4;
     c.prod_port = static_cast<int>(rng() & 1);
     c.cons_port = 1 - c.prod_port;
     return c;
 }
 
-void run_random(uint64_t target, uint64_t seed, RandomStats &st, bool stop_on_violation, bool progress)
+void run_random(uint64_t target, uint64_t seed, RandomStats &st, bool stop_on_violation, bool progress,
+                double fixed_log_ratio)
 {
     std::mt19937_64 rng(seed);
     Timing tm(seed ^ 0xA5A5A5A5ull);
+    if (!std::isnan(fixed_log_ratio)) {
+        tm.fixed = true;
+        tm.log_ratio = fixed_log_ratio;
+    }
     uint64_t next_report = target / 10;
     while (st.imports < target) {
         Channel c = random_channel(rng);
@@ -74,6 +79,9 @@ void run_random(uint64_t target, uint64_t seed, RandomStats &st, bool stop_on_vi
             st.worst_segment_cycles_per_import = std::max(st.worst_segment_cycles_per_import,
                                                           (g_bus->cycle() - c0) / run.chk.imports);
         st.worst_acc = std::max(st.worst_acc, run.chk.worst_import_accesses);
+        st.ctl_sum += run.chk.import_ctl_sum;
+        st.ctl_imports += run.chk.imports_counted;
+        st.ctl_worst = std::max(st.ctl_worst, run.chk.import_ctl_worst);
         for (int k = 0; k < ProtocolChecker::kBuckets; ++k) {
             st.b_imports[k] += run.chk.bucket_imports[k];
             st.b_iter_sum[k] += run.chk.bucket_iter_sum[k];
@@ -145,8 +153,8 @@ void print_buckets(const RandomStats &st)
 
 int mode_random(const Options &o)
 {
-    std::printf("random: %llu Imports, seed %llu, speed ratios 1:100..100:1, payloads 1..%u bytes\n",
-                static_cast<unsigned long long>(o.imports), static_cast<unsigned long long>(o.seed), kMaxPayload);
+    std::printf("random: %llu Imports, %s channels, seed %llu, speed ratios 1:100..100:1, payloads 1..%u bytes\n",
+                static_cast<unsigned long long>(o.imports), kind_label(), static_cast<unsigned long long>(o.seed), kMaxPayload);
     std::fflush(stdout);
     RandomStats st;
     auto t0 = std::chrono::steady_clock::now();
@@ -159,9 +167,13 @@ int mode_random(const Options &o)
                 static_cast<unsigned long long>(st.cycles), static_cast<unsigned long long>(st.verdict.total()), sec);
     st.verdict.print();
     const char *names[3] = {"Import, no new data", "Import, new data", "Export"};
-    const uint64_t want[3] = {1, 3, 2};
+    // Four-slot: an Old Import is 1, or 3 when Actual still lags a value the
+    // consumer already read (the producer between its Slot and Actual stores).
+    const bool fs = g_kind == ALB_FOUR_SLOT;
+    const uint64_t want_lo[3] = {1, 3, fs ? 3u : 2u}, want[3] = {fs ? 3u : 1u, 3, fs ? 3u : 2u};
     bool overhead_ok = true;
-    std::printf("  RAM accesses beyond the payload, undisturbed calls (expected 1, 3, 2):\n");
+    std::printf("  RAM accesses beyond the payload, undisturbed calls (expected %s):\n",
+                fs ? "1 or 3, 3, 3" : "1, 3, 2");
     for (int k = 0; k < 3; ++k) {
         if (st.ov_min[k] > st.ov_max[k]) {
             std::printf("    %-20s none seen\n", names[k]);
@@ -170,7 +182,7 @@ int mode_random(const Options &o)
         }
         std::printf("    %-20s %llu..%llu\n", names[k], static_cast<unsigned long long>(st.ov_min[k]),
                     static_cast<unsigned long long>(st.ov_max[k]));
-        if (st.ov_min[k] != want[k] || st.ov_max[k] != want[k]) overhead_ok = false;
+        if (st.ov_min[k] < want_lo[k] || st.ov_max[k] > want[k]) overhead_ok = false;
     }
     print_buckets(st);
     std::printf("  longest calls: Export %llu cycles, Import %llu cycles (watchdog %llu); "
@@ -185,7 +197,7 @@ int mode_random(const Options &o)
         std::snprintf(ov, sizeof ov, "{\"import_old\": %llu, \"import_new\": %llu, \"export\": %llu}",
                       static_cast<unsigned long long>(st.ov_max[0]), static_cast<unsigned long long>(st.ov_max[1]),
                       static_cast<unsigned long long>(st.ov_max[2]));
-        rep.str("variant", o.variant).num("seed", o.seed).num("imports_checked", st.imports)
+        rep.str("variant", o.variant).str("kind", kind_label()).num("seed", o.seed).num("imports_checked", st.imports)
             .num("imports_new", st.imports_new).num("exports", st.exports).num("channels", st.segments)
             .num("cycles", st.cycles).num("accesses", st.accesses).num("violations_total", st.verdict.total())
             .raw("violations", st.verdict.json()).str("caught_by", st.verdict.caught_by())
@@ -197,10 +209,64 @@ int mode_random(const Options &o)
     }
     if (o.expect_violation || st.verdict.total()) return verdict_status(o, st.verdict, "Imports", st.imports);
     if (!overhead_ok) {
-        std::printf("FAIL: accesses beyond the payload differ from the expected 1, 3, 2\n");
+        std::printf("FAIL: accesses beyond the payload differ from the expected %s\n", fs ? "1 or 3, 3, 3" : "1, 3, 2");
         return 1;
     }
     return 0;
+}
+
+// -------------------------------------------------------------------- ratio
+//
+// The figure of issue 13: RAM accesses per Import beyond the payload against
+// the writer:reader speed ratio, held fixed at each point of --ratios (log10,
+// default -2..2 in steps of 0.5) for --imports Imports each, with the
+// checkers on.  Four-slot: flat at its bound 3 (1 with nothing new); the
+// three-buffer loop grows as the writer gets faster.
+int mode_ratio(const Options &o)
+{
+    std::vector<double> pts;
+    std::string list = o.ratios.empty() ? "-2,-1.5,-1,-0.5,0,0.5,1,1.5,2" : o.ratios;
+    for (size_t i = 0; i < list.size();) {
+        size_t j = list.find(',', i);
+        if (j == std::string::npos) j = list.size();
+        pts.push_back(std::atof(list.substr(i, j - i).c_str()));
+        i = j + 1;
+    }
+    // A reader held at 1/100 of the writer's speed spends about 10^4 cycles
+    // per Import (3 + W accesses, each gap 0-2 CPU cycles of 100 RAM cycles,
+    // with stalls): the drifting model's budget of 2000 per Import is for a
+    // mix of speeds.
+    g_limits.segment_cycles_per_import = 50000;
+    std::printf("ratio: %s channels, %llu Imports per speed ratio, seed %llu\n", kind_label(),
+                static_cast<unsigned long long>(o.imports), static_cast<unsigned long long>(o.seed));
+    std::printf("  %-14s %10s %10s %12s %12s\n", "writer:reader", "imports", "new", "mean ctl acc", "worst ctl acc");
+    Verdict all;
+    std::string points = "[";
+    uint64_t total = 0;
+    for (size_t i = 0; i < pts.size(); ++i) {
+        RandomStats st;
+        run_random(o.imports, o.seed + i, st, false, false, pts[i]);
+        double mean = st.ctl_imports ? static_cast<double>(st.ctl_sum) / st.ctl_imports : 0.0;
+        std::printf("  10^%-11.2f %10llu %10llu %12.3f %12llu\n", pts[i], static_cast<unsigned long long>(st.imports),
+                    static_cast<unsigned long long>(st.imports_new), mean, static_cast<unsigned long long>(st.ctl_worst));
+        char b[320];
+        std::snprintf(b, sizeof b, "%s{\"log10_ratio\": %.2f, \"imports\": %llu, \"imports_new\": %llu, "
+                      "\"mean_control_accesses\": %.4f, \"worst_control_accesses\": %llu, \"worst_import_iterations\": %llu}",
+                      i ? ", " : "", pts[i], static_cast<unsigned long long>(st.imports),
+                      static_cast<unsigned long long>(st.imports_new), mean,
+                      static_cast<unsigned long long>(st.ctl_worst), static_cast<unsigned long long>(st.worst_iter));
+        points += b;
+        total += st.imports;
+        all.merge(st.verdict);
+    }
+    if (!o.report.empty()) {
+        JsonReport rep;
+        rep.str("kind", kind_label()).num("seed", o.seed).num("imports_per_point", o.imports)
+            .num("violations_total", all.total()).raw("points", points + "]");
+        rep.write(o.report);
+    }
+    all.print();
+    return verdict_status(o, all, "Imports", total);
 }
 
 }  // namespace tbd

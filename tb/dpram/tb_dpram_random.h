@@ -15,6 +15,7 @@ namespace tbd {
 struct Timing {
     std::mt19937_64 rng;
     double log_ratio = 0.0;      // log10(writer speed / reader speed)
+    bool fixed = false;          // ratio mode: log_ratio stays put (stalls stay random)
     double period[2] = {1, 1};   // RAM cycles per CPU cycle, per port
     double frac[2] = {0, 0};
     uint64_t next_drift = 0;
@@ -24,8 +25,10 @@ struct Timing {
     void drift(uint64_t now, int writer_port) {
         if (now < next_drift) return;
         next_drift = now + 500 + rng() % 3000;
-        log_ratio += std::normal_distribution<double>(0, 0.35)(rng);
-        if (uni() < 0.02) log_ratio = uni() * 4 - 2;   // an occasional jump
+        if (!fixed) {
+            log_ratio += std::normal_distribution<double>(0, 0.35)(rng);
+            if (uni() < 0.02) log_ratio = uni() * 4 - 2;   // an occasional jump
+        }
         log_ratio = std::max(-2.0, std::min(2.0, log_ratio));
         double r = std::pow(10.0, std::fabs(log_ratio));
         int slow = log_ratio >= 0 ? 1 - writer_port : writer_port;
@@ -95,10 +98,14 @@ struct RandomStats {
     uint64_t b_imports[ProtocolChecker::kBuckets] = {}, b_worst_iter[ProtocolChecker::kBuckets] = {};
     uint64_t b_worst_acc[ProtocolChecker::kBuckets] = {}, b_iter_sum[ProtocolChecker::kBuckets] = {};
     uint64_t ov_min[3] = {~0ull, ~0ull, ~0ull}, ov_max[3] = {};
+    uint64_t ctl_sum = 0, ctl_worst = 0, ctl_imports = 0;   // Import accesses beyond the payload
     Verdict verdict;
 };
 
-void run_random(uint64_t target, uint64_t seed, RandomStats &st, bool stop_on_violation, bool progress);
+// fixed_log_ratio: NAN for the drifting speed model, else log10(writer/reader)
+// held at that value (ratio mode).
+void run_random(uint64_t target, uint64_t seed, RandomStats &st, bool stop_on_violation, bool progress,
+                double fixed_log_ratio = NAN);
 
 }  // namespace tbd
 #endif

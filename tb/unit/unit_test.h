@@ -62,5 +62,6 @@ void test_corrupt_read_locked(void);
 void test_corrupt_attach(void);
 void test_sequence(void);
 void test_typed(void);
+void test_four_slot(void);   /* test_four_slot.c */
 
 #endif

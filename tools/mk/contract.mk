@@ -8,17 +8,20 @@
 #   make test-contract-oracles      the independent test oracles agree with the definition
 #   make test-contract-negative     a definition with one field width changed: the
 #                                   current check, the oracles and the controller's lint all fail
+#   make test-contract-negative-four-slot
+#                                   a [layout.four_slot] with Slot1 moved past the control
+#                                   word: the generator refuses it, naming the byte
 
 CONTRACT      := env PYTHONPATH=compiler $(PYTHON) -m albatross_schedule.contract_gen
 CONTRACT_DEF  := rtl/albatross_contract.toml
 CONTRACT_MD    = $(wildcard README.md docs/*.md)
 CONTRACT_NEG  := $(BUILD)/contract-negative
 
-.PHONY: contract test-contract-current test-contract-oracles test-contract-negative
+.PHONY: contract test-contract-current test-contract-oracles test-contract-negative test-contract-negative-four-slot
 contract: ## regenerate the files derived from rtl/albatross_contract.toml (Verilog include, C/C++ headers, doc tables)
 	@$(CONTRACT) $(CONTRACT_MD)
 
-TESTS += contract-current contract-oracles contract-negative
+TESTS += contract-current contract-oracles contract-negative contract-negative-four-slot
 test-contract-current:
 	@tools/run_test.sh contract-current $(CONTRACT) --check $(CONTRACT_MD)
 
@@ -50,3 +53,18 @@ test-contract-negative:
 	    else grep -m 2 "%Warning\|%Error" $(CONTRACT_NEG)/lint.log | sed "s/^/  caught by the lint: /"; fi; \
 	    if [ $$fail = 0 ]; then echo "a drifted definition is caught by the check, the oracles and the lint"; fi; \
 	    exit $$fail'
+
+# Slot1 moved from offset 3 to 4 (into Buffer1) in a copy of the definition:
+# make contract must refuse it (status 2) and name the byte and the rule.
+test-contract-negative-four-slot:
+	@tools/run_test.sh contract-negative-four-slot bash -c 'set -u; rm -rf $(CONTRACT_NEG)-fs; mkdir -p $(CONTRACT_NEG)-fs; \
+	    sed "s/{ name = \"slot1\", offset = 3,/{ name = \"slot1\", offset = 4,/" \
+	        $(CONTRACT_DEF) > $(CONTRACT_NEG)-fs/contract.toml; \
+	    if cmp -s $(CONTRACT_NEG)-fs/contract.toml $(CONTRACT_DEF); then \
+	        echo "the edit did not apply: $(CONTRACT_DEF) no longer has the slot1 line this test changes"; exit 1; fi; \
+	    $(CONTRACT) --definition $(CONTRACT_NEG)-fs/contract.toml --root $(CONTRACT_NEG)-fs --check \
+	        > $(CONTRACT_NEG)-fs/check.log 2>&1; rc=$$?; \
+	    sed "s/^/  /" $(CONTRACT_NEG)-fs/check.log; \
+	    if [ $$rc = 2 ] && grep -q "slot1 at offset 4 is outside the control word" $(CONTRACT_NEG)-fs/check.log; then \
+	        echo "a bad four_slot section is refused, naming the byte"; exit 0; fi; \
+	    echo "FAIL: expected status 2 and a message naming slot1 outside the control word, got status $$rc"; exit 1'

@@ -96,6 +96,23 @@ test-tb-random: $(TB)
 test-tb-crash: $(TB)
 	@tools/run_test.sh tb-crash $(TB_BOUNDED) $(TB_TIMEOUT) $(TB) crash --seed $(SEED) --report $(REPORTS)/tb_crash.json
 
+# The four-slot kind (docs/four_slot.md), same modes and checkers, plus the
+# wait-free check (every Import exactly 1 + W or 3 + W accesses).  Exhaustive
+# at 8 bytes (2 payload words): at 12 bytes one start state alone passes the
+# 5 M-schedule watchdog (one more access per Export than the three-buffer kind).
+TB_FS_PAYLOAD ?= 8
+TESTS += tb-fs-exhaustive tb-fs-random tb-fs-crash
+
+test-tb-fs-exhaustive: $(TB)
+	@tools/run_test.sh tb-fs-exhaustive $(TB_BOUNDED) $(TB_TIMEOUT) $(TB) exhaustive --kind four_slot \
+	    --payload $(TB_FS_PAYLOAD) --report $(REPORTS)/tb_fs_exhaustive.json
+test-tb-fs-random: $(TB)
+	@tools/run_test.sh tb-fs-random $(TB_BOUNDED) $(TB_TIMEOUT) $(TB) random --kind four_slot --imports $(TB_IMPORTS) \
+	    --seed $(SEED) --report $(REPORTS)/tb_fs_random.json
+test-tb-fs-crash: $(TB)
+	@tools/run_test.sh tb-fs-crash $(TB_BOUNDED) $(TB_TIMEOUT) $(TB) crash --kind four_slot --seed $(SEED) \
+	    --report $(REPORTS)/tb_fs_crash.json
+
 # Negative tests: each passes only if the named checker catches the broken
 # variant (NAME VARIANT MODE CHECKER [extra options]) before the mode's
 # watchdogs stop it, and within TB_NEG_TIMEOUT seconds.  Together they cover
@@ -103,6 +120,13 @@ test-tb-crash: $(TB)
 # payload word too few) once made crash mode search for ever for a crash
 # point its calls never reach: it must now fail at once, by termination.
 # import_never_returns (an Import that loops for ever) checks the watchdogs themselves.
+# fs_*: the four-slot kind (docs/four_slot.md): fs_new_twice is the mapping as
+# first proposed (New whenever Actual differs from the buffer read last);
+# fs_index_from_actual and fs_slot_before_announce are wrong statement orders
+# of the consumer; fs_ignore_readlocked a producer that ignores the consumer's
+# pair; fs_three_buffer_producer a three-buffer producer on a four-slot
+# channel (named as a kind mismatch by termination; -semantic: the fault it
+# causes, with termination ignored).
 NEGATIVE := \
   no-arbitration:no-arbitration:exhaustive:byte_atomicity \
   no-arbitration-protocol:no-arbitration:exhaustive:driver_error:--ignore,byte_atomicity \
@@ -116,7 +140,14 @@ NEGATIVE := \
   short_export-crash:short_export:crash:termination \
   import_never_returns:import_never_returns:random:watchdog \
   import_never_returns-exhaustive:import_never_returns:exhaustive:watchdog \
-  import_never_returns-crash:import_never_returns:crash:watchdog
+  import_never_returns-crash:import_never_returns:crash:watchdog \
+  fs_new_twice:fs_new_twice:exhaustive:actuality:--kind,four_slot,--payload,8 \
+  fs_index_from_actual:fs_index_from_actual:random:mutual_exclusion:--kind,four_slot \
+  fs_slot_before_announce:fs_slot_before_announce:random:termination:--kind,four_slot \
+  fs_slot_before_announce-semantic:fs_slot_before_announce:random:mutual_exclusion:--kind,four_slot,--ignore,termination \
+  fs_ignore_readlocked:fs_ignore_readlocked:random:mutual_exclusion:--kind,four_slot \
+  fs_three_buffer_producer:fs_three_buffer_producer:random:termination:--kind,four_slot \
+  fs_three_buffer_producer-semantic:fs_three_buffer_producer:random:mutual_exclusion:--kind,four_slot,--ignore,termination
 define negative_test
 TESTS += tb-negative-$(call neg_field,$(1),1)
 test-tb-negative-$(call neg_field,$(1),1): $(TB_DIR)/$(call neg_field,$(1),2)/tb_dpram
@@ -134,3 +165,16 @@ soak: $(TB) ## 100 million checked Imports (SOAK_IMPORTS=N to change)
 BENCHES += bench-tb
 bench-tb: $(TB)
 	$(TB) bench --imports 300000 --seed $(SEED) --report $(REPORTS)/bench_tb.json
+
+# The figure of issue 13: accesses per Import beyond the payload against the
+# writer:reader speed ratio (held fixed, 1:100 .. 100:1), both kinds, checkers
+# on: build/reports/import_accesses_by_ratio.{json,svg}.  About 5 s of CPU.
+BENCHES += bench-import-accesses
+FIG_IMPORTS ?= 10000
+.PHONY: bench-import-accesses
+bench-import-accesses: $(TB) ## accesses per Import against the speed ratio, both kinds -> build/reports/import_accesses_by_ratio.svg
+	@mkdir -p $(REPORTS)
+	$(TB) ratio --kind three_buffer --imports $(FIG_IMPORTS) --seed $(SEED) --report $(REPORTS)/ratio_three_buffer.json
+	$(TB) ratio --kind four_slot --imports $(FIG_IMPORTS) --seed $(SEED) --report $(REPORTS)/ratio_four_slot.json
+	$(PYTHON) tb/dpram/plot_import_accesses.py $(REPORTS)/ratio_three_buffer.json $(REPORTS)/ratio_four_slot.json \
+	    $(REPORTS)/import_accesses_by_ratio.json $(REPORTS)/import_accesses_by_ratio.svg
