@@ -136,10 +136,9 @@ module albatross_export #(
     localparam [1:0]            BUFFER3     = ALB_CH_BUFFER_LAST[1:0];
     localparam integer          TAKEN_WORDS = TAKEN_AT ? ALB_CH_TAKEN_AT_WORDS : 0;
     // Four-slot: the slot bytes Slot0, Slot1 (rtl/albatross_contract.toml
-    // [layout.four_slot]: offsets 2 and 3; derived here until the generated
-    // ALB_CH_OFF_SLOT0/1 exist).
-    localparam integer          OFF_SLOT0   = 2;
-    localparam integer          OFF_SLOT1   = 3;
+    // [layout.four_slot]).
+    localparam integer          OFF_SLOT0   = ALB_CH_OFF_SLOT0;
+    localparam integer          OFF_SLOT1   = ALB_CH_OFF_SLOT1;
     localparam                  SLOT0_BIT   = 8 * (OFF_SLOT0 % ALB_CH_WORD_BYTES);
     localparam                  SLOT1_BIT   = 8 * (OFF_SLOT1 % ALB_CH_WORD_BYTES);
     localparam [3:0]            SEL_SLOT0   = 4'b0001 << (OFF_SLOT0 % ALB_CH_WORD_BYTES);

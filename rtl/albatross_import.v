@@ -124,10 +124,9 @@ module albatross_import #(
     localparam [3:0]            SEL_ACT     = 4'b0001 << (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
     localparam [3:0]            SEL_RL      = 4'b0001 << (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
     // Four-slot: the slot bytes Slot0, Slot1 (rtl/albatross_contract.toml
-    // [layout.four_slot]: offsets 2 and 3; derived here until the generated
-    // ALB_CH_OFF_SLOT0/1 exist).
-    localparam integer          OFF_SLOT0   = 2;
-    localparam integer          OFF_SLOT1   = 3;
+    // [layout.four_slot]).
+    localparam integer          OFF_SLOT0   = ALB_CH_OFF_SLOT0;
+    localparam integer          OFF_SLOT1   = ALB_CH_OFF_SLOT1;
     localparam                  SLOT0_BIT   = 8 * (OFF_SLOT0 % ALB_CH_WORD_BYTES);
     localparam                  SLOT1_BIT   = 8 * (OFF_SLOT1 % ALB_CH_WORD_BYTES);
 
