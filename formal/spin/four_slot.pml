@@ -73,6 +73,14 @@
  *   -DW=1            one data word (default 2)
  *   -DL_INIT=1       consumer_init sets L = 1 (the initial value counts as
  *                    read: the first Import returns Old); default L = 0
+ *   -DOLD_BY_SLOT    the controller's Import rule (docs/controller.md, rtl/
+ *                    albatross_import.v): step 1 loads the control word and
+ *                    takes Actual AND c = buf(pair(A), Slot[pair(A)]) from it;
+ *                    Old if c == L, else steps 3-5 and always New.  That word
+ *                    load uses three bytes, so it is modelled as three byte
+ *                    loads (Actual, Slot0, Slot1) in any order with the
+ *                    producer free to run between them (the word is not
+ *                    indivisible, each byte is).
  *   -DCRASH          the consumer may crash instead of any of its accesses
  *                    (any number of times) and restart with L = 0;
  *                    -DCRASH_ONCE: at most one crash (smaller state space)
@@ -299,6 +307,9 @@ proctype consumer()
     byte rl = 1;                     /* private copy of the ReadLocked it stored */
     byte a, b, v1, v2, t, i, acc;
     bool result, expect, newpath, u;
+#ifdef OLD_BY_SLOT
+    byte got, c0, c1, c;
+#endif
 
     /* CRASHES: with -DCRASH every access below may instead be a crash (the
      * access does not happen; the consumer restarts).  Crashing before each
@@ -313,6 +324,35 @@ again:
 #endif
            result = OLD; acc = 0
        };
+#ifdef OLD_BY_SLOT
+       /* 1. (the controller's rule) one word load of Actual, Slot0, Slot1:
+        * three byte loads in any order, the producer free to run between
+        * them; c = buf(pair(A), Slot[pair(A)]) of that word; Old if c == L */
+       if
+       :: got = 0
+       CRASHES
+       fi;
+       do
+       :: !(got & 1) -> d_step { a = Actual; got = got | 1;
+                                 printf("C: load Actual=%d (byte of word 1)\n", a) }
+       :: !(got & 2) -> d_step { c0 = Slot[0]; got = got | 2;
+                                 printf("C: load Slot0=%d (byte of word 1)\n", c0) }
+       :: !(got & 4) -> d_step { c1 = Slot[1]; got = got | 4;
+                                 printf("C: load Slot1=%d (byte of word 1)\n", c1) }
+       :: got == 7 -> break
+       od;
+       atomic {           /* not d_step: the break jumps here */
+           ACC;
+           c = BUF(PAIR(a), (PAIR(a) == 0 -> c0 : c1));
+           printf("C: word 1: Actual=%d c=%d (L=%d)\n", a, c, L);
+           newpath = (c != L);
+           if
+           :: !newpath -> b = L; reading = 1; rbuf = b
+           :: else -> skip
+           fi;
+           got = 0; c0 = 0; c1 = 0; c = 0
+       };
+#else
        /* 1. load the control word, use Actual */
        if
        :: d_step {
@@ -331,6 +371,7 @@ again:
           }
        CRASHES
        fi;
+#endif
        if
        :: newpath ->
 #ifdef WRONG_ORDER
@@ -406,7 +447,7 @@ retry:
 #endif
        /* 5. the result; ghost: the checks */
        d_step {
-#ifdef NEW_IF_A_NE_L
+#if defined(NEW_IF_A_NE_L) || defined(OLD_BY_SLOT)
            result = newpath;
 #else
            result = (newpath && b != L);
