@@ -23,6 +23,12 @@
  *     that byte at its own sampling instant, and SPIN places that instant at
  *     every point of the interleaving.  The unused bytes cannot influence
  *     anything.  (Tearing between the bytes of one word is therefore covered.)
+ *     The one load that uses more than one byte, step 1 of the controller's
+ *     rule (-DOLD_BY_SLOT, below), is modelled as its byte loads in any order.
+ *   - The producer reads nothing but ReadLocked: its private copies equal the
+ *     RAM bytes it alone writes (the controller, which loads its Slot bytes
+ *     back, gets the same values while its stores land; dropped or cut-off
+ *     stores are not modelled here).
  *   - Nothing else is shared, so the local work goes into the step of the
  *     shared access it goes with.
  *   - A buffer is W data words (W = 1 or 2, default 2), h1 and h2.  The
