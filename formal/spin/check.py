@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""check.py -- run the SPIN checks of formal/spin/albatross.pml.
+"""check.py -- run the SPIN checks of formal/spin/albatross.pml (three-buffer
+channel) or, with --model four_slot, of formal/spin/four_slot.pml (four-slot).
 
   check.py --out build/formal/spin --json build/reports/formal_spin.json
       every property of the protocol: the five safety checks hold, the LTL
@@ -10,13 +11,26 @@
       a broken variant (-DWHILE_AS_IF, -DIGNORE_READLOCKED): the checks named
       by --must-fail must each find a violation.
 
+  check.py --model four_slot --out build/formal/spin/four_slot \
+           --json build/reports/formal_spin_four_slot.json
+      the four-slot channel: the safety checks hold (also with one data word,
+      with consumer_init L = 1, with consumer crashes at every access, and
+      with the controller's Import rule -DOLD_BY_SLOT), and reader_wait_free,
+      writer_wait_free and lock_free all HOLD.
+  check.py --model four_slot --variant WRONG_ORDER --must-fail mutex,definite ...
+      a broken four-slot variant; --must-fail may name LTL properties too
+      (reader_wait_free: an acceptance cycle must be found).  Variant runs are
+      breadth-first, so the counterexample is a shortest one; its protocol
+      steps (the model's printf lines) go to <dir>/trail.txt and the report.
+
 Each check is its own spin -a / gcc / pan run under --out/<name>/.  Exit 0
 when every check gave the expected outcome; otherwise the last line says what
 was expected and what came.
 """
 import argparse, json, os, re, shutil, subprocess, sys, time
 
-MODEL = os.path.join(os.path.dirname(os.path.abspath(__file__)), "albatross.pml")
+HERE = os.path.dirname(os.path.abspath(__file__))
+MODEL = os.path.join(HERE, "albatross.pml")     # set by --model
 
 # name: (property text, -D switch)  -- safety checks, expected to hold
 SAFETY = {
@@ -47,6 +61,65 @@ LTL = {
                   "completes (no fairness assumption)", "", "holds"),
 }
 
+# The four-slot channel (four_slot.pml).  name: (property, -D switches, pan -m)
+SAFETY_FS = {
+    "mutex": ("mutual exclusion: the producer never stores into the buffer the "
+              "consumer has chosen to read, until its last data load, and the "
+              "consumer never loads a word of the buffer being written",
+              ["CHECK_MUTEX"], 3000000),
+    "definite": ("definite results: an Import returns both words of one "
+                 "completely written Export, from a valid buffer index; the "
+                 "producer's buffer and the ReadLocked it loads are valid",
+                 ["CHECK_DEFINITE"], 3000000),
+    "actuality": ("actuality: an Import returns the value in Actual's buffer when "
+                  "it began, or a newer one", ["CHECK_ACTUALITY"], 3000000),
+    "newold": ("New/Old: the value is never older than the previous Import's "
+               "(never back in time), and the Import returns New exactly when it "
+               "is newer (the first Import, L = 0: New)", ["CHECK_NEWOLD"], 3000000),
+    "bound": ("bound: an Import makes exactly 1 + W shared accesses on the Old "
+              "path and 3 + W otherwise (W = 2), an Export W + 3",
+              ["CHECK_BOUND"], 3000000),
+    "bound_w1": ("bound with one data word (W = 1): 2 or 4 accesses per Import, "
+                 "4 per Export", ["CHECK_BOUND", "W=1"], 3000000),
+    "newold_init1": ("New/Old with consumer_init L = 1 (the initial value counts "
+                     "as read: the first Import returns Old)",
+                     ["CHECK_NEWOLD", "L_INIT=1"], 3000000),
+    "crash_mutex": ("mutual exclusion when the consumer may crash instead of any "
+                    "access, any number of times, and restart with L = 0",
+                    ["CHECK_MUTEX", "CRASH"], 3000000),
+    "crash_definite": ("definite results with consumer crashes at every access",
+                       ["CHECK_DEFINITE", "CRASH"], 3000000),
+    "crash_bound": ("bound with consumer crashes at every access",
+                    ["CHECK_BOUND", "CRASH"], 3000000),
+    "crash_newold": ("New/Old with consumer crashes at every access (the first "
+                     "Import after a restart returns New)",
+                     ["CHECK_NEWOLD", "CRASH"], 10000000),
+    # the controller's Import rule (rtl/albatross_import.v): Old when
+    # buf(pair(A), Slot[pair(A)]) of the first word load is L, that word load
+    # being three byte loads in any order
+    "ctrl_mutex": ("mutual exclusion, the controller's Import rule (-DOLD_BY_SLOT)",
+                   ["CHECK_MUTEX", "OLD_BY_SLOT"], 3000000),
+    "ctrl_definite": ("definite results, the controller's Import rule",
+                      ["CHECK_DEFINITE", "OLD_BY_SLOT"], 3000000),
+    "ctrl_newold": ("New/Old, the controller's Import rule",
+                    ["CHECK_NEWOLD", "OLD_BY_SLOT"], 3000000),
+    "ctrl_bound": ("bound, the controller's Import rule",
+                   ["CHECK_BOUND", "OLD_BY_SLOT"], 3000000),
+}
+LTL_FS = {
+    "reader_wait_free": ("[]<> !importing: the consumer's Import always finishes "
+                         "(weak fairness) -- holds: the consumer is wait-free",
+                         "-f", "holds"),
+    "writer_wait_free": ("[]<> !exporting: the producer's Export always finishes "
+                         "(weak fairness)", "-f", "holds"),
+    "lock_free": ("[]<> (!importing || !exporting): some operation always "
+                  "completes (no fairness assumption)", "", "holds"),
+    "ctrl_reader_wait_free": ("reader_wait_free with the controller's Import rule "
+                              "(-DOLD_BY_SLOT)", "-f", "holds"),
+}
+# LTL row -> (claim, extra -D switches of its build)
+LTL_BUILD = {"ctrl_reader_wait_free": ("reader_wait_free", ["OLD_BY_SLOT"])}
+
 
 def run(cmd, cwd):
     p = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE,
@@ -54,26 +127,28 @@ def run(cmd, cwd):
     return p.returncode, p.stdout
 
 
-def build(out, name, defines, safety):
+def build(out, name, defines, safety, cflags=()):
     d = os.path.join(out, name)
     shutil.rmtree(d, ignore_errors=True)
     os.makedirs(d)
     shutil.copy(MODEL, d)
-    rc, log = run(["spin"] + ["-D" + x for x in defines] + ["-a", "albatross.pml"], d)
+    rc, log = run(["spin"] + ["-D" + x for x in defines] +
+                  ["-a", os.path.basename(MODEL)], d)
     if rc != 0 or not os.path.exists(os.path.join(d, "pan.c")):
         raise SystemExit(f"spin -a failed for {name}:\n{log}")
     cc = ["gcc", "-O1", "-w", "-o", "pan", "pan.c"]
     if safety:
         cc[1:1] = ["-DSAFETY", "-DNOCLAIM"]
+    cc[1:1] = list(cflags)
     rc, log = run(cc, d)
     if rc != 0:
         raise SystemExit(f"gcc pan.c failed for {name}:\n{log}")
     return d
 
 
-def pan(d, args):
+def pan(d, args, depth=1000000):
     t0 = time.monotonic()
-    rc, log = run(["./pan", "-m1000000"] + args, d)
+    rc, log = run(["./pan", f"-m{depth}"] + args, d)
     secs = time.monotonic() - t0
     errors = int(re.search(r"errors: (\d+)", log).group(1))
     states = int(re.search(r"(\d+) states, stored", log).group(1))
@@ -86,31 +161,70 @@ def pan(d, args):
                 log=log)
 
 
-def replay(d, ltl=None):
+def replay(d, ltl=None, defines=()):
     """spin -t -p: the counterexample's steps as text."""
-    rc, log = run(["spin", "-t", "-p"] +
-                  ["albatross.pml"], d)
+    rc, log = run(["spin"] + ["-D" + x for x in defines] + ["-t", "-p"] +
+                  [os.path.basename(MODEL)], d)
     return log
 
 
+def protocol_steps(d, defines):
+    """The shared accesses of a trail (four_slot.pml's printf lines)."""
+    rc, log = run(["spin"] + ["-D" + x for x in defines] + ["-t"] +
+                  [os.path.basename(MODEL)], d)
+    steps = [l.strip() for l in log.splitlines()
+             if re.match(r"\s+[PC]: ", l) or "assertion violated" in l
+             or "START OF CYCLE" in l]
+    with open(os.path.join(d, "trail.txt"), "w") as f:
+        f.write("\n".join(steps) + "\n")
+    return steps
+
+
+def starvation(d, name, defines=()):
+    """The reader_wait_free cycle: Exports, consumer ReadLocked stores and no
+    finished Import in the repeated part.  Returns (ok, note, path)."""
+    trail = replay(d, name, defines)
+    shutil.copy(os.path.join(d, os.path.basename(MODEL) + ".trail"),
+                os.path.join(d, f"{name}.trail"))
+    with open(os.path.join(d, f"{name}.txt"), "w") as f:
+        f.write(trail)
+    cyc = trail.split("<<<<<START OF CYCLE>>>>>")
+    cyc = cyc[1] if len(cyc) > 1 else ""
+    exports = len(re.findall(r"\((?:writer|producer):\d\).*\[Actual = w\]", cyc))
+    retries = len(re.findall(r"\((?:reader|consumer):\d\).*\[ReadLocked = a(?:ctual)?\]", cyc))
+    ends = len(re.findall(r"\((?:reader|consumer):\d\).*\[importing = 0\]", cyc))
+    ok = exports > 0 and retries > 0 and ends == 0
+    return ok, (f"cycle: {exports} Exports, {retries} ReadLocked stores, "
+                f"{ends} Imports finished; replay: {os.path.join(d, name + '.txt')}")
+
+
 def main():
+    global MODEL
     ap = argparse.ArgumentParser()
+    ap.add_argument("--model", default="albatross", choices=["albatross", "four_slot"])
     ap.add_argument("--out", required=True)
     ap.add_argument("--json", required=True)
     ap.add_argument("--variant", default=None)
     ap.add_argument("--must-fail", default="mutex,definite")
     a = ap.parse_args()
+    MODEL = os.path.join(HERE, a.model + ".pml")
+    if a.model == "four_slot":
+        safety, ltl, cflags = SAFETY_FS, LTL_FS, ["-O2"]
+    else:
+        safety = {k: (p, [d], 1000000) for k, (p, d) in SAFETY.items()}
+        ltl, cflags = LTL, []
     os.makedirs(a.out, exist_ok=True)
     os.makedirs(os.path.dirname(a.json) or ".", exist_ok=True)
     results, bad = [], []
 
-    def record(name, prop, expected, r, ok, note):
+    def record(name, prop, expected, r, ok, note, extra=None):
         row = dict(check=name, property=prop, expected=expected,
                    result=("violated" if r["errors"] else "holds"),
                    states=r["states"], depth=r["depth"], seconds=r["seconds"],
                    ok=ok)
         if r["violation"]:
             row["violation"] = r["violation"]
+        row.update(extra or {})
         results.append(row)
         print(f"{'ok  ' if ok else 'BAD '} {name:18s} {row['result']:8s} "
               f"(expected {expected}) states {r['states']:>8d} depth {r['depth']:>6d} "
@@ -119,53 +233,62 @@ def main():
             bad.append(f"{name}: expected {expected}, got {row['result']}"
                        + (f" ({r['violation']})" if r["violation"] else ""))
 
+    def ltl_run(d, name, prop, fair, expected, defines, claim=None):
+        r = pan(d, ["-a"] + ([fair] if fair else []) + ["-N", claim or name],
+                3000000 if a.model == "four_slot" else 1000000)
+        note = ""
+        if expected == "holds":
+            ok = r["errors"] == 0
+        else:
+            # the counterexample must be a cycle in which the writer keeps
+            # storing Actual and the reader keeps storing ReadLocked
+            ok = r["errors"] > 0 and "acceptance cycle" in (r["violation"] or "")
+            if ok:
+                ok, note = starvation(d, name, defines)
+                r["violation"] = r["violation"] + " (writer starves reader)" \
+                    if ok else r["violation"]
+        record(name, prop, "violated (acceptance cycle)" if expected == "cycle"
+               else "holds", r, ok, note)
+
     if a.variant:
         for name in a.must_fail.split(","):
-            prop, define = SAFETY[name]
-            d = build(a.out, f"{a.variant.lower()}_{name}", [a.variant, define], True)
-            r = pan(d, [])
+            if name in ltl:
+                prop, fair, _ = ltl[name]
+                d = build(a.out, f"{a.variant.lower()}_{name}", [a.variant], False,
+                          cflags)
+                ltl_run(d, name, prop, fair, "cycle", [a.variant])
+                continue
+            prop, defines, depth = safety[name]
+            defines = [a.variant] + defines
+            # four-slot variants breadth-first: a shortest counterexample
+            bfs = ["-DBFS"] if a.model == "four_slot" else []
+            d = build(a.out, f"{a.variant.lower()}_{name}", defines, True,
+                      cflags + bfs)
+            r = pan(d, [], depth)
             v = r["violation"] or ""
             # the property's own assertion, not the model's stamp bound
             ok = r["errors"] > 0 and "assertion violated" in v and "s!=" not in v
+            extra = {}
+            if ok and a.model == "four_slot":
+                extra["trail"] = protocol_steps(d, defines)
             record(name, prop, "violated", r, ok,
-                   f"-D{a.variant}: {r['violation']}" if ok else "")
+                   f"-D{a.variant}: {r['violation']}" if ok else "", extra)
     else:
-        for name, (prop, define) in SAFETY.items():
-            d = build(a.out, name, [define], True)
-            r = pan(d, [])
+        for name, (prop, defines, depth) in safety.items():
+            d = build(a.out, name, defines, True, cflags)
+            r = pan(d, [], depth)
             record(name, prop, "holds", r, r["errors"] == 0, "")
-        d = build(a.out, "ltl", [], False)
-        for name, (prop, fair, expected) in LTL.items():
-            r = pan(d, ["-a"] + ([fair] if fair else []) + ["-N", name])
-            note = ""
-            if expected == "holds":
-                ok = r["errors"] == 0
+        d = build(a.out, "ltl", [], False, cflags)
+        for name, (prop, fair, expected) in ltl.items():
+            if name in LTL_BUILD:
+                claim, defines = LTL_BUILD[name]
+                ltl_run(build(a.out, "ltl_" + name, defines, False, cflags),
+                        name, prop, fair, expected, defines, claim)
             else:
-                # the counterexample must be a cycle in which the writer keeps
-                # storing Actual and the reader keeps storing ReadLocked
-                ok = r["errors"] > 0 and "acceptance cycle" in (r["violation"] or "")
-                if ok:
-                    trail = replay(d, name)
-                    shutil.copy(os.path.join(d, "albatross.pml.trail"),
-                                os.path.join(d, f"{name}.trail"))
-                    with open(os.path.join(d, f"{name}.txt"), "w") as f:
-                        f.write(trail)
-                    cyc = trail.split("<<<<<START OF CYCLE>>>>>")
-                    cyc = cyc[1] if len(cyc) > 1 else ""
-                    exports = len(re.findall(r"\(writer:\d\).*\[Actual = w\]", cyc))
-                    retries = len(re.findall(r"\(reader:\d\).*\[ReadLocked = actual\]", cyc))
-                    ends = len(re.findall(r"\(reader:\d\).*\[importing = 0\]", cyc))
-                    ok = exports > 0 and retries > 0 and ends == 0
-                    note = (f"cycle: {exports} Exports, {retries} ReadLocked "
-                            f"stores, {ends} Imports finished; "
-                            f"replay: {os.path.join(d, name + '.txt')}")
-                    r["violation"] = r["violation"] + " (writer starves reader)" \
-                        if ok else r["violation"]
-            record(name, prop, "violated (acceptance cycle)" if expected == "cycle"
-                   else "holds", r, ok, note)
+                ltl_run(d, name, prop, fair, expected, [])
 
     with open(a.json, "w") as f:
-        json.dump(dict(model="formal/spin/albatross.pml", variant=a.variant,
+        json.dump(dict(model=f"formal/spin/{a.model}.pml", variant=a.variant,
                        checks=results), f, indent=2)
         f.write("\n")
     total = sum(x["seconds"] for x in results)

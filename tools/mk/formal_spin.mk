@@ -1,5 +1,6 @@
-# tools/mk/formal_spin.mk -- SPIN model check of the three-buffer protocol
-# (formal/spin/albatross.pml, run by formal/spin/check.py).
+# tools/mk/formal_spin.mk -- SPIN model checks of the three-buffer protocol
+# (formal/spin/albatross.pml) and of the four-slot channel (formal/spin/four_slot.pml),
+# both run by formal/spin/check.py.
 #   make test-formal-spin       every property: mutual exclusion, definite results,
 #                               actuality, New/Old, retries; writer wait-free and
 #                               lock-free hold; the reader's Import is NOT wait-free
@@ -32,3 +33,45 @@ test-formal-spin-negative-$(call neg_field,$(1),1):
 	    --out $(SPIN_DIR)/negative --json $(REPORTS)/formal_spin_negative_$(call neg_field,$(1),1).json
 endef
 $(foreach v,$(SPIN_NEGATIVE),$(eval $(call SPIN_NEG_RULE,$(v))))
+
+# --- the four-slot channel (issue 13): formal/spin/four_slot.pml -----------
+#   make test-formal-spin-four-slot
+#                               every property of the four-slot channel: mutual
+#                               exclusion, definite results, actuality, New/Old,
+#                               the access bound (1 + W / 3 + W per Import), also
+#                               with W = 1, L = 1 at init and consumer crashes;
+#                               reader_wait_free, writer_wait_free and lock_free
+#                               all HOLD.  Report: build/reports/formal_spin_four_slot.json
+#   make test-formal-spin-four-slot-negative-<variant>
+#                               a broken variant must violate the checks named
+#                               in its third field (breadth-first: a shortest
+#                               counterexample; its steps in .../trail.txt)
+SPIN_FS_DIR      := $(SPIN_DIR)/four_slot
+# variant:-D switch:checks that must fail
+SPIN_FS_NEGATIVE := wrong-order:WRONG_ORDER:mutex,definite \
+                    index-from-actual:INDEX_FROM_ACTUAL:mutex,definite \
+                    ignore-readlocked:IGNORE_READLOCKED:mutex,definite \
+                    rl-as-last:RL_AS_LAST:actuality \
+                    slot-after-actual:SLOT_AFTER_ACTUAL:definite,actuality,newold \
+                    new-if-a-ne-l:NEW_IF_A_NE_L:newold \
+                    reread:REREAD:bound,reader_wait_free
+
+SPIN_FS_TESTS    := formal-spin-four-slot \
+                    $(foreach v,$(SPIN_FS_NEGATIVE),formal-spin-four-slot-negative-$(call neg_field,$(v),1))
+TESTS            += $(SPIN_FS_TESTS)
+FORMAL_TESTS     += $(SPIN_FS_TESTS)
+
+.PHONY: $(addprefix test-,$(SPIN_FS_TESTS))
+
+test-formal-spin-four-slot:
+	@tools/run_test.sh formal-spin-four-slot $(PYTHON) $(SPIN_CHECK) --model four_slot \
+	    --out $(SPIN_FS_DIR) --json $(REPORTS)/formal_spin_four_slot.json
+
+define SPIN_FS_NEG_RULE
+test-formal-spin-four-slot-negative-$(call neg_field,$(1),1):
+	@tools/run_test.sh formal-spin-four-slot-negative-$(call neg_field,$(1),1) $(PYTHON) \
+	    $(SPIN_CHECK) --model four_slot --variant $(call neg_field,$(1),2) \
+	    --must-fail $(call neg_field,$(1),3) --out $(SPIN_FS_DIR)/negative \
+	    --json $(REPORTS)/formal_spin_four_slot_negative_$(call neg_field,$(1),1).json
+endef
+$(foreach v,$(SPIN_FS_NEGATIVE),$(eval $(call SPIN_FS_NEG_RULE,$(v))))
