@@ -12,6 +12,7 @@
 //             [--report FILE] [--ages FILE.csv] [--label NAME] [--progress K]
 //             [--age-scale X] [--require-done] [--expect-caught-by CHECK]
 //             [--drift-ppm BOARD=PPM[,/BOARD=PPM...]|random:MAX] [--clock-scale X]
+//             [--termination-scale X]
 //
 // The cores report every Import and Export as board events (EVENT/ARG,
 // sim/firmware/mobot_check.h).  The harness watches every core's DPRAM port: it
@@ -35,6 +36,8 @@
 //                   or slow (board_memmap +drift<c>=PPM); random:MAX draws
 //                   each board's from the seed in [-MAX, MAX]
 //   --clock-scale X check local-time errors against X times their bounds
+//   --termination-scale X  check each Import's passes and accesses against X
+//                   times the compiler's bound (negative test)
 //
 // A crashed producer's half-written buffer is never published: its
 // consumers' checks (cpu) would see the torn value or a New without a newer
@@ -64,6 +67,13 @@
 //              lies within the board's lag and lead bounds of the
 //              controller's time at its TIMER read, and the rate is known
 //              after four windows (sim/mobot_sim_clock.cpp)
+//   termination    every three-buffer Import the compiler bounded (report.txt
+//              beside the plan: [board] timing in the description) whose
+//              loop kept within the compiler's T and V makes at most its
+//              max_passes ReadLocked stores and max_accesses RAM accesses,
+//              an Import still running at the end counted with its passes so
+//              far; without --stall every Import is judged and one whose
+//              loop exceeds T or V fails too (sim/mobot_sim_ages.cpp)
 // Exit status 0 = verdict pass, 1 = fail, 2 = bad arguments.
 // The command line is parsed in sim/mobot_sim_options.cpp, the --ages CSV
 // written by sim/mobot_sim_ages.cpp, local time judged and reported by
@@ -117,6 +127,13 @@ int main(int argc, char **argv)
             if (s.board == board && uint32_t(s.ch->id) == id) return &s;
         return nullptr;
     };
+    // Import termination: the compiler's bounds, and each core's instances (word ranges) it imports from.
+    const int n_term = load_termination(o.plan, series, plan);
+    struct Range { uint32_t first, end; Series *s; };
+    std::vector<Range> ranges[NB];
+    for (Series &s : series)
+        ranges[s.board].push_back({s.base / 4, s.base / 4 + 1 + 3 * s.ch->dest_size() / 4, &s});
+    bool seen_event[NB] = {false, false, false, false};
     const uint64_t n_buckets = std::min<uint64_t>(800, o.cycles);
     const uint64_t bucket_len = (o.cycles + n_buckets - 1) / n_buckets;
     for (Series &s : series) s.bucket_max.assign(n_buckets, 0);
@@ -241,6 +258,10 @@ int main(int argc, char **argv)
             const uint32_t adr = (m->dp_adr_o >> (10 * c)) & 0x3ffu, sel = (m->dp_sel_o >> (4 * c)) & 0xfu;
             // a load: when a consumer read a control word (its Actual) last
             if (((m->dp_ack_o >> c) & 1u) && !((m->dp_we_o >> c) & 1u)) last_load[c][adr] = now;
+            if ((m->dp_ack_o >> c) & 1u)  // an access inside an Import (termination)
+                for (Range &g : ranges[c])
+                    if (adr >= g.first && adr < g.end)
+                        g.s->term.access((m->dp_we_o >> c) & 1u, adr == g.first, sel, cycle);
             // a producer's store of Actual (byte 0 of its channel): port A write, lane 0
             if (((m->dp_ack_o >> c) & 1u) && ((m->dp_we_o >> c) & 1u)) {
                 for (auto &pp : producers) {
@@ -269,6 +290,11 @@ int main(int argc, char **argv)
             const uint32_t kind = ev & 0xfu, id = (ev >> 4) & 0xfu, cyc = ev >> 8;
             ++events[c];
             last_event[c] = cycle;
+            // termination: an Import's window ends at its event; every event starts the next windows
+            if (kind == EV_NEW || kind == EV_OLD || kind == EV_ERROR)
+                if (Series *s = find_series(c, id); s && seen_event[c]) s->term.import_done(o.term_scale, cycle, o.stall == 0);
+            for (Range &g : ranges[c]) g.s->term.reset();
+            seen_event[c] = true;
             if (kind == EV_NEW || kind == EV_OLD) {
                 Series *s = find_series(c, id);
                 if (!s) continue;
@@ -400,6 +426,34 @@ int main(int argc, char **argv)
         if (check_ages && !(crash_run && c == o.crash_board) && !clock_verdict(clocks[c], c, o, plan, cycle, msg))
             fail("clock", msg);
     }
+    // Import termination: every judged Import within the compiler's bound, and
+    // without --stall every loop within the compiler's T and V.
+    for (Series &s : series) {
+        if (seen_event[s.board]) s.term.finish(o.term_scale, cycle, o.stall == 0);
+        if (s.term.over) {
+            const Termination &t = s.term;
+            std::snprintf(b, sizeof b, "expected every Import of %s at %s within %.4g passes and %.4g accesses "
+                          "(compiler: D %llu, T %llu, V %llu), got %llu over it (worst %llu passes, %llu accesses; "
+                          "first at cycle %llu)", s.ch->name.c_str(), plan.board_names[s.board].c_str(),
+                          o.term_scale * double(t.max_passes), o.term_scale * double(t.max_accesses),
+                          (unsigned long long)t.D, (unsigned long long)t.T, (unsigned long long)t.V,
+                          (unsigned long long)t.over, (unsigned long long)t.worst_over_passes,
+                          (unsigned long long)t.worst_over_accesses, (unsigned long long)t.worst_over_cycle);
+            fail("termination", b);
+        }
+    }
+    for (const Series &s : series) {
+        if (o.stall == 0 && s.term.outside) {
+            const Termination &t = s.term;
+            std::snprintf(b, sizeof b, "expected the Import loop of %s at %s within the compiler's T %llu and V %llu "
+                          "clocks (the bound's premise), got %llu Imports beyond (T up to %llu, V up to %llu; up "
+                          "to %llu passes against the bound %llu)", s.ch->name.c_str(), plan.board_names[s.board].c_str(),
+                          (unsigned long long)t.T, (unsigned long long)t.V, (unsigned long long)t.outside,
+                          (unsigned long long)t.t_max, (unsigned long long)t.v_max,
+                          (unsigned long long)t.worst_beyond_passes, (unsigned long long)t.max_passes);
+            fail("termination", b);
+        }
+    }
     const bool radar_crash = crash_run && crash_phase == 3 && crash_prod->ch->name == "RadarMap";
     if (radar_crash && stale_events == 0 && !cpu_failed)
         fail("staleness", "expected navigation to report RadarMap stale after the radar crashed, it never did");
@@ -442,11 +496,13 @@ int main(int argc, char **argv)
          .num("new", double(s.news)).num("old", double(s.olds)).num("bound", double(s.bound))
          .num("latency_bound", double(s.ch->latency_retry)).num("period", double(s.ch->period))
          .num("over_bound_buckets", double(s.over_bound)).num("new_after_crash", double(s.news_after_crash)).raw("age", s.age.json())
-         .raw("import_cycles", s.import_cycles.json());
+         .raw("import_cycles", s.import_cycles.json()).raw("termination", termination_json(s.term));
         std::string t = e.text();
         js += (js.size() > 1 ? ",\n  " : "\n  ") + t.substr(0, t.size() - 1);
     }
-    r.raw("series", js + "]");
+    r.raw("series", js + "]").num("termination_bounded_series", n_term);
+    if (n_term) print_termination(series, plan, o);
+    else std::printf("  Import termination: no bounds (the description has no [board] timing): not checked\n");
     js = "[";
     std::printf("  %-11s %-11s %7s %9s %9s %13s\n", "channel", "producer", "Exports", "cyc mean", "cyc max",
                 "max gap (clk)");

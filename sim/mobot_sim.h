@@ -1,6 +1,7 @@
 // mobot_sim.h -- what sim/mobot_sim.cpp shares with sim/mobot_sim_options.cpp,
 // sim/mobot_sim_ages.cpp and sim/mobot_sim_clock.cpp: the checks' names, the
-// options, the statistics, the option parsing, the ages CSV and local time.
+// options, the statistics, the option parsing, the ages CSV, Import
+// termination and local time.
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -11,7 +12,7 @@
 
 const int NB = 4;
 enum : uint32_t { EV_NEW = 1, EV_OLD, EV_ERROR, EV_BEGIN, EV_EXPORT, EV_STALE, EV_FRESH, EV_STATUS, EV_CLOCK };
-const char *const kChecks[] = {"cpu", "liveness", "age", "staleness", "faults", "clock"};
+const char *const kChecks[] = {"cpu", "liveness", "age", "staleness", "faults", "clock", "termination"};
 
 struct Options {
     std::string plan, report, ages, trace, label = "mobot-sim", expect, crash_arg, hang_arg, drift_arg;
@@ -22,6 +23,7 @@ struct Options {
     uint64_t crash_at = 0, hang_at = 0;
     long drift_ppm[NB] = {0, 0, 0, 0};  // --drift-ppm: each board's clock against the controller's
     double clock_scale = 1;             // --clock-scale: check the local-time error against X times its bound
+    double term_scale = 1;              // --termination-scale: check passes/accesses against X times the bound
 };
 
 struct Stat {  // min / mean / max of a series of integers
@@ -42,6 +44,27 @@ struct Stat {  // min / mean / max of a series of integers
     }
 };
 
+struct Termination {  // one series' Imports against the compiler's termination bound (issue 13 section 2)
+    bool known = false;                                 // the compiler bounded it (report.txt)
+    uint64_t D = 0, T = 0, V = 0, max_passes = 0, max_accesses = 0;  // compiler's figures (controller clocks)
+    // the Import in progress: accesses of the core to the instance since its last event
+    uint32_t passes = 0, accesses = 0, loads = 0;
+    uint64_t last_load = 0, first_gap = 0, max_gap = 0;
+    // over the run (the core's first Import, whose window holds the attach, is left out)
+    Stat passes_all, accesses_all;                       // every Import
+    std::vector<uint64_t> hist;                          // passes per Import: count of 0, 1, 2, ...
+    uint64_t judged = 0, outside = 0, over = 0;          // Imports within T and V; beyond them; over the bound
+    uint64_t worst_passes = 0, worst_accesses = 0;       // worst of the judged Imports
+    uint64_t t_max = 0, v_max = 0;                       // measured loop gaps (clocks), every Import
+    uint64_t worst_over_passes = 0, worst_over_accesses = 0, worst_over_cycle = 0;
+    uint64_t unfinished = 0, worst_beyond_passes = 0;    // an Import over the bound at the end; passes beyond T, V
+    void access(bool write, bool control, uint32_t sel, uint64_t cycle);  // one acked access to the instance
+    // its Import's event: judge (every Import with judge_all, else those within T and V) and count
+    void import_done(double scale, uint64_t cycle, bool judge_all);
+    void finish(double scale, uint64_t cycle, bool judge_all);  // the end of the run: the Import in progress
+    void reset() { passes = accesses = loads = 0; first_gap = max_gap = 0; }
+};
+
 struct Series {  // one channel at one consumer
     const PlanChannel *ch = nullptr;
     int board = 0;
@@ -49,6 +72,7 @@ struct Series {  // one channel at one consumer
     Stat age, import_cycles;
     uint64_t news = 0, olds = 0, news_after_crash = 0, over_bound = 0, bound = 0;
     std::vector<uint64_t> bucket_max;  // worst age per time bucket (picture)
+    Termination term;
 };
 
 struct LocalClock {  // one board's local time (alb_clock): its estimates against the controller's time
@@ -82,6 +106,12 @@ std::string code_text(uint32_t code, const Plan &plan);
 void clock_bounds(LocalClock clocks[NB], const std::vector<Series> &series, const Plan &plan);
 bool clock_verdict(const LocalClock &k, int board, const Options &o, const Plan &plan, uint64_t cycle, std::string &msg);
 std::string clock_report(const LocalClock clocks[NB], const Options &o, const Plan &plan);
+// Import termination (sim/mobot_sim_ages.cpp): the compiler's bounds from
+// report.txt beside the plan (returns how many series got one), the console
+// table and the series' JSON object.
+int load_termination(const std::string &plan_path, std::vector<Series> &series, const Plan &plan);
+void print_termination(const std::vector<Series> &series, const Plan &plan, const Options &o);
+std::string termination_json(const Termination &t);
 // The --ages CSV (sim/mobot_sim_ages.cpp); false if it cannot be written.
 bool write_ages(const std::string &path, const std::vector<Series> &series, const Plan &plan, uint64_t n_buckets,
                 uint64_t bucket_len, uint64_t cycle, uint64_t crash_cycle, uint64_t first_stale);

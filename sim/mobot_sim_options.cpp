@@ -69,8 +69,9 @@ int usage(const char *msg)
                  "                 [--seed S] [--stall P] [--fault-rate R] [--crash BOARD@CYCLE] [--hang BOARD@CYCLE]\n"
                  "                 [--trace FILE.vcd [--trace-from N] [--trace-cycles N]] [--report FILE]\n"
                  "                 [--ages FILE.csv] [--label NAME] [--progress K] [--age-scale X] [--require-done]\n"
+                 "                 [--termination-scale X]\n"
                  "                 [--drift-ppm BOARD=PPM[,BOARD=PPM...]|random:MAX] [--clock-scale X]\n"
-                 "                 [--expect-caught-by cpu|liveness|age|staleness|faults|clock]\n", msg);
+                 "                 [--expect-caught-by cpu|liveness|age|staleness|faults|clock|termination]\n", msg);
     return 2;
 }
 
@@ -114,6 +115,10 @@ int parse_options(int argc, char **argv, Options &o, Plan &plan, std::vector<std
             char *end = nullptr;
             o.clock_scale = std::strtod(v, &end);
             if (*end || !(o.clock_scale > 0)) return usage("--clock-scale: expected a number > 0");
+        } else if (a == "--termination-scale") {
+            char *end = nullptr;
+            o.term_scale = std::strtod(v, &end);
+            if (*end || !(o.term_scale > 0)) return usage("--termination-scale: expected a number > 0");
         } else if (a == "--fault-rate" || a == "--age-scale") {
             char *end = nullptr;
             const double x = std::strtod(v, &end);

@@ -122,3 +122,54 @@ test-clock-unit-negative: $(CLOCK_UNIT)/test_clock-norate
 	@tools/run_test.sh clock-unit-negative bash -c '$< > $<.log; rc=$$?; tail -n 1 $<.log; \
 	    if [ $$rc -eq 1 ] && tail -n 1 $<.log | grep -q "failed$$" && ! tail -n 1 $<.log | grep -q " 0 failed$$"; then \
 	    echo "clock-unit-negative: caught (no rate correction fails the unit test)"; else echo "NOT CAUGHT"; exit 1; fi'
+
+# Import termination (issue 13 section 2, docs/robot.md "Import termination"):
+# sim/mobot3.toml and sim/mobot3_possync.toml give every board's core
+# ([board.<name>]), so the compiler bounds each three-buffer Import
+# (report.txt, ALB_<N>_IMPORT_MAX_*), and every robot run (test-pico-boards*,
+# test-serv-boards, test-sim-clock*, make sim) checks the measured passes and
+# accesses per Import against it (check "termination", sim/mobot_sim.cpp);
+# the runs with --stall judge only the Imports whose loop kept within the
+# compiler's T and V.  Added here:
+#   test-termination-serv      the SERV motor board without stall bursts: every
+#                              Import judged, SERV's loop against T = V = 909
+#   test-termination-negative  the same system described with a PicoRV32 motor
+#                              board (T = V = 90, while SERV's loop takes up to
+#                              ~900 clocks): the compiler leaves MotorCmd and
+#                              GlobalTime unspaced (D 269 and 253) and bounds
+#                              the motor's Imports at 2 passes; the SERV motor
+#                              makes more: caught by termination
+#   test-termination-negative-scale  the robot (fw/) with the bounds scaled by
+#                              0.5 (--termination-scale): caught by termination
+TERM_UNDER      := mobot3_serv_understated
+TERM_UNDER_DESC := $(BUILD)/desc/$(TERM_UNDER).toml
+TERM_UNDER_SCHED := $(BUILD)/schedule/$(TERM_UNDER)
+TERM_UNDER_FW   := $(PB_DIR)/$(TERM_UNDER)/fw
+$(TERM_UNDER_DESC): sim/mobot3.toml tools/mk/sim.mk
+	@mkdir -p $(@D)
+	sed '/^\[board.motor\]/,/^core/s/^core *= *"serv"/core = "picorv32"   # understated: the motor is SERV/' $< > $@
+	@grep -q 'understated' $@ || { echo "$@: sim/mobot3.toml no longer has [board.motor] core = \"serv\""; exit 1; }
+$(TERM_UNDER_SCHED)/rom.hex: $(TERM_UNDER_DESC) $(SCHEDULE_SRC)
+	$(SCHEDULE) $< --out $(@D) -q
+$(TERM_UNDER_FW)-serv/motor.elf: sim/firmware/mobot_motor.c sim/firmware/mobot_check.h $(TERM_UNDER_SCHED)/rom.hex $(FW_DEPS)
+	@$(DRV_RV_NEED)
+	@mkdir -p $(@D)
+	$(DRV_RV_CC) $(FW_CFLAGS) -DBOARD_NO_COUNTERS -I$(TERM_UNDER_SCHED) -Isim -o $@ soc/firmware/crt0.S \
+	    sim/firmware/mobot_motor.c $(TERM_UNDER_SCHED)/motor.c c-driver/albatross.c $(FW_LDFLAGS)
+TERM_SERV_ARGS = $(call pb_args,$(PB_SCHED),$(PB_FWDIR),$(PB_FWDIR)/radar.hex,$(PB_FWDIR)/navigation.hex)
+TERM_UNDER_ARGS = $(call pb_args,$(TERM_UNDER_SCHED),$(TERM_UNDER_FW),$(TERM_UNDER_FW)/radar.hex,$(TERM_UNDER_FW)/navigation.hex)
+TESTS += termination-serv termination-negative termination-negative-scale
+.PHONY: test-termination-serv test-termination-negative test-termination-negative-scale
+test-termination-serv: $(SB_BIN) $(PB_FW) $(PB_DIR)/mobot3/fw-serv/motor.hex $(PB_SCHED)/tb_plan.txt
+	@tools/run_test.sh termination-serv $(SB_BIN) $(subst $(PB_FWDIR)/motor.hex,$(PB_DIR)/mobot3/fw-serv/motor.hex,$(TERM_SERV_ARGS)) \
+	    --cycles $(PB_CYCLES) --seed $(SEED) --require-done --label termination-serv --report $(REPORTS)/termination_serv.json
+test-termination-negative: $(SB_BIN) $(foreach b,radar odometry navigation,$(TERM_UNDER_FW)/$(b).hex) \
+        $(TERM_UNDER_FW)-serv/motor.hex $(TERM_UNDER_SCHED)/tb_plan.txt
+	@tools/run_test.sh termination-negative $(SB_BIN) $(subst $(TERM_UNDER_FW)/motor.hex,$(TERM_UNDER_FW)-serv/motor.hex,$(TERM_UNDER_ARGS)) \
+	    --cycles $(TERM_NEG_CYCLES) --seed $(SEED) --label termination-negative --expect-caught-by termination \
+	    --report $(REPORTS)/termination_negative.json
+TERM_NEG_CYCLES ?= 600000
+test-termination-negative-scale: $(PB_BIN) $(PB_FW) $(PB_SCHED)/tb_plan.txt
+	@tools/run_test.sh termination-negative-scale $(PB_BIN) $(PB_FW_ARGS) --cycles $(TERM_NEG_CYCLES) --seed $(SEED) \
+	    --termination-scale 0.5 --label termination-negative-scale --expect-caught-by termination \
+	    --report $(REPORTS)/termination_negative_scale.json
