@@ -213,9 +213,9 @@ $(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
 
 BENCHES += synth area
 
-TESTS += fpga-soc fpga-soc-threebuffer-negative fpga-soc-ulx3s fpga-soc-ulx3s-drift fpga-soc-ulx3s-drift-negative fpga-soc-arty fpga-soc-negative fpga-soc-ulx3s-negative fpga-soc-arty-negative \
+TESTS += fpga-soc fpga-soc-threebuffer-negative fpga-soc-bound-negative fpga-soc-ulx3s fpga-soc-ulx3s-drift fpga-soc-ulx3s-drift-negative fpga-soc-arty fpga-soc-negative fpga-soc-ulx3s-negative fpga-soc-arty-negative \
          fpga-soc-pins-negative fpga-icebreaker fpga-ulx3s fpga-report-negative fpga-arty fpga-lint
-.PHONY: test-fpga-soc test-fpga-soc-threebuffer-negative test-fpga-soc-ulx3s test-fpga-soc-ulx3s-drift test-fpga-soc-ulx3s-drift-negative test-fpga-soc-arty test-fpga-soc-negative test-fpga-soc-ulx3s-negative \
+.PHONY: test-fpga-soc test-fpga-soc-threebuffer-negative test-fpga-soc-bound-negative test-fpga-soc-ulx3s test-fpga-soc-ulx3s-drift test-fpga-soc-ulx3s-drift-negative test-fpga-soc-arty test-fpga-soc-negative test-fpga-soc-ulx3s-negative \
         test-fpga-soc-arty-negative test-fpga-soc-pins-negative test-fpga-icebreaker test-fpga-ulx3s \
         test-fpga-report-negative test-fpga-arty test-fpga-lint
 # Per top: test-fpga-soc$(1) runs it for $(3) clocks (the iCEBreaker, whose
@@ -248,6 +248,12 @@ define fpga_soc_3b_test
 test-fpga-soc-threebuffer-negative: $(FPGA_DIR)/sim-3b/Vicebreaker_top $$(FPGA_IMAGES) $$(FPGA_3B_IMAGES)
 	@tools/run_test.sh fpga-soc-threebuffer-negative $(FPGA_DIR)/sim-3b/Vicebreaker_top --cycles 4000000 \
 	    $(call FPGA_GT_ARGS,$(FPGA_3B_SCHED)/sensor.h) --expect-fail "the sensor's GlobalTime Import"
+# The count itself: the demo checked against a bound one access below the
+# compiler's must fail on it (a New four-slot Import takes exactly 3 + W).
+test-fpga-soc-bound-negative: $(call FPGA_SIM,icebreaker_top) $$(FPGA_IMAGES)
+	@tools/run_test.sh fpga-soc-bound-negative $(call FPGA_SIM,icebreaker_top) --cycles 4000000 \
+	    $(call FPGA_GT_ARGS,$(FPGA_SCHED)/sensor.h) --import-bound $$$$(( $(call fpga_gt_macro,$(FPGA_SCHED)/sensor.h,IMPORT_MAX_ACCESSES) - 1 )) \
+	    --expect-fail "the sensor's GlobalTime Import exceeded its bound"
 endef
 $(eval $(call fpga_soc_3b_test))
 
@@ -255,9 +261,12 @@ $(eval $(call fpga_soc_3b_test))
 # (fpga/EHXPLLL.v with +pll_drift: half-periods of 1 to 4 half-periods
 # of the cores' clock, edges on either of its edges): the whole system on
 # two unrelated clocks, checked as above.
-test-fpga-soc-ulx3s-drift: $(call FPGA_SIM,ulx3s_top) $(FPGA_IMAGES)
+define fpga_soc_drift_test
+test-fpga-soc-ulx3s-drift: $(call FPGA_SIM,ulx3s_top) $$(FPGA_IMAGES)
 	@tools/run_test.sh fpga-soc-ulx3s-drift $(call FPGA_SIM,ulx3s_top) --cycles 4000000 +pll_drift=4242 \
-	    --report $(REPORTS)/fpga_soc_ulx3s_drift.json
+	    $(call FPGA_GT_ARGS,$(FPGA_SCHED)/sensor.h) --report $$(REPORTS)/fpga_soc_ulx3s_drift.json
+endef
+$(eval $(call fpga_soc_drift_test))
 # Its negative: the cores' buses straight to their DPRAMs, no bridge (the
 # no_cdc mutant below).  At the PLL's fixed 2:1 that system happens to run;
 # with the clocks unrelated it must stall.
