@@ -58,7 +58,7 @@ module duo_system #(
     assign rst_o = rst | core_rst;
 
     // Sizes as in fpga/duo.toml (ram 1024 bytes, n_chan 4) and tools/mk/fpga.mk (2 KiB programs).
-    wire [63:0]  code;
+    wire [63:0]  code /* verilator public_flat_rd */;   // also read by the simulation harness
     wire [255:0] stat;
     // Each board's DPRAM port A (its core's side) as the DPRAM performs it:
     // read by the simulation harness (fpga/test_fpga_soc.cpp), which counts the
@@ -67,7 +67,9 @@ module duo_system #(
     wire [1:0]  mon_we  /* verilator public_flat_rd */;
     wire [15:0] mon_adr /* verilator public_flat_rd */;
     wire [7:0]  mon_sel;
-    wire unused_mon = &{1'b0, mon_ack, mon_we, mon_adr, mon_sel};
+    wire        mon_clk /* verilator public_flat_rd */;   // the DPRAMs' clock: mon_* change with it
+    assign mon_clk = clk_i;
+    wire unused_mon = &{1'b0, mon_ack, mon_we, mon_adr, mon_sel, mon_clk};
     wire unused_stat = &{1'b0, stat[255:129], stat[127:1]};  // the heartbeat is STAT 0 bit 0
     albatross_system #(
         .NB(2), .ADDR_WIDTH(8), .RAM_WORDS(512), .N_CHAN(4), .ROM_WORDS(256),

@@ -123,9 +123,30 @@ int main(int argc, char **argv)
     uint64_t gt_done = 0, gt_acc = 0, gt_worst = 0, gt_changed = 0, gt_longest = 0, starved_at = 0;
     uint64_t gt_first = 0, gt_worst_at = 0;
     const uint32_t gt_end = gt_base + 1 + 4 * gt_words;   // four buffers (three: a subset)
+    // One DPRAM clock cycle's port-A access of the sensor, sampled once per
+    // cycle at the DPRAM clock's falling edge (on the ULX3S that clock is not
+    // the one driven here).
+    bool mon_clk_was = false;
+    auto watch = [&](uint64_t c) {
+        const bool clk = DUO(mon_clk) != 0;
+        const bool fall = mon_clk_was && !clk;
+        mon_clk_was = clk;
+        if (!gt_words || !fall || !(DUO(mon_ack) & 1u)) return;   // board 0 = sensor, port A
+        const uint32_t a = DUO(mon_adr) & 0xffu;                  // ADDR_WIDTH 8
+        if (a < gt_base || a >= gt_end) return;
+        ++gt_acc;
+        const uint32_t off = a - gt_base - 1;                     // word in the buffers
+        if (a > gt_base && !(DUO(mon_we) & 1u) && off % gt_words == gt_words - 1) {
+            if (gt_done == 0) gt_first = gt_acc;                  // with the set-up's loads
+            else if (gt_acc > gt_worst) gt_worst = gt_acc, gt_worst_at = gt_done + 1;
+            gt_longest = std::max(gt_longest, c - gt_changed);
+            ++gt_done, gt_acc = 0, gt_changed = c;
+        }
+    };
     Leds prev = decode(m);
     for (uint64_t c = 1; c <= cycles; ++c) {
-        m.clk_i = 1; m.eval(); m.clk_i = 0; m.eval();
+        m.clk_i = 1; m.eval(); watch(c);
+        m.clk_i = 0; m.eval(); watch(c);
         const Leds now = decode(m);
         for (int b = 0; b < 2; ++b)
             if (((now.beat ^ prev.beat) >> b) & 1u) {
@@ -136,19 +157,6 @@ int main(int argc, char **argv)
         if (now.stopped && !stop_at) stop_at = c;
         if (!pins_at && !(pins_fail = pins(m, false)).empty()) pins_at = c;
         prev = now;
-        if (gt_words && (DUO(mon_ack) & 1u)) {                // board 0 = sensor, port A
-            const uint32_t a = DUO(mon_adr) & 0xffu;            // ADDR_WIDTH 8
-            if (a >= gt_base && a < gt_end) {
-                ++gt_acc;
-                const uint32_t off = a - gt_base - 1;           // word in the buffers
-                if (a > gt_base && !(DUO(mon_we) & 1u) && off % gt_words == gt_words - 1) {
-                    if (gt_done == 0) gt_first = gt_acc;        // with the set-up's loads
-                    else if (gt_acc > gt_worst) gt_worst = gt_acc, gt_worst_at = gt_done + 1;
-                    gt_longest = std::max(gt_longest, c - gt_changed);
-                    ++gt_done, gt_acc = 0, gt_changed = c;
-                }
-            }
-        }
         if (gt_words && !starved_at && watchdog && c - gt_changed > watchdog) starved_at = c;
         if (c % (cycles / 10) == 0)
             std::printf("  [%3llu%%] cycle %llu: heartbeat changes sensor %llu, actuator %llu, LEDs %02x\n",
@@ -177,8 +185,10 @@ int main(int argc, char **argv)
     if (!fail.empty()) {
         // an Import over its bound: that is the message
     } else if (error_at) {
-        std::snprintf(b, sizeof b, "expected the error LED off, it lit at cycle %llu (LEDs %02x)",
-                      (unsigned long long)error_at, prev.raw);
+        const uint64_t code = DUO(code);
+        std::snprintf(b, sizeof b, "expected the error LED off, it lit at cycle %llu (LEDs %02x; exit codes "
+                      "sensor %#x, actuator %#x)", (unsigned long long)error_at, prev.raw,
+                      unsigned(code & 0xffffffffu), unsigned(code >> 32));
         fail = b;
     } else if (stop_at) {
         std::snprintf(b, sizeof b, "expected no core stopped and no controller error, their LEDs lit at cycle %llu "
