@@ -58,8 +58,18 @@ module duo_system #(
     assign rst_o = rst | core_rst;
 
     // Sizes as in fpga/duo.toml (ram 1024 bytes, n_chan 4) and tools/mk/fpga.mk (2 KiB programs).
-    wire [63:0]  code;
+    wire [63:0]  code /* verilator public_flat_rd */;   // also read by the simulation harness
     wire [255:0] stat;
+    // Each board's DPRAM port A (its core's side) as the DPRAM performs it:
+    // read by the simulation harness (fpga/test_fpga_soc.cpp), which counts the
+    // sensor's accesses per GlobalTime Import; nothing else uses them.
+    wire [1:0]  mon_ack /* verilator public_flat_rd */;
+    wire [1:0]  mon_we  /* verilator public_flat_rd */;
+    wire [15:0] mon_adr /* verilator public_flat_rd */;
+    wire [7:0]  mon_sel;
+    wire        mon_clk /* verilator public_flat_rd */;   // the DPRAMs' clock: mon_* change with it
+    assign mon_clk = clk_i;
+    wire unused_mon = &{1'b0, mon_ack, mon_we, mon_adr, mon_sel, mon_clk};
     wire unused_stat = &{1'b0, stat[255:129], stat[127:1]};  // the heartbeat is STAT 0 bit 0
     albatross_system #(
         .NB(2), .ADDR_WIDTH(8), .RAM_WORDS(512), .N_CHAN(4), .ROM_WORDS(256),
@@ -79,7 +89,7 @@ module duo_system #(
         .ctl_cyc_o(), .ctl_stb_o(), .ctl_we_o(), .ctl_adr_o(), .ctl_sel_o(), .ctl_dat_o(),
         .bus_dat_o(), .bus_ack_o(), .bus_err_o(),
         .ev_valid_o(), .ev_data_o(), .ev_arg_o(), .map_err_o(),
-        .mon_a_ack_o(), .mon_a_we_o(), .mon_a_adr_o(), .mon_a_sel_o(),
+        .mon_a_ack_o(mon_ack), .mon_a_we_o(mon_we), .mon_a_adr_o(mon_adr), .mon_a_sel_o(mon_sel),
         .mon_b_ack_o(), .mon_b_we_o(), .mon_b_adr_o(), .mon_b_sel_o(), .mon_b_wdat_o(), .mon_b_rdat_o(),
         .ctl_time_o(), .ctl_rom_errors_o()
         /* verilator lint_on PINCONNECTEMPTY */

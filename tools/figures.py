@@ -455,6 +455,31 @@ def formal_sby():
 SECTIONS["formal-sby"] = formal_sby
 
 
+def kinds_cost():
+    """Cycles per call of both channel kinds on PicoRV32 and SERV (make bench-kinds),
+    and the RAM of one channel instance per kind."""
+    runs = [("PicoRV32", "three-buffer", "bench_pico.json"), ("PicoRV32", "four-slot", "bench_pico_four_slot.json"),
+            ("SERV", "three-buffer", "bench_serv.json"), ("SERV", "four-slot", "bench_serv_four_slot.json")]
+    reps = {f: load(f) for _, _, f in runs}
+    ram = load("channel_ram.json")
+    absent = [f for f, r in reps.items() if not r] + ([] if ram else ["channel_ram.json"])
+    if absent:
+        missing(absent[0], "make bench-kinds")
+    rams = {e["bytes"]: e for e in ram["sizes"]}
+    rows = []
+    for cpu, kind, f in runs:
+        for e in reps[f]["sizes"]:
+            rb = rams.get(e["bytes"])
+            key = "four_slot" if kind == "four-slot" else "three_buffer"
+            rows.append([cpu, kind, e["bytes"], f"{e['export']['mean']:.0f}", f"{e['import_new']['mean']:.0f}",
+                         f"{e['import_old']['mean']:.0f}", rb[key] if rb else "-"])
+    return table(["CPU", "kind", "payload bytes", "Export", "Import, New", "Import, Old",
+                  "RAM bytes per channel instance"], rows)
+
+
+SECTIONS["kinds-cost"] = kinds_cost
+
+
 def sim_excerpt():
     """The head of `make sim`'s console report, as sim/mobot_sim.cpp prints it."""
     r = load("sim.json")

@@ -304,6 +304,18 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
                         "\"time\" or \"status\"")
             kind, ok = "copy", False
 
+        fs = cd.get("four_slot")    # the wait-free kind for any channel (time, status, copy)
+        if fs is not None:
+            if not isinstance(fs, bool):
+                err.channel(i, label, "four_slot", f"{_describe(fs)}: expected true or false")
+                ok = False
+            elif "kind" in cd and cd["kind"] in LAYOUTS and (cd["kind"] == FOUR_SLOT) != fs:
+                err.channel(i, label, "four_slot", f"four_slot = {_describe(fs)} contradicts "
+                            f"kind = \"{cd['kind']}\"")
+                ok = False
+            else:
+                layout = FOUR_SLOT if fs else THREE_BUFFER
+
         ctype = cd.get("type")
         if ctype is not None and (not isinstance(ctype, str) or not CTYPE_RE.match(ctype.strip())):
             err.channel(i, label, "type", f"{_describe(ctype)} is not a C type name "

@@ -34,7 +34,8 @@ SYSTEM_KEYS = {"name", "clock_hz", "boards", "ram_bytes", "mode", "types_header"
 # [board.<name>]: a consumer board's Import loop timing (compiler/albatross_schedule/termination.py)
 BOARD_KEYS = {"core", "clock_hz", "import_t_clocks", "import_v_clocks"}
 CHANNEL_KEYS = {"name", "kind", "type", "size", "producer", "consumers",
-                "max_period_us", "sync", "priority", "max_slots", "max_import_passes"}
+                "max_period_us", "sync", "priority", "max_slots", "max_import_passes",
+                "four_slot"}
 
 IDENT_RE = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
 CTYPE_RE = re.compile(r"^((struct|union|enum)\s+)?[A-Za-z_][A-Za-z0-9_]*$")
@@ -96,7 +97,7 @@ class Channel:
     sync: bool = False
     priority: int = 0
     max_slots: Optional[int] = None
-    layout: str = "three_buffer"    # channel kind: three_buffer | four_slot (copy only)
+    layout: str = "three_buffer"    # channel kind: three_buffer | four_slot (copy, time, status)
     max_import_passes: Optional[int] = None   # three-buffer consumers: passes per Import at most
     # filled by the plan
     src_base: Optional[int] = None  # byte offset in the producer's RAM

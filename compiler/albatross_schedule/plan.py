@@ -5,15 +5,20 @@ from __future__ import annotations
 
 import random
 
+from .fourslot import FOUR_SLOT
 from .model import Bus, Channel, Plan, ScheduleError, Slot, System
 from .rom import C as CONTRACT, MAX_ENTRIES
 
 
 def transfer_accesses(ch: Channel) -> int:
+    """A: a new transfer's bus accesses (docs/controller.md "Timing"): per
+    destination W + 3 (ReadLocked load, W value stores and taken_at, Actual),
+    four-slot W + 4 (control-word load, W + 1 stores, Slot byte, Actual)."""
     nd = len(ch.consumers)
+    per_dest = ch.words + (4 if ch.layout == FOUR_SLOT else 3)
     if ch.kind == "copy":
-        return 3 + ch.words + nd * (ch.words + 3)
-    return nd * (ch.words + 3)
+        return 3 + ch.words + nd * per_dest
+    return nd * per_dest
 
 
 def slot_length(ch: Channel, bus: Bus) -> int:

@@ -24,7 +24,7 @@ MAX_DESTS = C.max_dests
 KIND_CODE = dict(C.kind)
 KIND_NAME = {v: k for k, v in KIND_CODE.items()}
 FLAG_SYNC = C.flag("entry", "sync")
-FLAG_FOUR_SLOT = flag_four_slot()            # a COPY of a four-slot channel
+FLAG_FOUR_SLOT = flag_four_slot()            # every entry of a four-slot channel (COPY, TIME, STATUS)
 HFLAG_SYNC_MODE = C.flag("header", "sync_mode")
 
 
@@ -150,8 +150,9 @@ def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None
         problems += [f"{tag}: {x.name} (reserved) is not 0" for x in C.entry if x.reserved and e[x.index] != 0]
         if flags & ~sum(C.flag("entry", n) for n in C.entry_flags):
             problems.append(f"{tag}: reserved E0 flag bits set ({flags:#x})")
-        if flags & FLAG_FOUR_SLOT and kind != copy:
-            problems.append(f"{tag}: FOUR_SLOT flag on a {KIND_NAME[kind]} entry (only a COPY may be four-slot)")
+        if flags & FLAG_FOUR_SLOT and kind not in (copy, time, status):
+            problems.append(f"{tag}: FOUR_SLOT flag on a {KIND_NAME[kind]} entry (only COPY, TIME and STATUS "
+                            "may be four-slot)")
         if flags & FLAG_SYNC and flags & FLAG_FOUR_SLOT:
             problems.append(f"{tag}: SYNC on a FOUR_SLOT entry (the sync channel is three-buffer)")
         if flags & FLAG_SYNC and (k != 0 or not sync_mode):

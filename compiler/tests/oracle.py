@@ -136,8 +136,8 @@ def rom_problems(words, n_chan, ram_words):
         if e["kind"] == 1:
             exts.append((e["src_board"], e["src_word"], e["w"]))
         four = e["flags"] & ORACLE_FOUR_SLOT["flag"]
-        if four and e["kind"] != 1:
-            p.append(f"entry {k}: FOUR_SLOT flag on a non-COPY")
+        if four and e["kind"] not in (1, 2, 3):
+            p.append(f"entry {k}: FOUR_SLOT flag on an entry that is not COPY, TIME or STATUS")
         if e["flags"] & ~(1 | ORACLE_FOUR_SLOT["flag"]):
             p.append(f"entry {k}: reserved flag bits")
         nbuf = ORACLE_FOUR_SLOT["buffers"] if four else 3
@@ -337,13 +337,13 @@ class ControllerModel:
                     if st["delivered"][k] != st["version"]:
                         self.export(st, k, b, bw, st["value"], st["taken_at"])
                         st["delivered"][k] = st["version"]
-            elif e["kind"] == 2:                     # TIME
+            elif e["kind"] in (2, 3):                # TIME, STATUS (counters of a fault-free run)
+                words = [self.time] if e["kind"] == 2 else [self.cycles & 0xFFFF] + [0] * (2 * self.n_chan)
                 for k, (b, bw) in enumerate(e["dst"]):
-                    self.export(st, k, b, bw, [self.time], self.time)
-            elif e["kind"] == 3:                     # STATUS: counters of a fault-free run
-                words = [self.cycles & 0xFFFF] + [0] * (2 * self.n_chan)
-                for k, (b, bw) in enumerate(e["dst"]):
-                    self.export(st, k, b, bw, words, self.time)
+                    if e["flags"] & ORACLE_FOUR_SLOT["flag"]:
+                        self.export_four_slot(b, bw, words, self.time)
+                    else:
+                        self.export(st, k, b, bw, words, self.time)
         self.cycles += 1
         self.time = c0 + self.hdr["cycle"]
 

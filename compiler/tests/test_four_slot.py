@@ -82,11 +82,22 @@ class FourSlotExampleTests(unittest.TestCase):
         words[3] = crc(words)
         return words
 
-    def test_flag_misplaced_is_caught(self):
-        """Negative: FOUR_SLOT on a TIME entry, or a reserved flag bit, fails both checkers."""
+    def test_flag_on_time_is_valid(self):
+        """FOUR_SLOT on a TIME entry is valid (a four-slot GlobalTime): both checkers accept it."""
         _, entries = decode(self.rom)
         k = next(i for i, e in enumerate(entries) if e["kind"] == 2)
-        for bit, what in ((ORACLE_FOUR_SLOT["flag"], "FOUR_SLOT"), (8, "reserved")):
+        ok = list(self.rom)
+        ok[4 + 8 * k] |= ORACLE_FOUR_SLOT["flag"] << 24
+        ok = self.reseal(ok)
+        self.assertEqual(rom_problems(ok, self.rep["bus"]["n_chan"], self.ram_words()), [])
+        self.assertEqual([x for x in S.verify_rom(ok, self.rep["bus"]["n_chan"], len(self.rep["boards"]),
+                                                  self.ram_words())[0] if f"entry {k}" in x and "FOUR" in x], [])
+
+    def test_flag_misplaced_is_caught(self):
+        """Negative: a reserved flag bit on a TIME entry fails both checkers."""
+        _, entries = decode(self.rom)
+        k = next(i for i, e in enumerate(entries) if e["kind"] == 2)
+        for bit, what in ((8, "reserved"),):
             with self.subTest(bit=bit):
                 bad = list(self.rom)
                 bad[4 + 8 * k] |= bit << 24

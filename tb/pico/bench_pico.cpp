@@ -3,7 +3,7 @@
 // whose other port is idle, and reports cycles per call as board EVENTs
 // (key = size << 16 | metric << 8 | field, ARG = the figure; see bench.c).
 //
-//   bench_pico +fw0=BENCH.hex [--max-cycles N] [--report FILE]
+//   bench_pico +fw0=BENCH.hex [--max-cycles N] [--report FILE] [--label L] [--cpu TEXT] [--kind K]
 //
 // Prints the table (cycles per call, means over the calls; the rdcycle pair
 // already subtracted on the core) and writes the JSON report with the exact
@@ -28,10 +28,14 @@ static const uint32_t K_OVERHEAD = 0xFFFF0000u, K_REPS = 0xFFFF0001u;
 int main(int argc, char **argv)
 {
     uint64_t max_cycles = 5000000;
-    std::string report;
+    std::string report, label = "bench-pico", cpu = "PicoRV32 rv32i (tb/pico/pico_bench.v), firmware -Os",
+                kind = "three_buffer";
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--max-cycles") && i + 1 < argc) max_cycles = std::strtoull(argv[++i], 0, 0);
         else if (!std::strcmp(argv[i], "--report") && i + 1 < argc) report = argv[++i];
+        else if (!std::strcmp(argv[i], "--label") && i + 1 < argc) label = argv[++i];
+        else if (!std::strcmp(argv[i], "--cpu") && i + 1 < argc) cpu = argv[++i];
+        else if (!std::strcmp(argv[i], "--kind") && i + 1 < argc) kind = argv[++i];
         else if (argv[i][0] != '+') { std::fprintf(stderr, "unknown argument %s\n", argv[i]); return 2; }
     }
     Verilated::commandArgs(argc, argv);
@@ -121,14 +125,14 @@ int main(int argc, char **argv)
     }
     std::string st = slope.text();
     JsonReport r;
-    r.str("label", "bench-pico").str("cpu", "PicoRV32 rv32i (tb/pico/pico_bench.v), firmware -Os")
+    r.str("label", label).str("cpu", cpu).str("channel_kind", kind)
      .num("calls_per_figure", reps).num("rdcycle_overhead", ev[K_OVERHEAD])
      .num("cycles", static_cast<double>(cycle))
      .str("note", "cycles per call with rdcycle around the call, the empty rdcycle pair subtracted; "
           "sum/min/max over calls_per_figure calls; copy_* is a plain volatile 32-bit word loop")
      .raw("sizes", sizes).raw("per_word", st.substr(0, st.size() - 1)).str("verdict", "pass");
     if (!report.empty() && !r.write(report)) return 1;
-    std::printf("bench-pico: pass, %llu cycles%s%s\n", static_cast<unsigned long long>(cycle),
+    std::printf("%s: pass, %llu cycles%s%s\n", label.c_str(), static_cast<unsigned long long>(cycle),
                 report.empty() ? "" : ", wrote ", report.c_str());
     return 0;
 }

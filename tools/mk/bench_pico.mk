@@ -43,3 +43,51 @@ bench-pico: $(PBN_BIN) $(PBN_DIR)/bench.hex $(PBN_DIR)/bench.dis driver-size ## 
 	iverilog -g2005 $(VLIB) -s pico_bench -o /dev/null $(PICO_RV32_V) tb/pico/pico_bench.v
 	yosys -q -p "read_verilog $(PICO_RV32_V) $(PBN_RTL); hierarchy -check -top pico_bench; proc"
 	@echo "lint ok  tb/pico/pico_bench.v"
+
+# Both channel kinds on both cores (issue 13 section 5): bench.c built with
+# -DBENCH_KIND=ALB_FOUR_SLOT for the four-slot kind; pico_bench.v with
+# SERV = 1 for SERV (its firmware -DBOARD_NO_COUNTERS: serv_bridge's cycle
+# register).  Reports build/reports/bench_{pico,serv}{,_four_slot}.json
+# (bench_pico.json is bench-pico's) and channel_ram.json (the bytes of one
+# channel instance per kind and payload, from the compiler's layout module).
+#   make bench-kinds   all four runs and channel_ram.json
+PBN_SERV_BIN := $(PBN_DIR)/serv/Vpico_bench
+PBN_SERV_MAX_CYCLES ?= 200000000
+$(PBN_SERV_BIN): $(PBN_RTL) soc/serv_core.v soc/serv_bridge.v tb/pico/bench_pico.cpp tb/pico/picorv32.vlt \
+        tb/pico/serv.vlt tb/common/report.h tools/mk/bench_pico.mk
+	$(PICO_NEED)
+	$(SERV_NEED)
+	@mkdir -p $(@D)
+	verilator --cc --exe --build -j 2 -O3 $(PBN_VFLAGS) -y $(SERV_CPU_RTL) tb/pico/serv.vlt -GSERV=1 \
+	    -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" --Mdir $(@D) $(PICO_RV32_V) tb/pico/pico_bench.v \
+	    $(abspath tb/pico/bench_pico.cpp) > $(@D)/build.log 2>&1 || { cat $(@D)/build.log; exit 1; }
+
+# $(1) = image name, $(2) = extra flags.
+define pbn_fw
+$(PBN_DIR)/$(1).elf: tb/pico/firmware/bench.c c-driver/albatross.c soc/firmware/crt0.S soc/firmware/link.ld \
+        soc/firmware/board.h $(wildcard c-driver/*.h) c-driver/port/mmio/alb_port_impl.h tools/mk/bench_pico.mk
+	@$$(DRV_RV_NEED)
+	@mkdir -p $$(@D)
+	$$(DRV_RV_CC) $$(FW_CFLAGS) $(2) -o $$@ soc/firmware/crt0.S tb/pico/firmware/bench.c c-driver/albatross.c $$(FW_LDFLAGS)
+endef
+$(eval $(call pbn_fw,bench-four_slot,-DBENCH_KIND=ALB_FOUR_SLOT))
+$(eval $(call pbn_fw,bench-serv,-DBOARD_NO_COUNTERS))
+$(eval $(call pbn_fw,bench-serv-four_slot,-DBOARD_NO_COUNTERS -DBENCH_KIND=ALB_FOUR_SLOT))
+
+BENCHES += bench-kinds
+.PHONY: bench-kinds
+bench-kinds: $(PBN_BIN) $(PBN_SERV_BIN) $(addprefix $(PBN_DIR)/,bench.hex bench-four_slot.hex bench-serv.hex \
+        bench-serv-four_slot.hex) ## cycles per Import/Export, both channel kinds, PicoRV32 and SERV; RAM per channel
+	$(PBN_BIN) +fw0=$(PBN_DIR)/bench.hex --max-cycles $(PBN_MAX_CYCLES) --report $(REPORTS)/bench_pico.json
+	$(PBN_BIN) +fw0=$(PBN_DIR)/bench-four_slot.hex --max-cycles $(PBN_MAX_CYCLES) --label bench-pico-four-slot \
+	    --kind four_slot --report $(REPORTS)/bench_pico_four_slot.json
+	$(PBN_SERV_BIN) +fw0=$(PBN_DIR)/bench-serv.hex --max-cycles $(PBN_SERV_MAX_CYCLES) --label bench-serv \
+	    --cpu "SERV rv32i (tb/pico/pico_bench.v SERV=1), firmware -Os" --report $(REPORTS)/bench_serv.json
+	$(PBN_SERV_BIN) +fw0=$(PBN_DIR)/bench-serv-four_slot.hex --max-cycles $(PBN_SERV_MAX_CYCLES) \
+	    --label bench-serv-four-slot --kind four_slot --cpu "SERV rv32i (tb/pico/pico_bench.v SERV=1), firmware -Os" \
+	    --report $(REPORTS)/bench_serv_four_slot.json
+	env PYTHONPATH=compiler $(PYTHON) -c 'import json; from albatross_schedule.fourslot import channel_bytes as b; \
+	    json.dump({"label": "channel-ram", "note": "bytes of one channel instance (control word and buffers) for a payload of N bytes; a destination adds taken_at (4 bytes) to the payload", \
+	    "sizes": [{"bytes": n, "three_buffer": b(n, "three_buffer"), "four_slot": b(n, "four_slot")} for n in (4, 16, 64, 256)]}, \
+	    open("$(REPORTS)/channel_ram.json", "w"), indent=2)'
+	@echo "bench-kinds: $(REPORTS)/bench_{pico,serv}{,_four_slot}.json, $(REPORTS)/channel_ram.json"

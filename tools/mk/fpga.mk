@@ -57,14 +57,63 @@ FPGA_FW_DEPS := soc/firmware/crt0.S soc/firmware/link.ld soc/firmware/board.h c-
 $(FPGA_SCHED)/rom.hex: fpga/duo.toml $(SCHEDULE_SRC)
 	$(SCHEDULE) $< --out $(@D) -q
 
-# $(1) = board index, $(2) = board name.
-define fpga_board
-$(FPGA_DIR)/fw/$(2).elf: fpga/firmware/duo_$(2).c $(FPGA_SCHED)/rom.hex $(FPGA_FW_DEPS) tools/mk/fpga.mk
+# The sensor's firmware (a three-buffer Export and a four-slot Import: the
+# driver's paths of both kinds) fits its 2 KB only with link-time
+# optimisation, the save/restore millicode and fpga/firmware/link_duo.ld,
+# which links the never-called four-slot Export NOLOAD outside the RAM; the
+# recipe checks that nothing else is parked.  Maps: $(3)/<board>.map.
+FPGA_FW_CFLAGS_sensor   := -flto -msave-restore
+FPGA_FW_LDS_sensor      := fpga/firmware/link_duo.ld
+FPGA_FW_LDS_actuator    := soc/firmware/link.ld
+FPGA_FW_DEPS += fpga/firmware/link_duo.ld
+
+# $(1) = board name, $(2) = schedule directory, $(3) = firmware directory.
+define fpga_fw
+$(3)/$(1).elf: fpga/firmware/duo_$(1).c $(2)/rom.hex $(FPGA_FW_DEPS) tools/mk/fpga.mk
 	@$$(DRV_RV_NEED)
 	@mkdir -p $$(@D)
-	$$(DRV_RV_CC) $$(FW_CFLAGS) -ffunction-sections -fdata-sections -I$(FPGA_SCHED) -o $$@ soc/firmware/crt0.S \
-	    fpga/firmware/duo_$(2).c $(FPGA_SCHED)/$(2).c c-driver/albatross.c $$(FW_LDFLAGS) -Wl,--gc-sections \
-	    -Wl,--defsym=__board_ram_bytes=$(FPGA_RAM)
+	$$(DRV_RV_CC) $$(FPGA_FW_CFLAGS_$(1)) $$(FW_CFLAGS) -ffunction-sections -fdata-sections -I$(2) -o $$@ \
+	    soc/firmware/crt0.S fpga/firmware/duo_$(1).c $(2)/$(1).c c-driver/albatross.c \
+	    $$(subst -T soc/firmware/link.ld,-T $$(FPGA_FW_LDS_$(1)),$$(FW_LDFLAGS)) \
+	    -Wl,--gc-sections -Wl,--defsym=__board_ram_bytes=$(strip $(FPGA_RAM)) -Wl,-Map=$(3)/$(1).map
+	@parked=$$$$($(DRV_RV_PREFIX)nm $$@ | awk '$$$$1 >= "70000000" && $$$$2 ~ /^[tT]$$$$/ {print $$$$3}' | \
+	    grep -v -E '^(fs_export|fs_copy_out)(\.|$$$$)' || true); \
+	    [ -z "$$$$parked" ] || { echo "$$@: parked code that may be called: $$$$parked"; exit 1; }
+endef
+$(eval $(call fpga_fw,sensor,$(FPGA_SCHED),$(FPGA_DIR)/fw))
+$(eval $(call fpga_fw,actuator,$(FPGA_SCHED),$(FPGA_DIR)/fw))
+
+# The negative of the four-slot GlobalTime: fpga/duo.toml with a three-buffer
+# GlobalTime (the four_slot line deleted) and a wrong, fast Import loop for
+# the sensor (T = V = 1 clock instead of the SERV's), so that the compiler
+# neither spaces the time slots nor rejects the plan.  Its RAM images equal
+# the demo's (the same bases, the same initial control words); its ROM and
+# programs are passed as +rom, +fw0, +fw1.
+FPGA_3B_SCHED := $(BUILD)/schedule/duo3b
+FPGA_3B_FW    := $(FPGA_DIR)/fw3b
+$(FPGA_DIR)/duo3b.toml: fpga/duo.toml
+	@mkdir -p $(@D)
+	sed -e '/^four_slot *= *true/d' -e 's/^core = "serv" .*/import_t_clocks = 1   # WRONG on purpose (negative test)/' $< > $@
+	@! grep -q '^four_slot' $@ && grep -q 'WRONG on purpose' $@ || { echo "duo3b.toml: the sed did not apply"; exit 1; }
+$(FPGA_3B_SCHED)/rom.hex: $(FPGA_DIR)/duo3b.toml $(SCHEDULE_SRC)
+	$(SCHEDULE) $< --out $(@D) -q
+	cmp $(@D)/sensor_ram.hex $(FPGA_SCHED)/sensor_ram.hex && cmp $(@D)/actuator_ram.hex $(FPGA_SCHED)/actuator_ram.hex
+$(eval $(call fpga_fw,sensor,$(FPGA_3B_SCHED),$(FPGA_3B_FW)))
+$(eval $(call fpga_fw,actuator,$(FPGA_3B_SCHED),$(FPGA_3B_FW)))
+FPGA_3B_IMG    := $(FPGA_DIR)/duo3b
+$(FPGA_3B_IMG)/rom.hex: $(FPGA_3B_SCHED)/rom.hex
+	@mkdir -p $(@D)
+	cp $< $@
+$(FPGA_3B_IMG)/fw0.hex: $(FPGA_3B_FW)/sensor.hex
+	@mkdir -p $(@D)
+	cp $< $@
+$(FPGA_3B_IMG)/fw1.hex: $(FPGA_3B_FW)/actuator.hex
+	@mkdir -p $(@D)
+	cp $< $@
+FPGA_3B_IMAGES := $(addprefix $(FPGA_3B_IMG)/,rom.hex fw0.hex fw1.hex)
+
+# $(1) = board index, $(2) = board name.
+define fpga_board
 $(FPGA_IMG)/fw$(1).hex: $(FPGA_DIR)/fw/$(2).hex
 	@mkdir -p $$(@D)
 	cp $$< $$@
@@ -126,6 +175,14 @@ endef
 $(eval $(call fpga_sim,icebreaker_top,TOP_ICEBREAKER))
 $(eval $(call fpga_sim,ulx3s_top,TOP_ULX3S,-GBEAT_LOG2=1))
 $(eval $(call fpga_sim,arty_top,TOP_ARTY,-GBEAT_LOG2=1))
+# The iCEBreaker top on the images of duo3b.toml (the programs are block-RAM
+# contents fixed by parameters; the DPRAM images are the demo's, see above).
+$(FPGA_DIR)/sim-3b/Vicebreaker_top: $(FPGA_SIM_DEPS)
+	$(PICO_NEED)
+	$(SERV_NEED)
+	@mkdir -p $(@D)
+	$(call FPGA_VERILATE,icebreaker_top,TOP_ICEBREAKER,'-GROM_FILE="$(FPGA_3B_IMG)/rom.hex"' \
+	    '-GFW_PREFIX="$(FPGA_3B_IMG)/fw"',fpga/icebreaker_top.v)
 FPGA_SIM = $(FPGA_DIR)/sim-$(1)/V$(1)
 
 # Broken systems, each built from a sed of one file, for the negative tests
@@ -156,18 +213,24 @@ $(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
 
 BENCHES += synth area
 
-TESTS += fpga-soc fpga-soc-ulx3s fpga-soc-ulx3s-drift fpga-soc-ulx3s-drift-negative fpga-soc-arty fpga-soc-negative fpga-soc-ulx3s-negative fpga-soc-arty-negative \
+TESTS += fpga-soc fpga-soc-threebuffer-negative fpga-soc-bound-negative fpga-soc-ulx3s fpga-soc-ulx3s-drift fpga-soc-ulx3s-drift-negative fpga-soc-arty fpga-soc-negative fpga-soc-ulx3s-negative fpga-soc-arty-negative \
          fpga-soc-pins-negative fpga-icebreaker fpga-ulx3s fpga-report-negative fpga-arty fpga-lint
-.PHONY: test-fpga-soc test-fpga-soc-ulx3s test-fpga-soc-ulx3s-drift test-fpga-soc-ulx3s-drift-negative test-fpga-soc-arty test-fpga-soc-negative test-fpga-soc-ulx3s-negative \
+.PHONY: test-fpga-soc test-fpga-soc-threebuffer-negative test-fpga-soc-bound-negative test-fpga-soc-ulx3s test-fpga-soc-ulx3s-drift test-fpga-soc-ulx3s-drift-negative test-fpga-soc-arty test-fpga-soc-negative test-fpga-soc-ulx3s-negative \
         test-fpga-soc-arty-negative test-fpga-soc-pins-negative test-fpga-icebreaker test-fpga-ulx3s \
         test-fpga-report-negative test-fpga-arty test-fpga-lint
 # Per top: test-fpga-soc$(1) runs it for $(3) clocks (the iCEBreaker, whose
 # sensor is on SERV and slow to start, gets more than the PicoRV32-only
 # ULX3S and Arty); test-fpga-soc$(1)-negative runs it on the corrupted ROM.
 # $(1) = test suffix, $(2) = top.
+# The harness's GlobalTime checks from a generated sensor.h ($(1)): the
+# instance's first word, its payload words (with taken_at), the Import bound.
+fpga_gt_macro = $$$$(sed -n 's/^\#define ALB_GLOBALTIME_$(2) *\([0-9a-fx]*\)u.*/\1/p' $(1))
+FPGA_GT_ARGS = --gt-base $$$$(( $(call fpga_gt_macro,$(1),BASE) / 4 )) \
+    --gt-words $$$$(( $(call fpga_gt_macro,$(1),SIZE) / 4 )) --import-bound $(call fpga_gt_macro,$(1),IMPORT_MAX_ACCESSES)
 define fpga_soc_tests
 test-fpga-soc$(1): $(call FPGA_SIM,$(2)) $$(FPGA_IMAGES)
-	@tools/run_test.sh fpga-soc$(1) $(call FPGA_SIM,$(2)) --cycles $(3) --report $$(REPORTS)/fpga_soc$(subst -,_,$(1)).json
+	@tools/run_test.sh fpga-soc$(1) $(call FPGA_SIM,$(2)) --cycles $(3) $(call FPGA_GT_ARGS,$(FPGA_SCHED)/sensor.h) \
+	    --report $$(REPORTS)/fpga_soc$(subst -,_,$(1)).json
 test-fpga-soc$(1)-negative: $(call FPGA_SIM,$(2)) $$(FPGA_IMAGES) $(FPGA_DIR)/badrom/rom.hex
 	@tools/run_test.sh fpga-soc$(1)-negative $(call FPGA_SIM,$(2)) --cycles 100000 --expect-error \
 	    +rom=$(FPGA_DIR)/badrom/rom.hex
@@ -176,19 +239,43 @@ $(eval $(call fpga_soc_tests,,icebreaker_top,16000000))
 $(eval $(call fpga_soc_tests,-ulx3s,ulx3s_top,4000000))
 $(eval $(call fpga_soc_tests,-arty,arty_top,4000000))
 
+# The negative of the four-slot GlobalTime (issue 13): the iCEBreaker model
+# with the ROM and programs of duo3b.toml (GlobalTime three-buffer, not spaced
+# for the SERV sensor).  The controller overtakes the sensor's Import loop:
+# the Import exceeds its (wrongly computed) bound, or never finishes, and the
+# harness must say so.
+define fpga_soc_3b_test
+test-fpga-soc-threebuffer-negative: $(FPGA_DIR)/sim-3b/Vicebreaker_top $$(FPGA_IMAGES) $$(FPGA_3B_IMAGES)
+	@tools/run_test.sh fpga-soc-threebuffer-negative $(FPGA_DIR)/sim-3b/Vicebreaker_top --cycles 4000000 \
+	    $(call FPGA_GT_ARGS,$(FPGA_3B_SCHED)/sensor.h) --expect-fail "the sensor's GlobalTime Import"
+# The count itself: the demo checked against a bound one access below the
+# compiler's must fail on it (a New four-slot Import takes exactly 3 + W).
+test-fpga-soc-bound-negative: $(call FPGA_SIM,icebreaker_top) $$(FPGA_IMAGES)
+	@tools/run_test.sh fpga-soc-bound-negative $(call FPGA_SIM,icebreaker_top) --cycles 4000000 \
+	    $(call FPGA_GT_ARGS,$(FPGA_SCHED)/sensor.h) --import-bound $$$$(( $(call fpga_gt_macro,$(FPGA_SCHED)/sensor.h,IMPORT_MAX_ACCESSES) - 1 )) \
+	    --expect-fail "the sensor's GlobalTime Import exceeded its bound"
+endef
+$(eval $(call fpga_soc_3b_test))
+
 # The ULX3S top with its bus clock wandering against the cores' clock
 # (fpga/EHXPLLL.v with +pll_drift: half-periods of 1 to 4 half-periods
 # of the cores' clock, edges on either of its edges): the whole system on
 # two unrelated clocks, checked as above.
-test-fpga-soc-ulx3s-drift: $(call FPGA_SIM,ulx3s_top) $(FPGA_IMAGES)
+define fpga_soc_drift_test
+test-fpga-soc-ulx3s-drift: $(call FPGA_SIM,ulx3s_top) $$(FPGA_IMAGES)
 	@tools/run_test.sh fpga-soc-ulx3s-drift $(call FPGA_SIM,ulx3s_top) --cycles 4000000 +pll_drift=4242 \
-	    --report $(REPORTS)/fpga_soc_ulx3s_drift.json
+	    $(call FPGA_GT_ARGS,$(FPGA_SCHED)/sensor.h) --report $$(REPORTS)/fpga_soc_ulx3s_drift.json
+endef
+$(eval $(call fpga_soc_drift_test))
 # Its negative: the cores' buses straight to their DPRAMs, no bridge (the
 # no_cdc mutant below).  At the PLL's fixed 2:1 that system happens to run;
-# with the clocks unrelated it must stall.
+# with the clocks unrelated it must fail.  Since the sensor imports
+# GlobalTime it fails early: its Import reads a control byte torn by the
+# missing bridge, the driver returns ALB_ERR_CORRUPT and the sensor stops
+# with 0x4 (error LED at cycle 3390); before, both heartbeats stalled.
 test-fpga-soc-ulx3s-drift-negative: $(FPGA_DIR)/mutant-no_cdc/Vulx3s_top $(FPGA_IMAGES)
 	@tools/run_test.sh fpga-soc-ulx3s-drift-negative $(FPGA_DIR)/mutant-no_cdc/Vulx3s_top --cycles 4000000 \
-	    +pll_drift=4242 --expect-fail "expected both heartbeats to change"
+	    +pll_drift=4242 --expect-fail "expected the error LED off"
 
 # The pin checks catch a broken top (a green LED on the wrong heartbeat, the
 # ESP32's GPIO0 pulled low, the RGB LED green only in reset).

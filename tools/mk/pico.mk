@@ -2,6 +2,8 @@
 # against one albatross_dpram (tb/pico/pico_pair.v, harness tb/pico/).
 #   make test-pico-pair           producer and consumer firmware, every import
 #                                 checked on the core; build/reports/pico_pair.json
+#   make test-pico-pair-four-slot the same on a four-slot channel (both programs
+#                                 built with -DPAIR_KIND=ALB_FOUR_SLOT)
 #   make test-pico-pair-negative  the producer built from the ignore_readlocked
 #                                 driver mutant (tb/mutants/driver/): the real consumer
 #                                 must report a torn or out-of-order value
@@ -29,15 +31,19 @@ FW_CFLAGS     := -march=rv32i -mabi=ilp32 -ffreestanding -nostdlib -nostartfiles
 FW_LDFLAGS    := -T soc/firmware/link.ld -Wl,--no-warn-rwx-segments -lgcc
 FW_DEPS       := soc/firmware/crt0.S soc/firmware/link.ld soc/firmware/board.h $(DRV_HDRS)
 
-# $(1) = image name, $(2) = program, $(3) = driver source.
+# $(1) = image name, $(2) = program, $(3) = driver source, $(4) = extra flags.
 define pico_fw
 $(PICO_DIR)/fw/$(1).elf: tb/pico/firmware/$(2).c $(3) $(FW_DEPS)
 	@$$(DRV_RV_NEED)
 	@mkdir -p $$(@D)
-	$(DRV_RV_CC) $(FW_CFLAGS) -o $$@ soc/firmware/crt0.S tb/pico/firmware/$(2).c $(3) $(FW_LDFLAGS)
+	$(DRV_RV_CC) $(FW_CFLAGS) $(4) -o $$@ soc/firmware/crt0.S tb/pico/firmware/$(2).c $(3) $(FW_LDFLAGS)
 endef
 $(eval $(call pico_fw,producer,producer,c-driver/albatross.c))
 $(eval $(call pico_fw,consumer,consumer,c-driver/albatross.c))
+# The four-slot kind (issue 13): the same programs and checks on a four-slot channel.
+PAIR_FOUR_SLOT := -DPAIR_KIND=ALB_FOUR_SLOT
+$(eval $(call pico_fw,producer-four_slot,producer,c-driver/albatross.c,$(PAIR_FOUR_SLOT)))
+$(eval $(call pico_fw,consumer-four_slot,consumer,c-driver/albatross.c,$(PAIR_FOUR_SLOT)))
 # The negative test's producer: the writer ignores ReadLocked, so it overwrites
 # the buffer the consumer reads.  (while_as_if, the reader's While as If, is
 # not caught reliably: it fails only if the producer exports twice inside the
@@ -54,8 +60,13 @@ $(PICO_BIN): $(PICO_RTL) $(PICO_RV32_V) tb/pico/test_pico_pair.cpp tb/pico/picor
 	    --Mdir $(PICO_DIR)/obj $(PICO_RV32_V) tb/pico/pico_pair.v $(abspath tb/pico/test_pico_pair.cpp) \
 	    > $(PICO_DIR)/build.log 2>&1 || { cat $(PICO_DIR)/build.log; exit 1; }
 
-TESTS += pico-pair pico-pair-negative pico-lint
-.PHONY: test-pico-pair test-pico-pair-negative test-pico-lint
+TESTS += pico-pair pico-pair-four-slot pico-pair-negative pico-lint
+.PHONY: test-pico-pair test-pico-pair-four-slot test-pico-pair-negative test-pico-lint
+
+test-pico-pair-four-slot: $(PICO_BIN) $(PICO_DIR)/fw/producer-four_slot.hex $(PICO_DIR)/fw/consumer-four_slot.hex
+	@tools/run_test.sh pico-pair-four-slot $(PICO_BIN) +fw0=$(PICO_DIR)/fw/producer-four_slot.hex \
+	    +fw1=$(PICO_DIR)/fw/consumer-four_slot.hex --max-cycles $(PICO_MAX_CYCLES) --seed $(SEED) \
+	    --label pico-pair-four-slot --report $(REPORTS)/pico_pair_four_slot.json
 
 test-pico-pair: $(PICO_BIN) $(PICO_DIR)/fw/producer.hex $(PICO_DIR)/fw/consumer.hex
 	@tools/run_test.sh pico-pair $(PICO_BIN) +fw0=$(PICO_DIR)/fw/producer.hex \

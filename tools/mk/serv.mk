@@ -7,6 +7,9 @@
 #                                 build/reports/serv_pair.json
 #   make test-serv-pair-producer  SERV producer, PicoRV32 consumer (SERV_MASK=1);
 #                                 build/reports/serv_pair_producer.json
+#   make test-serv-pair-four-slot, test-serv-pair-producer-four-slot
+#                                 the same two on a four-slot channel
+#                                 (-DPAIR_KIND=ALB_FOUR_SLOT)
 #   make test-serv-pair-negative  the real SERV consumer against a PicoRV32
 #                                 producer built from the ignore_readlocked
 #                                 driver mutant: the consumer's checks must
@@ -57,6 +60,11 @@ $(eval $(call serv_fw,consumer-serv-while_as_if,consumer,$(TB_DIR)/mutants/while
 $(eval $(call serv_fw,producer-pico-ignore_readlocked,producer,$(TB_DIR)/mutants/ignore_readlocked.c,-DPAIR_VALUES=$(SERV_PAIR_VALUES)u))
 $(eval $(call serv_fw,producer-serv,producer,c-driver/albatross.c,$(SERV_FW_SERV) -DPAIR_VALUES=$(SERV_PRODUCER_VALUES)u))
 $(eval $(call serv_fw,consumer-pico,consumer,c-driver/albatross.c,-DPAIR_VALUES=$(SERV_PRODUCER_VALUES)u))
+# The four-slot kind: the same programs with -DPAIR_KIND=ALB_FOUR_SLOT (PAIR_FOUR_SLOT, pico.mk).
+$(eval $(call serv_fw,producer-pico-four_slot,producer,c-driver/albatross.c,$(PAIR_FOUR_SLOT) -DPAIR_VALUES=$(SERV_PAIR_VALUES)u))
+$(eval $(call serv_fw,consumer-serv-four_slot,consumer,c-driver/albatross.c,$(PAIR_FOUR_SLOT) $(SERV_FW_SERV) -DPAIR_VALUES=$(SERV_PAIR_VALUES)u))
+$(eval $(call serv_fw,producer-serv-four_slot,producer,c-driver/albatross.c,$(PAIR_FOUR_SLOT) $(SERV_FW_SERV) -DPAIR_VALUES=$(SERV_PRODUCER_VALUES)u))
+$(eval $(call serv_fw,consumer-pico-four_slot,consumer,c-driver/albatross.c,$(PAIR_FOUR_SLOT) -DPAIR_VALUES=$(SERV_PRODUCER_VALUES)u))
 
 # pico_pair with SERV_MASK=$(1), in its own --Mdir; the class keeps the name
 # Vpico_pair, so the harness is the PicoRV32 pair's.
@@ -76,8 +84,18 @@ $(eval $(call serv_model,1))
 SERV_BIN2 := $(SERV_DIR)/mask2/Vpico_pair
 SERV_BIN1 := $(SERV_DIR)/mask1/Vpico_pair
 
-TESTS += serv-pair serv-pair-producer serv-pair-negative serv-lint
-.PHONY: test-serv-pair test-serv-pair-producer test-serv-pair-negative test-serv-lint
+TESTS += serv-pair serv-pair-producer serv-pair-four-slot serv-pair-producer-four-slot serv-pair-negative serv-lint
+.PHONY: test-serv-pair test-serv-pair-producer test-serv-pair-four-slot test-serv-pair-producer-four-slot \
+        test-serv-pair-negative test-serv-lint
+
+# $(1) = test name, $(2) = model, $(3) = producer image, $(4) = consumer image.
+define serv_pair_test
+test-$(1): $(2) $(SERV_DIR)/fw/$(3).hex $(SERV_DIR)/fw/$(4).hex
+	@tools/run_test.sh $(1) $(2) +fw0=$(SERV_DIR)/fw/$(3).hex +fw1=$(SERV_DIR)/fw/$(4).hex \
+	    --max-cycles $$(SERV_MAX_CYCLES) --seed $$(SEED) --label $(1) --report $$(REPORTS)/$(subst -,_,$(1)).json
+endef
+$(eval $(call serv_pair_test,serv-pair-four-slot,$(SERV_BIN2),producer-pico-four_slot,consumer-serv-four_slot))
+$(eval $(call serv_pair_test,serv-pair-producer-four-slot,$(SERV_BIN1),producer-serv-four_slot,consumer-pico-four_slot))
 
 test-serv-pair: $(SERV_BIN2) $(SERV_DIR)/fw/producer-pico.hex $(SERV_DIR)/fw/consumer-serv.hex
 	@tools/run_test.sh serv-pair $(SERV_BIN2) +fw0=$(SERV_DIR)/fw/producer-pico.hex \

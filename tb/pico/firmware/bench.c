@@ -12,6 +12,8 @@
  *   M_COPY_TO     the baseline: a plain volatile word loop copying the same
  *                 size from local RAM into the DPRAM window
  *   M_COPY_FROM   the same loop from the DPRAM window into local RAM
+ * Built with -DBENCH_KIND=ALB_FOUR_SLOT the channel is of the four-slot kind
+ * (default ALB_THREE_BUFFER).
  * The cost of an empty pair of rdcycle reads (the least of BENCH_REPS) is
  * subtracted from every sample.  Every import is checked against the value
  * exported (outside the timed window).
@@ -27,6 +29,9 @@
 
 #define BENCH_EVENT  ((uintptr_t)0x20000020u)  /* board_memmap EVENT */
 #define BENCH_ARG    ((uintptr_t)0x20000024u)  /* board_memmap ARG   */
+#ifndef BENCH_KIND
+#define BENCH_KIND   ALB_THREE_BUFFER                /* the channel kind measured */
+#endif
 #define BENCH_REPS   64u
 #define BENCH_MAXW   64u                       /* words of the largest payload */
 #define BENCH_COPY   ((uintptr_t)BOARD_DPRAM_BASE + 0x800u) /* plain-copy area */
@@ -114,8 +119,8 @@ static int bench_size(uint32_t k, uint32_t size)
         st[m].max = 0u;
     }
     fill(0u, words);
-    if (alb_channel_setup(&prod, BOARD_CHANNEL, size) != ALB_OK ||
-        alb_channel_setup(&cons, BOARD_CHANNEL, size) != ALB_OK ||
+    if (alb_channel_setup_kind(&prod, BOARD_CHANNEL, size, BENCH_KIND) != ALB_OK ||
+        alb_channel_setup_kind(&cons, BOARD_CHANNEL, size, BENCH_KIND) != ALB_OK ||
         alb_producer_init(&prod, src) != ALB_OK || alb_consumer_init(&cons) != ALB_OK)
         return 0x40 + (int)k;
 

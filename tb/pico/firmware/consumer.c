@@ -7,6 +7,11 @@
  *   0x4       the sequence number went back
  *   0x5       ALB_NEW with a sequence number that is not newer
  *   0x6       ALB_OLD with a newer sequence number
+ * Built with -DPAIR_KIND=ALB_FOUR_SLOT, the channel is of the four-slot kind
+ * and the consumer starts with alb_consumer_init (a four-slot attach forgets
+ * the value read last, so its first Import would return value 0 New; the
+ * producer has not touched Buffer1 or ReadLocked since it released the start
+ * flag, so Buffer1's value 0 counts as read).
  * The exit code is that code | sequence number << 8 (0 = pass).  STAT:
  * 0 imports that returned New, 1 imports, 2 cycles in alb_import, 3 retired
  * instructions.
@@ -14,6 +19,10 @@
 #include "albatross.h"
 #include "alb_port.h"
 #include "board.h"
+
+#ifndef PAIR_KIND
+#define PAIR_KIND ALB_THREE_BUFFER   /* the channel kind: ALB_THREE_BUFFER or ALB_FOUR_SLOT */
+#endif
 
 static alb_channel_t ch;
 
@@ -23,12 +32,12 @@ int main(void)
     uint32_t last = 0u, news = 0u, calls = 0u, t0, cycles = 0u, code;
     int r;
 
-    if (alb_channel_setup(&ch, BOARD_CHANNEL, sizeof v) != ALB_OK)
+    if (alb_channel_setup_kind(&ch, BOARD_CHANNEL, sizeof v, PAIR_KIND) != ALB_OK)
         return 0x31;
     while (alb_rd32(BOARD_START_FLAG) != BOARD_START_MAGIC)
         ;
     alb_fence();
-    r = alb_consumer_attach(&ch);
+    r = PAIR_KIND == ALB_FOUR_SLOT ? alb_consumer_init(&ch) : alb_consumer_attach(&ch);
     if (r != ALB_OK)
         return 0x30 - r;
 

@@ -4,13 +4,19 @@
  * value 0 in Buffer1: what a RAM image from the schedule compiler holds),
  * attaches with the real driver, releases the consumer, then exports
  * PAIR_VALUES values 1..N with a pseudo-random pause between exports so that
- * the two cores meet in many different phases.  Exit code 0, or
+ * the two cores meet in many different phases.  Built with
+ * -DPAIR_KIND=ALB_FOUR_SLOT, the channel is of the four-slot kind (the start
+ * image also holds Slot0 = Slot1 = 0); default ALB_THREE_BUFFER.  Exit code 0, or
  * 0x10 + driver error.  STAT: 0 exports, 1 exports, 2 cycles in alb_export,
  * 3 retired instructions.
  */
 #include "albatross.h"
 #include "alb_port.h"
 #include "board.h"
+
+#ifndef PAIR_KIND
+#define PAIR_KIND ALB_THREE_BUFFER   /* the channel kind: ALB_THREE_BUFFER or ALB_FOUR_SLOT */
+#endif
 
 static alb_channel_t ch;
 
@@ -20,7 +26,7 @@ int main(void)
     uint32_t seq, k, pause, rng = 0x12345678u, t0, cycles = 0u;
     int r;
 
-    if (alb_channel_setup(&ch, BOARD_CHANNEL, sizeof v) != ALB_OK)
+    if (alb_channel_setup_kind(&ch, BOARD_CHANNEL, sizeof v, PAIR_KIND) != ALB_OK)
         return 0x11;
     /* Start image: value 0 in Buffer1, Actual = ReadLocked = Buffer1. */
     pair_make(&v, 0u);
@@ -29,6 +35,10 @@ int main(void)
                  ((const uint32_t *)&v)[k]);
     alb_wr8(BOARD_CHANNEL + ALB_OFF_ACTUAL, ALB_BUFFER1);
     alb_wr8(BOARD_CHANNEL + ALB_OFF_READLOCKED, ALB_BUFFER1);
+    if (PAIR_KIND == ALB_FOUR_SLOT) {
+        alb_wr8(BOARD_CHANNEL + ALB_OFF_SLOT0, (uint8_t)ALB_FS_INITIAL_SLOT);
+        alb_wr8(BOARD_CHANNEL + ALB_OFF_SLOT1, (uint8_t)ALB_FS_INITIAL_SLOT);
+    }
     r = alb_producer_attach(&ch);
     if (r != ALB_OK)
         return 0x10 - r;
