@@ -17,7 +17,8 @@
 // The cores report every Import and Export as board events (EVENT/ARG,
 // sim/firmware/mobot_check.h).  The harness watches every core's DPRAM port: it
 // ages each imported value as (controller time of the Import's last load of
-// the control word, that is of Actual) - taken_at, and times each producer's
+// the control word, that is of Actual; for a four-slot channel its first load,
+// docs/four_slot.md) - taken_at, and times each producer's
 // stores of Actual; it takes the cycles per call from the events, and it injects
 // faults: each new controller request is faulted with probability R, its
 // kind (error, timeout, timeout after performing) drawn evenly.
@@ -226,6 +227,11 @@ int main(int argc, char **argv)
 
     const uint32_t all = (1u << NB) - 1u;
     static uint64_t last_load[NB][1024];  // per core and DPRAM word: controller time of its last load
+    // ... and of its first load since the core's last event (the start of a
+    // four-slot Import: its value is at least as new as Actual then, not at its last load)
+    static uint64_t first_load[NB][1024];
+    static bool first_seen[NB][1024];
+    bool clear_first[NB] = {false, false, false, false};  // an event came: a new Import starts
     uint64_t done_at[NB] = {0, 0, 0, 0}, last_event[NB] = {0, 0, 0, 0}, events[NB] = {0, 0, 0, 0};
     // crash state: armed at crash_at, begins with the next Export, fires after half its words
     int crash_phase = o.crash_board >= 0 ? 1 : 0;  // 1 armed, 2 in the Export, 3 crashed
@@ -253,11 +259,15 @@ int main(int argc, char **argv)
         tick();
         const uint64_t now = m->time_o;
         for (int c = 0; c < NB; ++c) {
+            if (clear_first[c]) std::fill(first_seen[c], first_seen[c] + 1024, false), clear_first[c] = false;
             if (((m->done_o >> c) & 1u) && !done_at[c]) done_at[c] = cycle;
             if ((m->timer_rd_o >> c) & 1u) clocks[c].read(now, m->timer_o[c], cycle);  // a TIMER read completes
             const uint32_t adr = (m->dp_adr_o >> (10 * c)) & 0x3ffu, sel = (m->dp_sel_o >> (4 * c)) & 0xfu;
             // a load: when a consumer read a control word (its Actual) last
-            if (((m->dp_ack_o >> c) & 1u) && !((m->dp_we_o >> c) & 1u)) last_load[c][adr] = now;
+            if (((m->dp_ack_o >> c) & 1u) && !((m->dp_we_o >> c) & 1u)) {
+                last_load[c][adr] = now;
+                if (!first_seen[c][adr]) first_load[c][adr] = now, first_seen[c][adr] = true;
+            }
             if ((m->dp_ack_o >> c) & 1u)  // an access inside an Import (termination)
                 for (Range &g : ranges[c])
                     if (adr >= g.first && adr < g.end)
@@ -295,10 +305,14 @@ int main(int argc, char **argv)
                 if (Series *s = find_series(c, id); s && seen_event[c]) s->term.import_done(o.term_scale, cycle, o.stall == 0);
             for (Range &g : ranges[c]) g.s->term.reset();
             seen_event[c] = true;
+            clear_first[c] = true;
             if (kind == EV_NEW || kind == EV_OLD) {
                 Series *s = find_series(c, id);
                 if (!s) continue;
-                const uint64_t t_load = last_load[c][s->base / 4];
+                // the age's reference: the Import's last load of Actual (three-buffer: the
+                // confirming load) or its first (four-slot: actuality holds from the Import's start)
+                const uint32_t w = s->base / 4;
+                const uint64_t t_load = s->ch->four_slot && first_seen[c][w] ? first_load[c][w] : last_load[c][w];
                 const uint64_t age = t_load > arg ? t_load - arg : 0;
                 s->age.add(age);
                 s->import_cycles.add(cyc);

@@ -39,6 +39,8 @@ bool Plan::load(const std::string &path, std::string &error)
             ok = static_cast<bool>(s >> c.id >> c.name >> c.kind >> c.size >> c.words >> c.src_board >>
                                    c.src_base >> c.period >> c.latency >> c.latency_retry >> sync >> c.slots);
             c.sync = sync != 0;
+            int four = 0;  // optional last field: 1 = a four-slot channel
+            if (ok && (s >> four)) c.four_slot = four != 0;
             ok = ok && (c.kind == "copy" || c.kind == "time" || c.kind == "status");
             if (ok) channels.push_back(c);
         } else if (what == "dest") {

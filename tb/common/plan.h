@@ -7,7 +7,7 @@
 //   clock <hz>                                the controller's clock
 //   board <index> <name>                      (in index order)
 //   channel <id> <name> <copy|time|status> <size> <words> <src_board> <src_base>
-//           <period> <latency> <latency_with_retries> <sync> <slots>
+//           <period> <latency> <latency_with_retries> <sync> <slots> [<four_slot>]
 //   dest <id> <index> <board> <base>
 //
 // Sizes and bases in bytes, times in controller clocks; src_board is -1 for
@@ -32,6 +32,7 @@ struct PlanChannel {
     uint32_t src_base = 0;
     uint64_t period = 0, latency = 0, latency_retry = 0;
     bool sync = false;
+    bool four_slot = false;  // the four-slot kind (docs/four_slot.md)
     int slots = 0;
     std::vector<PlanDest> dests;
 

@@ -28,7 +28,8 @@ def main():
         out.append(f"channel {c['id']} {c['name']} {c['kind']} {c['size']} {c['words']} "
                    f"{src['board_index']} {src['base']} {c['guaranteed_period']['clocks']} "
                    f"{bound['fault_free']['clocks']} {bound['with_retries']['clocks']} "
-                   f"{1 if c['sync'] else 0} {len(c['slots'])}")
+                   f"{1 if c['sync'] else 0} {len(c['slots'])} "
+                   f"{1 if c.get('channel_kind') == 'four_slot' else 0}")
         for i, d in enumerate(c["consumers"]):
             out.append(f"dest {c['id']} {i} {d['board_index']} {d['base']}")
     with open(sys.argv[2], "w") as f:
