@@ -76,8 +76,9 @@ $(eval $(call pbn_fw,bench-serv-four_slot,-DBOARD_NO_COUNTERS -DBENCH_KIND=ALB_F
 
 BENCHES += bench-kinds
 .PHONY: bench-kinds
-bench-kinds: $(PBN_BIN) $(PBN_SERV_BIN) $(addprefix $(PBN_DIR)/,bench.hex bench-four_slot.hex bench-serv.hex \
-        bench-serv-four_slot.hex) ## cycles per Import/Export, both channel kinds, PicoRV32 and SERV; RAM per channel
+PBN_KINDS_DEPS := $(PBN_BIN) $(PBN_SERV_BIN) $(addprefix $(PBN_DIR)/,bench.hex bench-four_slot.hex bench-serv.hex \
+        bench-serv-four_slot.hex)
+bench-kinds: $(PBN_KINDS_DEPS) ## cycles per Import/Export, both channel kinds, PicoRV32 and SERV; RAM per channel
 	$(PBN_BIN) +fw0=$(PBN_DIR)/bench.hex --max-cycles $(PBN_MAX_CYCLES) --report $(REPORTS)/bench_pico.json
 	$(PBN_BIN) +fw0=$(PBN_DIR)/bench-four_slot.hex --max-cycles $(PBN_MAX_CYCLES) --label bench-pico-four-slot \
 	    --kind four_slot --report $(REPORTS)/bench_pico_four_slot.json
