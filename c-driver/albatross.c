@@ -137,6 +137,7 @@ int alb_channel_setup_kind(alb_channel_t *ch, uintptr_t base, uint32_t size, uns
     ch->fs_read_locked = 0u;
     ch->last = 0u;
     ch->slot[0] = ch->slot[1] = 0u;
+    ch->received = 0u;
     return ALB_OK;
 }
 
@@ -425,4 +426,40 @@ int alb_export(alb_channel_t *ch, const void *src)
     alb_wr8(ch->base + ALB_OFF_ACTUAL, write_buffer);
     ch->actual = write_buffer;
     return result;
+}
+
+/* ------------------------------------------------------------------------
+ * Sampling read (albatross.h): alb_import, then the status from the
+ * payload's last word, taken_at.  No RAM access of its own: taken_at is
+ * read from *dst, in the byte order read_from wrote it. */
+int alb_read(alb_channel_t *ch, void *dst, uint32_t max_age_clocks, uint32_t now, alb_sample_t *st)
+{
+    const uint8_t *p;
+    uint32_t taken_at, age;
+    int r;
+
+    if (ch == 0 || dst == 0 || st == 0 || ch->size < 4u || (ch->size & 3u) != 0u)
+        return ALB_ERR_ARG;
+    r = alb_import(ch, dst);
+    if (r != ALB_NEW && r != ALB_OLD)
+        return r;
+    p = (const uint8_t *)dst + (ch->size - 4u);
+    if (((uintptr_t)p & 3u) == 0u)
+        taken_at = *(const alb_word *)p;
+    else
+        taken_at = (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+    age = now - taken_at;
+    if ((int32_t)age < 0)
+        age = 0u;          /* taken after now was read: no older than 0 */
+    if (r == ALB_NEW)
+        ch->received = 1u;
+    st->is_new = (uint8_t)(r == ALB_NEW);
+    st->age_clocks = age;
+    if (!ch->received)
+        st->status = ALB_SAMPLE_NEVER;
+    else if (age > max_age_clocks)
+        st->status = ALB_SAMPLE_STALE;
+    else
+        st->status = r == ALB_NEW ? ALB_SAMPLE_NEW : ALB_SAMPLE_OLD;
+    return r;
 }

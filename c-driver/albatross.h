@@ -67,6 +67,8 @@ typedef struct alb_channel {
     uint8_t   last;        /* consumer: the buffer it read last (0: none,
                               after a restart)                                 */
     uint8_t   slot[2];     /* producer: private copies of Slot0 and Slot1      */
+    uint8_t   received;    /* consumer, alb_read: a New value came since
+                              alb_channel_setup (0: never received)            */
 } alb_channel_t;
 
 /* Describe a three-buffer channel; no RAM access.  ALB_ERR_ARG if base is
@@ -105,6 +107,54 @@ int alb_import(alb_channel_t *ch, void *dst);
 int alb_export(alb_channel_t *ch, const void *src);
 
 /*
+ * Sampling read (issue 13 section 3), beside the paper's New/Old: the status
+ * an ARINC 653 sampling port or an AUTOSAR last-is-best receiver gives.  For
+ * a destination channel of the controller, whose payload ends with the word
+ * taken_at (the controller's global time when it took the value).
+ *
+ *   r = alb_read(ch, dst, max_age_clocks, now, &st);
+ *
+ * Imports like alb_import (same result, same *dst) and then sets st:
+ *   st.age_clocks  now - taken_at, modulo 2^32, 0 if taken_at is after now
+ *   st.is_new      1 if the Import returned ALB_NEW
+ *   st.status      ALB_SAMPLE_NEVER  no New value since alb_channel_setup
+ *                                    (*dst holds the start image's value, or
+ *                                    after a restart one of unknown origin)
+ *                  ALB_SAMPLE_STALE  age_clocks > max_age_clocks (New or Old)
+ *                  ALB_SAMPLE_NEW    fresh and never read before
+ *                  ALB_SAMPLE_OLD    fresh and read before
+ * On an error (ALB_ERR_ARG, also for a payload that is not whole words with
+ * at least taken_at; ALB_ERR_CORRUPT) st is not written.
+ *
+ * now is the global time, read BEFORE the call: the last GlobalTime value
+ * imported before it, or alb_clock_now() (alb_clock.h).  The value the Import
+ * returns was the newest one published at some instant t of the call, and
+ * now <= t (up to the lead of a clock estimate), so age_clocks never exceeds
+ * the value's true age at t, whatever delays the CPU suffers between reading
+ * now and the Import.  max_age_clocks is the channel's refresh bound at this
+ * consumer: a value's true age at any instant is at most the compiler's
+ * bound (the board header's ALB_<NAME>_MAX_AGE_CLOCKS(producer period):
+ * latency + the producer's period for a copy channel, the age bound for time
+ * and status), plus the lead of now over the true global time (0 for a
+ * GlobalTime value; see docs/protocol.md, "Sampling read").  Times wrap: now
+ * and taken_at must be less than 2^31 clocks apart.
+ */
+enum {
+    ALB_SAMPLE_NEVER = 0,  /* nothing received yet                            */
+    ALB_SAMPLE_NEW   = 1,  /* a fresh value never read before                 */
+    ALB_SAMPLE_OLD   = 2,  /* a fresh value read before                       */
+    ALB_SAMPLE_STALE = 3   /* older than the refresh bound (is_new tells New)  */
+};
+
+typedef struct alb_sample {
+    uint8_t  status;       /* ALB_SAMPLE_*                                     */
+    uint8_t  is_new;       /* the Import returned ALB_NEW                      */
+    uint32_t age_clocks;   /* now - taken_at (0 if taken_at is after now)      */
+} alb_sample_t;
+
+int alb_read(alb_channel_t *ch, void *dst, uint32_t max_age_clocks, uint32_t now, alb_sample_t *st);
+
+/*
  * The typed task interface (seed 3.1):
  *
  *   ALB_CHANNEL(RadarMap, RadarShot)
@@ -130,5 +180,23 @@ int alb_export(alb_channel_t *ch, const void *src);
     }
 
 #define ALB_CHANNEL_DEFINE(Name) alb_channel_t alb_ch_##Name
+
+/*
+ * The typed sampling read, beside LookForNew<Name> of a destination channel
+ * (after ALB_CHANNEL(Name, Msg), Msg = {value, taken_at}):
+ *
+ *   ALB_SAMPLING(RadarMap, RadarMap_msg)
+ *
+ * declares
+ *
+ *   int ReadRadarMap(RadarMap_msg *m, alb_sample_t *st, uint32_t now,
+ *                    uint32_t max_age_clocks);   alb_read's result
+ */
+#define ALB_SAMPLING(Name, Msg)                                              \
+    static inline int Read##Name(Msg *m, alb_sample_t *st, uint32_t now,      \
+                                 uint32_t max_age_clocks)                    \
+    {                                                                        \
+        return alb_read(&alb_ch_##Name, m, max_age_clocks, now, st);         \
+    }
 
 #endif

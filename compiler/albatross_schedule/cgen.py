@@ -41,7 +41,11 @@ def render_board_header(system: System, b: int, desc_name: str, plan: Plan) -> s
     L.append(" * Producer side: Make<Name>Available(const Type *v) publishes a value.")
     L.append(" * Consumer side: LookForNew<Name>(<Name>_msg *m) is true for a value never read")
     L.append(" * before; m->taken_at is the controller's global time when it took the value")
-    L.append(" * (age = now - taken_at).  Call alb_" + board + "_attach_all() when the RAM was")
+    L.append(" * (age = now - taken_at).  Read<Name>(m, &st, now, max_age) is the sampling read")
+    L.append(" * (alb_read, albatross.h): st.status NEVER / NEW / OLD / STALE and st.age_clocks;")
+    L.append(" * its refresh bound is ALB_<NAME>_MAX_AGE_CLOCKS(producer period) plus the lead of")
+    L.append(" * now over the global time (docs/protocol.md, Sampling read).")
+    L.append(" * Call alb_" + board + "_attach_all() when the RAM was")
     L.append(" * loaded with " + board + "_ram.hex (or on a restart), alb_" + board + "_init_all() on a")
     L.append(" * cold start without that image.  Include only one board header per program.\n */")
     L.append(f"#ifndef {_guard(system, board)}")
@@ -112,6 +116,15 @@ def render_board_header(system: System, b: int, desc_name: str, plan: Plan) -> s
             L.append(f"typedef char alb_check_{ch.name}_taken_at"
                      f"[(offsetof({ch.name}_msg, taken_at) == 4u * {ch.words}u) ? 1 : -1];")
             L.append(f"ALB_CHANNEL({ch.name}, {ch.name}_msg)")
+            if ch.kind == "copy":
+                L.append(f"#define ALB_{N}_MAX_AGE_CLOCKS(producer_period_clocks) "
+                         f"((producer_period_clocks) + ALB_{N}_LATENCY_CLOCKS)"
+                         "  /* refresh bound: now - taken_at here, the producer's Exports ending at most"
+                         " producer_period_clocks apart */")
+            else:
+                L.append(f"#define ALB_{N}_MAX_AGE_CLOCKS(producer_period_clocks) (ALB_{N}_AGE_CLOCKS)"
+                         "  /* refresh bound: now - taken_at here (the controller produces it) */")
+            L.append(f"ALB_SAMPLING({ch.name}, {ch.name}_msg)")
     L.append("")
     L.append(f"/* Set up every channel of board '{board}' at dpram_base (this CPU's address of")
     L.append(" * its dual-ported RAM).  Both return ALB_OK or the first error. */")

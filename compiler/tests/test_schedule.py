@@ -196,6 +196,12 @@ class ExampleTests(unittest.TestCase):
                         self.assertIn(f"typedef struct {{ {c['type']} value; uint32_t taken_at; }} "
                                       f"{c['name']}_msg;", h)
                         self.assertIn(f"ALB_CHANNEL({c['name']}, {c['name']}_msg)", h)
+                        self.assertIn(f"ALB_SAMPLING({c['name']}, {c['name']}_msg)", h)
+                        # the sampling read's refresh bound: latency + producer period
+                        # for a copy, the age bound for time and status
+                        bound = (f"((producer_period_clocks) + ALB_{N}_LATENCY_CLOCKS)"
+                                 if c["kind"] == "copy" else f"(ALB_{N}_AGE_CLOCKS)")
+                        self.assertIn(f"#define ALB_{N}_MAX_AGE_CLOCKS(producer_period_clocks) {bound}", h)
                 for c in rep["channels"]:
                     self.assertEqual(int(macros[f"ALB_{c['name'].upper()}_ID"].rstrip("u")), c["id"])
 

@@ -22,6 +22,10 @@
  * MOBOT_EV_CLOCK with the clock's state (alb_clock_state) in the channel-id
  * field; the harness compares it with the controller's time at that
  * estimate's TIMER read (the board's last one before the event).
+ * Sampling read (issue 13 section 3): mobot_read is alb_read with the Import
+ * event; mobot_now gives the global time it needs (the clock's estimate, or
+ * the last GlobalTime value) and MOBOT_NOW_LEAD_CLOCKS how far that can lead
+ * the controller's time.
  */
 #ifndef MOBOT_CHECK_H
 #define MOBOT_CHECK_H
@@ -78,6 +82,20 @@ static inline int mobot_import(alb_channel_t *ch, uint32_t id, void *msg, const 
     return r;
 }
 
+/* alb_read (the sampling read) with the same event as mobot_import. */
+static inline int mobot_read(alb_channel_t *ch, uint32_t id, void *msg, const uint32_t *taken_at,
+                             uint32_t max_age, uint32_t now, alb_sample_t *st)
+{
+    uint32_t c0 = board_cycles(), c1;
+    int r = alb_read(ch, msg, max_age, now, st);
+    c1 = board_cycles();
+    if (r == ALB_NEW || r == ALB_OLD)
+        mobot_event(r == ALB_NEW ? MOBOT_EV_NEW : MOBOT_EV_OLD, id, c1 - c0, *taken_at);
+    else
+        mobot_event(MOBOT_EV_ERROR, id, c1 - c0, (uint32_t)r);
+    return r;
+}
+
 #ifdef ALB_LOCAL_TIMER_ADDR
 #include "alb_clock.h"
 #include "alb_port.h"
@@ -108,11 +126,26 @@ static inline void mobot_clock_report(const mobot_clock_t *clk)
                 (c1 > 4095u ? 4095u : c1) | (mobot_sync_cycles > 4095u ? 4095u : mobot_sync_cycles) << 12, est);
 }
 #define mobot_clock_init(clk) alb_clock_init(clk)
+/* The global time now, for alb_read: the clock's estimate once it has a
+ * sample, else the last GlobalTime value gt.  The estimate can lead the
+ * controller's time only through its rate error: by at most rho * (2 W + T)
+ * (docs/robot.md, Local time: rho = 250 ppm, W = ALB_CLOCK_WINDOW, T the
+ * longest gap between two New GlobalTime values, taken <= 2 W here), which
+ * a sampling read's refresh bound must allow for. */
+#define MOBOT_NOW_LEAD_CLOCKS ((4u * ALB_CLOCK_WINDOW + 3999u) / 4000u)
+static inline uint32_t mobot_now(const mobot_clock_t *clk, uint32_t gt)
+{
+    return alb_clock_state(clk) == ALB_CLOCK_EMPTY ? gt : alb_clock_now(clk);
+}
 #else
 typedef int mobot_clock_t;
 #define mobot_clock_init(clk)           ((void)(clk))
 #define mobot_clock_sync(clk, r, t)     ((void)(clk), (void)(r), (void)(t))
 #define mobot_clock_report(clk)         ((void)(clk))
+/* Without a clock the global time now is the last GlobalTime value: a
+ * nominal slot start at or before its Import, so it never leads. */
+#define MOBOT_NOW_LEAD_CLOCKS 0u
+#define mobot_now(clk, gt)              ((void)(clk), (gt))
 #endif
 
 /* alb_export with its two events (begin, end). */

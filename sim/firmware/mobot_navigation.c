@@ -6,18 +6,25 @@
  * exports, then keeps going.  STAT: 0 RadarMap New, 1 Position New,
  * 2 GlobalTime New, 3 exports.  Checks and events: sim/firmware/mobot_check.h.
  *
- * Actuality: the map's age is estimated as GlobalTime - taken_at (an
- * underestimate: GlobalTime is itself a little old).  A healthy radar
- * publishes at least every MOBOT_RADAR_SCAN_CLOCKS and the controller
- * guarantees ALB_RADARMAP_LATENCY_CLOCKS from an Export to this RAM, so an
- * older map means the radar stopped: navigation reports MOBOT_EV_STALE (and
- * MOBOT_EV_FRESH when New maps come back) and keeps driving on the last one.
+ * Actuality, by the sampling read (issue 13 section 3; alb_read,
+ * docs/protocol.md "Sampling read"): ReadRadarMap ages the map as now -
+ * taken_at, where now is the global time read BEFORE the Import (the clock's
+ * estimate when the board runs one, else the GlobalTime value of the loop
+ * before), so the age never exceeds the map's true age at the Import,
+ * whatever the core does between.  A healthy radar ends an Export at least
+ * every MOBOT_RADAR_SCAN_CLOCKS and the controller publishes an Export here
+ * within ALB_RADARMAP_LATENCY_CLOCKS, so the newest map here is never older
+ * than ALB_RADARMAP_MAX_AGE_CLOCKS(MOBOT_RADAR_SCAN_CLOCKS); now leads the
+ * controller's time by at most MOBOT_NOW_LEAD_CLOCKS.  A map older than the
+ * two (status STALE) means the radar stopped: navigation reports
+ * MOBOT_EV_STALE (and MOBOT_EV_FRESH when fresh maps come back) and keeps
+ * driving on the last one.  Before the first New map the status is NEVER.
  */
 #include "albatross.h"
 #include "navigation.h"
 #include "mobot_check.h"
 
-#define NAV_RADAR_STALE_CLOCKS (MOBOT_RADAR_SCAN_CLOCKS + ALB_RADARMAP_LATENCY_CLOCKS)
+#define NAV_RADAR_STALE_CLOCKS (ALB_RADARMAP_MAX_AGE_CLOCKS(MOBOT_RADAR_SCAN_CLOCKS) + MOBOT_NOW_LEAD_CLOCKS)
 
 /* Retries and abandoned transfers summed over the channels of the system. */
 static void nav_status_event(const Status_t *s)
@@ -39,7 +46,8 @@ int main(void)
     static Status_msg st;
     static MotorCommand cmd;
     mobot_track_t tr = {0u, 0u, 0u, 0u}, tp = {0u, 0u, 0u, 0u}, tt = {0u, 0u, 0u, 0u};
-    uint32_t seq = 0u, code, reported = 0u, stale = 0u, age;
+    alb_sample_t smp;
+    uint32_t seq = 0u, code, reported = 0u, stale = 0u, now;
     int r;
 
     r = alb_navigation_attach_all(BOARD_DPRAM_BASE);
@@ -48,7 +56,8 @@ int main(void)
     mobot_clock_init(&clk);
     for (;;) {
         mobot_clock_report(&clk);
-        r = mobot_import(&alb_ch_RadarMap, ALB_RADARMAP_ID, &map, &map.taken_at);
+        now = mobot_now(&clk, gt.value);   /* before the map's Import */
+        r = mobot_read(&alb_ch_RadarMap, ALB_RADARMAP_ID, &map, &map.taken_at, NAV_RADAR_STALE_CLOCKS, now, &smp);
         code = mobot_check(&tr, ALB_RADARMAP_ID, r, radar_ok0(&map.value), radar_seq(&map.value));
         if (code)
             return (int)code;
@@ -61,12 +70,11 @@ int main(void)
         code = mobot_check(&tt, ALB_GLOBALTIME_ID, r, 1, gt.value);
         if (code)
             return (int)code;
-        age = (int32_t)(gt.value - map.taken_at) > 0 ? gt.value - map.taken_at : 0u;
-        if (!stale && age > NAV_RADAR_STALE_CLOCKS) {
-            mobot_event(MOBOT_EV_STALE, ALB_RADARMAP_ID, 0u, age);
+        if (!stale && smp.status == ALB_SAMPLE_STALE) {
+            mobot_event(MOBOT_EV_STALE, ALB_RADARMAP_ID, 0u, smp.age_clocks);
             stale = 1u;
-        } else if (stale && age <= NAV_RADAR_STALE_CLOCKS) {
-            mobot_event(MOBOT_EV_FRESH, ALB_RADARMAP_ID, 0u, age);
+        } else if (stale && (smp.status == ALB_SAMPLE_NEW || smp.status == ALB_SAMPLE_OLD)) {
+            mobot_event(MOBOT_EV_FRESH, ALB_RADARMAP_ID, 0u, smp.age_clocks);
             stale = 0u;
         }
         r = mobot_import(&alb_ch_Status, ALB_STATUS_ID, &st, &st.taken_at);

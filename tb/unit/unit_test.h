@@ -63,5 +63,6 @@ void test_corrupt_attach(void);
 void test_sequence(void);
 void test_typed(void);
 void test_four_slot(void);   /* test_four_slot.c */
+void test_sample(void);      /* test_sample.c */
 
 #endif

@@ -16,7 +16,7 @@ DRV_RV_OBJS   := $(foreach O,$(DRV_RV_LEVELS),$(BUILD)/rv32i/albatross-$(O).o)
 DRV_HOST_OBJ  := $(BUILD)/host/albatross.o
 DRV_UNIT      := $(BUILD)/unit
 DRV_UNIT_SRC  := tb/unit/test_driver.c tb/unit/test_transfer.c tb/unit/test_errors.c \
-                 tb/unit/test_four_slot.c tb/unit/unit_helpers.c
+                 tb/unit/test_four_slot.c tb/unit/test_sample.c tb/unit/unit_helpers.c
 DRV_UNIT_DEPS := $(DRV_UNIT_SRC) tb/unit/unit_test.h tb/unit/port/alb_port_impl.h \
                  $(DRV_SRC) $(wildcard c-driver/*.h)
 DRV_BROKEN    := 1 2
