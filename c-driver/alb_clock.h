@@ -46,11 +46,15 @@
 #ifndef ALB_CLOCK_RING
 #define ALB_CLOCK_RING   16u     /* window samples the rate is taken over */
 #endif
+#define ALB_CLOCK_RATE_MIN 4u    /* window samples before the rate is taken */
+#if ALB_CLOCK_RING < ALB_CLOCK_RATE_MIN
+#error "ALB_CLOCK_RING must hold ALB_CLOCK_RATE_MIN window samples"
+#endif
 
 /* alb_clock_state() */
 #define ALB_CLOCK_EMPTY  0  /* no sample yet: alb_clock_at returns 0 */
 #define ALB_CLOCK_OFFSET 1  /* offset known, rate assumed 1 */
-#define ALB_CLOCK_RATE   2  /* offset and rate known (two windows closed) */
+#define ALB_CLOCK_RATE   2  /* offset and rate known (ALB_CLOCK_RATE_MIN windows closed) */
 
 typedef struct {
     uint32_t g, l;  /* global time (taken_at) and local time of a sample */
