@@ -81,14 +81,46 @@ static uint32_t alb_clock_frac(uint32_t n, uint32_t d)
     }
     return q;
 }
+
+/* The ring sample of smallest apparent delay among ring ages [from, to)
+ * (0 the newest): the largest G above the model line.  The line's rate term
+ * is taken coarsely, (|d| / 2^6) * (|skew| / 2^16) / 2^10: within 20 ticks
+ * over the ring's span (2^20 ticks), enough to rank delays, in one short
+ * product per sample whose steps are the bits of the rate estimate (the
+ * drift) in units of 15 ppm (3 at a crystal's 100 ppm, 9 at 5000 ppm), never libgcc's 64-bit
+ * one (a window close must not stall the board's loop). */
+static const alb_clock_sample_t *alb_clock_best(const alb_clock_t *c, uint32_t from, uint32_t to)
+{
+    const alb_clock_sample_t *b = 0;
+    uint32_t us = c->skew < 0 ? 0u - (uint32_t)c->skew : (uint32_t)c->skew;
+    int32_t be = 0;
+    uint32_t k;
+    for (k = from; k < to; ++k) {
+        const alb_clock_sample_t *s = &c->ring[(c->head + ALB_CLOCK_RING - 1u - k) % ALB_CLOCK_RING];
+        int32_t d = (int32_t)(s->l - c->l0), e = (int32_t)(s->g - c->g0) - d, r = 0;
+        uint32_t ud = d < 0 ? 0u - (uint32_t)d : (uint32_t)d;
+        if (ud < (1u << 22) && us < (1u << 28))
+            r = (int32_t)(alb_clock_mul(ud >> 6, us >> 16) >> 10);
+        e -= (d < 0) != (c->skew < 0) ? -r : r;
+        if (!b || e > be) {
+            b = s;
+            be = e;
+        }
+    }
+    return b;
+}
 #endif
 
-/* The rate between the oldest and the newest ring sample. */
+/* The rate between the better (smaller-delay) of the two newest and of the
+ * two oldest ring samples (ALB_CLOCK_RATE_MIN windows closed: no two are
+ * shared): one window of unusual delay, e.g. the first, can set neither end
+ * alone (its delay spread over a short span was the rate error, and the
+ * rate error is the only way the estimate can lead). */
 static void alb_clock_rate(alb_clock_t *c)
 {
 #ifndef ALB_CLOCK_NO_RATE
-    const alb_clock_sample_t *o = &c->ring[(c->head + ALB_CLOCK_RING - c->n_ring) % ALB_CLOCK_RING];
-    const alb_clock_sample_t *n = &c->ring[(c->head + ALB_CLOCK_RING - 1u) % ALB_CLOCK_RING];
+    const alb_clock_sample_t *n = alb_clock_best(c, 0u, 2u);
+    const alb_clock_sample_t *o = alb_clock_best(c, c->n_ring - 2u, c->n_ring);
     uint32_t dl = n->l - o->l, q;
     int32_t diff = (int32_t)((n->g - o->g) - dl);
     uint32_t ud = diff < 0 ? 0u - (uint32_t)diff : (uint32_t)diff;
@@ -151,7 +183,7 @@ void alb_clock_sync(alb_clock_t *c, uint32_t taken_at, uint32_t local)
         ++c->n_ring;
     c->g0 = c->best.g;
     c->l0 = c->best.l;
-    if (c->n_ring >= 2u)
+    if (c->n_ring >= ALB_CLOCK_RATE_MIN)
         alb_clock_rate(c);
     if ((int32_t)(taken_at - alb_clock_at(c, local)) > 0) {
         c->g0 = taken_at;

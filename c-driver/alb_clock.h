@@ -24,9 +24,12 @@
  *    becomes the anchor (g0, l0) -- the anchor also moves down if the model
  *    ran ahead -- and joins a ring of the last ALB_CLOCK_RING such samples.
  *  - The rate (skew, Q32 fraction of "global ticks per local tick - 1") is
- *    the slope between the oldest and the newest sample of the ring: up to
+ *    the slope between the better (smaller delay against the model line) of
+ *    the two oldest and the better of the two newest samples of the ring,
+ *    taken once ALB_CLOCK_RATE_MIN windows have closed: up to
  *    (ALB_CLOCK_RING - 1) windows apart, so the delays' jitter is divided by
- *    a long span.  -DALB_CLOCK_NO_RATE keeps skew at 0 (the negative test of
+ *    a long span, and no single window of unusual delay (the first, before
+ *    a board's loop settles) sets an end of the slope alone.  -DALB_CLOCK_NO_RATE keeps skew at 0 (the negative test of
  *    make test-sim-clock-negative: no rate correction under drift).
  * Error: with d_a the anchor's delay, the estimate's lag is d_a (<= the
  * time channel's delivery bound, and the smallest delay seen in a window in
@@ -46,11 +49,15 @@
 #ifndef ALB_CLOCK_RING
 #define ALB_CLOCK_RING   16u     /* window samples the rate is taken over */
 #endif
+#define ALB_CLOCK_RATE_MIN 4u    /* window samples before the rate is taken */
+#if ALB_CLOCK_RING < ALB_CLOCK_RATE_MIN
+#error "ALB_CLOCK_RING must hold ALB_CLOCK_RATE_MIN window samples"
+#endif
 
 /* alb_clock_state() */
 #define ALB_CLOCK_EMPTY  0  /* no sample yet: alb_clock_at returns 0 */
 #define ALB_CLOCK_OFFSET 1  /* offset known, rate assumed 1 */
-#define ALB_CLOCK_RATE   2  /* offset and rate known (two windows closed) */
+#define ALB_CLOCK_RATE   2  /* offset and rate known (ALB_CLOCK_RATE_MIN windows closed) */
 
 typedef struct {
     uint32_t g, l;  /* global time (taken_at) and local time of a sample */
