@@ -42,12 +42,17 @@ void board_program(SimCpu &cpu)
     alignas(8) uint8_t buf[1100];
     for (Role &r : b.roles) {
         const PlanChannel &c = g_plan->channels[r.chan];
+        // A four-slot channel's sides are set up with its kind.  A four-slot
+        // consumer starts cold (alb_consumer_init: Buffer1 counts as read);
+        // attach would forget the last value read and make the first Import
+        // New even if the image's value is all there is (docs/four_slot.md).
+        const unsigned kind = c.four_slot ? ALB_FOUR_SLOT : ALB_THREE_BUFFER;
         if (r.dest < 0) {
-            alb_channel_setup(&r.ch, c.src_base, c.size);
+            alb_channel_setup_kind(&r.ch, c.src_base, c.size, kind);
             if (alb_producer_attach(&r.ch) != ALB_OK) ++b.attach_errors;
         } else {
-            alb_channel_setup(&r.ch, c.dests[r.dest].base, c.dest_size());
-            if (alb_consumer_attach(&r.ch) != ALB_OK) ++b.attach_errors;
+            alb_channel_setup_kind(&r.ch, c.dests[r.dest].base, c.dest_size(), kind);
+            if ((c.four_slot ? alb_consumer_init(&r.ch) : alb_consumer_attach(&r.ch)) != ALB_OK) ++b.attach_errors;
         }
     }
     for (;;) {
@@ -103,13 +108,13 @@ void load_images(const Plan &plan)
 {
     for (const PlanChannel &c : plan.channels) {
         if (c.copy()) {
-            std::vector<uint8_t> img(ALB_CHANNEL_BYTES(c.size), 0);
+            std::vector<uint8_t> img(instance_bytes(c, c.size), 0);
             img[0] = img[1] = ALB_BUFFER1;
             channel_value(c.id, 0, &img[ALB_OFF_BUFFER(1u, c.size)], c.size);
             g_sim->load(c.src_board, c.src_base, img.data(), static_cast<uint32_t>(img.size()));
         }
         for (const PlanDest &d : c.dests) {
-            std::vector<uint8_t> img(ALB_CHANNEL_BYTES(c.dest_size()), 0);
+            std::vector<uint8_t> img(instance_bytes(c, c.dest_size()), 0);
             img[0] = img[1] = ALB_BUFFER1;
             if (c.copy()) channel_value(c.id, 0, &img[ALB_OFF_BUFFER(1u, c.dest_size())], c.size);
             g_sim->load(d.board, d.base, img.data(), static_cast<uint32_t>(img.size()));

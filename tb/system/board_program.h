@@ -104,7 +104,7 @@ struct TransferMeter {
     uint64_t n = 0, sum = 0, min = ~0ull, max = 0, idle_sum = 0, accesses_last = 0;
 
     bool in(int board, uint32_t base, uint32_t size, const SystemSim::BusEvent &e) const {
-        return e.board == board && e.addr >= base && e.addr < base + ALB_CHANNEL_BYTES(size);
+        return e.board == board && e.addr >= base && e.addr < base + instance_bytes(*c, size);
     }
     void on(const SystemSim::BusEvent &e) {
         const bool src = in(c->src_board, c->src_base, c->size, e);
@@ -135,7 +135,8 @@ struct TransferMeter {
     }
 };
 
-// The RAM image of every channel instance: Actual = ReadLocked = Buffer1,
+// The RAM image of every channel instance (four-slot: four buffers, Slot0 =
+// Slot1 = 0): Actual = ReadLocked = Buffer1,
 // Buffer1 holds value 0 (sources) or zeros (destinations).
 void load_images(const Plan &plan);
 

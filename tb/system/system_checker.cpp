@@ -38,6 +38,7 @@ SystemChecker::SystemChecker(const Plan &plan, SystemSim &sim, uint64_t time_off
             in.base = c.src_base;
             in.size = c.size;
             in.producer_port = 0;
+            in.four_slot = c.four_slot;
             inst_.push_back(in);
             src_[i].publish_cycle.push_back(0);   // seq 0: the RAM image
         }
@@ -49,14 +50,15 @@ SystemChecker::SystemChecker(const Plan &plan, SystemSim &sim, uint64_t time_off
             in.base = c.dests[d].base;
             in.size = c.dest_size();
             in.producer_port = 1;
+            in.four_slot = c.four_slot;
             inst_.push_back(in);
             // What the destination holds when checking begins (the RAM image,
             // or what the controller published while the images were being
             // loaded): publication 0, unread if Actual != ReadLocked.
             const RefRam &ram = sim.ref[in.board];
             uint8_t actual = ram.byte(in.base + ALB_OFF_ACTUAL), rl = ram.byte(in.base + ALB_OFF_READLOCKED);
-            if (!ALB_VALID_INDEX(actual)) actual = ALB_BUFFER1;
-            DestPub p{0, 0, 0, std::vector<uint8_t>(c.dest_size(), 0)};
+            if (!(c.four_slot ? ALB_FS_VALID_INDEX(actual) : ALB_VALID_INDEX(actual))) actual = ALB_BUFFER1;
+            DestPub p{0, 0, 0, actual, 0, std::vector<uint8_t>(c.dest_size(), 0)};
             const uint32_t at = in.base + ALB_OFF_BUFFER(static_cast<uint32_t>(actual), in.size);
             for (uint32_t k = 0; k < in.size; ++k) p.bytes[k] = ram.byte(at + k);
             std::memcpy(&p.taken_at, &p.bytes[c.taken_at_offset()], 4);
@@ -83,7 +85,8 @@ void SystemChecker::violation(Kind k, const std::string &msg)
 SystemChecker::Instance *SystemChecker::find(int board, uint32_t addr)
 {
     for (Instance &in : inst_)
-        if (in.board == board && addr >= in.base && addr < in.base + ALB_CHANNEL_BYTES(in.size)) return &in;
+        if (in.board == board && addr >= in.base && addr < in.base + instance_bytes(plan_.channels[in.chan], in.size))
+            return &in;
     return nullptr;
 }
 
@@ -102,7 +105,7 @@ void SystemChecker::close_window(Instance &in)
         violation(MUTEX, m);
     }
     in.win_buffer = 0;
-    for (int b = 1; b <= 3; ++b)
+    for (int b = 1; b <= 4; ++b)
         if (in.writes[b].size() > 1024) in.writes[b].erase(in.writes[b].begin(), in.writes[b].end() - 64);
 }
 
@@ -123,7 +126,11 @@ void SystemChecker::on_access(int board, const Access &a)
     const bool producer = a.port == in->producer_port;
     const char *who = a.port ? "controller" : "CPU";
     if (a.req.we) {
-        bool ok = control ? a.req.sel == (producer ? 1u << ALB_OFF_ACTUAL : 1u << ALB_OFF_READLOCKED) : producer;
+        // Four-slot: the producer also stores the Slot bytes, one at a time.
+        const bool slot_store = in->four_slot && (a.req.sel == 1u << ALB_OFF_SLOT0 || a.req.sel == 1u << ALB_OFF_SLOT1);
+        bool ok = control ? a.req.sel == (producer ? 1u << ALB_OFF_ACTUAL : 1u << ALB_OFF_READLOCKED) ||
+                            (producer && slot_store)
+                          : producer;
         if (!ok) {
             std::snprintf(m, sizeof m, "board %d, %s: the %s (%s) wrote offset %u lanes 0x%x at cycle %llu, which it does not own",
                           board, plan_.channels[in->chan].name.c_str(), who, producer ? "producer" : "consumer", off,
@@ -136,7 +143,20 @@ void SystemChecker::on_access(int board, const Access &a)
         if (a.req.we && control && (a.req.sel & 1u)) {
             uint8_t actual = static_cast<uint8_t>(a.req.wdata);
             if (in->dest < 0) src_[in->chan].pending_publish = a.serve_cycle;
+            else if (in->four_slot) dest_actual_stored(*in, a.serve_cycle, actual);
             else dest_published(*in, a.serve_cycle, actual);
+        }
+        // Four-slot: the Slot store completes buf(pair, slot).
+        if (a.req.we && control && in->four_slot && in->dest >= 0 && (a.req.sel & 0xCu)) {
+            const unsigned pair = (a.req.sel & 0x8u) ? 1u : 0u;
+            const uint8_t slot = static_cast<uint8_t>(a.req.wdata >> (8 * (ALB_OFF_SLOT0 + pair)));
+            if (!ALB_FS_VALID_SLOT(slot)) {
+                std::snprintf(m, sizeof m, "board %d, %s: the controller stored Slot%u = %u", board,
+                              plan_.channels[in->chan].name.c_str(), pair, slot);
+                violation(DEFINITE, m);
+            } else {
+                dest_published(*in, a.serve_cycle, static_cast<uint8_t>(ALB_FS_BUFFER(pair, slot)));
+            }
         }
     } else {
         if (!a.req.we && buffer) {
@@ -166,7 +186,7 @@ void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
     DestState &d = dst_[in.chan][in.dest];
     DestStats &st = stats[in.chan].dests[in.dest];
     char m[260];
-    if (!ALB_VALID_INDEX(buffer)) {
+    if (!(in.four_slot ? ALB_FS_VALID_INDEX(buffer) : ALB_VALID_INDEX(buffer))) {
         std::snprintf(m, sizeof m, "board %d, %s: the controller stored Actual = %u", in.board, c.name.c_str(), buffer);
         violation(DEFINITE, m);
         return;
@@ -177,6 +197,8 @@ void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
     d.actual = buffer;
     DestPub p;
     p.cycle = cycle;
+    p.pub_cycle = in.four_slot ? ~0ull : cycle;
+    p.buffer = buffer;
     p.bytes.resize(in.size);
     const uint32_t at = in.base + ALB_OFF_BUFFER(static_cast<uint32_t>(buffer), in.size);
     for (uint32_t i = 0; i < in.size; ++i) p.bytes[i] = sim_.ref[in.board].byte(at + i);
@@ -273,6 +295,26 @@ void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
     d.pubs.push_back(std::move(p));
 }
 
+// Four-slot: the Actual store publishes the value the producer completed in
+// that buffer (the newest one, not yet published).  Storing an index that
+// holds no completed, unpublished value (a retried store) publishes nothing.
+void SystemChecker::dest_actual_stored(Instance &in, uint64_t cycle, uint8_t buffer)
+{
+    DestState &d = dst_[in.chan][in.dest];
+    if (!ALB_FS_VALID_INDEX(buffer)) {
+        char m[200];
+        std::snprintf(m, sizeof m, "board %d, %s: the controller stored Actual = %u", in.board,
+                      plan_.channels[in.chan].name.c_str(), buffer);
+        violation(DEFINITE, m);
+        return;
+    }
+    for (size_t i = d.pubs.size(); i-- > 0;) {
+        if (d.pubs[i].buffer != buffer) continue;
+        if (d.pubs[i].pub_cycle == ~0ull) d.pubs[i].pub_cycle = cycle;
+        return;
+    }
+}
+
 void SystemChecker::imported(int chan, int dest, int rc, const uint8_t *payload, uint64_t begin, uint64_t end,
                              uint32_t consumer_time)
 {
@@ -295,7 +337,7 @@ void SystemChecker::imported(int chan, int dest, int rc, const uint8_t *payload,
     if (rc == ALB_OLD && d.last_read >= 0 && std::memcmp(d.pubs[d.last_read].bytes.data(), payload, n) == 0)
         found = d.last_read;
     for (int64_t i = static_cast<int64_t>(d.pubs.size()) - 1; i >= 0; --i) {
-        if (d.pubs[i].cycle <= begin && !at_begin) at_begin = i;
+        if (d.pubs[i].pub_cycle <= begin && !at_begin) at_begin = i;
         if (found < 0 && std::memcmp(d.pubs[i].bytes.data(), payload, n) == 0 && d.pubs[i].cycle <= end) found = i;
         if (found >= 0 && (at_begin || i == 0)) break;
     }

@@ -5,9 +5,15 @@
 // controller produces and the CPU consumes):
 //   mutual exclusion  the producer never writes a buffer while the consumer
 //                     reads it (first to last read of one buffer);
-//   ownership         the producer writes only Actual and buffers, the
+//   ownership         the producer writes only Actual and buffers (and, in a
+//                     four-slot instance, the Slot bytes 2 and 3), the
 //                     consumer only ReadLocked; the controller touches
-//                     nothing outside a channel.
+//                     nothing outside a channel (a four-slot instance has
+//                     four buffers).
+// A four-slot destination's value counts as there from its Slot store
+// (complete: a four-slot Import may return it, docs/four_slot.md), as
+// published from its Actual store: actuality is judged against the values
+// published when an Import began (its first control-word load).
 // End to end, for every channel:
 //   definite results  every value the controller publishes is one complete
 //                     value its producer exported (or, for TIME, the time),
@@ -28,6 +34,16 @@
 #include <vector>
 #include "plan.h"
 #include "system_sim.h"
+extern "C" {
+#include "albatross_layout.h"
+}
+
+// The bytes of one instance of channel c with payload size bytes: 4 + 3*S,
+// or 4 + 4*S for the four-slot kind.
+inline uint32_t instance_bytes(const PlanChannel &c, uint32_t size)
+{
+    return c.four_slot ? ALB_FS_CHANNEL_BYTES(size) : ALB_CHANNEL_BYTES(size);
+}
 
 // The value a producer exports as its seq-th value of channel id.
 void channel_value(int channel_id, uint64_t seq, uint8_t *out, uint32_t size);
@@ -79,10 +95,13 @@ private:
         // Consumer's open read window.
         int win_buffer = 0;
         uint64_t win_first = 0, win_last = 0;
-        std::vector<uint64_t> writes[4];   // producer writes per buffer
+        bool four_slot = false;
+        std::vector<uint64_t> writes[5];   // producer writes per buffer (1..4)
     };
     struct DestPub {
-        uint64_t cycle, seq;
+        uint64_t cycle, seq;               // cycle: complete (three-buffer: published)
+        uint64_t pub_cycle = 0;            // its Actual store (~0: not yet)
+        uint8_t buffer = 0;                // the buffer that holds it
         uint32_t taken_at;
         std::vector<uint8_t> bytes;        // the published payload
     };
@@ -91,6 +110,7 @@ private:
         uint64_t pending = 0;              // first source seq not yet reached at this dest
         int64_t last_read = 0;             // consumer: index of the last pub read
         uint8_t actual = 0;                // the destination's Actual, as last stored
+                                           // (four-slot: the buffer last completed)
     };
     struct SourceState {
         std::vector<uint64_t> publish_cycle;   // by seq (0: the image)
@@ -101,6 +121,7 @@ private:
     Instance *find(int board, uint32_t addr);
     void close_window(Instance &in);
     void dest_published(Instance &in, uint64_t cycle, uint8_t buffer);
+    void dest_actual_stored(Instance &in, uint64_t cycle, uint8_t buffer);   // four-slot
 
     const Plan &plan_;
     SystemSim &sim_;
