@@ -121,7 +121,9 @@ class ExampleTests(unittest.TestCase):
             cycle = rep["cycle"]["clocks"]
             for c in rep["channels"]:
                 W, ND = c["words"], len(c["consumers"])
-                A = (3 + W + ND * (W + 3)) if c["kind"] == "copy" else ND * (W + 3)
+                # per destination W + 3 accesses (three-buffer) or W + 4 (four-slot: the Slot store)
+                per = W + (4 if c["channel_kind"] == "four_slot" else 3)
+                A = (3 + W + ND * per) if c["kind"] == "copy" else ND * per
                 self.assertEqual(c["accesses"], A, c["name"])
                 pub = bus["fetch_cycles"] + bus["first_access_extra"] + bus["access_cycles"] * A
                 self.assertEqual(c["slot_length"], pub + budget + bus["guard_cycles"], c["name"])
@@ -188,7 +190,8 @@ class ExampleTests(unittest.TestCase):
                     self.assertEqual(int(macros[f"ALB_{N}_BASE"].rstrip("u"), 16), i["base"])
                     size = c["size"] if i["role"] == "source" else 4 * c["words"] + 4
                     self.assertEqual(int(macros[f"ALB_{N}_SIZE"].rstrip("u")), size)
-                    self.assertEqual(i["bytes"], 4 + 3 * ((size + 3) & ~3))
+                    nbuf = 4 if c["channel_kind"] == "four_slot" else 3   # 4 + 4*S or 4 + 3*S bytes
+                    self.assertEqual(i["bytes"], 4 + nbuf * ((size + 3) & ~3))
                     self.assertEqual(int(macros[f"ALB_{N}_WORDS"].rstrip("u")), c["words"])
                     if i["role"] == "source":
                         self.assertIn(f"ALB_CHANNEL({c['name']}, {c['type']})", h)
