@@ -74,6 +74,9 @@ void board_program(SimCpu &cpu)
                 r.next_due = now() + r.interval_lo + b.rng() % (r.interval_hi - r.interval_lo + 1);
             } else {
                 uint64_t begin = now();
+                // A four-slot value is aged from the Import's start (its first
+                // control-word load): actuality holds from there.
+                const uint32_t time_at_begin = b.global_time + static_cast<uint32_t>(begin - b.global_at);
                 int rc = alb_import(&r.ch, buf);
                 if (r.status_channel && rc == ALB_NEW) {
                     uint32_t w[1 + 2 * 32] = {};
@@ -96,7 +99,8 @@ void board_program(SimCpu &cpu)
                     std::memcpy(&b.global_time, buf, 4);
                     b.global_at = now();
                 }
-                uint32_t local_time = b.global_time + static_cast<uint32_t>(now() - b.global_at);
+                uint32_t local_time = c.four_slot ? time_at_begin
+                                                  : b.global_time + static_cast<uint32_t>(now() - b.global_at);
                 g_chk->imported(r.chan, r.dest, rc, buf, begin, now(), local_time);
             }
         }

@@ -240,6 +240,37 @@ void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
             violation(DEFINITE, m);
         }
         st.max_taken_minus_publish = std::max(st.max_taken_minus_publish, taken_cycle - s.publish_cycle[p.seq]);
+    } else {
+        // TIME and STATUS: the controller's own values, taken at the slot.
+        p.seq = last.seq + 1;
+        uint32_t value0 = 0;
+        std::memcpy(&value0, p.bytes.data(), 4);
+        bool bad_time = c.kind == "time" && value0 != p.taken_at;
+        if (bad_time || taken_cycle > cycle || (d.pubs.size() > 1 && p.taken_at <= last.taken_at)) {
+            std::snprintf(m, sizeof m, "board %d, %s: published at cycle %llu with value %u, taken_at %u (cycle %llu) after taken_at %u: "
+                          "expected value = taken_at, increasing, not in the future",
+                          in.board, c.name.c_str(), static_cast<unsigned long long>(cycle), value0, p.taken_at,
+                          static_cast<unsigned long long>(taken_cycle), last.taken_at);
+            violation(TIME, m);
+        }
+    }
+    // Latency / age: three-buffer at the Actual store, here; four-slot at its
+    // Actual store too (dest_actual_stored), not at the Slot store.
+    if (!in.four_slot) measure(in, p, last, d.pubs.size() == 1, cycle);
+    d.pubs.push_back(std::move(p));
+}
+
+// The latency (copy: from each source value's publication) or age (time,
+// status: of the value replaced) of publication p at the destination, which
+// replaces prev (the RAM image if prev_is_image), published at cycle.
+void SystemChecker::measure(Instance &in, const DestPub &p, const DestPub &prev, bool prev_is_image, uint64_t cycle)
+{
+    const PlanChannel &c = plan_.channels[in.chan];
+    DestState &d = dst_[in.chan][in.dest];
+    DestStats &st = stats[in.chan].dests[in.dest];
+    char m[260];
+    if (c.copy()) {
+        const SourceState &s = src_[in.chan];
         // Latency of every source value this publication reaches.
         for (; d.pending <= p.seq && d.pending < s.publish_cycle.size(); ++d.pending) {
             if (s.publish_cycle[d.pending] < latency_from_) continue;
@@ -262,22 +293,10 @@ void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
             }
         }
     } else {
-        // TIME and STATUS: the controller's own values, taken at the slot.
-        p.seq = last.seq + 1;
-        uint32_t value0 = 0;
-        std::memcpy(&value0, p.bytes.data(), 4);
-        bool bad_time = c.kind == "time" && value0 != p.taken_at;
-        if (bad_time || taken_cycle > cycle || (d.pubs.size() > 1 && p.taken_at <= last.taken_at)) {
-            std::snprintf(m, sizeof m, "board %d, %s: published at cycle %llu with value %u, taken_at %u (cycle %llu) after taken_at %u: "
-                          "expected value = taken_at, increasing, not in the future",
-                          in.board, c.name.c_str(), static_cast<unsigned long long>(cycle), value0, p.taken_at,
-                          static_cast<unsigned long long>(taken_cycle), last.taken_at);
-            violation(TIME, m);
-        }
         // Age bound: how old the value the destination held had grown when
         // this one replaced it.
-        const uint64_t last_taken = last.taken_at + time_offset_;
-        uint64_t age = d.pubs.size() > 1 && last_taken >= latency_from_ ? cycle - last_taken : 0;
+        const uint64_t last_taken = prev.taken_at + time_offset_;
+        uint64_t age = !prev_is_image && last_taken >= latency_from_ ? cycle - last_taken : 0;
         st.latency_max = std::max(st.latency_max, age);
         st.latency_sum += age;
         ++st.latency_n;
@@ -292,7 +311,6 @@ void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
             }
         }
     }
-    d.pubs.push_back(std::move(p));
 }
 
 // Four-slot: the Actual store publishes the value the producer completed in
@@ -310,7 +328,11 @@ void SystemChecker::dest_actual_stored(Instance &in, uint64_t cycle, uint8_t buf
     }
     for (size_t i = d.pubs.size(); i-- > 0;) {
         if (d.pubs[i].buffer != buffer) continue;
-        if (d.pubs[i].pub_cycle == ~0ull) d.pubs[i].pub_cycle = cycle;
+        if (d.pubs[i].pub_cycle != ~0ull) return;
+        d.pubs[i].pub_cycle = cycle;
+        size_t j = i;                       // the publication it replaces
+        while (j > 0 && d.pubs[--j].pub_cycle == ~0ull) {}
+        measure(in, d.pubs[i], d.pubs[j], j == 0, cycle);
         return;
     }
 }

@@ -122,6 +122,7 @@ private:
     void close_window(Instance &in);
     void dest_published(Instance &in, uint64_t cycle, uint8_t buffer);
     void dest_actual_stored(Instance &in, uint64_t cycle, uint8_t buffer);   // four-slot
+    void measure(Instance &in, const DestPub &p, const DestPub &prev, bool prev_is_image, uint64_t cycle);
 
     const Plan &plan_;
     SystemSim &sim_;
