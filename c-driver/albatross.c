@@ -36,11 +36,11 @@
 #ifndef ALB_FOUR_SLOT_IMPORT
 #define ALB_FOUR_SLOT_IMPORT 1
 #endif
-/* Whether this build exports / imports channels of a kind (0 or 1). */
-#define ALB_EXPORTS(kind) ((kind) == ALB_FOUR_SLOT ? ALB_FOUR_SLOT_EXPORT : \
-                           (kind) == ALB_THREE_BUFFER ? ALB_THREE_BUFFER_EXPORT : 0)
-#define ALB_IMPORTS(kind) ((kind) == ALB_FOUR_SLOT ? ALB_FOUR_SLOT_IMPORT : \
-                           (kind) == ALB_THREE_BUFFER ? ALB_THREE_BUFFER_IMPORT : 0)
+/* Whether this build exports / imports channels of a kind (0 or 1); like
+ * the dispatch below, any kind but ALB_FOUR_SLOT counts as three-buffer
+ * (so that the default build folds the test away). */
+#define ALB_EXPORTS(kind) ((kind) == ALB_FOUR_SLOT ? ALB_FOUR_SLOT_EXPORT : ALB_THREE_BUFFER_EXPORT)
+#define ALB_IMPORTS(kind) ((kind) == ALB_FOUR_SLOT ? ALB_FOUR_SLOT_IMPORT : ALB_THREE_BUFFER_IMPORT)
 
 #ifdef __GNUC__
 typedef uint32_t alb_word __attribute__((__may_alias__, __aligned__(4)));
