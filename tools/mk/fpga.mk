@@ -64,8 +64,8 @@ $(FPGA_SCHED)/rom.hex: fpga/duo.toml $(SCHEDULE_SRC)
 # -DALB_FOUR_SLOT_EXPORT=0 -DALB_THREE_BUFFER_IMPORT=0).  A call of a kind
 # compiled out returns ALB_ERR_ARG.  The sensor's program is also built
 # with link-time optimisation and the save/restore millicode: 1,364 B of
-# text and 64 B of bss, 620 B left for the stack (without them 1,716 B of
-# text, 268 B of stack: barely above link.ld's 256 B).
+# text and 64 B of bss, 620 B left for the stack (without them 1,720 B of
+# text, 264 B of stack: barely above link.ld's 256 B).
 # Maps: $(3)/<board>.map.
 FPGA_FW_CFLAGS_sensor   := -flto -msave-restore
 FPGA_FW_DEPS += tools/board_kinds.py
