@@ -21,6 +21,27 @@
 #include "albatross.h"
 #include "alb_port.h"
 
+/* The kinds compiled in, per direction (albatross.h): 1 each unless the
+ * build says otherwise.  A direction compiled out is not linked; its calls
+ * return ALB_ERR_ARG. */
+#ifndef ALB_THREE_BUFFER_EXPORT
+#define ALB_THREE_BUFFER_EXPORT 1
+#endif
+#ifndef ALB_THREE_BUFFER_IMPORT
+#define ALB_THREE_BUFFER_IMPORT 1
+#endif
+#ifndef ALB_FOUR_SLOT_EXPORT
+#define ALB_FOUR_SLOT_EXPORT 1
+#endif
+#ifndef ALB_FOUR_SLOT_IMPORT
+#define ALB_FOUR_SLOT_IMPORT 1
+#endif
+/* Whether this build exports / imports channels of a kind (0 or 1); like
+ * the dispatch below, any kind but ALB_FOUR_SLOT counts as three-buffer
+ * (so that the default build folds the test away). */
+#define ALB_EXPORTS(kind) ((kind) == ALB_FOUR_SLOT ? ALB_FOUR_SLOT_EXPORT : ALB_THREE_BUFFER_EXPORT)
+#define ALB_IMPORTS(kind) ((kind) == ALB_FOUR_SLOT ? ALB_FOUR_SLOT_IMPORT : ALB_THREE_BUFFER_IMPORT)
+
 #ifdef __GNUC__
 typedef uint32_t alb_word __attribute__((__may_alias__, __aligned__(4)));
 #else
@@ -156,6 +177,7 @@ int alb_channel_setup(alb_channel_t *ch, uintptr_t base, uint32_t size)
  * alb_import / alb_export, shared by both kinds, so that the driver holds
  * one inlined copy loop per direction (a board's program RAM is small).
  */
+#if ALB_FOUR_SLOT_EXPORT
 static int fs_producer_attach(alb_channel_t *ch)
 {
     uint32_t word = alb_rd32(ch->base);
@@ -169,7 +191,9 @@ static int fs_producer_attach(alb_channel_t *ch)
     ch->slot[1] = s1;
     return ALB_OK;
 }
+#endif
 
+#if ALB_FOUR_SLOT_IMPORT
 static int fs_consumer_attach(alb_channel_t *ch)
 {
     uint8_t read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
@@ -180,7 +204,9 @@ static int fs_consumer_attach(alb_channel_t *ch)
     ch->last = 0u;                     /* forgotten: the next Import is New */
     return ALB_OK;
 }
+#endif
 
+#if ALB_FOUR_SLOT_EXPORT
 /* Export steps 1 and 2: the buffer to write, *buffer.  ALB_OK, or
  * ALB_ERR_CORRUPT for an invalid ReadLocked (the value is published all the
  * same, in the pair other than Actual's). */
@@ -217,7 +243,9 @@ static void fs_complete(alb_channel_t *ch, uint8_t buffer)
     ch->slot[pair] = (uint8_t)slot;
     alb_fence();                       /* the slot byte before Actual */
 }
+#endif
 
+#if ALB_FOUR_SLOT_IMPORT
 /* Import steps 1 to 4: the buffer to read, *buffer, and the result:
  * ALB_NEW, ALB_OLD, ALB_ERR_CORRUPT (nothing to read) or ALB_ERR_ARG. */
 static int fs_select_read(alb_channel_t *ch, uint8_t *buffer)
@@ -255,6 +283,7 @@ static int fs_select_read(alb_channel_t *ch, uint8_t *buffer)
     ch->last = *buffer;
     return result;
 }
+#endif
 
 /* The four-slot Import and Export: the helpers above, and one copy loop per
  * direction of their own, out of line (fs_copy_in, fs_copy_out) so that the
@@ -265,14 +294,10 @@ static int fs_select_read(alb_channel_t *ch, uint8_t *buffer)
 #else
 #define ALB_NOINLINE static
 #endif
+#if ALB_FOUR_SLOT_IMPORT
 ALB_NOINLINE void fs_copy_in(const alb_channel_t *ch, uint8_t buffer, void *dst)
 {
     read_from(ch, buffer, dst);
-}
-
-ALB_NOINLINE void fs_copy_out(const alb_channel_t *ch, uint8_t buffer, const void *src)
-{
-    write_to(ch, buffer, src);
 }
 
 ALB_NOINLINE int fs_import(alb_channel_t *ch, void *dst)
@@ -285,6 +310,16 @@ ALB_NOINLINE int fs_import(alb_channel_t *ch, void *dst)
     alb_fence();              /* acquire: the control loads before the data */
     fs_copy_in(ch, buffer, dst);                 /* step 5 */
     return result;
+}
+#define ALB_FS_IMPORT(ch, dst) fs_import(ch, dst)
+#else
+#define ALB_FS_IMPORT(ch, dst) ALB_ERR_ARG
+#endif
+
+#if ALB_FOUR_SLOT_EXPORT
+ALB_NOINLINE void fs_copy_out(const alb_channel_t *ch, uint8_t buffer, const void *src)
+{
+    write_to(ch, buffer, src);
 }
 
 ALB_NOINLINE int fs_export(alb_channel_t *ch, const void *src)
@@ -302,6 +337,10 @@ ALB_NOINLINE int fs_export(alb_channel_t *ch, const void *src)
     ch->fs_actual = buffer;
     return result;
 }
+#define ALB_FS_EXPORT(ch, src) fs_export(ch, src)
+#else
+#define ALB_FS_EXPORT(ch, src) ALB_ERR_ARG
+#endif
 
 /* ------------------------------------------------------------------------
  * Set-up, and the three-buffer kind (the four-slot kind branches off at the
@@ -309,11 +348,11 @@ ALB_NOINLINE int fs_export(alb_channel_t *ch, const void *src)
 
 int alb_producer_init(alb_channel_t *ch, const void *initial)
 {
-    if (ch == 0 || ch->size == 0u || initial == 0)
+    if (ch == 0 || ch->size == 0u || initial == 0 || !ALB_EXPORTS(ch->kind))
         return ALB_ERR_ARG;
     write_to(ch, ALB_BUFFER1, initial);
     alb_fence();
-    if (ch->kind == ALB_FOUR_SLOT) {   /* both slot bytes, then Actual */
+    if (ALB_FOUR_SLOT_EXPORT && ch->kind == ALB_FOUR_SLOT) {   /* both slot bytes, then Actual */
         alb_wr8(ch->base + ALB_OFF_SLOT0, (uint8_t)ALB_FS_INITIAL_SLOT);
         alb_wr8(ch->base + ALB_OFF_SLOT1, (uint8_t)ALB_FS_INITIAL_SLOT);
         ch->slot[0] = ch->slot[1] = (uint8_t)ALB_FS_INITIAL_SLOT;
@@ -331,10 +370,12 @@ int alb_producer_attach(alb_channel_t *ch)
 {
     uint8_t actual;
 
-    if (ch == 0 || ch->size == 0u)
+    if (ch == 0 || ch->size == 0u || !ALB_EXPORTS(ch->kind))
         return ALB_ERR_ARG;
+#if ALB_FOUR_SLOT_EXPORT
     if (ch->kind == ALB_FOUR_SLOT)
         return fs_producer_attach(ch);
+#endif
     actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
     if (!ALB_VALID_INDEX(actual))
         return ALB_ERR_CORRUPT;
@@ -344,11 +385,11 @@ int alb_producer_attach(alb_channel_t *ch)
 
 int alb_consumer_init(alb_channel_t *ch)
 {
-    if (ch == 0 || ch->size == 0u)
+    if (ch == 0 || ch->size == 0u || !ALB_IMPORTS(ch->kind))
         return ALB_ERR_ARG;
     alb_wr8(ch->base + ALB_OFF_READLOCKED, ALB_BUFFER1);
     alb_fence();
-    if (ch->kind == ALB_FOUR_SLOT) {
+    if (ALB_FOUR_SLOT_IMPORT && ch->kind == ALB_FOUR_SLOT) {
         ch->fs_read_locked = ALB_BUFFER1;
         ch->last = ALB_BUFFER1;        /* Buffer1's value counts as read */
         return ALB_OK;
@@ -361,10 +402,12 @@ int alb_consumer_attach(alb_channel_t *ch)
 {
     uint8_t read_locked;
 
-    if (ch == 0 || ch->size == 0u)
+    if (ch == 0 || ch->size == 0u || !ALB_IMPORTS(ch->kind))
         return ALB_ERR_ARG;
+#if ALB_FOUR_SLOT_IMPORT
     if (ch->kind == ALB_FOUR_SLOT)
         return fs_consumer_attach(ch);
+#endif
     read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
     if (!ALB_VALID_INDEX(read_locked))
         return ALB_ERR_CORRUPT;
@@ -374,13 +417,14 @@ int alb_consumer_attach(alb_channel_t *ch)
 
 int alb_import(alb_channel_t *ch, void *dst)
 {
+#if ALB_THREE_BUFFER_IMPORT
     int result = ALB_OLD;
     uint8_t actual;
 
     /* A four-slot channel keeps ch->read_locked at 0: it takes the branch
      * for a side never set up, so the three-buffer path pays nothing. */
     if (ch == 0 || dst == 0 || !ALB_VALID_INDEX(ch->read_locked))
-        return ch != 0 && dst != 0 && ch->kind == ALB_FOUR_SLOT ? fs_import(ch, dst) : ALB_ERR_ARG;
+        return ch != 0 && dst != 0 && ch->kind == ALB_FOUR_SLOT ? ALB_FS_IMPORT(ch, dst) : ALB_ERR_ARG;
 
     /* --- Phase 1: select a buffer for read-access */
     actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
@@ -398,16 +442,20 @@ int alb_import(alb_channel_t *ch, void *dst)
     /* --- Phase 2: read-access to the selected buffer */
     read_from(ch, ch->read_locked, dst);
     return result;
+#else
+    return ch != 0 && dst != 0 && ch->kind == ALB_FOUR_SLOT ? ALB_FS_IMPORT(ch, dst) : ALB_ERR_ARG;
+#endif
 }
 
 int alb_export(alb_channel_t *ch, const void *src)
 {
+#if ALB_THREE_BUFFER_EXPORT
     uint8_t buffer, write_buffer = 0u, copy_of_read_locked;
     int result = ALB_OK;
 
     /* A four-slot channel keeps ch->actual at 0 (see alb_import). */
     if (ch == 0 || src == 0 || !ALB_VALID_INDEX(ch->actual))
-        return ch != 0 && src != 0 && ch->kind == ALB_FOUR_SLOT ? fs_export(ch, src) : ALB_ERR_ARG;
+        return ch != 0 && src != 0 && ch->kind == ALB_FOUR_SLOT ? ALB_FS_EXPORT(ch, src) : ALB_ERR_ARG;
 
     /* --- Phase 1: select a buffer for write-access */
     alb_fence();         /* the last store of Actual before loading ReadLocked */
@@ -426,6 +474,9 @@ int alb_export(alb_channel_t *ch, const void *src)
     alb_wr8(ch->base + ALB_OFF_ACTUAL, write_buffer);
     ch->actual = write_buffer;
     return result;
+#else
+    return ch != 0 && src != 0 && ch->kind == ALB_FOUR_SLOT ? ALB_FS_EXPORT(ch, src) : ALB_ERR_ARG;
+#endif
 }
 
 /* ------------------------------------------------------------------------

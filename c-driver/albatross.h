@@ -33,6 +33,18 @@
  * compiler guarantees it).  A four-slot consumer that restarts
  * (alb_consumer_attach) has forgotten the last value it read: its first
  * Import returns ALB_NEW.
+ *
+ * Kinds compiled in.  A board with little program RAM may build the driver
+ * (albatross.c) with only the kinds and directions it uses, each macro 0 or
+ * 1, default 1:
+ *   ALB_THREE_BUFFER_EXPORT  ALB_THREE_BUFFER_IMPORT
+ *   ALB_FOUR_SLOT_EXPORT     ALB_FOUR_SLOT_IMPORT
+ * A direction compiled out is not linked, and every call for it returns
+ * ALB_ERR_ARG, never a wrong result: alb_producer_init / _attach and
+ * alb_export for an Export, alb_consumer_init / _attach, alb_import and
+ * alb_read for an Import (no RAM access).  alb_channel_setup_kind accepts
+ * both kinds whatever the build.  The FPGA sensor (tools/mk/fpga.mk) is
+ * built with -DALB_FOUR_SLOT_EXPORT=0 -DALB_THREE_BUFFER_IMPORT=0.
  */
 #ifndef ALBATROSS_H
 #define ALBATROSS_H

@@ -33,7 +33,7 @@ BENCHES += driver-size
 
 .PHONY: test-driver-unit test-driver-unit-negative test-driver-rv32i driver-size
 
-# Host unit tests: the driver with tb/unit/port/alb_port_impl.h.
+# Host unit tests: the driver with tb/unit/port/alb_port_impl.h (all kinds).
 $(DRV_UNIT)/test_driver: $(DRV_UNIT_DEPS)
 	@mkdir -p $(@D)
 	$(DRV_HOST_CC) $(DRV_CFLAGS) -O2 -Itb/unit/port -Ic-driver -o $@ \
@@ -45,8 +45,19 @@ $(DRV_UNIT)/test_driver_broken%: $(DRV_UNIT_DEPS)
 	$(DRV_HOST_CC) $(DRV_CFLAGS) -O2 -DUNIT_BROKEN_PORT=$* -Itb/unit/port -Ic-driver \
 	    -o $@ $(DRV_UNIT_SRC) $(DRV_SRC)
 
-test-driver-unit: $(DRV_UNIT)/test_driver
-	@tools/run_test.sh driver-unit $<
+# The driver with kinds compiled out (albatross.h, "Kinds compiled in"):
+# tb/unit/test_kinds.c, once per flag set; together the two sets compile
+# each kind's each direction out once (the first is the FPGA sensor's).
+DRV_KINDS_1   := -DALB_FOUR_SLOT_EXPORT=0 -DALB_THREE_BUFFER_IMPORT=0
+DRV_KINDS_2   := -DALB_THREE_BUFFER_EXPORT=0 -DALB_FOUR_SLOT_IMPORT=0
+DRV_KINDS_SRC := tb/unit/test_kinds.c tb/unit/unit_helpers.c
+$(DRV_UNIT)/test_kinds_%: $(DRV_UNIT_DEPS) tb/unit/test_kinds.c
+	@mkdir -p $(@D)
+	$(DRV_HOST_CC) $(DRV_CFLAGS) -O2 $(DRV_KINDS_$*) -Itb/unit/port -Ic-driver -o $@ \
+	    $(DRV_KINDS_SRC) $(DRV_SRC)
+
+test-driver-unit: $(DRV_UNIT)/test_driver $(DRV_UNIT)/test_kinds_1 $(DRV_UNIT)/test_kinds_2
+	@tools/run_test.sh driver-unit bash -c 'set -e; for t in $^; do $$t; done'
 
 test-driver-unit-negative: $(foreach N,$(DRV_BROKEN),$(DRV_UNIT)/test_driver_broken$(N))
 	@tools/run_test.sh driver-unit-negative tb/unit/expect_fail.sh $^
