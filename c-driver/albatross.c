@@ -21,21 +21,6 @@
 #include "albatross.h"
 #include "alb_port.h"
 
-/* The kinds compiled in, per direction (albatross.h): 1 each unless the
- * build says otherwise.  A direction compiled out is not linked; its calls
- * return ALB_ERR_ARG. */
-#ifndef ALB_THREE_BUFFER_EXPORT
-#define ALB_THREE_BUFFER_EXPORT 1
-#endif
-#ifndef ALB_THREE_BUFFER_IMPORT
-#define ALB_THREE_BUFFER_IMPORT 1
-#endif
-#ifndef ALB_FOUR_SLOT_EXPORT
-#define ALB_FOUR_SLOT_EXPORT 1
-#endif
-#ifndef ALB_FOUR_SLOT_IMPORT
-#define ALB_FOUR_SLOT_IMPORT 1
-#endif
 /* Whether this build exports / imports channels of a kind (0 or 1); like
  * the dispatch below, any kind but ALB_FOUR_SLOT counts as three-buffer
  * (so that the default build folds the test away). */

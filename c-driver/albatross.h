@@ -53,6 +53,21 @@
 #include <stdint.h>
 #include "albatross_layout.h"
 
+/* The kinds compiled in, per direction (see above): 1 each unless the build
+ * says otherwise. */
+#ifndef ALB_THREE_BUFFER_EXPORT
+#define ALB_THREE_BUFFER_EXPORT 1
+#endif
+#ifndef ALB_THREE_BUFFER_IMPORT
+#define ALB_THREE_BUFFER_IMPORT 1
+#endif
+#ifndef ALB_FOUR_SLOT_EXPORT
+#define ALB_FOUR_SLOT_EXPORT 1
+#endif
+#ifndef ALB_FOUR_SLOT_IMPORT
+#define ALB_FOUR_SLOT_IMPORT 1
+#endif
+
 /* Results.  alb_import: ALB_OLD or ALB_NEW (seed figure 3: Old, New). */
 enum {
     ALB_OK          = 0,   /* alb_export and set-up: done                      */

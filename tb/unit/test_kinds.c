@@ -9,19 +9,7 @@
  */
 #include "unit_test.h"
 
-/* The driver's defaults (albatross.c). */
-#ifndef ALB_THREE_BUFFER_EXPORT
-#define ALB_THREE_BUFFER_EXPORT 1
-#endif
-#ifndef ALB_THREE_BUFFER_IMPORT
-#define ALB_THREE_BUFFER_IMPORT 1
-#endif
-#ifndef ALB_FOUR_SLOT_EXPORT
-#define ALB_FOUR_SLOT_EXPORT 1
-#endif
-#ifndef ALB_FOUR_SLOT_IMPORT
-#define ALB_FOUR_SLOT_IMPORT 1
-#endif
+/* The kinds compiled in: albatross.h gives the defaults. */
 
 #define SIZE 8u   /* two words: a value and taken_at (alb_read) */
 
