@@ -31,3 +31,10 @@ $(BUILD)/schedule/%/rom.hex: sim/%.toml $(SCHEDULE_SRC)
 	$(SCHEDULE) $< --out $(@D)
 $(BUILD)/schedule/%/rom.hex: compiler/examples/%.toml $(SCHEDULE_SRC)
 	$(SCHEDULE) $< --out $(@D)
+
+# The compiler's predictions for the robot under several fault hypotheses
+# (issue 15 section 2; 5, 20, 30, 50 % with and without bursts of mean 2):
+# build/reports/fault_plan.json, the table of docs/compiler.md "Fault hypothesis".
+BENCHES += bench-fault-plan
+bench-fault-plan: $(SCHEDULE_SRC) tools/fault_plan_bench.py ## the robot's planned delivery and age bounds at 5/20/30/50 % faults
+	$(PYTHON) tools/fault_plan_bench.py sim/mobot3.toml $(REPORTS)/fault_plan.json
