@@ -333,6 +333,11 @@ class PlanForHypothesis(unittest.TestCase):
                                      + bus["access_cycles"] * c["accesses"] + R * cost + bus["guard_cycles"])
                     for cons in c["consumers"]:
                         x = cons["faults"]
+                        with open(os.path.join(out, cons["board"] + ".h")) as f:
+                            hdr = f.read()
+                        what = "LATENCY" if c["kind"] == "copy" else "AGE"
+                        self.assertIn(f"#define ALB_{c['name'].upper()}_{what}_AT_TARGET_CLOCKS  "
+                                      f"{x['age_bound']['at_target']['clocks']}u", hdr, "the board header's bound")
                         self.assertLessEqual(x["period_at_target"]["clocks"], c["max_period"]["clocks"])
                         self.assertGreaterEqual(x["age_bound"]["at_target"]["clocks"],
                                                 x["age_bound"]["with_retries"]["clocks"])
