@@ -16,7 +16,8 @@ void channel_value(int channel_id, uint64_t seq, uint8_t *out, uint32_t size)
 const char *SystemChecker::kind_name(int k)
 {
     static const char *n[KINDS] = {"mutual_exclusion", "definite_results", "actuality", "duplicate_new",
-                                   "latency_bound", "ownership", "in_channel", "driver_error", "global_time"};
+                                   "latency_bound", "ownership", "in_channel", "driver_error", "global_time",
+                                   "taken_at"};
     return n[k];
 }
 
@@ -145,6 +146,14 @@ void SystemChecker::on_access(int board, const Access &a)
             if (in->dest < 0) src_[in->chan].pending_publish = a.serve_cycle;
             else if (in->four_slot) dest_actual_stored(*in, a.serve_cycle, actual);
             else dest_published(*in, a.serve_cycle, actual);
+            if (in->dest >= 0) {
+                // Performed: until the controller sees its ack (on_bus, in
+                // this same clock) the store counts as landed, unanswered.
+                DestState &d = dst_[in->chan][in->dest];
+                if (d.unanswered) ++stats[in->chan].dests[in->dest].landed_unanswered;
+                d.unanswered = true;
+                d.unanswered_cycle = a.serve_cycle;
+            }
         }
         // Four-slot: the Slot store completes buf(pair, slot).
         if (a.req.we && control && in->four_slot && in->dest >= 0 && (a.req.sel & 0xCu)) {
@@ -170,6 +179,59 @@ void SystemChecker::on_access(int board, const Access &a)
             close_window(*in);
         }
     }
+}
+
+int64_t SystemChecker::source_seq(int chan, uint8_t b)
+{
+    const PlanChannel &c = plan_.channels[chan];
+    const SourceState &s = src_[chan];
+    const uint32_t at = c.src_base + ALB_OFF_BUFFER(static_cast<uint32_t>(b), c.size);
+    std::vector<uint8_t> bytes(c.size), v(c.size);
+    for (uint32_t i = 0; i < c.size; ++i) bytes[i] = sim_.ref[c.src_board].byte(at + i);
+    // Newest first; one past the last exported(): an Export whose Actual
+    // store is done but whose call has not returned yet.
+    const uint64_t newest = s.publish_cycle.size(), lowest = newest > 4096 ? newest - 4096 : 0;
+    for (uint64_t q = newest + 1; q-- > lowest;) {
+        channel_value(c.id, q, v.data(), c.size);
+        if (v == bytes) return static_cast<int64_t>(q);
+    }
+    return -1;
+}
+
+// The controller's own view: its acked accesses to a source's control word
+// find its takes; an ack of a destination's Actual store shows it answered.
+void SystemChecker::on_bus(const SystemSim::BusEvent &e)
+{
+    Instance *in = find(e.board, e.addr);
+    if (!in || e.addr != in->base) return;
+    const PlanChannel &c = plan_.channels[in->chan];
+    if (in->dest >= 0) {
+        if (e.ok && e.we && (e.sel & (1u << ALB_OFF_ACTUAL))) dst_[in->chan][in->dest].unanswered = false;
+        return;
+    }
+    if (!c.copy() || !e.ok) return;
+    SourceState &s = src_[in->chan];
+    if (e.we && (e.sel & (1u << ALB_OFF_READLOCKED))) {
+        s.rl_stored = static_cast<int>((e.wdata >> (8 * ALB_OFF_READLOCKED)) & 0xFFu);
+        return;
+    }
+    if (e.we || !(e.sel & (1u << ALB_OFF_ACTUAL))) return;
+    const uint8_t a = static_cast<uint8_t>(e.rdata >> (8 * ALB_OFF_ACTUAL));
+    uint8_t b = 0;
+    if (s.rl_stored >= 0) {
+        if (!in->four_slot && a == s.rl_stored && ALB_VALID_INDEX(a)) b = a;
+        else if (in->four_slot && ALB_FS_VALID_INDEX(a)) {
+            const unsigned pair = ALB_FS_PAIR(a);
+            b = static_cast<uint8_t>(ALB_FS_BUFFER(pair, (e.rdata >> (8 * ALB_OFF_SLOT(pair))) & 1u));
+        }
+    }
+    s.rl_stored = -1;
+    if (!b) return;
+    const int64_t q = source_seq(in->chan, b);
+    s.taken = true;
+    s.take_seq = q < 0 ? ~0ull : static_cast<uint64_t>(q);
+    s.take_time = e.time;
+    s.take_cycle = e.end;
 }
 
 void SystemChecker::exported(int chan, uint64_t seq)
@@ -222,7 +284,14 @@ void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
             violation(DEFINITE, m);
             return;
         }
-        if (p.seq == last.seq && d.pubs.size() > 1) {
+        if (p.seq == last.seq && d.pubs.size() > 1 && d.unanswered) {
+            std::snprintf(m, sizeof m, "board %d, %s: value %llu had landed (its Actual store at cycle %llu was performed, "
+                          "answered with err or not at all) and the controller published it again at cycle %llu: "
+                          "a landed store must count as delivered, its consumer would see it New twice",
+                          in.board, c.name.c_str(), static_cast<unsigned long long>(p.seq),
+                          static_cast<unsigned long long>(d.unanswered_cycle), static_cast<unsigned long long>(cycle));
+            violation(DUPLICATE, m);
+        } else if (p.seq == last.seq && d.pubs.size() > 1) {
             std::snprintf(m, sizeof m, "board %d, %s: the controller published value %llu again at cycle %llu: its consumer would see it New twice",
                           in.board, c.name.c_str(), static_cast<unsigned long long>(p.seq), static_cast<unsigned long long>(cycle));
             violation(DUPLICATE, m);
@@ -238,6 +307,21 @@ void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
                           static_cast<unsigned long long>(s.publish_cycle[p.seq]), static_cast<unsigned long long>(taken_cycle),
                           static_cast<unsigned long long>(cycle));
             violation(DEFINITE, m);
+        }
+        // Exactness: the value of the source's last take, stamped with the
+        // time of that take's final Actual load.
+        if (!s.taken || p.seq != s.take_seq || p.taken_at != s.take_time) {
+            if (!s.taken)
+                std::snprintf(m, sizeof m, "board %d, %s: value %llu published at cycle %llu, but the controller never "
+                              "took a value from its source", in.board, c.name.c_str(),
+                              static_cast<unsigned long long>(p.seq), static_cast<unsigned long long>(cycle));
+            else
+                std::snprintf(m, sizeof m, "board %d, %s: value %llu published at cycle %llu with taken_at %u: expected "
+                              "value %llu with taken_at %u, the time of the final source Actual load (acked at cycle %llu)",
+                              in.board, c.name.c_str(), static_cast<unsigned long long>(p.seq),
+                              static_cast<unsigned long long>(cycle), p.taken_at, static_cast<unsigned long long>(s.take_seq),
+                              s.take_time, static_cast<unsigned long long>(s.take_cycle));
+            violation(TAKEN_AT, m);
         }
         st.max_taken_minus_publish = std::max(st.max_taken_minus_publish, taken_cycle - s.publish_cycle[p.seq]);
     } else {

@@ -68,9 +68,15 @@ SYS_NORED   := $(BUILD)/schedule/mobot3-noredundancy
 sys_run      = tools/run_test.sh system-$(1) $(SYS_BIN) --label system-$(1) --seed $(SEED) \
                --cycles $(SYS_CYCLES) --report $(REPORTS)/system_$(1).json
 
-TESTS += system-rigid system-possync system-faults-5 system-faults-5-noredundancy \
-         system-burst system-burst-noredundancy system-dead-board system-corrupt-rom \
-         system-corrupt-control
+# Faults (tb/common/fault_model.h): --fault-rate R is the probability that
+# a controller access (a new request to a live board) fails, drawn once per
+# access; --burst L the mean run of faulted accesses (default independent).
+# Every run prints and reports the nominal and the measured rate and fails if
+# they differ by more than 6 sigma (corrected for the bursts' correlation).
+TESTS += system-rigid system-possync system-faults-5 system-faults-5-noredundancy system-faults-15 \
+         system-faults-20-burst-60 system-faults-20-burst-60-noredundancy system-faults-30-expect-fail \
+         system-faults-50-expect-fail system-faults-negative-per-clock system-landed-stores \
+         system-dead-board system-corrupt-rom system-corrupt-control
 
 test-system-rigid: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,rigid) --plan $(SYS_RIGID)
@@ -80,10 +86,34 @@ test-system-faults-5: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,faults-5) --plan $(SYS_RIGID) --fault-rate 0.05
 test-system-faults-5-noredundancy: $(SYS_BIN) $(SYS_NORED)/tb_plan.txt
 	@$(call sys_run,faults-5-noredundancy) --plan $(SYS_NORED) --fault-rate 0.05
-test-system-burst: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
-	@$(call sys_run,burst) --plan $(SYS_RIGID) --fault-rate 0.2 --burst 60
-test-system-burst-noredundancy: $(SYS_BIN) $(SYS_NORED)/tb_plan.txt
-	@$(call sys_run,burst-noredundancy) --plan $(SYS_NORED) --fault-rate 0.2 --burst 60
+test-system-faults-15: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,faults-15) --plan $(SYS_RIGID) --fault-rate 0.15
+test-system-faults-20-burst-60: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,faults-20-burst-60) --plan $(SYS_RIGID) --fault-rate 0.2 --burst 60
+test-system-faults-20-burst-60-noredundancy: $(SYS_BIN) $(SYS_NORED)/tb_plan.txt
+	@$(call sys_run,faults-20-burst-60-noredundancy) --plan $(SYS_NORED) --fault-rate 0.2 --burst 60
+# A known limit, kept visible (issue 15): at 30 % and 50 % independent faults
+# per access the unchanged controller never delivers RadarMap and/or Status to
+# board 2 (a destination is dropped for the rest of its slot after two failed
+# accesses).  These pass while exactly that happens -- no checker violation,
+# the rate within tolerance, no other failure -- and fail once the drop rule
+# delivers them: then they become ordinary tests.
+SYS_XFAIL := --expect-failure "no value was ever published" --expect-failure "STATUS: "
+test-system-faults-30-expect-fail: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,faults-30-expect-fail) --plan $(SYS_RIGID) --fault-rate 0.3 $(SYS_XFAIL)
+test-system-faults-50-expect-fail: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,faults-50-expect-fail) --plan $(SYS_RIGID) --fault-rate 0.5 $(SYS_XFAIL)
+# Negative of the rate check: the old injector's driving (the Gilbert chain
+# advanced every clock, not every access) at a nominal 20 % in bursts of 10
+# faults about 9 % of the accesses; only the rate check may fail.
+test-system-faults-negative-per-clock: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,faults-negative-per-clock) --plan $(SYS_RIGID) --fault-rate 0.2 --burst 10 \
+	    --fault-clocking clock --expect-failure "fault rate:"
+# Every store of a destination's Actual is performed and its answer lost
+# (kind 3; the retry too): the controller must read Actual back, count the
+# value delivered and never publish it again (negative: forget_landed below).
+test-system-landed-stores: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,landed-stores) --plan $(SYS_RIGID) --land-actual 1
 test-system-dead-board: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,dead-board) --plan $(SYS_RIGID) --dead-board 0 --dead-at 100000
 test-system-corrupt-rom: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
@@ -106,7 +136,9 @@ SYS_NEGATIVE := \
   never_delivered:mutant-never_delivered:duplicate_new \
   bad_index:mutant-bad_index:driver_error \
   wrong_lane:mutant-wrong_lane:ownership \
-  time_wraps:mutant-time_wraps:global_time
+  time_wraps:mutant-time_wraps:global_time \
+  taken_at_end:mutant-taken_at_end:taken_at:--fault-rate,0.15 \
+  forget_landed:mutant-forget_landed:duplicate_new:--land-actual,1
 define sys_negative
 TESTS += system-negative-$(call neg_field,$(1),1)
 test-system-negative-$(call neg_field,$(1),1): $(SYS_DIR)/$(call neg_field,$(1),2)/tb_system $(SYS_RIGID)/tb_plan.txt
