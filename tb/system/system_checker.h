@@ -93,7 +93,8 @@ public:
         uint64_t over_retry_bound = 0;                      // beyond the with-retries bound too
         uint64_t max_age_seen = 0, last_age_seen = 0;       // by the consumer, via taken_at
         uint64_t max_taken_minus_publish = 0;               // time/position correlation
-        uint64_t landed_unanswered = 0;                     // Actual stores performed, answer lost
+        uint64_t landed_unanswered = 0;                     // Actual stores performed, answer lost (err or
+                                                            // none), seen at the next store
     };
     struct ChannelStats {
         uint64_t exports = 0;

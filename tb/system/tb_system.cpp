@@ -288,7 +288,7 @@ int main(int argc, char **argv)
                           "\"imports\": %llu, \"imports_new\": %llu, \"latency_max\": %llu, \"latency_mean\": %.1f, "
                           "\"latency_bound\": %llu, \"max_over_bound\": %.4f, \"latency_samples\": %llu, \"over_bound\": %llu, "
                           "\"delivered_within_bound\": %.5f, \"last_age_seen\": %llu, \"max_age_seen\": %llu, "
-                          "\"max_taken_minus_published\": %llu, \"period_bound\": %llu}",
+                          "\"max_taken_minus_published\": %llu, \"period_bound\": %llu, \"landed_unanswered\": %llu}",
                           chans.size() > 1 ? ", " : "", c.name.c_str(), c.kind.c_str(), c.dests[d].board,
                           static_cast<unsigned long long>(cs.exports), static_cast<unsigned long long>(ds.publications),
                           static_cast<unsigned long long>(ds.imports), static_cast<unsigned long long>(ds.imports_new),
@@ -298,7 +298,8 @@ int main(int argc, char **argv)
                           static_cast<unsigned long long>(ds.latency_over),
                           ds.latency_n ? 1.0 - static_cast<double>(ds.latency_over) / ds.latency_n : 0.0,
                           static_cast<unsigned long long>(ds.last_age_seen), static_cast<unsigned long long>(ds.max_age_seen),
-                          static_cast<unsigned long long>(ds.max_taken_minus_publish), static_cast<unsigned long long>(c.period));
+                          static_cast<unsigned long long>(ds.max_taken_minus_publish), static_cast<unsigned long long>(c.period),
+                          static_cast<unsigned long long>(ds.landed_unanswered));
             chans += b;
             // A dead board: consumers of its channels must see the age grow;
             // channels that do not involve it keep their fault-free bound, live
