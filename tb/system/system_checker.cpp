@@ -42,6 +42,7 @@ SystemChecker::SystemChecker(const Plan &plan, SystemSim &sim, uint64_t time_off
             in.four_slot = c.four_slot;
             inst_.push_back(in);
             src_[i].publish_cycle.push_back(0);   // seq 0: the RAM image
+            src_[i].complete_cycle.push_back(0);
         }
         for (size_t d = 0; d < c.dests.size(); ++d) {
             Instance in;
@@ -143,7 +144,12 @@ void SystemChecker::on_access(int board, const Access &a)
         if (a.req.we && buffer) in->writes[buffer].push_back(a.serve_cycle);
         if (a.req.we && control && (a.req.sel & 1u)) {
             uint8_t actual = static_cast<uint8_t>(a.req.wdata);
-            if (in->dest < 0) src_[in->chan].pending_publish = a.serve_cycle;
+            // A four-slot source's value is complete, and may be taken, from
+            // its Slot store (below), before this store publishes it.
+            if (in->dest < 0) {
+                src_[in->chan].pending_publish = a.serve_cycle;
+                if (!in->four_slot) src_[in->chan].pending_complete = a.serve_cycle;
+            }
             else if (in->four_slot) dest_actual_stored(*in, a.serve_cycle, actual);
             else dest_published(*in, a.serve_cycle, actual);
             if (in->dest >= 0) {
@@ -155,6 +161,8 @@ void SystemChecker::on_access(int board, const Access &a)
                 d.unanswered_cycle = a.serve_cycle;
             }
         }
+        if (a.req.we && control && in->four_slot && in->dest < 0 && (a.req.sel & 0xCu))
+            src_[in->chan].pending_complete = a.serve_cycle;
         // Four-slot: the Slot store completes buf(pair, slot).
         if (a.req.we && control && in->four_slot && in->dest >= 0 && (a.req.sel & 0xCu)) {
             const unsigned pair = (a.req.sel & 0x8u) ? 1u : 0u;
@@ -220,8 +228,10 @@ void SystemChecker::on_bus(const SystemSim::BusEvent &e)
     uint8_t b = 0;
     if (s.rl_stored >= 0) {
         if (!in->four_slot && a == s.rl_stored && ALB_VALID_INDEX(a)) b = a;
-        else if (in->four_slot && ALB_FS_VALID_INDEX(a)) {
-            const unsigned pair = ALB_FS_PAIR(a);
+        else if (in->four_slot && ALB_FS_VALID_INDEX(static_cast<unsigned>(s.rl_stored))) {
+            // b = 1 + 2p + Slot_p of this load, p the pair of the Actual the
+            // Import stored as ReadLocked (not of this load's Actual).
+            const unsigned pair = ALB_FS_PAIR(s.rl_stored);
             b = static_cast<uint8_t>(ALB_FS_BUFFER(pair, (e.rdata >> (8 * ALB_OFF_SLOT(pair))) & 1u));
         }
     }
@@ -239,6 +249,7 @@ void SystemChecker::exported(int chan, uint64_t seq)
     SourceState &s = src_[chan];
     if (seq != s.publish_cycle.size()) return;   // the harness numbers exports 1, 2, ...
     s.publish_cycle.push_back(s.pending_publish);
+    s.complete_cycle.push_back(s.pending_complete);
     ++stats[chan].exports;
 }
 
@@ -300,11 +311,11 @@ void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
                           in.board, c.name.c_str(), static_cast<unsigned long long>(p.seq), static_cast<unsigned long long>(last.seq));
             violation(ACTUALITY, m);
         }
-        if (taken_cycle < s.publish_cycle[p.seq] || taken_cycle > cycle) {
-            std::snprintf(m, sizeof m, "board %d, %s: value %llu published by its producer at cycle %llu carries taken_at = cycle %llu, "
+        if (taken_cycle < s.complete_cycle[p.seq] || taken_cycle > cycle) {
+            std::snprintf(m, sizeof m, "board %d, %s: value %llu completed by its producer at cycle %llu carries taken_at = cycle %llu, "
                           "published at the destination at cycle %llu: expected producer <= taken_at <= destination",
                           in.board, c.name.c_str(), static_cast<unsigned long long>(p.seq),
-                          static_cast<unsigned long long>(s.publish_cycle[p.seq]), static_cast<unsigned long long>(taken_cycle),
+                          static_cast<unsigned long long>(s.complete_cycle[p.seq]), static_cast<unsigned long long>(taken_cycle),
                           static_cast<unsigned long long>(cycle));
             violation(DEFINITE, m);
         }
@@ -323,7 +334,8 @@ void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
                               s.take_time, static_cast<unsigned long long>(s.take_cycle));
             violation(TAKEN_AT, m);
         }
-        st.max_taken_minus_publish = std::max(st.max_taken_minus_publish, taken_cycle - s.publish_cycle[p.seq]);
+        if (taken_cycle >= s.complete_cycle[p.seq])
+            st.max_taken_minus_publish = std::max(st.max_taken_minus_publish, taken_cycle - s.complete_cycle[p.seq]);
     } else {
         // TIME and STATUS: the controller's own values, taken at the slot.
         p.seq = last.seq + 1;

@@ -135,6 +135,8 @@ private:
     struct SourceState {
         std::vector<uint64_t> publish_cycle;   // by seq (0: the image)
         uint64_t pending_publish = 0;          // edge of the CPU's last Actual store
+        std::vector<uint64_t> complete_cycle;  // by seq: complete, may be taken from here (the
+        uint64_t pending_complete = 0;         // Actual store; four-slot: the Slot store before it)
         int rl_stored = -1;                    // acked ReadLocked store since the last Actual load
         bool taken = false;                    // a take has been seen:
         uint64_t take_seq = 0, take_cycle = 0; // the value it read, its final Actual load's ack

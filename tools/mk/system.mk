@@ -122,6 +122,20 @@ test-system-corrupt-rom: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 test-system-corrupt-control: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,corrupt-control) --plan $(SYS_RIGID) --corrupt-actual 2:100000
 
+# RadarMap and Position of the four-slot kind (sim/mobot3.toml with
+# four_slot = true added to both): the checkers' four-slot source paths (a
+# value complete from its producer's Slot store; a take's buffer from the Slot
+# byte of the pair the controller stored as ReadLocked), under 5 % faults.
+SYS_FS      := $(BUILD)/schedule/mobot3_fscopy
+$(SYS_FS)/rom.hex: sim/mobot3.toml $(SCHEDULE_SRC)
+	@mkdir -p $(@D)
+	sed -e '/^name *= *"Position"/a four_slot     = true' -e '/^name *= *"RadarMap"/a four_slot     = true' \
+	    $< > $(@D)/mobot3_fscopy.toml
+	$(SCHEDULE) $(@D)/mobot3_fscopy.toml --out $(@D) -q
+TESTS += system-four-slot-copy
+test-system-four-slot-copy: $(SYS_BIN) $(SYS_FS)/tb_plan.txt
+	@$(call sys_run,four-slot-copy) --plan $(SYS_FS) --fault-rate 0.05
+
 # Figures: bus cycles per transfer against the protocol's minimum (4, 16, 64,
 # 256-byte channels), and latency against the compiler's bound.
 BENCHES += bench-system
@@ -147,6 +161,15 @@ test-system-negative-$(call neg_field,$(1),1): $(SYS_DIR)/$(call neg_field,$(1),
 	    --expect-caught-by $(call neg_field,$(1),3) $(subst $(comma), ,$(call neg_field,$(1),4))
 endef
 $(foreach n,$(SYS_NEGATIVE),$(eval $(call sys_negative,$(n))))
+
+# The exactness check on four-slot sources too: a controller that writes the
+# taken_at word with the time of that store (mutant taken_at_store) on the
+# plan with RadarMap and Position four-slot, fault-free.  TIME's taken_at goes
+# wrong as well, so global_time fires beside taken_at.
+TESTS += system-negative-taken_at_store
+test-system-negative-taken_at_store: $(SYS_DIR)/mutant-taken_at_store/tb_system $(SYS_FS)/tb_plan.txt
+	@tools/run_test.sh system-negative-taken_at_store $< --plan $(SYS_FS) --seed $(SEED) --cycles 300000 \
+	    --label system-negative-taken_at_store --expect-caught-by taken_at
 
 # The wall-clock hand-off watchdog: a controller that zeroes ReadLocked makes a
 # consumer's driver loop without a RAM access; the run must end with the
