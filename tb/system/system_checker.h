@@ -17,7 +17,8 @@
 // End to end, for every channel:
 //   definite results  every value the controller publishes is one complete
 //                     value its producer exported (or, for TIME, the time),
-//                     taken after the producer published it; every value a
+//                     taken after the producer published it (a four-slot
+//                     source: completed it, at its Slot store); every value a
 //                     consumer imports is one complete value the controller
 //                     published there;
 //   taken_at          exactness: every value the controller publishes is the
