@@ -508,8 +508,12 @@ def sim_excerpt():
              f"{r['label']}: {r['cycles']} cycles ({1e3 * r['cycles'] / hz:.2f} ms at {hz / 1e6:.0f} MHz), "
              f"controller time {r['cycles']}, bus busy {100 * r['bus_busy_fraction']:.1f} %, {r['requests']} requests, "
              f"{r['faults_injected']} faults injected, STATUS: {r['status_retries']} retries, "
-             f"{r['status_abandoned']} abandoned",
-             "  %-11s %-11s %7s %7s %9s %9s %9s %9s %6s %11s" % ("channel", "consumer", "New", "Old", "age min",
+             f"{r['status_abandoned']} abandoned"]
+    if "fault_rate_measured" in r:
+        lines.append(f"  fault rate per access: nominal {r['fault_rate']:.4f}, measured {r['fault_rate_measured']:.4f} "
+                     f"(mean burst {r['fault_mean_burst']:.3g} accesses; tolerance +-{r['fault_rate_tolerance']:.4f}, "
+                     f"6 sigma){'' if r['fault_rate_ok'] else ': OUT OF TOLERANCE'}")
+    lines += ["  %-11s %-11s %7s %7s %9s %9s %9s %9s %6s %11s" % ("channel", "consumer", "New", "Old", "age min",
                                                              "age mean", "age max", "bound", "ratio", "cyc/Import")]
     for s in r["series"][:4]:
         a = s["age"]
