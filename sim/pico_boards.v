@@ -12,8 +12,8 @@
 // tb/common/bus_fault_injector.v; 0 forwards every request unchanged).  The
 // harness sees each core's board events (ev_*: a store to EVENT), each core's
 // completed DPRAM accesses (dp_*: port A, one clock per acked access), and
-// the controller side of the injector (m_*), where a new request is m_stb_o
-// in a clock after one without m_stb_o or with an answer.  Everything runs on
+// the controller side of the injector (m_*), and fi_new_o, high in the first
+// clock of each new controller request (the clock fi_kind_i is sampled).  Everything runs on
 // clk_i.  Plusargs (simulation only): +fwC=FILE the program of core C
 // (board_memmap), +ramC=FILE the start image of board C's DPRAM (the
 // compiler's <board>_ram.hex; read here), +rom=FILE the schedule ROM (read by
@@ -41,6 +41,8 @@ module pico_boards #(
     input  wire [NB-1:0]     stall_i,    // core c: hold its local-RAM access this cycle
     input  wire [1:0]        fi_kind_i,  // fault kind for the controller's next new request
     input  wire [NB-1:0]     fi_dead_i,  // board links that are down
+    output wire              fi_new_o,   // a new controller request samples fi_kind_i in this clock
+    output wire              fi_dead_o,  // ... and goes to a dead board
     output wire [NB-1:0]     done_o,     // core c stored to TOHOST
     output wire [NB*32-1:0]  code_o,     // the last value it stored (exit code)
     output wire [NB*128-1:0] stat_o,     // core c: STAT k at [c*128 + k*32 +: 32]
@@ -107,6 +109,7 @@ module pico_boards #(
 
     bus_fault_injector #(.NB(NB), .ADDR_WIDTH(ADDR_WIDTH)) u_faults (
         .clk_i(clk_i), .rst_i(rst_i), .fi_kind_i(fi_kind_i), .fi_dead_i(fi_dead_i),
+        .fi_new_o(fi_new_o), .fi_dead_o(fi_dead_o),
         .c_cyc_i(m_cyc_o), .c_stb_i(m_stb_o), .c_we_i(m_we), .c_adr_i(m_adr), .c_sel_i(m_sel),
         .c_dat_i(m_wdat), .c_dat_o(m_rdat), .c_ack_o(m_ack_o), .c_err_o(m_err_o),
         .b_cyc_o(i_cyc), .b_stb_o(i_stb), .b_we_o(i_we), .b_adr_o(i_adr), .b_sel_o(i_sel),

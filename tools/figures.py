@@ -200,8 +200,9 @@ def system_latency():
 
 
 def system_delivery():
-    runs = [("system_faults-5.json", "system_faults-5-noredundancy.json", "5 % faults"),
-            ("system_burst.json", "system_burst-noredundancy.json", "20 % faults, bursts of 60 clocks")]
+    runs = [("system_faults-5.json", "system_faults-5-noredundancy.json", "5 % of accesses faulted"),
+            ("system_faults-20-burst-60.json", "system_faults-20-burst-60-noredundancy.json",
+             "20 % of accesses, bursts of 60 accesses")]
     if not any(load(red) and load(nored) for red, nored, _ in runs):
         missing("system_faults-5*.json", "make test")
     rows = []
@@ -222,6 +223,23 @@ def system_delivery():
         missing("system_faults-5*.json", "make test")
     return table(["faults", "channel", "to board", "redundant: within bound", "worst (clk)", "worst / bound",
                   "one slot a cycle: within bound", "worst (clk)", "worst / bound"], rows)
+
+
+def system_fault_rates():
+    """Nominal against measured fault rate per access, every system run."""
+    rows = []
+    for path in sorted(glob.glob(os.path.join(REPORTS, "system_*.json"))):
+        r = load(os.path.basename(path))
+        if not r or "fault_rate_measured" not in r or not r.get("fault_rate"):
+            continue
+        burst = f"{r['fault_mean_burst']:.3g}" + (" (independent)" if not r.get("burst") else "")
+        rows.append([f"`{r['label']}`", r.get("fault_clocking", "access"), f"{r['fault_rate']:.3f}", burst,
+                     n(r["fault_accesses"]), n(r["faults_injected"]), f"{r['fault_rate_measured']:.4f}",
+                     f"± {r['fault_rate_tolerance']:.4f}", "yes" if r["fault_rate_ok"] else "**no**"])
+    if not rows:
+        missing("system_faults-5.json", "make test")
+    return table(["run", "drawn per", "nominal rate", "mean burst (accesses)", "accesses", "faulted",
+                  "measured rate", "tolerance (6 σ)", "within"], rows)
 
 
 def system_bus():
@@ -424,7 +442,7 @@ def formal_rtl():
     return table(["check", "engine", "properties", "result", "depth (clocks)", "seconds"], rows)
 
 
-SECTIONS = {"fpga": fpga, "controller-area": controller_area, "robot": robot, "robot-scenarios": robot_scenarios, "sim-speed": sim_speed, "system-latency": system_latency, "system-delivery": system_delivery, "system-bus": system_bus,"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
+SECTIONS = {"fpga": fpga, "controller-area": controller_area, "robot": robot, "robot-scenarios": robot_scenarios, "sim-speed": sim_speed, "system-latency": system_latency, "system-delivery": system_delivery, "system-bus": system_bus, "system-fault-rates": system_fault_rates,"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
             "driver-size": driver_size, "bench": bench, "cdc": cdc, "synth": synth,
             "pico-cost": pico_cost, "formal-spin": formal_spin}
 
@@ -490,8 +508,12 @@ def sim_excerpt():
              f"{r['label']}: {r['cycles']} cycles ({1e3 * r['cycles'] / hz:.2f} ms at {hz / 1e6:.0f} MHz), "
              f"controller time {r['cycles']}, bus busy {100 * r['bus_busy_fraction']:.1f} %, {r['requests']} requests, "
              f"{r['faults_injected']} faults injected, STATUS: {r['status_retries']} retries, "
-             f"{r['status_abandoned']} abandoned",
-             "  %-11s %-11s %7s %7s %9s %9s %9s %9s %6s %11s" % ("channel", "consumer", "New", "Old", "age min",
+             f"{r['status_abandoned']} abandoned"]
+    if "fault_rate_measured" in r:
+        lines.append(f"  fault rate per access: nominal {r['fault_rate']:.4f}, measured {r['fault_rate_measured']:.4f} "
+                     f"(mean burst {r['fault_mean_burst']:.3g} accesses; tolerance +-{r['fault_rate_tolerance']:.4f}, "
+                     f"6 sigma){'' if r['fault_rate_ok'] else ': OUT OF TOLERANCE'}")
+    lines += ["  %-11s %-11s %7s %7s %9s %9s %9s %9s %6s %11s" % ("channel", "consumer", "New", "Old", "age min",
                                                              "age mean", "age max", "bound", "ratio", "cyc/Import")]
     for s in r["series"][:4]:
         a = s["age"]
