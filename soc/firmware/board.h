@@ -21,14 +21,24 @@
 #ifndef BOARD_H
 #define BOARD_H
 
-#define BOARD_RAM_BYTES    0x4000
+/* Where the core sees the DPRAM window and the board registers: override
+ * both for a core whose view differs.  A core with a data cache must see
+ * them uncached: VexRiscv (soc/vexriscv_core.v, an address with bit 31 set
+ * is I/O) is built with -DBOARD_DPRAM_BASE=0x90000000
+ * -DBOARD_REGS_BASE=0xA0000000 (tools/mk/vexriscv.mk). */
+#ifndef BOARD_DPRAM_BASE
 #define BOARD_DPRAM_BASE   0x10000000
+#endif
+#ifndef BOARD_REGS_BASE
+#define BOARD_REGS_BASE    0x20000000
+#endif
+#define BOARD_RAM_BYTES    0x4000
 #define BOARD_DPRAM_BYTES  0x1000
-#define BOARD_TOHOST       0x20000000
-#define BOARD_STAT0        0x20000010
-#define BOARD_EVENT        0x20000020
-#define BOARD_EVENT_ARG    0x20000024
-#define BOARD_TIMER        0x20000040
+#define BOARD_TOHOST       (BOARD_REGS_BASE + 0x00)
+#define BOARD_STAT0        (BOARD_REGS_BASE + 0x10)
+#define BOARD_EVENT        (BOARD_REGS_BASE + 0x20)
+#define BOARD_EVENT_ARG    (BOARD_REGS_BASE + 0x24)
+#define BOARD_TIMER        (BOARD_REGS_BASE + 0x40)
 
 #ifndef __ASSEMBLER__
 #include <stdint.h>
@@ -62,11 +72,12 @@ static inline uint32_t board_timer(void)
  * cycle/instret, x0 needs Zicsr, not in -march=rv32i.  Build with
  * -DBOARD_NO_COUNTERS for a core without them (SERV: rdcycle would read
  * another CSR, not trap): the counters are then loaded from the board
- * registers CYCLE and INSTRET, which serv_core provides (soc/serv_bridge.v)
+ * registers CYCLE and INSTRET, which serv_core provides (soc/serv_bridge.v),
+ * and vexriscv_core too (soc/vexriscv_bridge.v: CYCLE only, INSTRET reads 0),
  * and which read 0 on a board without them (board_memmap), so the figures
  * are 0 there and the programs still run. */
-#define BOARD_CYCLE        0x20000080
-#define BOARD_INSTRET      0x20000084
+#define BOARD_CYCLE        (BOARD_REGS_BASE + 0x80)
+#define BOARD_INSTRET      (BOARD_REGS_BASE + 0x84)
 
 static inline uint32_t board_cycles(void)
 {

@@ -1,0 +1,98 @@
+# tools/mk/vexriscv.mk -- a core with a data cache: VexRiscv (the LiteX
+# standard variant, 4 KiB I$ + 4 KiB write-through D$, soc/vexriscv_core.v)
+# on one side of the pair test (tb/pico/pico_pair.v with VEX_MASK set),
+# PicoRV32 on the other, both running the unchanged driver; the protocol
+# checker watches both RAM ports (harness tb/pico/test_vex_pair.cpp).
+#   make test-vex-pair            PicoRV32 producer, VexRiscv consumer
+#                                 (VEX_MASK=2), consumer stalled in bursts;
+#                                 build/reports/vex_pair.json
+#   make test-vex-pair-producer   VexRiscv producer, PicoRV32 consumer
+#                                 (VEX_MASK=1); build/reports/vex_pair_producer.json
+#   make test-vex-pair-cached-negative
+#                                 the VexRiscv producer built with the DPRAM
+#                                 window at its CACHED alias 0x1000_0000
+#                                 (model CACHED_ALIAS=1): its loads of
+#                                 ReadLocked hit a stale cache line, so it
+#                                 overwrites the buffer the consumer reads.
+#                                 Passes only if the mutual-exclusion checker
+#                                 and the consumer's own checks (torn values)
+#                                 catch it; prints how many
+#   make test-vex-lint            Verilator -Wall (VexRiscv.v waived, not
+#                                 ours), Icarus and Yosys read of the pair
+#                                 top with VexRiscv and of the bench top
+#   make bench-vex                cycles per Import/Export on VexRiscv, next to
+#                                 PicoRV32's (tb/pico/pico_bench.v VEX=1,
+#                                 tb/pico/firmware/bench.c); build/reports/bench_vex.json
+# VexRiscv firmware: the DPRAM window and the board registers are uncached
+# (address bit 31 set: the variant's I/O rule), -DBOARD_DPRAM_BASE=0x90000000
+# -DBOARD_REGS_BASE=0xA0000000 (soc/firmware/board.h), and -DBOARD_NO_COUNTERS
+# (no cycle CSR: vexriscv_bridge's CYCLE register).  rv32i like the PicoRV32
+# images, so both cores run the same code.
+# VexRiscv comes from PyPI (pythondata-cpu-vexriscv, make deps); VexRiscv.v is
+# located through the package at build time, never copied here.  A Verilator
+# build of a pair model with VexRiscv takes about VEX_BUILD_S seconds (below).
+# Reuses PICO_*, FW_* (tools/mk/pico.mk) and PBN_* (tools/mk/bench_pico.mk).
+
+VEX_DIR      := $(BUILD)/vexriscv
+VEX_CPU_DIR  := $(shell $(PYTHON) -c 'import pythondata_cpu_vexriscv as p; print(p.data_location)' 2>/dev/null)
+VEX_CPU_V    := $(if $(VEX_CPU_DIR),$(wildcard $(VEX_CPU_DIR)/VexRiscv.v))
+VEX_NEED      = @test -n "$(VEX_CPU_V)" || { echo "VexRiscv.v not found: the PyPI package \
+pythondata-cpu-vexriscv is missing; run make deps"; exit 1; }
+VEX_RTL      := $(PICO_RTL) soc/vexriscv_core.v soc/vexriscv_bridge.v
+VEX_VFLAGS   := $(PICO_VFLAGS) tb/pico/vexriscv.vlt
+VEX_MAX_CYCLES ?= 20000000
+VEX_FW_VEX   := -DBOARD_DPRAM_BASE=0x90000000 -DBOARD_REGS_BASE=0xA0000000 -DBOARD_NO_COUNTERS
+# The negative: the window at its cached alias, the registers still uncached.
+VEX_FW_CACHED := -DBOARD_DPRAM_BASE=0x10000000 -DBOARD_REGS_BASE=0xA0000000 -DBOARD_NO_COUNTERS
+VEX_CXX      := -O2 -std=c++17 -U_FORTIFY_SOURCE $(TB_COMMON_INC) -I$(abspath tb/endpoint) -I$(abspath c-driver)
+
+# $(1) = image name, $(2) = program, $(3) = extra flags.
+define vex_fw
+$(VEX_DIR)/fw/$(1).elf: tb/pico/firmware/$(2).c c-driver/albatross.c $(FW_DEPS) tools/mk/vexriscv.mk
+	@$$(DRV_RV_NEED)
+	@mkdir -p $$(@D)
+	$(DRV_RV_CC) $(FW_CFLAGS) $(3) -o $$@ soc/firmware/crt0.S tb/pico/firmware/$(2).c c-driver/albatross.c $(FW_LDFLAGS)
+endef
+$(eval $(call vex_fw,producer-pico,producer,))
+$(eval $(call vex_fw,consumer-vex,consumer,$(VEX_FW_VEX)))
+$(eval $(call vex_fw,producer-vex,producer,$(VEX_FW_VEX)))
+$(eval $(call vex_fw,consumer-pico,consumer,))
+$(eval $(call vex_fw,producer-vex-cached,producer,$(VEX_FW_CACHED)))
+$(eval $(call vex_fw,consumer-pico-count,consumer,-DPAIR_COUNT_FAULTS))
+
+# pico_pair with $(2) (-G parameters) in $(VEX_DIR)/$(1)/; the class keeps the
+# name Vpico_pair.
+define vex_model
+$(VEX_DIR)/$(1)/Vpico_pair: $(VEX_RTL) tb/pico/test_vex_pair.cpp tb/pico/picorv32.vlt tb/pico/vexriscv.vlt \
+        tb/common/protocol_checker.cpp tb/common/protocol_checker.h tb/endpoint/channel_watch.h tb/common/report.h \
+        tools/mk/pico.mk tools/mk/vexriscv.mk
+	$$(VEX_NEED)
+	$$(PICO_NEED)
+	@mkdir -p $$(@D)
+	verilator --cc --exe --build -j 2 -O3 $$(VEX_VFLAGS) $(2) --prefix Vpico_pair -CFLAGS "$(VEX_CXX)" \
+	    --Mdir $$(@D) $$(PICO_RV32_V) $$(VEX_CPU_V) tb/pico/pico_pair.v $$(abspath tb/pico/test_vex_pair.cpp) \
+	    $$(abspath tb/common/protocol_checker.cpp) > $(VEX_DIR)/build-$(1).log 2>&1 \
+	    || { cat $(VEX_DIR)/build-$(1).log; exit 1; }
+endef
+$(eval $(call vex_model,consumer,-GVEX_MASK=2))
+$(eval $(call vex_model,producer,-GVEX_MASK=1 -GCACHED_ALIAS=1))
+VEX_BIN_C := $(VEX_DIR)/consumer/Vpico_pair
+VEX_BIN_P := $(VEX_DIR)/producer/Vpico_pair
+
+TESTS += vex-pair vex-pair-producer vex-pair-cached-negative vex-lint
+.PHONY: test-vex-pair test-vex-pair-producer test-vex-pair-cached-negative test-vex-lint
+
+test-vex-pair: $(VEX_BIN_C) $(VEX_DIR)/fw/producer-pico.hex $(VEX_DIR)/fw/consumer-vex.hex
+	@tools/run_test.sh vex-pair $(VEX_BIN_C) +fw0=$(VEX_DIR)/fw/producer-pico.hex +fw1=$(VEX_DIR)/fw/consumer-vex.hex \
+	    --max-cycles $(VEX_MAX_CYCLES) --seed $(SEED) --label vex-pair --report $(REPORTS)/vex_pair.json
+
+test-vex-pair-producer: $(VEX_BIN_P) $(VEX_DIR)/fw/producer-vex.hex $(VEX_DIR)/fw/consumer-pico.hex
+	@tools/run_test.sh vex-pair-producer $(VEX_BIN_P) +fw0=$(VEX_DIR)/fw/producer-vex.hex \
+	    +fw1=$(VEX_DIR)/fw/consumer-pico.hex --max-cycles $(VEX_MAX_CYCLES) --seed $(SEED) \
+	    --label vex-pair-producer --report $(REPORTS)/vex_pair_producer.json
+
+test-vex-pair-cached-negative: $(VEX_BIN_P) $(VEX_DIR)/fw/producer-vex-cached.hex $(VEX_DIR)/fw/consumer-pico-count.hex
+	@tools/run_test.sh vex-pair-cached-negative $(VEX_BIN_P) +fw0=$(VEX_DIR)/fw/producer-vex-cached.hex \
+	    +fw1=$(VEX_DIR)/fw/consumer-pico-count.hex --max-cycles $(VEX_MAX_CYCLES) --seed $(SEED) \
+	    --label vex-pair-cached-negative --expect-caught-by mutual_exclusion \
+	    --report $(REPORTS)/vex_pair_cached_negative.json
