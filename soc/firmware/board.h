@@ -44,8 +44,14 @@
 #include <stdint.h>
 #include "albatross.h"
 
-/* Channel of the pair test: DPRAM offset 0; a start flag word after it. */
-#define BOARD_CHANNEL      ((uintptr_t)BOARD_DPRAM_BASE)
+/* Channel of the pair test: DPRAM offset 0; a start flag word after it.
+ * BOARD_CHANNEL_BASE moves the channel alone (the start flag stays in the
+ * window): the VexRiscv negative test reaches the channel through the cached
+ * alias 0x1000_0000 (tools/mk/vexriscv.mk). */
+#ifndef BOARD_CHANNEL_BASE
+#define BOARD_CHANNEL_BASE BOARD_DPRAM_BASE
+#endif
+#define BOARD_CHANNEL      ((uintptr_t)BOARD_CHANNEL_BASE)
 #define BOARD_START_FLAG   ((uintptr_t)BOARD_DPRAM_BASE + 0x100u)
 #define BOARD_START_MAGIC  0x5354u
 
@@ -111,6 +117,13 @@ typedef struct {
 } pair_value_t;
 
 #define PAIR_SALT   0x5A5A5A5Au
+/* Events of a consumer built with -DPAIR_EVENTS (tb/pico/test_vex_pair.cpp
+ * checks actuality from them, whatever reaches the RAM): before each
+ * alb_import EVENT PAIR_EV_BEGIN (ARG: the call's number), after it
+ * PAIR_EV_NEW or PAIR_EV_OLD (ARG: the sequence number returned). */
+#define PAIR_EV_BEGIN 0x1u
+#define PAIR_EV_NEW   0x2u
+#define PAIR_EV_OLD   0x3u
 /* Values the producer exports (and the consumer waits for): override with
  * -DPAIR_VALUES=n for a slow core (tools/mk/serv.mk). */
 #ifndef PAIR_VALUES

@@ -11,7 +11,8 @@
 //
 //   test_vex_pair +fw0=PRODUCER.hex +fw1=CONSUMER.hex [--max-cycles N]
 //                 [--seed S] [--stall-core C] [--report FILE] [--label NAME]
-//                 [--expect-caught-by KIND]
+//                 [--expect-caught-by KIND] [--expect-stale] [--expect-bus-error C]
+//                 [--stop-after N]
 //
 // Stalls as tb/pico/test_pico_pair.cpp: core C (default 1; -1 none; 2 both)
 // has its local RAM held in random bursts (1/2048 per free clock, 1..4096
@@ -24,6 +25,20 @@
 // checks found torn or out-of-order values (codes 3..6; it is built with
 // -DPAIR_COUNT_FAULTS and reports their number in STAT 3), and both cores
 // finished without an unmapped access.  It prints how many were caught.
+//
+// Core-reported actuality.  A consumer built with -DPAIR_EVENTS announces
+// each Import (board EVENTs PAIR_EV_*, soc/firmware/board.h): the value it
+// returns must not be older than the newest value the producer had
+// published (its store of Actual, seen at the RAM) when the Import began
+// (its EVENT store).  This check does not depend on what reaches the RAM, so
+// it also holds a consumer whose loads a cache answers.  Normal run: no
+// stale Import.  --expect-stale (the negative test with the consumer's
+// channel cached): passes only if stale Imports were seen, and prints how
+// many and how many values the consumer received at all; with --stop-after N
+// the run ends N cycles after the producer finished (a consumer that only
+// ever sees a stale Actual never finishes).  --expect-bus-error C: passes
+// only if core C made an unmapped access (a program built for the cached
+// alias on a board that does not map it).
 // Exit status 0 = verdict pass.
 #include <cstdint>
 #include <cstdio>
@@ -39,11 +54,16 @@ static const uint32_t kStartFlagWord = 0x100 / 4, kStartMagic = 0x5354, kBytes =
 
 static uint32_t stat(const Vpico_pair &m, int core, int k) { return m.stat_o[core * 4 + k]; }
 
+// The consumer's events (soc/firmware/board.h PAIR_EV_*).
+static const uint32_t kEvBegin = 0x1, kEvNew = 0x2, kEvOld = 0x3;
+
 int main(int argc, char **argv)
 {
     uint64_t max_cycles = 20000000, seed = 1;
     std::string report, label = "vex-pair", expect;
-    int stall_core = 1, expect_kind = -1;
+    int stall_core = 1, expect_kind = -1, expect_err = -1;
+    bool expect_stale = false;
+    uint64_t stop_after = 0;
     for (int i = 1; i < argc; ++i) {
         const bool more = i + 1 < argc;
         if (!std::strcmp(argv[i], "--max-cycles") && more) max_cycles = std::strtoull(argv[++i], 0, 0);
@@ -52,6 +72,9 @@ int main(int argc, char **argv)
         else if (!std::strcmp(argv[i], "--report") && more) report = argv[++i];
         else if (!std::strcmp(argv[i], "--label") && more) label = argv[++i];
         else if (!std::strcmp(argv[i], "--expect-caught-by") && more) expect = argv[++i];
+        else if (!std::strcmp(argv[i], "--expect-stale")) expect_stale = true;
+        else if (!std::strcmp(argv[i], "--expect-bus-error") && more) expect_err = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--stop-after") && more) stop_after = std::strtoull(argv[++i], 0, 0);
         else if (argv[i][0] != '+') { std::fprintf(stderr, "unknown argument %s\n", argv[i]); return 2; }
     }
     if (!expect.empty()) {
@@ -79,7 +102,12 @@ int main(int argc, char **argv)
     cycle = 0;
     bool armed = false;
     uint64_t done_at[2] = {0, 0};
-    while ((m.done_o & 3u) != 3u && cycle < max_cycles && !(m.bus_err_o & 3u)) {
+    // Core-reported Imports: begun, ended, stale, the newest seq received.
+    uint64_t ev_begun = 0, ev_imports = 0, stale = 0, pub_at_begin = 0, newest_got = 0;
+    bool ev_open = false;
+    std::string first_stale;
+    auto stopped = [&]() { return stop_after && (m.done_o & 1u) && cycle >= done_at[0] + stop_after; };
+    while ((m.done_o & 3u) != 3u && cycle < max_cycles && !(m.bus_err_o & 3u) && !stopped()) {
         uint8_t s = 0;
         for (int c = 0; c < 2; ++c) {
             if (stall_core != c && stall_core != 2) continue;
@@ -101,6 +129,25 @@ int main(int argc, char **argv)
             }
             watch.on_access(p, we, adr, (m.mon_sel_o >> (4 * p)) & 0xfu, wdat,
                             static_cast<uint32_t>(m.mon_rdat_o >> (32 * p)), cycle);
+        }
+        if ((m.ev_valid_o >> 1) & 1u) {
+            const uint32_t key = static_cast<uint32_t>(m.ev_data_o >> 32), arg = static_cast<uint32_t>(m.ev_arg_o >> 32);
+            if (key == kEvBegin) {
+                ev_open = true;
+                ++ev_begun;
+                pub_at_begin = watch.chk.newest_published_seq();
+            } else if ((key == kEvNew || key == kEvOld) && ev_open) {
+                ev_open = false;
+                ++ev_imports;
+                if (arg > newest_got) newest_got = arg;
+                if (arg < pub_at_begin && stale++ == 0) {
+                    char msg[200];
+                    std::snprintf(msg, sizeof msg, "Import %llu returned seq %u (%s), but seq %llu was published "
+                                  "before it began", static_cast<unsigned long long>(ev_imports), arg,
+                                  key == kEvNew ? "New" : "Old", static_cast<unsigned long long>(pub_at_begin));
+                    first_stale = msg;
+                }
+            }
         }
         for (int c = 0; c < 2; ++c)
             if (((m.done_o >> c) & 1u) && !done_at[c]) done_at[c] = cycle;
@@ -125,10 +172,40 @@ int main(int argc, char **argv)
             std::printf("  checker %s: %llu violations, first: %s\n", ProtocolChecker::kind_name(k),
                         static_cast<unsigned long long>(chk.violations[k]), chk.first_message[k].c_str());
 
+    if (ev_begun)
+        std::printf("  consumer-reported Imports: %llu, stale %llu (older than the newest value published when they "
+                    "began)%s%s; newest seq received %llu\n", static_cast<unsigned long long>(ev_imports),
+                    static_cast<unsigned long long>(stale), stale ? ", first: " : "", first_stale.c_str(),
+                    static_cast<unsigned long long>(newest_got));
+
     const char *fail = nullptr;
     static char buf[512];
     const uint32_t faults = stat(m, 1, 3);
-    if (err) {
+    if (expect_err >= 0 || expect_stale) {
+        if (expect_err >= 0 && !((err >> expect_err) & 1u)) {
+            std::snprintf(buf, sizeof buf, "expected an unmapped access from the %s, got none (bus error %u%u)",
+                          name[expect_err & 1], err & 1u, err >> 1);
+            fail = buf;
+        } else if (expect_err >= 0 && (err & ~(1u << expect_err))) {
+            fail = "expected the unmapped access from the one core named, got one from the other too";
+        } else if (expect_stale && err) {
+            std::snprintf(buf, sizeof buf, "expected no unmapped access, got one from the %s", err & 1u ? name[0] : name[1]);
+            fail = buf;
+        } else if (expect_stale && !(done & 1u)) {
+            fail = "expected the producer to finish, it is still running";
+        } else if (expect_stale && code[0] != 0) {
+            std::snprintf(buf, sizeof buf, "expected producer exit code 0, got 0x%x", code[0]);
+            fail = buf;
+        } else if (expect_stale && !stale) {
+            std::snprintf(buf, sizeof buf, "expected stale Imports from the cached consumer, got none of %llu",
+                          static_cast<unsigned long long>(ev_imports));
+            fail = buf;
+        } else if (expect_stale && (done >> 1) && (code[1] & 0xffu) != 0 && ((code[1] & 0xffu) < 3u || (code[1] & 0xffu) > 6u)) {
+            std::snprintf(buf, sizeof buf, "expected the consumer to end with a value check or not at all, got exit "
+                          "code 0x%x", code[1]);
+            fail = buf;
+        }
+    } else if (err) {
         std::snprintf(buf, sizeof buf, "expected no unmapped access, got one from the %s", err & 1u ? name[0] : name[1]);
         fail = buf;
     } else if (done != 3u) {
@@ -139,7 +216,11 @@ int main(int argc, char **argv)
         std::snprintf(buf, sizeof buf, "expected producer exit code 0, got 0x%x", code[0]);
         fail = buf;
     } else if (expect_kind < 0) {
-        if (code[1] != 0) {
+        if (stale) {
+            std::snprintf(buf, sizeof buf, "expected no stale Import, got %llu: %s", static_cast<unsigned long long>(stale),
+                          first_stale.c_str());
+            fail = buf;
+        } else if (code[1] != 0) {
             std::snprintf(buf, sizeof buf, "expected consumer exit code 0, got 0x%x (check code %u at sequence %u)",
                           code[1], code[1] & 0xffu, code[1] >> 8);
             fail = buf;
@@ -183,7 +264,9 @@ int main(int argc, char **argv)
      .num("stall_core", stall_core).num("stalled_cycles", static_cast<double>(stalled))
      .num("producer_code", code[0]).num("consumer_code", code[1])
      .num("checked_exports", static_cast<double>(chk.exports)).num("checked_imports", static_cast<double>(chk.imports));
-    if (expect_kind < 0 && !fail) {
+    r.num("consumer_reported_imports", static_cast<double>(ev_imports)).num("stale_imports", static_cast<double>(stale))
+     .num("newest_seq_received", static_cast<double>(newest_got));
+    if (expect_kind < 0 && expect_err < 0 && !expect_stale && !fail) {
         const uint32_t exports = stat(m, 0, 1), ex_cyc = stat(m, 0, 2);
         const uint32_t news = stat(m, 1, 0), imports = stat(m, 1, 1), im_cyc = stat(m, 1, 2);
         std::printf("  producer: %u exports, %.1f cycles per alb_export; consumer: %u imports (%u New), %.1f cycles "
@@ -206,6 +289,7 @@ int main(int argc, char **argv)
     r.str("verdict", fail ? "fail" : "pass");
     if (!report.empty() && !r.write(report)) return 1;
     if (fail) { std::printf("%s: FAIL: %s\n", label.c_str(), fail); return 1; }
-    std::printf("%s: pass%s\n", label.c_str(), expect_kind >= 0 ? ": the cached window was caught, as expected" : "");
+    std::printf("%s: pass%s\n", label.c_str(), expect_kind >= 0 || expect_stale ? ": the cached window was caught, as expected"
+                : expect_err >= 0 ? ": the cached alias is unmapped on this board, as expected" : "");
     return 0;
 }

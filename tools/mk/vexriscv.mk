@@ -17,6 +17,22 @@
 #                                 Passes only if the mutual-exclusion checker
 #                                 and the consumer's own checks (torn values)
 #                                 catch it; prints how many
+#   make test-vex-pair-cached-consumer-negative
+#                                 the VexRiscv consumer reaches the channel
+#                                 through the cached alias (model
+#                                 CACHED_ALIAS=1; start flag still uncached):
+#                                 its loads of Actual hit a stale line.  The
+#                                 consumer reports each Import (-DPAIR_EVENTS);
+#                                 passes only if the harness finds stale
+#                                 Imports (older than the newest value
+#                                 published when they began); prints how many
+#                                 and how many values got through.  Ends
+#                                 VEX_STOP_AFTER cycles after the producer
+#                                 (the consumer never sees the last value)
+#   make test-vex-alias-unmapped-negative
+#                                 the same consumer image on the normal board
+#                                 (CACHED_ALIAS=0): its first access to the
+#                                 cached alias must be an unmapped access
 #   make test-vex-lint            Verilator -Wall (VexRiscv.v waived, not
 #                                 ours), Icarus and Yosys read of the pair
 #                                 top with VexRiscv and of the bench top
@@ -54,7 +70,10 @@ $(VEX_DIR)/fw/$(1).elf: tb/pico/firmware/$(2).c c-driver/albatross.c $(FW_DEPS) 
 	$(DRV_RV_CC) $(FW_CFLAGS) $(3) -o $$@ soc/firmware/crt0.S tb/pico/firmware/$(2).c c-driver/albatross.c $(FW_LDFLAGS)
 endef
 $(eval $(call vex_fw,producer-pico,producer,))
-$(eval $(call vex_fw,consumer-vex,consumer,$(VEX_FW_VEX)))
+$(eval $(call vex_fw,consumer-vex,consumer,$(VEX_FW_VEX) -DPAIR_EVENTS))
+# The cached-consumer negative: 300 values are plenty to see them go stale.
+$(eval $(call vex_fw,consumer-vex-cached,consumer,$(VEX_FW_VEX) -DBOARD_CHANNEL_BASE=0x10000000 -DPAIR_EVENTS -DPAIR_VALUES=300u))
+$(eval $(call vex_fw,producer-pico-short,producer,-DPAIR_VALUES=300u))
 $(eval $(call vex_fw,producer-vex,producer,$(VEX_FW_VEX)))
 $(eval $(call vex_fw,consumer-pico,consumer,))
 $(eval $(call vex_fw,producer-vex-cached,producer,$(VEX_FW_CACHED)))
@@ -75,12 +94,16 @@ $(VEX_DIR)/$(1)/Vpico_pair: $(VEX_RTL) tb/pico/test_vex_pair.cpp tb/pico/picorv3
 	    || { cat $(VEX_DIR)/build-$(1).log; exit 1; }
 endef
 $(eval $(call vex_model,consumer,-GVEX_MASK=2))
+$(eval $(call vex_model,consumer-alias,-GVEX_MASK=2 -GCACHED_ALIAS=1))
 $(eval $(call vex_model,producer,-GVEX_MASK=1 -GCACHED_ALIAS=1))
 VEX_BIN_C := $(VEX_DIR)/consumer/Vpico_pair
 VEX_BIN_P := $(VEX_DIR)/producer/Vpico_pair
+VEX_BIN_CA := $(VEX_DIR)/consumer-alias/Vpico_pair
+VEX_STOP_AFTER ?= 100000
 
-TESTS += vex-pair vex-pair-producer vex-pair-cached-negative vex-lint
-.PHONY: test-vex-pair test-vex-pair-producer test-vex-pair-cached-negative test-vex-lint
+TESTS += vex-pair vex-pair-producer vex-pair-cached-negative vex-pair-cached-consumer-negative vex-alias-unmapped-negative vex-lint
+.PHONY: test-vex-pair test-vex-pair-producer test-vex-pair-cached-negative test-vex-pair-cached-consumer-negative \
+        test-vex-alias-unmapped-negative test-vex-lint
 
 test-vex-pair: $(VEX_BIN_C) $(VEX_DIR)/fw/producer-pico.hex $(VEX_DIR)/fw/consumer-vex.hex
 	@tools/run_test.sh vex-pair $(VEX_BIN_C) +fw0=$(VEX_DIR)/fw/producer-pico.hex +fw1=$(VEX_DIR)/fw/consumer-vex.hex \
@@ -96,3 +119,50 @@ test-vex-pair-cached-negative: $(VEX_BIN_P) $(VEX_DIR)/fw/producer-vex-cached.he
 	    +fw1=$(VEX_DIR)/fw/consumer-pico-count.hex --max-cycles $(VEX_MAX_CYCLES) --seed $(SEED) \
 	    --label vex-pair-cached-negative --expect-caught-by mutual_exclusion \
 	    --report $(REPORTS)/vex_pair_cached_negative.json
+
+test-vex-pair-cached-consumer-negative: $(VEX_BIN_CA) $(VEX_DIR)/fw/producer-pico-short.hex $(VEX_DIR)/fw/consumer-vex-cached.hex
+	@tools/run_test.sh vex-pair-cached-consumer-negative $(VEX_BIN_CA) +fw0=$(VEX_DIR)/fw/producer-pico-short.hex \
+	    +fw1=$(VEX_DIR)/fw/consumer-vex-cached.hex --max-cycles $(VEX_MAX_CYCLES) --seed $(SEED) \
+	    --stop-after $(VEX_STOP_AFTER) --label vex-pair-cached-consumer-negative --expect-stale \
+	    --report $(REPORTS)/vex_pair_cached_consumer_negative.json
+
+test-vex-alias-unmapped-negative: $(VEX_BIN_C) $(VEX_DIR)/fw/producer-pico.hex $(VEX_DIR)/fw/consumer-vex-cached.hex
+	@tools/run_test.sh vex-alias-unmapped-negative $(VEX_BIN_C) +fw0=$(VEX_DIR)/fw/producer-pico.hex \
+	    +fw1=$(VEX_DIR)/fw/consumer-vex-cached.hex --max-cycles $(VEX_MAX_CYCLES) --seed $(SEED) \
+	    --label vex-alias-unmapped-negative --expect-bus-error 1 --report $(REPORTS)/vex_alias_unmapped_negative.json
+
+# Lint: the pair top with both cores VexRiscv (and the cached alias), the
+# bench top with VEX = 1.
+test-vex-lint:
+	@tools/run_test.sh vex-lint bash -c '$(VEX_NEED:@%=%) && $(PICO_NEED:@%=%) && \
+	    verilator --lint-only $(VEX_VFLAGS) -GVEX_MASK=3 -GCACHED_ALIAS=1 $(PICO_RV32_V) $(VEX_CPU_V) tb/pico/pico_pair.v && \
+	    iverilog -g2005 $(VLIB) -s pico_pair -P pico_pair.VEX_MASK=3 -o /dev/null $(PICO_RV32_V) $(VEX_CPU_V) tb/pico/pico_pair.v && \
+	    yosys -q -p "read_verilog $(PICO_RV32_V) $(VEX_CPU_V) $(VEX_RTL); chparam -set VEX_MASK 3 pico_pair; \
+	        hierarchy -check -top pico_pair; proc" && \
+	    verilator --lint-only $(subst pico_pair,pico_bench,$(VEX_VFLAGS)) -GVEX=1 $(PICO_RV32_V) $(VEX_CPU_V) tb/pico/pico_bench.v && \
+	    echo "lint ok  soc/vexriscv_core.v, tb/pico/pico_pair.v VEX_MASK=3, tb/pico/pico_bench.v VEX=1 (VexRiscv.v from $(VEX_CPU_V))"'
+
+# The bench: tb/pico/pico_bench.v with VEX = 1, bench.c built for the
+# VexRiscv map.  bench-vex also reruns PicoRV32's (bench_pico.json) so the two
+# tables come from one build of the same source.
+VEX_BENCH_BIN := $(VEX_DIR)/bench/Vpico_bench
+$(VEX_BENCH_BIN): $(PBN_RTL) $(VEX_RTL) tb/pico/bench_pico.cpp tb/pico/picorv32.vlt tb/pico/vexriscv.vlt \
+        tb/common/report.h tools/mk/vexriscv.mk
+	$(VEX_NEED)
+	$(PICO_NEED)
+	@mkdir -p $(@D)
+	verilator --cc --exe --build -j 2 -O3 $(PBN_VFLAGS) tb/pico/vexriscv.vlt -GVEX=1 --prefix Vpico_bench \
+	    -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" --Mdir $(@D) $(PICO_RV32_V) $(VEX_CPU_V) tb/pico/pico_bench.v \
+	    $(abspath tb/pico/bench_pico.cpp) > $(@D)/build.log 2>&1 || { cat $(@D)/build.log; exit 1; }
+$(VEX_DIR)/fw/bench.elf: tb/pico/firmware/bench.c c-driver/albatross.c $(FW_DEPS) tools/mk/vexriscv.mk
+	@$(DRV_RV_NEED)
+	@mkdir -p $(@D)
+	$(DRV_RV_CC) $(FW_CFLAGS) $(VEX_FW_VEX) -o $@ soc/firmware/crt0.S tb/pico/firmware/bench.c c-driver/albatross.c $(FW_LDFLAGS)
+
+BENCHES += bench-vex
+.PHONY: bench-vex
+bench-vex: $(VEX_BENCH_BIN) $(VEX_DIR)/fw/bench.hex $(PBN_BIN) $(PBN_DIR)/bench.hex ## cycles per Import/Export on VexRiscv (D$, window uncached) next to PicoRV32
+	$(PBN_BIN) +fw0=$(PBN_DIR)/bench.hex --max-cycles $(PBN_MAX_CYCLES) --report $(REPORTS)/bench_pico.json
+	$(VEX_BENCH_BIN) +fw0=$(VEX_DIR)/fw/bench.hex --max-cycles $(PBN_MAX_CYCLES) --label bench-vex \
+	    --cpu "VexRiscv (LiteX standard variant: 4 KiB I-cache, 4 KiB D-cache) rv32i code, window uncached, firmware -Os" \
+	    --report $(REPORTS)/bench_vex.json

@@ -15,6 +15,9 @@
  * The exit code is that code | sequence number << 8 (0 = pass).  STAT:
  * 0 imports that returned New, 1 imports, 2 cycles in alb_import, 3 retired
  * instructions.
+ * Built with -DPAIR_EVENTS, every Import is announced to the harness as board
+ * EVENTs (PAIR_EV_*, soc/firmware/board.h), before the call and with its
+ * result after it.
  * Built with -DPAIR_COUNT_FAULTS (a negative test that must say how many
  * values were wrong), a torn or out-of-order value does not end the program:
  * it is counted (a whole value out of order is taken as the last value
@@ -51,10 +54,16 @@ int main(void)
         return 0x30 - r;
 
     while (last != PAIR_VALUES) {
+#ifdef PAIR_EVENTS
+        board_event(PAIR_EV_BEGIN, calls);
+#endif
         t0 = board_cycles();
         r = alb_import(&ch, &v);
         cycles += board_cycles() - t0;
         ++calls;
+#ifdef PAIR_EVENTS
+        board_event(r == ALB_NEW ? PAIR_EV_NEW : PAIR_EV_OLD, v.seq);
+#endif
         if (r != ALB_NEW && r != ALB_OLD)
             return (0x20 - r) | (int)(last << 8);
         code = pair_check(&v, r, last, 0);
