@@ -166,3 +166,35 @@ bench-vex: $(VEX_BENCH_BIN) $(VEX_DIR)/fw/bench.hex $(PBN_BIN) $(PBN_DIR)/bench.
 	$(VEX_BENCH_BIN) +fw0=$(VEX_DIR)/fw/bench.hex --max-cycles $(PBN_MAX_CYCLES) --label bench-vex \
 	    --cpu "VexRiscv (LiteX standard variant: 4 KiB I-cache, 4 KiB D-cache) rv32i code, window uncached, firmware -Os" \
 	    --report $(REPORTS)/bench_vex.json
+
+# A board of a scenario: the MOBOT-III robot of tools/mk/pico_boards.mk with
+# the motor board's PicoRV32 replaced by VexRiscv (sim/pico_boards.v,
+# VEX_MASK = 8, passed on to soc/albatross_system.v), as
+# tools/mk/serv_boards.mk does with SERV: the navigation board exports
+# MotorCmd, the cached core imports it through its uncached window, and every
+# check of sim/mobot_sim.cpp applies.
+#   make test-vex-boards   fault-free, cores stalled in random bursts;
+#                          build/reports/vex_boards.json
+VB_BIN := $(PB_DIR)/obj-vex-motor/Vpico_boards
+$(VB_BIN): $(PB_RTL) $(RTL_INC) soc/vexriscv_core.v soc/vexriscv_bridge.v $(PICO_RV32_V) $(PB_SRC) $(PB_HDR) \
+        tb/pico/picorv32.vlt tb/pico/vexriscv.vlt tools/mk/pico_boards.mk tools/mk/vexriscv.mk
+	$(VEX_NEED)
+	$(PICO_NEED)
+	@mkdir -p $(@D)
+	verilator --cc --exe --build -j 2 -O3 $(PB_VFLAGS) tb/pico/vexriscv.vlt -GVEX_MASK=8 \
+	    -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" --Mdir $(@D) $(PICO_RV32_V) $(VEX_CPU_V) sim/pico_boards.v \
+	    $(abspath $(PB_SRC)) > $(@D)/build.log 2>&1 || { cat $(@D)/build.log; exit 1; }
+
+# The motor program for VexRiscv: its map (uncached window and registers).
+$(PB_DIR)/mobot3/fw-vex/motor.elf: sim/firmware/mobot_motor.c sim/firmware/mobot_check.h $(PB_SCHED)/rom.hex $(FW_DEPS) \
+        tools/mk/vexriscv.mk
+	@$(DRV_RV_NEED)
+	@mkdir -p $(@D)
+	$(DRV_RV_CC) $(FW_CFLAGS) $(VEX_FW_VEX) -I$(PB_SCHED) -Isim -o $@ soc/firmware/crt0.S \
+	    sim/firmware/mobot_motor.c $(PB_SCHED)/motor.c c-driver/albatross.c $(FW_LDFLAGS)
+
+TESTS += vex-boards
+.PHONY: test-vex-boards
+test-vex-boards: $(VB_BIN) $(PB_FW) $(PB_DIR)/mobot3/fw-vex/motor.hex $(PB_SCHED)/tb_plan.txt
+	@tools/run_test.sh vex-boards $(VB_BIN) $(subst $(PB_FWDIR)/motor.hex,$(PB_DIR)/mobot3/fw-vex/motor.hex,$(PB_FW_ARGS)) \
+	    --cycles $(PB_CYCLES) --seed $(SEED) --stall 2048 --require-done --label vex-boards --report $(REPORTS)/vex_boards.json
