@@ -44,8 +44,10 @@
 # (no cycle CSR: vexriscv_bridge's CYCLE register).  rv32i like the PicoRV32
 # images, so both cores run the same code.
 # VexRiscv comes from PyPI (pythondata-cpu-vexriscv, make deps); VexRiscv.v is
-# located through the package at build time, never copied here.  A Verilator
-# build of a pair model with VexRiscv takes about VEX_BUILD_S seconds (below).
+# located through the package at build time, never copied here.  Cost: a
+# Verilator build of a pair model with VexRiscv takes 10 to 30 s (8 s of CPU),
+# each run 2 to 10 s; every test here and in tools/mk/litex.mk from a clean
+# build/: 80 s wall, 43 s of CPU (2 cores, shared, load 7).
 # Reuses PICO_*, FW_* (tools/mk/pico.mk) and PBN_* (tools/mk/bench_pico.mk).
 
 VEX_DIR      := $(BUILD)/vexriscv
