@@ -3,7 +3,8 @@
 // (soc/albatross_system.v) with NB soft-core boards, the controller's bus
 // closed through a bus_fault_injector, and the DPRAM images from plusargs.
 //
-// Board c: core c (PicoRV32, or SERV where SERV_MASK selects it; the memory
+// Board c: core c (PicoRV32, or SERV where SERV_MASK selects it, or VexRiscv
+// where VEX_MASK does: its window and registers at 0x9/0xA000_0000; the memory
 // map of soc/board_memmap.v and soc/firmware/board.h: local RAM at 0, DPRAM
 // window at 0x1000_0000, board registers at 0x2000_0000 with TOHOST and
 // STAT 0..3) reaches port A of its own albatross_dpram; port B hangs on
@@ -34,7 +35,8 @@ module pico_boards #(
     parameter ROM_WORDS  = 1024,  // schedule ROM depth in words
     parameter TIMEOUT    = 8,     // controller access timeout, clocks
     parameter POLL       = 16,    // controller poll interval in sync mode
-    parameter SERV_MASK  = 0      // NB bits: board c's core is SERV when bit c is set, else PicoRV32
+    parameter SERV_MASK  = 0,     // NB bits: board c's core is SERV when bit c is set, else PicoRV32
+    parameter VEX_MASK   = 0      // NB bits: board c's core is VexRiscv when bit c is set (before SERV_MASK)
 ) (
     input  wire              clk_i,      // everything's clock
     input  wire              rst_i,      // synchronous, active high
@@ -88,7 +90,7 @@ module pico_boards #(
 
     albatross_system #(
         .NB(NB), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .N_CHAN(N_CHAN), .ROM_WORDS(ROM_WORDS),
-        .TIMEOUT(TIMEOUT), .POLL(POLL), .SERV_MASK(SERV_MASK),
+        .TIMEOUT(TIMEOUT), .POLL(POLL), .SERV_MASK(SERV_MASK), .VEX_MASK(VEX_MASK),
         .BUS_HOOK(1)  // the fault injector closes the controller's bus
     ) u_sys (
         .clk_i(clk_i), .rst_i(rst_i), .cpu_clk_i(clk_i), .cpu_rst_i(rst_i), .stall_i(stall_i),
@@ -120,7 +122,10 @@ module pico_boards #(
     genvar t;
     generate
         for (t = 0; t < NB; t = t + 1) begin : g_timer
-            if (((SERV_MASK >> t) & 1) != 0) begin : g_serv
+            if (((VEX_MASK >> t) & 1) != 0) begin : g_vex
+                assign timer_rd_o[t]         = u_sys.g_board[t].g_core.u_core.g_vex.u_core.u_map.timer_read;
+                assign timer_o[t*32 +: 32]   = u_sys.g_board[t].g_core.u_core.g_vex.u_core.u_map.timer_q;
+            end else if (((SERV_MASK >> t) & 1) != 0) begin : g_serv
                 assign timer_rd_o[t]         = u_sys.g_board[t].g_core.u_core.g_serv.u_core.u_map.timer_read;
                 assign timer_o[t*32 +: 32]   = u_sys.g_board[t].g_core.u_core.g_serv.u_core.u_map.timer_q;
             end else begin : g_pico

@@ -498,6 +498,61 @@ def kinds_cost():
 SECTIONS["kinds-cost"] = kinds_cost
 
 
+def vex_cost():
+    """Cycles per call on VexRiscv (data cache, DPRAM window uncached) next to PicoRV32,
+    the same bench.c and driver, rv32i -Os (make bench-vex)."""
+    p, v = load("bench_pico.json"), load("bench_vex.json")
+    if not p or not v:
+        missing("bench_vex.json" if p else "bench_pico.json", "make bench-vex")
+    rows = []
+    for ep, ev in zip(p["sizes"], v["sizes"]):
+        row = [ep["bytes"]]
+        for k in ("export", "import_new", "import_old", "copy_to_dpram", "copy_from_dpram"):
+            a, b = ep[k]["mean"], ev[k]["mean"]
+            row.append(f"{a:.0f} / {b:.0f} ({a / b:.1f}x)")
+        rows.append(row)
+    return table(["payload bytes", "Export", "Import, New", "Import, Old", "plain copy to DPRAM",
+                  "plain copy from DPRAM"], rows) + (
+        "\n\nEach cell: PicoRV32 / VexRiscv cycles per call (mean of "
+        f"{v['calls_per_figure']} calls, the counter pair subtracted), and how many times fewer VexRiscv needs.")
+
+
+SECTIONS["vex-cost"] = vex_cost
+
+
+def vex_tests():
+    """The VexRiscv pair tests and their negatives (make test-vex-*); "-": not a figure of that run
+    (the robot runs have their own checks, docs/robot.md)."""
+    runs = [("vex_pair.json", "PicoRV32 producer, VexRiscv consumer, window uncached"),
+            ("vex_pair_producer.json", "VexRiscv producer, PicoRV32 consumer, window uncached"),
+            ("vex_pair_cached_negative.json", "negative: VexRiscv producer, window cached"),
+            ("vex_pair_cached_consumer_negative.json", "negative: VexRiscv consumer, channel cached"),
+            ("vex_boards.json", "the robot's motor board on VexRiscv"),
+            ("vex_boards_alias_negative.json", "negative: cached alias on the normal (robot) board")]
+    rows = []
+    for f, what in runs:
+        r = load(f)
+        if not r:
+            continue
+        vl = r.get("violations", {})
+        if not isinstance(vl, dict):   # the robot's report: its own checks, not the pair checker's
+            vl = {}
+
+        def g(d, k):
+            return n(d[k]) if k in d else "-"
+        rows.append([f"`{r['label']}`", what, r["verdict"], g(r, "checked_exports"), g(r, "checked_imports"),
+                     g(r, "consumer_reported_imports"), g(vl, "mutual_exclusion"), g(vl, "definite_results"),
+                     g(r, "consumer_faulty_imports"), g(r, "stale_imports")])
+    if not rows:
+        missing("vex_pair.json", "make test-vex-pair")
+    return table(["test", "what", "verdict", "Exports watched", "Imports watched at the RAM",
+                  "Imports reported by the consumer", "mutual-exclusion violations", "definite-results violations",
+                  "faulty values found by the consumer", "stale Imports"], rows)
+
+
+SECTIONS["vex-tests"] = vex_tests
+
+
 def sim_excerpt():
     """The head of `make sim`'s console report, as sim/mobot_sim.cpp prints it."""
     r = load("sim.json")
