@@ -19,8 +19,10 @@ section of build/reports/host_threads.json (the other sections are kept).
                  store-load sites --repeat times each: how often each fails
                  within its budget, and after how many Imports
 
-Options: --imports N (per run), --words W,W, --repeat R, --seconds S (watchdog
-of each run), --not-observed FUNCTION,FUNCTION.  Exit status 0: the command's
+Options: --imports N (per run), --min-overtaken M (each run goes on past N
+Imports until the producer overtook M of them, up to --soft-seconds),
+--words W,W, --repeat R, --seconds S (watchdog of each run), --not-observed
+FUNCTION,FUNCTION.  Exit status 0: the command's
 expectation held.
 """
 import argparse
@@ -57,13 +59,14 @@ def fence_sites():
     return sites
 
 
-def run(binary, kind, imports, words, seconds, stop_after=None, label="run"):
+def run(a, binary, kind, imports, words, stop_after=None, label="run"):
     os.makedirs("build/host_threads/runs", exist_ok=True)
     out = f"build/host_threads/runs/{label}.json"
     if os.path.exists(out):
         os.remove(out)
     cmd = [binary, "--kind", kind, "--imports", str(imports), "--words", str(words),
-           "--seconds", str(seconds), "--label", label, "--json", out]
+           "--seconds", str(a.seconds), "--soft-seconds", str(a.soft_seconds),
+           "--min-overtaken", str(a.min_overtaken), "--label", label, "--json", out]
     if stop_after:
         cmd += ["--stop-after", str(stop_after)]
     p = subprocess.run(cmd, capture_output=True, text=True)
@@ -110,7 +113,7 @@ def check(a):
     runs, ok = [], True
     for kind in KINDS:
         for w in a.words:
-            r = run(f"{a.dir}/ht_mmio", kind, a.imports, w, a.seconds, label=f"mmio-{kind}-{w}w")
+            r = run(a, f"{a.dir}/ht_mmio", kind, a.imports, w, label=f"mmio-{kind}-{w}w")
             runs.append(r)
             good = r["exit"] == 0
             ok &= good
@@ -154,7 +157,7 @@ def negative(a):
           f"{n_broken} without (expected some, and none)")
     for kind in KINDS:
         for w in a.words:
-            r = run(f"{a.dir}/ht_nofence", kind, a.imports, w, a.seconds, a.stop_after, label=f"nofence-{kind}-{w}w")
+            r = run(a, f"{a.dir}/ht_nofence", kind, a.imports, w, a.stop_after, label=f"nofence-{kind}-{w}w")
             runs.append(r)
             good = r["exit"] == 1 and r.get("violations", 0) > 0
             ok &= good
@@ -179,7 +182,7 @@ def sites(a):
             print(f"  -          line {line} {func}: {row['verdict']}")
             continue
         expect_fail = order == "store-load" and func not in a.not_observed
-        r = run(f"{a.dir}/ht_drop{line}", kind, a.imports, a.words[0], a.seconds,
+        r = run(a, f"{a.dir}/ht_drop{line}", kind, a.imports, a.words[0],
                 a.stop_after if expect_fail else None, label=f"drop{line}-{kind}")
         row["run"] = r
         failed = r["exit"] == 1 and r.get("violations", 0) > 0
@@ -216,7 +219,7 @@ def soak(a):
     for binary, name, kind in variants:
         first, viol = [], []
         for i in range(a.repeat):
-            r = run(f"{a.dir}/{binary}", kind, a.negative_imports, a.words[-1], a.seconds, a.stop_after,
+            r = run(a, f"{a.dir}/{binary}", kind, a.negative_imports, a.words[-1], a.stop_after,
                     label=f"soak-{binary}-{kind}-{i}")
             viol.append(r.get("violations", 0))
             first.append(r.get("first_violation_at", 0))
@@ -239,6 +242,8 @@ def main():
     p.add_argument("--stop-after", type=int, default=1000)
     p.add_argument("--repeat", type=int, default=10)
     p.add_argument("--seconds", type=float, default=60)
+    p.add_argument("--soft-seconds", type=float, default=40)
+    p.add_argument("--min-overtaken", type=int, default=50000)
     p.add_argument("--not-observed", default="")
     a = p.parse_args()
     a.words = [int(w) for w in a.words.split(",")]
