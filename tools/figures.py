@@ -558,8 +558,11 @@ def host_threads_reliability():
         rows.append([v["variant"], v["kind"], f"{v['failed']} of {v['runs']}", n(v["budget_imports"]),
                      f"{n(f[0])} / {n(f[len(f) // 2])} / {n(f[-1])}" if f else "-",
                      f"{vi[0]} / {vi[len(vi) // 2]} / {vi[-1]}"])
-    return (f"Payload {r['reliability']['words']} words; a run stops at {r['reliability']['stop_after']} "
-            "violations.\n\n"
+    rel = r["reliability"]
+    over = (f" and until the producer overtook {n(rel['min_overtaken'])} of them (up to 40 s)"
+            if rel.get("min_overtaken") else "")
+    return (f"Payload {rel['words']} words. A run's budget is the Imports in the table{over}; "
+            f"it stops at {rel['stop_after']} violations.\n\n"
             + table(["fence left out", "kind", "runs failed", "budget (Imports)",
                      "first violation at Import (min / median / max)", "violations per run (min / median / max)"],
                     rows))

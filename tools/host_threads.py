@@ -125,7 +125,7 @@ def check(a):
                 for l in r["first_lines"]:
                     print("       " + l)
     total = sum(r.get("imports", 0) for r in runs)
-    save("checked", {"runs": runs, "imports_total": total})
+    save("checked", {"runs": runs, "imports_total": total, "min_overtaken": a.min_overtaken})
     print(f"host-threads: {total:,} Imports checked on {len(runs)} runs, "
           f"{sum(r.get('violations', 0) for r in runs)} violations")
     return ok
@@ -165,7 +165,8 @@ def negative(a):
                   + (f"; first at Import {r['first_violation_at']:,}" if r.get("first_violation_at") else ""))
             if not good:
                 print(f"       expected exit 1 with violations, got exit {r['exit']}: {r['last_line']}")
-    save("no_fence", {"runs": runs, "budget_imports": a.imports, "stop_after": a.stop_after,
+    save("no_fence", {"runs": runs, "budget_imports": a.imports, "min_overtaken": a.min_overtaken,
+                      "stop_after": a.stop_after,
                       "fence_instructions": {"mmio": n_real, "no_fence": n_broken}})
     print(f"host-threads-nofence-negative: {sum(1 for r in runs if r['exit'] == 1)} of {len(runs)} "
           f"runs without the fence failed, {sum(r.get('violations', 0) for r in runs):,} violations")
@@ -204,7 +205,8 @@ def sites(a):
         if not good:
             print(f"       expected {'exit 1 with violations' if expect_fail else 'exit 0'}, got exit "
                   f"{r['exit']}: {r['last_line']}")
-    save("sites", {"sites": rows, "budget_imports": a.imports, "words": a.words[0], "stop_after": a.stop_after})
+    save("sites", {"sites": rows, "budget_imports": a.imports, "min_overtaken": a.min_overtaken, "words": a.words[0],
+                   "stop_after": a.stop_after})
     n = sum(1 for r in rows if r.get("verdict") == "fails without it")
     print(f"host-threads-sites: {n} of {sum(1 for r in rows if 'run' in r)} fence sites fail when dropped alone "
           f"(the store-load ones{'; not observed: ' + ','.join(map(str, a.not_observed)) if a.not_observed else ''})")
@@ -228,7 +230,8 @@ def soak(a):
                       "budget_imports": a.negative_imports, "violations": viol, "first_violation_at": first})
         print(f"  {name}, {kind}: failed {caught} of {a.repeat} runs of at most {a.negative_imports:,} Imports; "
               f"first violation at Import {sorted(f for f in first if f) or '-'}")
-    save("reliability", {"words": a.words[-1], "stop_after": a.stop_after, "variants": stats})
+    save("reliability", {"words": a.words[-1], "stop_after": a.stop_after, "min_overtaken": a.min_overtaken,
+                         "variants": stats})
     return ok
 
 
