@@ -12,7 +12,7 @@
 #   make test-host-threads-nofence-negative
 #                                   the same with a port whose fence does nothing
 #                                   (tb/host_threads/port/, HT_DROP_LINE=0): each
-#                                   kind must fail within 30 M Imports and say how
+#                                   kind must fail within 60 M Imports and say how
 #                                   many torn / stale values it saw (about 5 s)
 #   make test-host-threads-sites    one build per alb_fence() of albatross.c with
 #                                   only that fence dropped: the store-load fences
@@ -65,7 +65,7 @@ test-host-threads: $(HT_DIR)/ht_mmio
 
 test-host-threads-nofence-negative: $(HT_DIR)/ht_mmio $(HT_DIR)/ht_nofence
 	@tools/run_test.sh host-threads-nofence-negative $(HT_RUN) negative $(HT_DIR) \
-	    --imports 30000000 --min-overtaken 150000 --words 2,8 --stop-after 1000
+	    --imports 60000000 --min-overtaken 300000 --words 2,8 --stop-after 1000
 
 test-host-threads-sites: $(foreach L,$(HT_SITES),$(HT_DIR)/ht_drop$(L))
 	@tools/run_test.sh host-threads-sites $(HT_RUN) sites $(HT_DIR) --imports 30000000 --min-overtaken 150000 \
