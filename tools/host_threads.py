@@ -19,7 +19,8 @@ section of build/reports/host_threads.json (the other sections are kept).
                  store-load sites --repeat times each: how often each fails
                  within its budget, and after how many Imports
 
-Options: --imports N (per run), --min-overtaken M (each run goes on past N
+Options: --imports N (per run; --fail-imports for the sites that must fail,
+which stop at their --stop-after-th violation), --min-overtaken M (each run goes on past N
 Imports until the producer overtook M of them, up to --soft-seconds),
 --words W,W, --repeat R, --seconds S (watchdog of each run), --not-observed
 FUNCTION,FUNCTION.  Exit status 0: the command's
@@ -183,7 +184,7 @@ def sites(a):
             print(f"  -          line {line} {func}: {row['verdict']}")
             continue
         expect_fail = order == "store-load" and func not in a.not_observed
-        r = run(a, f"{a.dir}/ht_drop{line}", kind, a.imports, a.words[0],
+        r = run(a, f"{a.dir}/ht_drop{line}", kind, a.fail_imports if expect_fail else a.imports, a.words[0],
                 a.stop_after if expect_fail else None, label=f"drop{line}-{kind}")
         row["run"] = r
         failed = r["exit"] == 1 and r.get("violations", 0) > 0
@@ -205,7 +206,7 @@ def sites(a):
         if not good:
             print(f"       expected {'exit 1 with violations' if expect_fail else 'exit 0'}, got exit "
                   f"{r['exit']}: {r['last_line']}")
-    save("sites", {"sites": rows, "budget_imports": a.imports, "min_overtaken": a.min_overtaken, "words": a.words[0],
+    save("sites", {"sites": rows, "budget_imports": a.imports, "budget_imports_must_fail": a.fail_imports, "min_overtaken": a.min_overtaken, "words": a.words[0],
                    "stop_after": a.stop_after})
     n = sum(1 for r in rows if r.get("verdict") == "fails without it")
     print(f"host-threads-sites: {n} of {sum(1 for r in rows if 'run' in r)} fence sites fail when dropped alone "
@@ -241,6 +242,7 @@ def main():
     p.add_argument("dir")
     p.add_argument("--imports", type=int, default=15000000)
     p.add_argument("--negative-imports", type=int, default=30000000)
+    p.add_argument("--fail-imports", type=int, default=100000000)
     p.add_argument("--words", default="2,8")
     p.add_argument("--stop-after", type=int, default=1000)
     p.add_argument("--repeat", type=int, default=10)
