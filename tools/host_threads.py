@@ -14,7 +14,9 @@ section of build/reports/host_threads.json (the other sections are kept).
                  loading ...") must fail, except those in the functions named
                  by --not-observed (run and reported all the same); a release or acquire
                  site must pass (x86-64 is TSO: it keeps store-store and
-                 load-load order, only the store-load one needs the fence)
+                 load-load order, only the store-load one needs the fence);
+                 --pair F1,F2: the first fences of functions F1 and F2 dropped
+                 together (DIR/ht_pair_<L1>_<L2>) must fail
   soak     DIR   check with --imports-per-run (long), then the negative and the
                  store-load sites --repeat times each: how often each fails
                  within its budget, and after how many Imports
@@ -206,11 +208,29 @@ def sites(a):
         if not good:
             print(f"       expected {'exit 1 with violations' if expect_fail else 'exit 0'}, got exit "
                   f"{r['exit']}: {r['last_line']}")
+    if a.pair:
+        first = {}
+        for line, func, _c, kind, _o in fence_sites():
+            first.setdefault(func, (line, kind))
+        (l1, kind), (l2, _k) = first[a.pair[0]], first[a.pair[1]]
+        r = run(a, f"{a.dir}/ht_pair_{l1}_{l2}", kind, a.fail_imports, a.words[0], a.stop_after,
+                label=f"drop{l1}+{l2}-{kind}")
+        failed = r["exit"] == 1 and r.get("violations", 0) > 0
+        ok &= failed
+        rows.append({"line": f"{l1} + {l2}", "function": " + ".join(a.pair), "comment": "the two together",
+                     "kind": kind, "order": "store-load, and the full fence after it", "run": r,
+                     "verdict": "fails without both" if failed else "NOT CAUGHT"})
+        print(f"  {'ok  ' if failed else 'FAIL'} lines {l1} + {l2} ({' + '.join(a.pair)}) dropped together on {kind}: "
+              f"{rows[-1]['verdict']}; {counts(r)}")
+        if not failed:
+            print(f"       expected exit 1 with violations, got exit {r['exit']}: {r['last_line']}")
     save("sites", {"sites": rows, "budget_imports": a.imports, "budget_imports_must_fail": a.fail_imports, "min_overtaken": a.min_overtaken, "words": a.words[0],
                    "stop_after": a.stop_after})
     n = sum(1 for r in rows if r.get("verdict") == "fails without it")
-    print(f"host-threads-sites: {n} of {sum(1 for r in rows if 'run' in r)} fence sites fail when dropped alone "
-          f"(the store-load ones{'; not observed: ' + ','.join(map(str, a.not_observed)) if a.not_observed else ''})")
+    single = sum(1 for r in rows if "run" in r and isinstance(r["line"], int))
+    print(f"host-threads-sites: {n} of {single} fence sites fail when dropped alone "
+          f"(the store-load ones{'; not observed alone: ' + ','.join(a.not_observed) if a.not_observed else ''})"
+          + (f"; {' + '.join(a.pair)} together: {rows[-1]['verdict']}" if a.pair else ""))
     return ok
 
 
@@ -219,6 +239,12 @@ def soak(a):
     stats = []
     variants = [("ht_nofence", "no fence", k) for k in KINDS]
     variants += [(f"ht_drop{l}", f"line {l} ({f})", k) for l, f, _c, k, o in fence_sites() if o == "store-load"]
+    if a.pair:
+        first = {}
+        for l, f, _c, k, _o in fence_sites():
+            first.setdefault(f, (l, k))
+        (l1, k), (l2, _k) = first[a.pair[0]], first[a.pair[1]]
+        variants.append((f"ht_pair_{l1}_{l2}", f"lines {l1} + {l2} ({' + '.join(a.pair)})", k))
     for binary, name, kind in variants:
         first, viol = [], []
         for i in range(a.repeat):
@@ -250,9 +276,11 @@ def main():
     p.add_argument("--soft-seconds", type=float, default=40)
     p.add_argument("--min-overtaken", type=int, default=50000)
     p.add_argument("--not-observed", default="")
+    p.add_argument("--pair", default="")
     a = p.parse_args()
     a.words = [int(w) for w in a.words.split(",")]
     a.not_observed = [f for f in a.not_observed.split(",") if f]
+    a.pair = [f for f in a.pair.split(",") if f]
     ok = {"check": check, "negative": negative, "sites": sites, "soak": soak}[a.command](a)
     sys.exit(0 if ok else 1)
 

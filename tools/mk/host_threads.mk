@@ -42,6 +42,14 @@ HT_CFLAGS        = $(DRV_CFLAGS) -O2 -pthread -Ic-driver
 HT_SITES        := $(shell grep -n 'alb_fence();' c-driver/albatross.c | cut -d: -f1)
 HT_NOT_OBSERVED := fs_select_write
 HT_RUN           = $(PYTHON) tools/host_threads.py
+# HT_PAIR: the not-observed site dropped together with the fence that covers
+# it on x86-64 (fs_complete's full fence, between the Slot store and the
+# Actual store), which must fail; its lines, the first fence of each function.
+HT_PAIR         := fs_select_write,fs_complete
+HT_LP           := (
+HT_RP           := )
+ht_first_fence   = $(shell awk '/^(static |ALB_NOINLINE )*(int|void) [*]*$(1)[$(HT_LP)]/ {f = 1} f && /alb_fence[$(HT_LP)][$(HT_RP)];/ {print NR; exit}' c-driver/albatross.c)
+HT_PAIR_LINES   := $(call ht_first_fence,fs_select_write)_$(call ht_first_fence,fs_complete)
 
 TESTS += host-threads host-threads-nofence-negative host-threads-sites
 .PHONY: test-host-threads test-host-threads-nofence-negative test-host-threads-sites soak-host
@@ -61,6 +69,12 @@ $(HT_DIR)/ht_drop%: $(HT_DEPS)
 	$(DRV_HOST_CC) $(HT_CFLAGS) -Itb/host_threads/port -DHT_DROP_LINE=$* -DHT_VARIANT='"drop-line-$*"' \
 	    -o $@ $(HT_SRC) c-driver/albatross.c
 
+# Two fences dropped together, lines N and M: $(HT_DIR)/ht_pair_N_M.
+$(HT_DIR)/ht_pair_%: $(HT_DEPS)
+	@mkdir -p $(@D)
+	$(DRV_HOST_CC) $(HT_CFLAGS) -Itb/host_threads/port -DHT_DROP_LINE=$(word 1,$(subst _, ,$*)) \
+	    -DHT_DROP_LINE2=$(word 2,$(subst _, ,$*)) -DHT_VARIANT='"drop-lines-$*"' -o $@ $(HT_SRC) c-driver/albatross.c
+
 test-host-threads: $(HT_DIR)/ht_mmio
 	@tools/run_test.sh host-threads $(HT_RUN) check $(HT_DIR) --imports 15000000 --min-overtaken 50000 \
 	    --words 2,8
@@ -69,10 +83,11 @@ test-host-threads-nofence-negative: $(HT_DIR)/ht_mmio $(HT_DIR)/ht_nofence
 	@tools/run_test.sh host-threads-nofence-negative $(HT_RUN) negative $(HT_DIR) \
 	    --imports 60000000 --min-overtaken 300000 --words 2,8 --stop-after 1000
 
-test-host-threads-sites: $(foreach L,$(HT_SITES),$(HT_DIR)/ht_drop$(L))
+test-host-threads-sites: $(foreach L,$(HT_SITES),$(HT_DIR)/ht_drop$(L)) $(HT_DIR)/ht_pair_$(HT_PAIR_LINES)
 	@tools/run_test.sh host-threads-sites $(HT_RUN) sites $(HT_DIR) --imports 30000000 --fail-imports 100000000 \
-	    --min-overtaken 150000 --words 8 --stop-after 50 --not-observed $(HT_NOT_OBSERVED)
+	    --min-overtaken 150000 --words 8 --stop-after 50 --not-observed $(HT_NOT_OBSERVED) --pair $(HT_PAIR)
 
-soak-host: $(HT_DIR)/ht_mmio $(HT_DIR)/ht_nofence $(foreach L,$(HT_SITES),$(HT_DIR)/ht_drop$(L)) ## host threads: 300 M checked Imports, and how reliably the fence-less builds fail
+soak-host: $(HT_DIR)/ht_mmio $(HT_DIR)/ht_nofence $(foreach L,$(HT_SITES),$(HT_DIR)/ht_drop$(L)) \
+           $(HT_DIR)/ht_pair_$(HT_PAIR_LINES) ## host threads: 300 M checked Imports, and how reliably the fence-less builds fail
 	$(HT_RUN) soak $(HT_DIR) --imports 75000000 --min-overtaken 150000 --words 2,8 \
-	    --negative-imports 30000000 --repeat 10 --stop-after 1000
+	    --negative-imports 30000000 --repeat 10 --stop-after 1000 --pair $(HT_PAIR)

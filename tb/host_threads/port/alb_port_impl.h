@@ -7,6 +7,7 @@
  *   -DHT_DROP_LINE=0   alb_fence() does nothing at every site
  *   -DHT_DROP_LINE=N   only the alb_fence() on line N of albatross.c does
  *                      nothing; every other site keeps the mmio fence
+ *   -DHT_DROP_LINE2=M  (with N) the one on line M does nothing too
  *
  * alb_fence() becomes a macro, so __LINE__ is the line of the call in
  * albatross.c.  A dropped fence keeps a compiler barrier: every RAM access
@@ -28,9 +29,13 @@
 #include "../../../c-driver/port/mmio/alb_port_impl.h"
 #undef alb_fence
 
+#ifndef HT_DROP_LINE2
+#define HT_DROP_LINE2 (-1)
+#endif
+
 static inline void ht_fence(int line)
 {
-    if (HT_DROP_LINE == 0 || line == HT_DROP_LINE)
+    if (HT_DROP_LINE == 0 || line == HT_DROP_LINE || line == HT_DROP_LINE2)
         __asm__ volatile("" ::: "memory");        /* compiler barrier only */
     else
         ht_mmio_fence();
