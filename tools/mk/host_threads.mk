@@ -17,7 +17,7 @@
 #   make test-host-threads-sites    one build per alb_fence() of albatross.c with
 #                                   only that fence dropped: the store-load fences
 #                                   must each fail alone, the release and acquire
-#                                   ones must pass (x86-64 is TSO); 30 M Imports
+#                                   ones must pass (x86-64 is TSO); 20 M Imports
 #                                   each, 100 M for those that must fail (they stop
 #                                   at their 50th violation; make soak-host saw the
 #                                   first one as late as 23 M); and HT_PAIR (two
@@ -86,8 +86,8 @@ test-host-threads-nofence-negative: $(HT_DIR)/ht_mmio $(HT_DIR)/ht_nofence
 	    --imports 60000000 --min-overtaken 300000 --words 2,8 --stop-after 1000
 
 test-host-threads-sites: $(foreach L,$(HT_SITES),$(HT_DIR)/ht_drop$(L)) $(HT_DIR)/ht_pair_$(HT_PAIR_LINES)
-	@tools/run_test.sh host-threads-sites $(HT_RUN) sites $(HT_DIR) --imports 30000000 --fail-imports 100000000 \
-	    --min-overtaken 150000 --words 8 --stop-after 50 --not-observed $(HT_NOT_OBSERVED) --pair $(HT_PAIR)
+	@tools/run_test.sh host-threads-sites $(HT_RUN) sites $(HT_DIR) --imports 20000000 --fail-imports 100000000 \
+	    --min-overtaken 100000 --words 8 --stop-after 50 --not-observed $(HT_NOT_OBSERVED) --pair $(HT_PAIR)
 
 soak-host: $(HT_DIR)/ht_mmio $(HT_DIR)/ht_nofence $(foreach L,$(HT_SITES),$(HT_DIR)/ht_drop$(L)) \
            $(HT_DIR)/ht_pair_$(HT_PAIR_LINES) ## host threads: 300 M checked Imports, and how reliably the fence-less builds fail
