@@ -581,6 +581,73 @@ def sim_excerpt():
 SECTIONS["sim-excerpt"] = sim_excerpt
 
 
+def host_threads():
+    """The real driver on two host threads (make test-host-threads and its negative;
+    make soak-host for the long run): every Import checked, with and without the fence."""
+    r = load("host_threads.json")
+    if not r or "checked" not in r:
+        missing("host_threads.json", "make test-host-threads")
+    rows = []
+    for sec, port in (("checked", "mmio (`lock or` fence)"), ("no_fence", "fence does nothing")):
+        for x in r.get(sec, {}).get("runs", []):
+            first = x.get("first_violation_at", 0)
+            rows.append([port, x["kind"], x["payload_words"], n(x["imports"]), n(x["new"]), n(x["old"]),
+                         n(x["overtaken"]), x["torn"], x["back_in_time"], x["stale"], x["wrong_new"],
+                         x["wrong_old"], n(first) if first else "-"])
+    return (f"Machine: {r['machine']['cpu']}, {r['machine']['cores']} cores. "
+            f"{n(r['checked']['imports_total'])} Imports checked with the fence.\n\n"
+            + table(["port", "kind", "words", "Imports", "New", "Old", "overtaken", "torn", "back in time",
+                     "stale", "wrong New", "wrong Old", "first violation at Import"], rows))
+
+
+SECTIONS["host-threads"] = host_threads
+
+
+def host_threads_sites():
+    """Each fence site of albatross.c dropped alone (make test-host-threads-sites)."""
+    r = load("host_threads.json")
+    if not r or "sites" not in r:
+        missing("host_threads.json", "make test-host-threads-sites")
+    rows = []
+    for s in r["sites"]["sites"]:
+        x = s.get("run")
+        rows.append([s["line"], f"`{s['function']}`", s["comment"] or "-", s["order"],
+                     s["kind"] if x else "-", n(x["imports"]) if x else "-",
+                     f"{x['violations']} ({x['torn']} torn, {x['wrong_old']} wrong Old, "
+                     f"{x['back_in_time'] + x['stale'] + x['wrong_new']} other)" if x else "-",
+                     s["verdict"]])
+    return table(["line", "function", "the fence orders", "order", "run on", "Imports",
+                  "violations", "without this fence alone"], rows)
+
+
+SECTIONS["host-threads-sites"] = host_threads_sites
+
+
+def host_threads_reliability():
+    """How reliably the fence-less builds fail within their budget (make soak-host)."""
+    r = load("host_threads.json")
+    if not r or "reliability" not in r:
+        missing("host_threads.json", "make soak-host")
+    rows = []
+    for v in r["reliability"]["variants"]:
+        f = sorted(x for x in v["first_violation_at"] if x)
+        vi = sorted(v["violations"])
+        rows.append([v["variant"], v["kind"], f"{v['failed']} of {v['runs']}", n(v["budget_imports"]),
+                     f"{n(f[0])} / {n(f[len(f) // 2])} / {n(f[-1])}" if f else "-",
+                     f"{vi[0]} / {vi[len(vi) // 2]} / {vi[-1]}"])
+    rel = r["reliability"]
+    over = (f" and until the producer overtook {n(rel['min_overtaken'])} of them (up to 40 s)"
+            if rel.get("min_overtaken") else "")
+    return (f"Payload {rel['words']} words. A run's budget is the Imports in the table{over}; "
+            f"it stops at {rel['stop_after']} violations.\n\n"
+            + table(["fence left out", "kind", "runs failed", "budget (Imports)",
+                     "first violation at Import (min / median / max)", "violations per run (min / median / max)"],
+                    rows))
+
+
+SECTIONS["host-threads-reliability"] = host_threads_reliability
+
+
 # A marker is a line of its own (a marker quoted inside a sentence is text).
 BLOCK = re.compile(r"^<!-- figures:([A-Za-z0-9_-]+) -->\n(.*?)^<!-- /figures:\1 -->$", re.S | re.M)
 
