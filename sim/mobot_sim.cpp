@@ -6,7 +6,8 @@
 // compiler's schedule ROM, with a bus fault injector in between.
 //
 //   mobot_sim --plan tb_plan.txt +fw0..3=FILE +ram0..3=FILE +rom=FILE
-//             [--cycles N] [--seed S] [--stall P] [--fault-rate R]
+//             [--cycles N] [--seed S] [--stall P] [--fault-rate R] [--burst L]
+//             [--fault-clocking access|clock]
 //             [--crash BOARD@CYCLE] [--hang BOARD@CYCLE]
 //             [--trace FILE.vcd [--trace-from N] [--trace-cycles N]]
 //             [--report FILE] [--ages FILE.csv] [--label NAME] [--progress K]
@@ -20,8 +21,15 @@
 // the control word, that is of Actual; for a four-slot channel its first load,
 // docs/four_slot.md) - taken_at, and times each producer's
 // stores of Actual; it takes the cycles per call from the events, and it injects
-// faults: each new controller request is faulted with probability R, its
-// kind (error, timeout, timeout after performing) drawn evenly.
+// faults: each new controller request to a live board (the injector's
+// fi_new_o) is faulted with probability R, independently or in bursts of mean
+// length L accesses (--burst L, tb/common/fault_model.h), its kind (error,
+// timeout, timeout after performing) drawn evenly; the measured share is
+// checked against R (check faults).
+//   --burst L       faults come in runs of mean length L accesses
+//   --fault-clocking clock  the fault process advances every clock instead
+//                   of every access (the old injector; negative test of the
+//                   rate check)
 //   --stall P       every core's local RAM is held in random bursts (each
 //                   free cycle starts one with probability 1/P, 1..1024
 //                   cycles; 0 = none, the default), so cores drift
@@ -62,7 +70,9 @@
 //              radar crash (unless a core failed its own check), and, on a
 //              fault-free bus, never before it and never without one
 //   faults     with faults injected, the controller's STATUS (read by the
-//              navigation core) counts retries
+//              navigation core) counts retries; the share of accesses
+//              faulted is R within the statistical tolerance of
+//              tb/common/fault_model.h
 //   clock      runs without faults, boards whose firmware has the local
 //              clock (MOBOT_EV_CLOCK): every estimate with the rate known
 //              lies within the board's lag and lead bounds of the
@@ -90,6 +100,7 @@
 #include <string>
 #include <vector>
 #include "Vpico_boards.h"
+#include "fault_model.h"
 #include "verilated.h"
 #if VM_TRACE
 #include "verilated_vcd_c.h"
@@ -176,11 +187,10 @@ int main(int argc, char **argv)
 #endif
     uint64_t rng = o.seed * 0x9E3779B97F4A7C15ull + 1;
     auto next = [&]() { rng ^= rng << 13; rng ^= rng >> 7; rng ^= rng << 17; return rng; };
-    const uint64_t fault_threshold = uint64_t(o.fault_rate * 18446744073709551615.0);
+    FaultModel fault_model(o.fault_rate, o.burst, o.seed ^ 0xFA17ull);
 
     uint64_t stall_left[NB] = {0, 0, 0, 0}, busy = 0, faults = 0, requests = 0;
     uint32_t frozen = 0;
-    bool prev_stb = false, prev_answer = false;
     auto tick = [&]() {
         uint32_t st = frozen;
         for (int c = 0; c < NB; ++c) {
@@ -188,14 +198,13 @@ int main(int argc, char **argv)
             if (stall_left[c]) { --stall_left[c]; st |= 1u << c; }
         }
         m->stall_i = st;
-        // The injector samples fi_kind in the first clock of a new request.
-        const bool stb = m->m_stb_o;
-        if (stb && (!prev_stb || prev_answer)) {
+        // A new request to a live board samples fi_kind at this edge: it
+        // uses the drawn kind, and the next access gets the next draw.
+        const bool drawn = m->fi_new_o && !m->fi_dead_o && !m->rst_i;
+        if (drawn) {
             ++requests;
             if (m->fi_kind_i) ++faults;
         }
-        prev_stb = stb;
-        prev_answer = m->m_ack_o || m->m_err_o;
         busy += m->m_cyc_o;
         m->clk_i = 1; m->eval();
 #if VM_TRACE
@@ -207,14 +216,14 @@ int main(int argc, char **argv)
 #endif
         ++ticks;
         ++cycle;
-        // next clock's fault kind
-        m->fi_kind_i = (fault_threshold && next() < fault_threshold) ? 1 + next() % 3u : 0;
+        // The next access's kind (per clock: the old, wrong driving, a negative test).
+        if (drawn || o.fault_per_clock) m->fi_kind_i = fault_model.next() & 3u;
     };
 
     m->clk_i = 0;
     m->rst_i = 1;
     m->stall_i = 0;
-    m->fi_kind_i = 0;
+    m->fi_kind_i = fault_model.next() & 3u;   // the first access's kind
     m->fi_dead_i = 0;
     m->eval();  // every clock low before the first edge
 #if VM_TRACE
@@ -476,6 +485,16 @@ int main(int argc, char **argv)
                       crash_run ? "before the crash" : "without a crash", (unsigned long long)stale_before_crash);
         fail("staleness", b);
     }
+    // The injected rate per access against the nominal one (tb/common/fault_model.h).
+    const double rate_measured = requests ? double(faults) / double(requests) : 0;
+    const double rate_tol = fault_model.tolerance(requests);
+    const bool rate_ok = std::fabs(rate_measured - o.fault_rate) <= rate_tol;
+    if (!rate_ok) {
+        std::snprintf(b, sizeof b, "expected a fault rate of %.4f +- %.4f per access, got %.4f (%llu of %llu accesses "
+                      "faulted)", o.fault_rate, rate_tol, rate_measured, (unsigned long long)faults,
+                      (unsigned long long)requests);
+        fail("faults", b);
+    }
     if (faults && status_retries == 0) {
         std::snprintf(b, sizeof b, "expected STATUS to count retries after %llu injected faults, navigation read "
                       "%llu STATUS values with 0 retries", (unsigned long long)faults, (unsigned long long)status_reads);
@@ -488,11 +507,16 @@ int main(int argc, char **argv)
                 o.label.c_str(), (unsigned long long)cycle, 1e3 * double(cycle) / plan.clock_hz, plan.clock_hz / 1e6, m->time_o,
                 cycle ? 100.0 * double(busy) / double(cycle) : 0.0, (unsigned long long)requests,
                 (unsigned long long)faults, status_retries, status_abandoned);
+    std::printf("  fault rate per access: nominal %.4f, measured %.4f (mean burst %.3g accesses; tolerance +-%.4f, "
+                "%.0f sigma)%s\n", o.fault_rate, rate_measured, fault_model.mean_burst(), rate_tol,
+                FaultModel::kSigmas, rate_ok ? "" : ": OUT OF TOLERANCE");
     std::printf("  %-11s %-11s %7s %7s %9s %9s %9s %9s %6s %11s\n", "channel", "consumer", "New", "Old",
                 "age min", "age mean", "age max", "bound", "ratio", "cyc/Import");
     JsonReport r;
     r.str("label", o.label).num("seed", double(o.seed)).num("cycles", double(cycle)).num("clock_hz", plan.clock_hz)
      .num("fault_rate", o.fault_rate).num("faults_injected", double(faults)).num("requests", double(requests))
+     .num("burst", o.burst).num("fault_mean_burst", fault_model.mean_burst())
+     .num("fault_rate_measured", rate_measured).num("fault_rate_tolerance", rate_tol).num("fault_rate_ok", rate_ok ? 1 : 0)
      .num("status_retries", status_retries).num("status_abandoned", status_abandoned)
      .num("bus_busy_fraction", cycle ? double(busy) / double(cycle) : 0.0)
      .str("crash_board", crash_run ? plan.board_names[o.crash_board] : "").num("crash_cycle", double(crash_cycle))

@@ -7,6 +7,7 @@
 #include <iterator>
 #include <string>
 #include <vector>
+#include "fault_model.h"
 #include "mobot_sim.h"
 
 namespace {
@@ -66,7 +67,8 @@ int usage(const char *msg)
 {
     std::fprintf(stderr, "mobot_sim: %s\n"
                  "usage: mobot_sim --plan tb_plan.txt +fw0..3=FILE +ram0..3=FILE +rom=FILE [--cycles N]\n"
-                 "                 [--seed S] [--stall P] [--fault-rate R] [--crash BOARD@CYCLE] [--hang BOARD@CYCLE]\n"
+                 "                 [--seed S] [--stall P] [--fault-rate R] [--burst L] [--fault-clocking access|clock]\n"
+                 "                 [--crash BOARD@CYCLE] [--hang BOARD@CYCLE]\n"
                  "                 [--trace FILE.vcd [--trace-from N] [--trace-cycles N]] [--report FILE]\n"
                  "                 [--ages FILE.csv] [--label NAME] [--progress K] [--age-scale X] [--require-done]\n"
                  "                 [--termination-scale X]\n"
@@ -119,6 +121,13 @@ int parse_options(int argc, char **argv, Options &o, Plan &plan, std::vector<std
             char *end = nullptr;
             o.term_scale = std::strtod(v, &end);
             if (*end || !(o.term_scale > 0)) return usage("--termination-scale: expected a number > 0");
+        } else if (a == "--fault-clocking") {
+            if (std::string(v) != "access" && std::string(v) != "clock") return usage("--fault-clocking: access or clock");
+            o.fault_per_clock = std::string(v) == "clock";
+        } else if (a == "--burst") {
+            char *end = nullptr;
+            o.burst = std::strtod(v, &end);
+            if (*end || !(o.burst >= 1)) return usage("--burst: expected a mean run of faulted accesses >= 1");
         } else if (a == "--fault-rate" || a == "--age-scale") {
             char *end = nullptr;
             const double x = std::strtod(v, &end);
@@ -138,6 +147,8 @@ int parse_options(int argc, char **argv, Options &o, Plan &plan, std::vector<std
         }
     }
     if (o.plan.empty()) return usage("--plan is required");
+    const std::string bad_faults = FaultModel::invalid(o.fault_rate, o.burst);
+    if (!bad_faults.empty()) return usage(bad_faults.c_str());
     for (size_t p = 0; !o.expect.empty() && p <= o.expect.size();) {
         const size_t q = std::min(o.expect.find(',', p), o.expect.size());
         expect.push_back(o.expect.substr(p, q - p));

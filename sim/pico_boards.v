@@ -3,7 +3,8 @@
 // (soc/albatross_system.v) with NB soft-core boards, the controller's bus
 // closed through a bus_fault_injector, and the DPRAM images from plusargs.
 //
-// Board c: core c (PicoRV32, or SERV where SERV_MASK selects it; the memory
+// Board c: core c (PicoRV32, or SERV where SERV_MASK selects it, or VexRiscv
+// where VEX_MASK does: its window and registers at 0x9/0xA000_0000; the memory
 // map of soc/board_memmap.v and soc/firmware/board.h: local RAM at 0, DPRAM
 // window at 0x1000_0000, board registers at 0x2000_0000 with TOHOST and
 // STAT 0..3) reaches port A of its own albatross_dpram; port B hangs on
@@ -12,8 +13,8 @@
 // tb/common/bus_fault_injector.v; 0 forwards every request unchanged).  The
 // harness sees each core's board events (ev_*: a store to EVENT), each core's
 // completed DPRAM accesses (dp_*: port A, one clock per acked access), and
-// the controller side of the injector (m_*), where a new request is m_stb_o
-// in a clock after one without m_stb_o or with an answer.  Everything runs on
+// the controller side of the injector (m_*), and fi_new_o, high in the first
+// clock of each new controller request (the clock fi_kind_i is sampled).  Everything runs on
 // clk_i.  Plusargs (simulation only): +fwC=FILE the program of core C
 // (board_memmap), +ramC=FILE the start image of board C's DPRAM (the
 // compiler's <board>_ram.hex; read here), +rom=FILE the schedule ROM (read by
@@ -34,13 +35,16 @@ module pico_boards #(
     parameter ROM_WORDS  = 1024,  // schedule ROM depth in words
     parameter TIMEOUT    = 8,     // controller access timeout, clocks
     parameter POLL       = 16,    // controller poll interval in sync mode
-    parameter SERV_MASK  = 0      // NB bits: board c's core is SERV when bit c is set, else PicoRV32
+    parameter SERV_MASK  = 0,     // NB bits: board c's core is SERV when bit c is set, else PicoRV32
+    parameter VEX_MASK   = 0      // NB bits: board c's core is VexRiscv when bit c is set (before SERV_MASK)
 ) (
     input  wire              clk_i,      // everything's clock
     input  wire              rst_i,      // synchronous, active high
     input  wire [NB-1:0]     stall_i,    // core c: hold its local-RAM access this cycle
     input  wire [1:0]        fi_kind_i,  // fault kind for the controller's next new request
     input  wire [NB-1:0]     fi_dead_i,  // board links that are down
+    output wire              fi_new_o,   // a new controller request samples fi_kind_i in this clock
+    output wire              fi_dead_o,  // ... and goes to a dead board
     output wire [NB-1:0]     done_o,     // core c stored to TOHOST
     output wire [NB*32-1:0]  code_o,     // the last value it stored (exit code)
     output wire [NB*128-1:0] stat_o,     // core c: STAT k at [c*128 + k*32 +: 32]
@@ -86,7 +90,7 @@ module pico_boards #(
 
     albatross_system #(
         .NB(NB), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .N_CHAN(N_CHAN), .ROM_WORDS(ROM_WORDS),
-        .TIMEOUT(TIMEOUT), .POLL(POLL), .SERV_MASK(SERV_MASK),
+        .TIMEOUT(TIMEOUT), .POLL(POLL), .SERV_MASK(SERV_MASK), .VEX_MASK(VEX_MASK),
         .BUS_HOOK(1)  // the fault injector closes the controller's bus
     ) u_sys (
         .clk_i(clk_i), .rst_i(rst_i), .cpu_clk_i(clk_i), .cpu_rst_i(rst_i), .stall_i(stall_i),
@@ -107,6 +111,7 @@ module pico_boards #(
 
     bus_fault_injector #(.NB(NB), .ADDR_WIDTH(ADDR_WIDTH)) u_faults (
         .clk_i(clk_i), .rst_i(rst_i), .fi_kind_i(fi_kind_i), .fi_dead_i(fi_dead_i),
+        .fi_new_o(fi_new_o), .fi_dead_o(fi_dead_o),
         .c_cyc_i(m_cyc_o), .c_stb_i(m_stb_o), .c_we_i(m_we), .c_adr_i(m_adr), .c_sel_i(m_sel),
         .c_dat_i(m_wdat), .c_dat_o(m_rdat), .c_ack_o(m_ack_o), .c_err_o(m_err_o),
         .b_cyc_o(i_cyc), .b_stb_o(i_stb), .b_we_o(i_we), .b_adr_o(i_adr), .b_sel_o(i_sel),
@@ -117,7 +122,10 @@ module pico_boards #(
     genvar t;
     generate
         for (t = 0; t < NB; t = t + 1) begin : g_timer
-            if (((SERV_MASK >> t) & 1) != 0) begin : g_serv
+            if (((VEX_MASK >> t) & 1) != 0) begin : g_vex
+                assign timer_rd_o[t]         = u_sys.g_board[t].g_core.u_core.g_vex.u_core.u_map.timer_read;
+                assign timer_o[t*32 +: 32]   = u_sys.g_board[t].g_core.u_core.g_vex.u_core.u_map.timer_q;
+            end else if (((SERV_MASK >> t) & 1) != 0) begin : g_serv
                 assign timer_rd_o[t]         = u_sys.g_board[t].g_core.u_core.g_serv.u_core.u_map.timer_read;
                 assign timer_o[t*32 +: 32]   = u_sys.g_board[t].g_core.u_core.g_serv.u_core.u_map.timer_q;
             end else begin : g_pico

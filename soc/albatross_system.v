@@ -12,7 +12,10 @@
 //     simulated CPUs of tb/system, driven from C++).  It runs on clk_i with
 //     no bridge: albatross_dpram's timing (an ack 1 or 2 clocks after the
 //     request; port A served in every other clock).
-//   * otherwise a soft core, board_core: SERV where SERV_MASK bit c is set
+//   * otherwise a soft core, board_core: VexRiscv where VEX_MASK bit c is
+//     set (soc/vexriscv_core.v, instruction and data caches; it sees the
+//     DPRAM window and the registers uncached at 0x9000_0000 / 0xA000_0000),
+//     SERV where SERV_MASK bit c is set
 //     (soc/serv_core.v), else PicoRV32 (soc/pico_core.v; SMALL 1 drops its
 //     counters and traps).  Its memory map is soc/board_memmap.v and
 //     soc/firmware/board.h: local RAM of RAM_WORDS words at 0, DPRAM window
@@ -74,6 +77,7 @@ module albatross_system #(
     parameter POLL       = 16,    // controller poll interval in sync mode, clocks
     parameter EXT_MASK   = 0,     // NB bits: board c's port A is ext_*[c] when bit c is set, else a core
     parameter SERV_MASK  = 0,     // NB bits: core c is SERV when bit c is set, else PicoRV32
+    parameter VEX_MASK   = 0,     // NB bits: core c is VexRiscv (caches; soc/vexriscv_core.v) when bit c is set
     parameter SMALL      = 0,     // PicoRV32 cores: 1 drops the counters and the misalign/illegal traps
     parameter CPU_CDC    = 0,     // 1: the cores on cpu_clk_i, through albatross_wb_cdc; 0: all on clk_i
     parameter BUS_HOOK   = 0      // 1: the parent connects ctl_* to bus_*; 0: connected inside
@@ -119,7 +123,7 @@ module albatross_system #(
     output wire [NB-1:0]            ev_valid_o,   // core c stored to EVENT (one clock)
     output wire [NB*32-1:0]         ev_data_o,    // that value
     output wire [NB*32-1:0]         ev_arg_o,     // ARG at that time
-    output wire [NB-1:0]            trap_o,       // core c trapped (PicoRV32; SERV: 0)
+    output wire [NB-1:0]            trap_o,       // core c trapped (PicoRV32; SERV, VexRiscv: 0)
     output wire [NB-1:0]            map_err_o,    // core c accessed an unmapped address
     // port A of each DPRAM as performed (clk_i)
     output wire [NB-1:0]            mon_a_ack_o,  // an access acked this clock
@@ -264,7 +268,7 @@ module albatross_system #(
                     assign {c_rdat, c_ack} = {a_rdat, a_ack};
                 end
 
-                board_core #(.SERV((SERV_MASK >> c) & 1), .CORE(c), .ADDR_WIDTH(ADDR_WIDTH),
+                board_core #(.SERV((SERV_MASK >> c) & 1), .VEX((VEX_MASK >> c) & 1), .CORE(c), .ADDR_WIDTH(ADDR_WIDTH),
                              .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE), .SMALL(SMALL)) u_core (
                     .clk_i     (core_clk),
                     .rst_i     (core_rst),

@@ -1,6 +1,9 @@
-// board_core -- the soft core of one board: a PicoRV32 (pico_core) or a
-// SERV (serv_core), chosen by SERV, with the ports both share (the board's
-// memory map, board_memmap, is inside each).  albatross_system (the
+// board_core -- the soft core of one board: a PicoRV32 (pico_core), a
+// SERV (serv_core, SERV = 1) or a VexRiscv with caches (vexriscv_core,
+// VEX = 1; it wins over SERV), with the ports all share (the board's
+// memory map, board_memmap, is inside each; VexRiscv sees it through
+// vexriscv_bridge, with the DPRAM window and registers uncached at
+// 0x9000_0000 / 0xA000_0000).  albatross_system (the
 // system of the FPGA tops, the robot simulation and the system test) and
 // tb/pico/pico_pair instantiate this once per board; the timing and rules
 // are those of the chosen core.
@@ -8,6 +11,8 @@
 
 module board_core #(
     parameter SERV       = 0,     // 0: PicoRV32, 1: SERV
+    parameter VEX        = 0,     // 1: VexRiscv (soc/vexriscv_core.v), whatever SERV is
+    parameter CACHED_ALIAS = 0,   // VexRiscv only: 1 also maps the DPRAM window cached (a negative test)
     parameter CORE       = 0,     // index: the firmware plusarg is +fw<CORE>=FILE (0..3)
     parameter ADDR_WIDTH = 10,    // word-address bits of the DPRAM port
     parameter RAM_WORDS  = 4096,  // words of the local RAM (16 KiB)
@@ -33,12 +38,21 @@ module board_core #(
     output wire                  ev_valid_o,// a store to EVENT, this clock
     output wire [31:0]           ev_data_o, // its value
     output wire [31:0]           ev_arg_o,  // ARG at that time
-    output wire                  trap_o,    // the core trapped (PicoRV32; SERV: 0)
+    output wire                  trap_o,    // the core trapped (PicoRV32; SERV, VexRiscv: 0)
     output wire                  bus_err_o  // an access to an unmapped address
 );
 
     generate
-        if (SERV == 0) begin : g_pico
+        if (VEX != 0) begin : g_vex
+            vexriscv_core #(.CORE(CORE), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE),
+                            .CACHED_ALIAS(CACHED_ALIAS)) u_core (
+                .clk_i(clk_i), .rst_i(rst_i), .stall_i(stall_i),
+                .wb_cyc_o(wb_cyc_o), .wb_stb_o(wb_stb_o), .wb_we_o(wb_we_o), .wb_adr_o(wb_adr_o),
+                .wb_sel_o(wb_sel_o), .wb_dat_o(wb_dat_o), .wb_dat_i(wb_dat_i), .wb_ack_i(wb_ack_i),
+                .done_o(done_o), .code_o(code_o), .stat_o(stat_o), .ev_valid_o(ev_valid_o),
+                .ev_data_o(ev_data_o), .ev_arg_o(ev_arg_o), .trap_o(trap_o), .bus_err_o(bus_err_o)
+            );
+        end else if (SERV == 0) begin : g_pico
             pico_core #(.CORE(CORE), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE),
                         .SMALL(SMALL)) u_core (
                 .clk_i(clk_i), .rst_i(rst_i), .stall_i(stall_i),

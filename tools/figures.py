@@ -200,8 +200,9 @@ def system_latency():
 
 
 def system_delivery():
-    runs = [("system_faults-5.json", "system_faults-5-noredundancy.json", "5 % faults"),
-            ("system_burst.json", "system_burst-noredundancy.json", "20 % faults, bursts of 60 clocks")]
+    runs = [("system_faults-5.json", "system_faults-5-noredundancy.json", "5 % of accesses faulted"),
+            ("system_faults-20-burst-60.json", "system_faults-20-burst-60-noredundancy.json",
+             "20 % of accesses, bursts of 60 accesses")]
     if not any(load(red) and load(nored) for red, nored, _ in runs):
         missing("system_faults-5*.json", "make test")
     rows = []
@@ -222,6 +223,23 @@ def system_delivery():
         missing("system_faults-5*.json", "make test")
     return table(["faults", "channel", "to board", "redundant: within bound", "worst (clk)", "worst / bound",
                   "one slot a cycle: within bound", "worst (clk)", "worst / bound"], rows)
+
+
+def system_fault_rates():
+    """Nominal against measured fault rate per access, every system run."""
+    rows = []
+    for path in sorted(glob.glob(os.path.join(REPORTS, "system_*.json"))):
+        r = load(os.path.basename(path))
+        if not r or "fault_rate_measured" not in r or not r.get("fault_rate"):
+            continue
+        burst = f"{r['fault_mean_burst']:.3g}" + (" (independent)" if not r.get("burst") else "")
+        rows.append([f"`{r['label']}`", r.get("fault_clocking", "access"), f"{r['fault_rate']:.3f}", burst,
+                     n(r["fault_accesses"]), n(r["faults_injected"]), f"{r['fault_rate_measured']:.4f}",
+                     f"± {r['fault_rate_tolerance']:.4f}", "yes" if r["fault_rate_ok"] else "**no**"])
+    if not rows:
+        missing("system_faults-5.json", "make test")
+    return table(["run", "drawn per", "nominal rate", "mean burst (accesses)", "accesses", "faulted",
+                  "measured rate", "tolerance (6 σ)", "within"], rows)
 
 
 def system_bus():
@@ -424,7 +442,7 @@ def formal_rtl():
     return table(["check", "engine", "properties", "result", "depth (clocks)", "seconds"], rows)
 
 
-SECTIONS = {"fpga": fpga, "controller-area": controller_area, "robot": robot, "robot-scenarios": robot_scenarios, "sim-speed": sim_speed, "system-latency": system_latency, "system-delivery": system_delivery, "system-bus": system_bus,"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
+SECTIONS = {"fpga": fpga, "controller-area": controller_area, "robot": robot, "robot-scenarios": robot_scenarios, "sim-speed": sim_speed, "system-latency": system_latency, "system-delivery": system_delivery, "system-bus": system_bus, "system-fault-rates": system_fault_rates,"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
             "driver-size": driver_size, "bench": bench, "cdc": cdc, "synth": synth,
             "pico-cost": pico_cost, "formal-spin": formal_spin}
 
@@ -515,6 +533,61 @@ def kinds_cost():
 SECTIONS["kinds-cost"] = kinds_cost
 
 
+def vex_cost():
+    """Cycles per call on VexRiscv (data cache, DPRAM window uncached) next to PicoRV32,
+    the same bench.c and driver, rv32i -Os (make bench-vex)."""
+    p, v = load("bench_pico.json"), load("bench_vex.json")
+    if not p or not v:
+        missing("bench_vex.json" if p else "bench_pico.json", "make bench-vex")
+    rows = []
+    for ep, ev in zip(p["sizes"], v["sizes"]):
+        row = [ep["bytes"]]
+        for k in ("export", "import_new", "import_old", "copy_to_dpram", "copy_from_dpram"):
+            a, b = ep[k]["mean"], ev[k]["mean"]
+            row.append(f"{a:.0f} / {b:.0f} ({a / b:.1f}x)")
+        rows.append(row)
+    return table(["payload bytes", "Export", "Import, New", "Import, Old", "plain copy to DPRAM",
+                  "plain copy from DPRAM"], rows) + (
+        "\n\nEach cell: PicoRV32 / VexRiscv cycles per call (mean of "
+        f"{v['calls_per_figure']} calls, the counter pair subtracted), and how many times fewer VexRiscv needs.")
+
+
+SECTIONS["vex-cost"] = vex_cost
+
+
+def vex_tests():
+    """The VexRiscv pair tests and their negatives (make test-vex-*); "-": not a figure of that run
+    (the robot runs have their own checks, docs/robot.md)."""
+    runs = [("vex_pair.json", "PicoRV32 producer, VexRiscv consumer, window uncached"),
+            ("vex_pair_producer.json", "VexRiscv producer, PicoRV32 consumer, window uncached"),
+            ("vex_pair_cached_negative.json", "negative: VexRiscv producer, window cached"),
+            ("vex_pair_cached_consumer_negative.json", "negative: VexRiscv consumer, channel cached"),
+            ("vex_boards.json", "the robot's motor board on VexRiscv"),
+            ("vex_boards_alias_negative.json", "negative: cached alias on the normal (robot) board")]
+    rows = []
+    for f, what in runs:
+        r = load(f)
+        if not r:
+            continue
+        vl = r.get("violations", {})
+        if not isinstance(vl, dict):   # the robot's report: its own checks, not the pair checker's
+            vl = {}
+
+        def g(d, k):
+            return n(d[k]) if k in d else "-"
+        rows.append([f"`{r['label']}`", what, r["verdict"], g(r, "checked_exports"), g(r, "checked_imports"),
+                     g(r, "consumer_reported_imports"), g(vl, "mutual_exclusion"), g(vl, "definite_results"),
+                     g(r, "consumer_faulty_imports"), g(r, "stale_imports")])
+    if not rows:
+        missing("vex_pair.json", "make test-vex-pair")
+    return table(["test", "what", "verdict", "Exports watched", "Imports watched at the RAM",
+                  "Imports reported by the consumer", "mutual-exclusion violations", "definite-results violations",
+                  "faulty values found by the consumer", "stale Imports"], rows)
+
+
+SECTIONS["vex-tests"] = vex_tests
+
+
 def sim_excerpt():
     """The head of `make sim`'s console report, as sim/mobot_sim.cpp prints it."""
     r = load("sim.json")
@@ -525,8 +598,12 @@ def sim_excerpt():
              f"{r['label']}: {r['cycles']} cycles ({1e3 * r['cycles'] / hz:.2f} ms at {hz / 1e6:.0f} MHz), "
              f"controller time {r['cycles']}, bus busy {100 * r['bus_busy_fraction']:.1f} %, {r['requests']} requests, "
              f"{r['faults_injected']} faults injected, STATUS: {r['status_retries']} retries, "
-             f"{r['status_abandoned']} abandoned",
-             "  %-11s %-11s %7s %7s %9s %9s %9s %9s %6s %11s" % ("channel", "consumer", "New", "Old", "age min",
+             f"{r['status_abandoned']} abandoned"]
+    if "fault_rate_measured" in r:
+        lines.append(f"  fault rate per access: nominal {r['fault_rate']:.4f}, measured {r['fault_rate_measured']:.4f} "
+                     f"(mean burst {r['fault_mean_burst']:.3g} accesses; tolerance +-{r['fault_rate_tolerance']:.4f}, "
+                     f"6 sigma){'' if r['fault_rate_ok'] else ': OUT OF TOLERANCE'}")
+    lines += ["  %-11s %-11s %7s %7s %9s %9s %9s %9s %6s %11s" % ("channel", "consumer", "New", "Old", "age min",
                                                              "age mean", "age max", "bound", "ratio", "cyc/Import")]
     for s in r["series"][:4]:
         a = s["age"]
@@ -537,6 +614,73 @@ def sim_excerpt():
 
 
 SECTIONS["sim-excerpt"] = sim_excerpt
+
+
+def host_threads():
+    """The real driver on two host threads (make test-host-threads and its negative;
+    make soak-host for the long run): every Import checked, with and without the fence."""
+    r = load("host_threads.json")
+    if not r or "checked" not in r:
+        missing("host_threads.json", "make test-host-threads")
+    rows = []
+    for sec, port in (("checked", "mmio (`lock or` fence)"), ("no_fence", "fence does nothing")):
+        for x in r.get(sec, {}).get("runs", []):
+            first = x.get("first_violation_at", 0)
+            rows.append([port, x["kind"], x["payload_words"], n(x["imports"]), n(x["new"]), n(x["old"]),
+                         n(x["overtaken"]), x["torn"], x["back_in_time"], x["stale"], x["wrong_new"],
+                         x["wrong_old"], n(first) if first else "-"])
+    return (f"Machine: {r['machine']['cpu']}, {r['machine']['cores']} cores. "
+            f"{n(r['checked']['imports_total'])} Imports checked with the fence.\n\n"
+            + table(["port", "kind", "words", "Imports", "New", "Old", "overtaken", "torn", "back in time",
+                     "stale", "wrong New", "wrong Old", "first violation at Import"], rows))
+
+
+SECTIONS["host-threads"] = host_threads
+
+
+def host_threads_sites():
+    """Each fence site of albatross.c dropped alone (make test-host-threads-sites)."""
+    r = load("host_threads.json")
+    if not r or "sites" not in r:
+        missing("host_threads.json", "make test-host-threads-sites")
+    rows = []
+    for s in r["sites"]["sites"]:
+        x = s.get("run")
+        rows.append([s["line"], f"`{s['function']}`", s["comment"] or "-", s["order"],
+                     s["kind"] if x else "-", n(x["imports"]) if x else "-",
+                     f"{x['violations']} ({x['torn']} torn, {x['wrong_old']} wrong Old, "
+                     f"{x['back_in_time'] + x['stale'] + x['wrong_new']} other)" if x else "-",
+                     s["verdict"]])
+    return table(["line", "function", "the fence orders", "order", "run on", "Imports",
+                  "violations", "without this fence alone"], rows)
+
+
+SECTIONS["host-threads-sites"] = host_threads_sites
+
+
+def host_threads_reliability():
+    """How reliably the fence-less builds fail within their budget (make soak-host)."""
+    r = load("host_threads.json")
+    if not r or "reliability" not in r:
+        missing("host_threads.json", "make soak-host")
+    rows = []
+    for v in r["reliability"]["variants"]:
+        f = sorted(x for x in v["first_violation_at"] if x)
+        vi = sorted(v["violations"])
+        rows.append([v["variant"], v["kind"], f"{v['failed']} of {v['runs']}", n(v["budget_imports"]),
+                     f"{n(f[0])} / {n(f[len(f) // 2])} / {n(f[-1])}" if f else "-",
+                     f"{vi[0]} / {vi[len(vi) // 2]} / {vi[-1]}"])
+    rel = r["reliability"]
+    over = (f" and until the producer overtook {n(rel['min_overtaken'])} of them (up to 40 s)"
+            if rel.get("min_overtaken") else "")
+    return (f"Payload {rel['words']} words. A run's budget is the Imports in the table{over}; "
+            f"it stops at {rel['stop_after']} violations.\n\n"
+            + table(["fence left out", "kind", "runs failed", "budget (Imports)",
+                     "first violation at Import (min / median / max)", "violations per run (min / median / max)"],
+                    rows))
+
+
+SECTIONS["host-threads-reliability"] = host_threads_reliability
 
 
 # A marker is a line of its own (a marker quoted inside a sentence is text).

@@ -21,21 +21,37 @@
 #ifndef BOARD_H
 #define BOARD_H
 
-#define BOARD_RAM_BYTES    0x4000
+/* Where the core sees the DPRAM window and the board registers: override
+ * both for a core whose view differs.  A core with a data cache must see
+ * them uncached: VexRiscv (soc/vexriscv_core.v, an address with bit 31 set
+ * is I/O) is built with -DBOARD_DPRAM_BASE=0x90000000
+ * -DBOARD_REGS_BASE=0xA0000000 (tools/mk/vexriscv.mk). */
+#ifndef BOARD_DPRAM_BASE
 #define BOARD_DPRAM_BASE   0x10000000
+#endif
+#ifndef BOARD_REGS_BASE
+#define BOARD_REGS_BASE    0x20000000
+#endif
+#define BOARD_RAM_BYTES    0x4000
 #define BOARD_DPRAM_BYTES  0x1000
-#define BOARD_TOHOST       0x20000000
-#define BOARD_STAT0        0x20000010
-#define BOARD_EVENT        0x20000020
-#define BOARD_EVENT_ARG    0x20000024
-#define BOARD_TIMER        0x20000040
+#define BOARD_TOHOST       (BOARD_REGS_BASE + 0x00)
+#define BOARD_STAT0        (BOARD_REGS_BASE + 0x10)
+#define BOARD_EVENT        (BOARD_REGS_BASE + 0x20)
+#define BOARD_EVENT_ARG    (BOARD_REGS_BASE + 0x24)
+#define BOARD_TIMER        (BOARD_REGS_BASE + 0x40)
 
 #ifndef __ASSEMBLER__
 #include <stdint.h>
 #include "albatross.h"
 
-/* Channel of the pair test: DPRAM offset 0; a start flag word after it. */
-#define BOARD_CHANNEL      ((uintptr_t)BOARD_DPRAM_BASE)
+/* Channel of the pair test: DPRAM offset 0; a start flag word after it.
+ * BOARD_CHANNEL_BASE moves the channel alone (the start flag stays in the
+ * window): the VexRiscv negative test reaches the channel through the cached
+ * alias 0x1000_0000 (tools/mk/vexriscv.mk). */
+#ifndef BOARD_CHANNEL_BASE
+#define BOARD_CHANNEL_BASE BOARD_DPRAM_BASE
+#endif
+#define BOARD_CHANNEL      ((uintptr_t)BOARD_CHANNEL_BASE)
 #define BOARD_START_FLAG   ((uintptr_t)BOARD_DPRAM_BASE + 0x100u)
 #define BOARD_START_MAGIC  0x5354u
 
@@ -62,11 +78,12 @@ static inline uint32_t board_timer(void)
  * cycle/instret, x0 needs Zicsr, not in -march=rv32i.  Build with
  * -DBOARD_NO_COUNTERS for a core without them (SERV: rdcycle would read
  * another CSR, not trap): the counters are then loaded from the board
- * registers CYCLE and INSTRET, which serv_core provides (soc/serv_bridge.v)
+ * registers CYCLE and INSTRET, which serv_core provides (soc/serv_bridge.v),
+ * and vexriscv_core too (soc/vexriscv_bridge.v: CYCLE only, INSTRET reads 0),
  * and which read 0 on a board without them (board_memmap), so the figures
  * are 0 there and the programs still run. */
-#define BOARD_CYCLE        0x20000080
-#define BOARD_INSTRET      0x20000084
+#define BOARD_CYCLE        (BOARD_REGS_BASE + 0x80)
+#define BOARD_INSTRET      (BOARD_REGS_BASE + 0x84)
 
 static inline uint32_t board_cycles(void)
 {
@@ -100,6 +117,13 @@ typedef struct {
 } pair_value_t;
 
 #define PAIR_SALT   0x5A5A5A5Au
+/* Events of a consumer built with -DPAIR_EVENTS (tb/pico/test_vex_pair.cpp
+ * checks actuality from them, whatever reaches the RAM): before each
+ * alb_import EVENT PAIR_EV_BEGIN (ARG: the call's number), after it
+ * PAIR_EV_NEW or PAIR_EV_OLD (ARG: the sequence number returned). */
+#define PAIR_EV_BEGIN 0x1u
+#define PAIR_EV_NEW   0x2u
+#define PAIR_EV_OLD   0x3u
 /* Values the producer exports (and the consumer waits for): override with
  * -DPAIR_VALUES=n for a slow core (tools/mk/serv.mk). */
 #ifndef PAIR_VALUES

@@ -22,6 +22,13 @@
 //     forwarded, so the RAM's port B shows the access as performed.
 //   * An answer from the bus reaches the controller only while the request is
 //     forwarded: a late ack of an abandoned request is dropped.
+//   * fi_new_o is high in the first clock of each new request (the clock in
+//     which fi_kind_i is sampled), fi_dead_o with it if the request goes to a
+//     dead board (kind 2 whatever fi_kind_i).  The fault rate is a property
+//     of ACCESSES, not of clocks: a harness draws the kind of the next access
+//     once per fi_new_o to a live board and holds it on fi_kind_i until then
+//     (docs/verification.md, "Fault injection"), so how often and at which
+//     phase the controller starts accesses cannot change the share faulted.
 `default_nettype none
 
 module bus_fault_injector #(
@@ -32,6 +39,8 @@ module bus_fault_injector #(
     input  wire                  rst_i,        // synchronous, active high
     input  wire [1:0]            fi_kind_i,    // fault kind for the next new request
     input  wire [NB-1:0]         fi_dead_i,    // board links that are down (kind 2)
+    output wire                  fi_new_o,     // a new request samples fi_kind_i in this clock
+    output wire                  fi_dead_o,    // ... and goes to a dead board (valid with fi_new_o)
     // controller side: Wishbone B4 classic slave
     input  wire                  c_cyc_i,
     input  wire                  c_stb_i,
@@ -88,6 +97,8 @@ module bus_fault_injector #(
         end
     end
 
+    assign fi_new_o  = req & ~busy_q;
+    assign fi_dead_o = dead;
     assign b_cyc_o = fwd;
     assign b_stb_o = fwd;
     assign b_we_o  = c_we_i;

@@ -85,8 +85,8 @@ int main(int argc, char **argv)
 
     const uint32_t reps = ev[K_REPS];
     auto mean = [&](uint32_t s, int mt) { return double(ev[key(s, mt, 0)]) / reps; };
-    std::printf("bench-pico: PicoRV32, undisturbed DPRAM port, %u calls per figure, rdcycle pair (%u cycles) "
-                "subtracted; mean cycles per call\n", reps, ev[K_OVERHEAD]);
+    std::printf("%s: %s, undisturbed DPRAM port, %u calls per figure, cycle-counter pair (%u cycles) "
+                "subtracted; mean cycles per call\n", label.c_str(), cpu.c_str(), reps, ev[K_OVERHEAD]);
     std::printf("  %5s %8s %10s %10s %8s %8s %10s %10s\n", "bytes", "export", "import-new", "import-old",
                 "copy-to", "copy-fr", "exp/copy", "imp/copy");
     std::string sizes = "[";

@@ -1,5 +1,6 @@
 // pico_bench -- bench top: one PicoRV32 core (pico_core; SERV = 1: a SERV core,
-// serv_core, with the same ports and memory map) (the board memory map
+// serv_core; VEX = 1: a VexRiscv with caches, vexriscv_core, its window and
+// registers uncached at 0x9/0xA000_0000; all with the same ports) (the board memory map
 // of soc/firmware/board.h) on port A of one albatross_dpram; port B is idle, so
 // every DPRAM access takes its undisturbed time.  The firmware
 // (tb/pico/firmware/bench.c, loaded from +fw0=FILE) measures cycles with rdcycle and
@@ -11,7 +12,8 @@
 module pico_bench #(
     parameter ADDR_WIDTH = 10,   // word-address bits of the DPRAM
     parameter RAM_WORDS  = 4096, // words of the core's local RAM (16 KiB)
-    parameter SERV       = 0     // 1: the core is SERV (soc/serv_core.v), 0: PicoRV32
+    parameter SERV       = 0,    // 1: the core is SERV (soc/serv_core.v), 0: PicoRV32
+    parameter VEX        = 0     // 1: the core is VexRiscv (soc/vexriscv_core.v), whatever SERV is
 ) (
     input  wire        clk_i,
     input  wire        rst_i,       // synchronous, active high
@@ -42,7 +44,29 @@ module pico_bench #(
     );
 
     generate
-        if (SERV != 0) begin : g_serv
+        if (VEX != 0) begin : g_vex
+            vexriscv_core #(.CORE(0), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_core (
+                .clk_i     (clk_i),
+                .rst_i     (rst_i),
+                .stall_i   (1'b0),
+                .wb_cyc_o  (wb_cyc),
+                .wb_stb_o  (wb_stb),
+                .wb_we_o   (wb_we),
+                .wb_adr_o  (wb_adr),
+                .wb_sel_o  (wb_sel),
+                .wb_dat_o  (wb_wdat),
+                .wb_dat_i  (wb_rdat),
+                .wb_ack_i  (wb_ack),
+                .done_o    (done_o),
+                .code_o    (code_o),
+                .stat_o    (stat),
+                .ev_valid_o(ev_valid_o),
+                .ev_data_o (ev_data_o),
+                .ev_arg_o  (ev_arg_o),
+                .trap_o    (trap_o),
+                .bus_err_o (bus_err_o)
+            );
+        end else if (SERV != 0) begin : g_serv
             serv_core #(.CORE(0), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_core (
                 .clk_i     (clk_i),
                 .rst_i     (rst_i),

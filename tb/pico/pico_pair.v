@@ -1,6 +1,12 @@
 // pico_pair -- test top: two soft cores share one albatross_dpram.  Each is
 // a PicoRV32 (pico_core) or, where SERV_MASK selects it, a SERV (serv_core,
-// the same ports); SERV_MASK = 0 is the PicoRV32 pair.
+// the same ports), or, where VEX_MASK selects it, a VexRiscv with caches
+// (vexriscv_core: its window is at 0x9000_0000, its registers at
+// 0xA000_0000, both uncached; CACHED_ALIAS = 1 also maps them cached at 0x1
+// and 0x2, for the negative test); SERV_MASK = VEX_MASK = 0 is the PicoRV32
+// pair.  Both RAM ports (mon_*: an access completes in a clock where its
+// ack is high) and the board events (ev_*) are brought out for a harness's
+// protocol checker (tools/mk/vexriscv.mk).
 //
 // Core 0 (the producer) reaches the RAM through port A, core 1 (the consumer)
 // through port B, each through a pico_wb_adapter.  Every core has its own
@@ -23,7 +29,9 @@
 module pico_pair #(
     parameter ADDR_WIDTH = 10,   // word-address bits of the shared DPRAM
     parameter RAM_WORDS  = 4096, // words of each core's local RAM (16 KiB)
-    parameter SERV_MASK  = 0     // 2 bits: core c is SERV when bit c is set, else PicoRV32
+    parameter SERV_MASK  = 0,    // 2 bits: core c is SERV when bit c is set, else PicoRV32
+    parameter VEX_MASK   = 0,    // 2 bits: core c is VexRiscv when bit c is set (before SERV_MASK)
+    parameter CACHED_ALIAS = 0   // VexRiscv cores: 1 also maps the DPRAM window and registers cached
 ) (
     input  wire         clk_i,
     input  wire         rst_i,      // synchronous, active high
@@ -32,7 +40,18 @@ module pico_pair #(
     output wire [63:0]  code_o,     // the value it stored (exit code)
     output wire [255:0] stat_o,     // core c: STAT k at [c*128 + k*32 +: 32]
     output wire [1:0]   trap_o,     // core c trapped (PicoRV32 trap; 0 on SERV)
-    output wire [1:0]   bus_err_o   // core c accessed an unmapped address
+    output wire [1:0]   bus_err_o,  // core c accessed an unmapped address
+    // monitors: port A (core 0) and port B (core 1) of the DPRAM
+    output wire [1:0]   mon_we_o,
+    output wire [2*ADDR_WIDTH-1:0] mon_adr_o,
+    output wire [7:0]   mon_sel_o,
+    output wire [63:0]  mon_wdat_o,
+    output wire [63:0]  mon_rdat_o,
+    output wire [1:0]   mon_ack_o,
+    // board events: core c stored to EVENT this clock (ev_data_o, ev_arg_o)
+    output wire [1:0]   ev_valid_o,
+    output wire [63:0]  ev_data_o,
+    output wire [63:0]  ev_arg_o
 );
 
     // Each core's port of the shared RAM.
@@ -40,10 +59,6 @@ module pico_pair #(
     wire [2*ADDR_WIDTH-1:0] wb_adr;
     wire [7:0]            wb_sel;
     wire [63:0]           wb_wdat, wb_rdat;
-    // Board events: this top does not use them.
-    wire [1:0]            ev_valid;
-    wire [63:0]           ev_data, ev_arg;
-    wire unused_ev = &{1'b0, ev_valid, ev_data, ev_arg};
 
     albatross_dpram #(.ADDR_WIDTH(ADDR_WIDTH)) u_dpram (
         .clk_i  (clk_i),
@@ -56,11 +71,18 @@ module pico_pair #(
         .b_dat_i(wb_wdat[32 +: 32]), .b_dat_o(wb_rdat[32 +: 32]), .b_ack_o(wb_ack[1])
     );
 
+    assign mon_we_o   = wb_we;
+    assign mon_adr_o  = wb_adr;
+    assign mon_sel_o  = wb_sel;
+    assign mon_wdat_o = wb_wdat;
+    assign mon_rdat_o = wb_rdat;
+    assign mon_ack_o  = wb_ack;
+
     genvar c;
     generate
         for (c = 0; c < 2; c = c + 1) begin : g_core
-            board_core #(.SERV((SERV_MASK >> c) & 1), .CORE(c), .ADDR_WIDTH(ADDR_WIDTH),
-                         .RAM_WORDS(RAM_WORDS)) u_core (
+            board_core #(.SERV((SERV_MASK >> c) & 1), .VEX((VEX_MASK >> c) & 1), .CACHED_ALIAS(CACHED_ALIAS),
+                         .CORE(c), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_core (
                 .clk_i    (clk_i),
                 .rst_i    (rst_i),
                 .stall_i  (stall_i[c]),
@@ -75,9 +97,9 @@ module pico_pair #(
                 .done_o   (done_o[c]),
                 .code_o   (code_o[c*32 +: 32]),
                 .stat_o   (stat_o[c*128 +: 128]),
-                .ev_valid_o(ev_valid[c]),
-                .ev_data_o(ev_data[c*32 +: 32]),
-                .ev_arg_o (ev_arg[c*32 +: 32]),
+                .ev_valid_o(ev_valid_o[c]),
+                .ev_data_o(ev_data_o[c*32 +: 32]),
+                .ev_arg_o (ev_arg_o[c*32 +: 32]),
                 .trap_o   (trap_o[c]),
                 .bus_err_o(bus_err_o[c])
             );

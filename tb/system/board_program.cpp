@@ -29,9 +29,9 @@ int usage(const char *why)
 {
     std::fprintf(stderr, "tb_system: %s\n"
                  "usage: tb_system --plan DIR [--cycles N] [--seed S] [--fault-rate R] [--burst L]\n"
-                 "                 [--dead-board B --dead-at C] [--corrupt-entry K] [--rom FILE]\n"
-                 "                 [--report FILE] [--label NAME] [--latency-scale F]\n"
-                 "                 [--expect-caught-by CHECKER]...\n", why);
+                 "                 [--fault-clocking access|clock] [--land-actual P] [--dead-board B --dead-at C]\n"
+                 "                 [--corrupt-entry K] [--rom FILE] [--report FILE] [--label NAME]\n"
+                 "                 [--latency-scale F] [--expect-caught-by CHECKER]... [--expect-failure TEXT]...\n", why);
     return 2;
 }
 }  // namespace
@@ -150,7 +150,11 @@ int parse_options(int argc, char **argv, Options &o)
         else if (a == "--cycles" && num && x >= 1000) o.cycles = static_cast<uint64_t>(x);
         else if (a == "--seed" && num && x >= 0) o.seed = static_cast<uint64_t>(x);
         else if (a == "--fault-rate" && num && x >= 0 && x < 1) o.fault_rate = x;
-        else if (a == "--burst" && num && x >= 1) o.burst = x;
+        else if (a == "--burst" && num) o.burst = x;
+        else if (a == "--fault-clocking" && (std::string(v) == "access" || std::string(v) == "clock"))
+            o.fault_per_clock = std::string(v) == "clock";
+        else if (a == "--expect-failure") o.expect_failure.push_back(v);
+        else if (a == "--land-actual" && num && x >= 0 && x <= 1) o.land_actual = x;
         else if (a == "--dead-board" && num && x >= 0 && x < SystemSim::kBoards) o.dead_board = static_cast<int>(x);
         else if (a == "--dead-at" && num && x >= 0) o.dead_at = static_cast<uint64_t>(x);
         else if (a == "--corrupt-entry" && num && x >= 0) o.corrupt_entry = static_cast<int>(x);
@@ -172,6 +176,8 @@ int parse_options(int argc, char **argv, Options &o)
         else return usage(("bad option or value: " + a + " " + v).c_str());
     }
     if (o.plan_dir.empty()) return usage("--plan is required");
+    const std::string bad = FaultModel::invalid(o.fault_rate, o.burst);
+    if (!bad.empty()) return usage(bad.c_str());
     return -1;
 }
 

@@ -7,6 +7,7 @@
 #include <random>
 #include <string>
 #include <vector>
+#include "fault_model.h"
 #include "plan.h"
 #include "system_checker.h"
 #include "system_sim.h"
@@ -19,8 +20,12 @@ namespace tbsys {
 struct Options {
     std::string plan_dir, rom, report, label = "system";
     uint64_t cycles = 400000, seed = 1, dead_at = 0;
-    double fault_rate = 0, burst = 1, latency_scale = 1;
+    double fault_rate = 0, burst = 0, latency_scale = 1;   // burst 0: independent accesses
+    bool fault_per_clock = false;                // negative test: the old injector, one draw per clock
+    double land_actual = 0;                      // negative test: a destination Actual store is performed
+                                                 // and its answer lost (kind 3) with this probability
     std::vector<std::string> expect_caught_by;   // a negative test: these checkers must fire
+    std::vector<std::string> expect_failure;     // ... or scenario failures containing these
     uint64_t trace_from = 1, trace_to = 0;       // print the controller's accesses in this window
     int dead_board = -1, corrupt_entry = -1;
     int corrupt_channel = -1;                    // a faulty producer stores Actual = 7 ...
@@ -66,31 +71,6 @@ struct BoardCtx {
 };
 
 void board_program(SimCpu &cpu);
-
-// Gilbert-Elliott fault process over clocks: bursts of mean length `burst`
-// in which every access begun fails, with a long-run faulted share `rate`.
-struct FaultModel {
-    double rate, burst;
-    bool bad = false;
-    std::mt19937_64 rng;
-    FaultModel(double r, double b, uint64_t seed) : rate(r), burst(std::max(1.0, b)), rng(seed) {}
-    unsigned next() {
-        if (rate <= 0) return 0;
-        std::uniform_real_distribution<double> u(0, 1);
-        if (burst <= 1) {
-            // Independent clocks.  (The two-state chain below degenerates at
-            // burst 1 and rate 0.5 into strict alternation: a controller whose
-            // accesses all take 2 clocks back to back then sees every access
-            // faulted, or none, depending only on the phase of its first one.)
-            bad = u(rng) < rate;
-            return bad ? 1 + static_cast<unsigned>(rng() % 3) : 0;
-        }
-        double enter = rate / (burst * (1 - std::min(rate, 0.999)));
-        if (bad) { if (u(rng) < 1 / burst) bad = false; }
-        else if (u(rng) < enter) bad = true;
-        return bad ? 1 + static_cast<unsigned>(rng() % 3) : 0;
-    }
-};
 
 // Bus cycles of every COPY transfer that publishes a new value to a channel
 // with one destination: from the start of its first access (the load of the

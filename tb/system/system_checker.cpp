@@ -16,7 +16,8 @@ void channel_value(int channel_id, uint64_t seq, uint8_t *out, uint32_t size)
 const char *SystemChecker::kind_name(int k)
 {
     static const char *n[KINDS] = {"mutual_exclusion", "definite_results", "actuality", "duplicate_new",
-                                   "latency_bound", "ownership", "in_channel", "driver_error", "global_time"};
+                                   "latency_bound", "ownership", "in_channel", "driver_error", "global_time",
+                                   "taken_at"};
     return n[k];
 }
 
@@ -41,6 +42,7 @@ SystemChecker::SystemChecker(const Plan &plan, SystemSim &sim, uint64_t time_off
             in.four_slot = c.four_slot;
             inst_.push_back(in);
             src_[i].publish_cycle.push_back(0);   // seq 0: the RAM image
+            src_[i].complete_cycle.push_back(0);
         }
         for (size_t d = 0; d < c.dests.size(); ++d) {
             Instance in;
@@ -142,10 +144,25 @@ void SystemChecker::on_access(int board, const Access &a)
         if (a.req.we && buffer) in->writes[buffer].push_back(a.serve_cycle);
         if (a.req.we && control && (a.req.sel & 1u)) {
             uint8_t actual = static_cast<uint8_t>(a.req.wdata);
-            if (in->dest < 0) src_[in->chan].pending_publish = a.serve_cycle;
+            // A four-slot source's value is complete, and may be taken, from
+            // its Slot store (below), before this store publishes it.
+            if (in->dest < 0) {
+                src_[in->chan].pending_publish = a.serve_cycle;
+                if (!in->four_slot) src_[in->chan].pending_complete = a.serve_cycle;
+            }
             else if (in->four_slot) dest_actual_stored(*in, a.serve_cycle, actual);
             else dest_published(*in, a.serve_cycle, actual);
+            if (in->dest >= 0) {
+                // Performed: until the controller sees its ack (on_bus, in
+                // this same clock) the store counts as landed, unanswered.
+                DestState &d = dst_[in->chan][in->dest];
+                if (d.unanswered) ++stats[in->chan].dests[in->dest].landed_unanswered;
+                d.unanswered = true;
+                d.unanswered_cycle = a.serve_cycle;
+            }
         }
+        if (a.req.we && control && in->four_slot && in->dest < 0 && (a.req.sel & 0xCu))
+            src_[in->chan].pending_complete = a.serve_cycle;
         // Four-slot: the Slot store completes buf(pair, slot).
         if (a.req.we && control && in->four_slot && in->dest >= 0 && (a.req.sel & 0xCu)) {
             const unsigned pair = (a.req.sel & 0x8u) ? 1u : 0u;
@@ -172,11 +189,67 @@ void SystemChecker::on_access(int board, const Access &a)
     }
 }
 
+int64_t SystemChecker::source_seq(int chan, uint8_t b)
+{
+    const PlanChannel &c = plan_.channels[chan];
+    const SourceState &s = src_[chan];
+    const uint32_t at = c.src_base + ALB_OFF_BUFFER(static_cast<uint32_t>(b), c.size);
+    std::vector<uint8_t> bytes(c.size), v(c.size);
+    for (uint32_t i = 0; i < c.size; ++i) bytes[i] = sim_.ref[c.src_board].byte(at + i);
+    // Newest first; one past the last exported(): an Export whose Actual
+    // store is done but whose call has not returned yet.
+    const uint64_t newest = s.publish_cycle.size(), lowest = newest > 4096 ? newest - 4096 : 0;
+    for (uint64_t q = newest + 1; q-- > lowest;) {
+        channel_value(c.id, q, v.data(), c.size);
+        if (v == bytes) return static_cast<int64_t>(q);
+    }
+    return -1;
+}
+
+// The controller's own view: its acked accesses to a source's control word
+// find its takes; an ack of a destination's Actual store shows it answered.
+void SystemChecker::on_bus(const SystemSim::BusEvent &e)
+{
+    Instance *in = find(e.board, e.addr);
+    if (!in || e.addr != in->base) return;
+    const PlanChannel &c = plan_.channels[in->chan];
+    if (in->dest >= 0) {
+        if (e.ok && e.we && (e.sel & (1u << ALB_OFF_ACTUAL))) dst_[in->chan][in->dest].unanswered = false;
+        return;
+    }
+    if (!c.copy() || !e.ok) return;
+    SourceState &s = src_[in->chan];
+    if (e.we && (e.sel & (1u << ALB_OFF_READLOCKED))) {
+        s.rl_stored = static_cast<int>((e.wdata >> (8 * ALB_OFF_READLOCKED)) & 0xFFu);
+        return;
+    }
+    if (e.we || !(e.sel & (1u << ALB_OFF_ACTUAL))) return;
+    const uint8_t a = static_cast<uint8_t>(e.rdata >> (8 * ALB_OFF_ACTUAL));
+    uint8_t b = 0;
+    if (s.rl_stored >= 0) {
+        if (!in->four_slot && a == s.rl_stored && ALB_VALID_INDEX(a)) b = a;
+        else if (in->four_slot && ALB_FS_VALID_INDEX(static_cast<unsigned>(s.rl_stored))) {
+            // b = 1 + 2p + Slot_p of this load, p the pair of the Actual the
+            // Import stored as ReadLocked (not of this load's Actual).
+            const unsigned pair = ALB_FS_PAIR(s.rl_stored);
+            b = static_cast<uint8_t>(ALB_FS_BUFFER(pair, (e.rdata >> (8 * ALB_OFF_SLOT(pair))) & 1u));
+        }
+    }
+    s.rl_stored = -1;
+    if (!b) return;
+    const int64_t q = source_seq(in->chan, b);
+    s.taken = true;
+    s.take_seq = q < 0 ? ~0ull : static_cast<uint64_t>(q);
+    s.take_time = e.time;
+    s.take_cycle = e.end;
+}
+
 void SystemChecker::exported(int chan, uint64_t seq)
 {
     SourceState &s = src_[chan];
     if (seq != s.publish_cycle.size()) return;   // the harness numbers exports 1, 2, ...
     s.publish_cycle.push_back(s.pending_publish);
+    s.complete_cycle.push_back(s.pending_complete);
     ++stats[chan].exports;
 }
 
@@ -222,7 +295,14 @@ void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
             violation(DEFINITE, m);
             return;
         }
-        if (p.seq == last.seq && d.pubs.size() > 1) {
+        if (p.seq == last.seq && d.pubs.size() > 1 && d.unanswered) {
+            std::snprintf(m, sizeof m, "board %d, %s: value %llu had landed (its Actual store at cycle %llu was performed, "
+                          "answered with err or not at all) and the controller published it again at cycle %llu: "
+                          "a landed store must count as delivered, its consumer would see it New twice",
+                          in.board, c.name.c_str(), static_cast<unsigned long long>(p.seq),
+                          static_cast<unsigned long long>(d.unanswered_cycle), static_cast<unsigned long long>(cycle));
+            violation(DUPLICATE, m);
+        } else if (p.seq == last.seq && d.pubs.size() > 1) {
             std::snprintf(m, sizeof m, "board %d, %s: the controller published value %llu again at cycle %llu: its consumer would see it New twice",
                           in.board, c.name.c_str(), static_cast<unsigned long long>(p.seq), static_cast<unsigned long long>(cycle));
             violation(DUPLICATE, m);
@@ -231,15 +311,31 @@ void SystemChecker::dest_published(Instance &in, uint64_t cycle, uint8_t buffer)
                           in.board, c.name.c_str(), static_cast<unsigned long long>(p.seq), static_cast<unsigned long long>(last.seq));
             violation(ACTUALITY, m);
         }
-        if (taken_cycle < s.publish_cycle[p.seq] || taken_cycle > cycle) {
-            std::snprintf(m, sizeof m, "board %d, %s: value %llu published by its producer at cycle %llu carries taken_at = cycle %llu, "
+        if (taken_cycle < s.complete_cycle[p.seq] || taken_cycle > cycle) {
+            std::snprintf(m, sizeof m, "board %d, %s: value %llu completed by its producer at cycle %llu carries taken_at = cycle %llu, "
                           "published at the destination at cycle %llu: expected producer <= taken_at <= destination",
                           in.board, c.name.c_str(), static_cast<unsigned long long>(p.seq),
-                          static_cast<unsigned long long>(s.publish_cycle[p.seq]), static_cast<unsigned long long>(taken_cycle),
+                          static_cast<unsigned long long>(s.complete_cycle[p.seq]), static_cast<unsigned long long>(taken_cycle),
                           static_cast<unsigned long long>(cycle));
             violation(DEFINITE, m);
         }
-        st.max_taken_minus_publish = std::max(st.max_taken_minus_publish, taken_cycle - s.publish_cycle[p.seq]);
+        // Exactness: the value of the source's last take, stamped with the
+        // time of that take's final Actual load.
+        if (!s.taken || p.seq != s.take_seq || p.taken_at != s.take_time) {
+            if (!s.taken)
+                std::snprintf(m, sizeof m, "board %d, %s: value %llu published at cycle %llu, but the controller never "
+                              "took a value from its source", in.board, c.name.c_str(),
+                              static_cast<unsigned long long>(p.seq), static_cast<unsigned long long>(cycle));
+            else
+                std::snprintf(m, sizeof m, "board %d, %s: value %llu published at cycle %llu with taken_at %u: expected "
+                              "value %llu with taken_at %u, the time of the final source Actual load (acked at cycle %llu)",
+                              in.board, c.name.c_str(), static_cast<unsigned long long>(p.seq),
+                              static_cast<unsigned long long>(cycle), p.taken_at, static_cast<unsigned long long>(s.take_seq),
+                              s.take_time, static_cast<unsigned long long>(s.take_cycle));
+            violation(TAKEN_AT, m);
+        }
+        if (taken_cycle >= s.complete_cycle[p.seq])
+            st.max_taken_minus_publish = std::max(st.max_taken_minus_publish, taken_cycle - s.complete_cycle[p.seq]);
     } else {
         // TIME and STATUS: the controller's own values, taken at the slot.
         p.seq = last.seq + 1;

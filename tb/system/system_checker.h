@@ -17,9 +17,24 @@
 // End to end, for every channel:
 //   definite results  every value the controller publishes is one complete
 //                     value its producer exported (or, for TIME, the time),
-//                     taken after the producer published it; every value a
+//                     taken after the producer published it (a four-slot
+//                     source: completed it, at its Slot store); every value a
 //                     consumer imports is one complete value the controller
 //                     published there;
+//   taken_at          exactness: every value the controller publishes is the
+//                     value of its source's last take, and carries as
+//                     taken_at the controller's time_o in the ack clock of
+//                     that take's final load of the source Actual.  A take
+//                     is seen on the controller's bus (acked accesses only,
+//                     as the controller sees them, on_bus): a load of the
+//                     source's Actual, after an acked store of its
+//                     ReadLocked since the previous such load, that returns
+//                     the index stored (four-slot: the control-word load
+//                     after the ReadLocked store);
+//   landed stores     an Actual store the RAM performed counts as published
+//                     even when its answer was lost (fault kinds 1 and 3):
+//                     the same value published there again is reported
+//                     as such (duplicate_new);
 //   actuality         a destination never gets an older or the same value
 //                     again (so redundancy never makes one value New twice);
 //                     a consumer never goes back, and New exactly when newer;
@@ -50,11 +65,13 @@ void channel_value(int channel_id, uint64_t seq, uint8_t *out, uint32_t size);
 
 class SystemChecker : public SystemObserver {
 public:
-    enum Kind { MUTEX, DEFINITE, ACTUALITY, DUPLICATE, LATENCY, OWNERSHIP, IN_CHANNEL, DRIVER_ERROR, TIME, KINDS };
+    enum Kind { MUTEX, DEFINITE, ACTUALITY, DUPLICATE, LATENCY, OWNERSHIP, IN_CHANNEL, DRIVER_ERROR, TIME, TAKEN_AT, KINDS };
     static const char *kind_name(int k);
 
     SystemChecker(const Plan &plan, SystemSim &sim, uint64_t time_offset);
     void on_access(int board, const Access &a) override;
+    // Every access the controller saw answered (ack or err), after the tick.
+    void on_bus(const SystemSim::BusEvent &e);
 
     // From the CPU programs.
     void exported(int channel, uint64_t seq);                 // after alb_export returned
@@ -77,6 +94,8 @@ public:
         uint64_t over_retry_bound = 0;                      // beyond the with-retries bound too
         uint64_t max_age_seen = 0, last_age_seen = 0;       // by the consumer, via taken_at
         uint64_t max_taken_minus_publish = 0;               // time/position correlation
+        uint64_t landed_unanswered = 0;                     // Actual stores performed, answer lost (err or
+                                                            // none), seen at the next store
     };
     struct ChannelStats {
         uint64_t exports = 0;
@@ -111,10 +130,18 @@ private:
         int64_t last_read = 0;             // consumer: index of the last pub read
         uint8_t actual = 0;                // the destination's Actual, as last stored
                                            // (four-slot: the buffer last completed)
+        bool unanswered = false;           // the last Actual store was performed, its ack not seen
+        uint64_t unanswered_cycle = 0;     // ... performed at this cycle
     };
     struct SourceState {
         std::vector<uint64_t> publish_cycle;   // by seq (0: the image)
         uint64_t pending_publish = 0;          // edge of the CPU's last Actual store
+        std::vector<uint64_t> complete_cycle;  // by seq: complete, may be taken from here (the
+        uint64_t pending_complete = 0;         // Actual store; four-slot: the Slot store before it)
+        int rl_stored = -1;                    // acked ReadLocked store since the last Actual load
+        bool taken = false;                    // a take has been seen:
+        uint64_t take_seq = 0, take_cycle = 0; // the value it read, its final Actual load's ack
+        uint32_t take_time = 0;                // ... and time_o then
     };
 
     void violation(Kind k, const std::string &msg);
@@ -123,6 +150,8 @@ private:
     void dest_published(Instance &in, uint64_t cycle, uint8_t buffer);
     void dest_actual_stored(Instance &in, uint64_t cycle, uint8_t buffer);   // four-slot
     void measure(Instance &in, const DestPub &p, const DestPub &prev, bool prev_is_image, uint64_t cycle);
+    // The seq of the value in buffer b of channel c's source, or -1.
+    int64_t source_seq(int chan, uint8_t b);
 
     const Plan &plan_;
     SystemSim &sim_;

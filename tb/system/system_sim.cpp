@@ -46,6 +46,7 @@ void SystemSim::reset()
 {
     for (int b = 0; b < kBoards; ++b) { drive(b, nullptr); busy_[b] = false; }
     dut_->fi_kind_i = 0;
+    fault_accesses = fault_injected = dead_accesses = 0;
     dut_->rst_i = 1;
     for (int i = 0; i < 4; ++i) tick();
     dut_->rst_i = 0;
@@ -98,7 +99,17 @@ void SystemSim::load(int b, uint32_t addr, const uint8_t *bytes, uint32_t n)
     }
 }
 
-void SystemSim::set_fault(unsigned kind) { dut_->fi_kind_i = kind & 3u; }
+void SystemSim::set_fault(unsigned kind) { drawn_kind_ = kind & 3u; if (!forced_) dut_->fi_kind_i = drawn_kind_; }
+void SystemSim::force_fault(unsigned kind) { forced_ = true; dut_->fi_kind_i = kind & 3u; }
+bool SystemSim::next_request(int &board, uint32_t &addr, bool &we, uint8_t &sel) const
+{
+    if (!dut_->fi_new_o || dut_->fi_dead_o || dut_->rst_i) return false;
+    board = static_cast<int>(dut_->bus_adr_o >> kAddrWidth) & 0xF;
+    addr = static_cast<uint32_t>(dut_->bus_adr_o & ((1u << kAddrWidth) - 1u)) << 2;
+    we = dut_->bus_we_o != 0;
+    sel = static_cast<uint8_t>(dut_->bus_sel_o & 0xFu);
+    return true;
+}
 void SystemSim::set_dead(unsigned mask) { dut_->fi_dead_i = mask & ((1u << kBoards) - 1u); }
 uint32_t SystemSim::time() const { return dut_->time_o; }
 bool SystemSim::bus_stb() const { return dut_->bus_stb_o != 0; }
@@ -107,11 +118,28 @@ unsigned SystemSim::rom_errors() const { return dut_->rom_errors_o; }
 
 unsigned SystemSim::tick()
 {
+    // A new request samples fi_kind_i at this edge (the injector's fi_new_o,
+    // settled: the controller's request comes from its registers).
+    fault_drawn = false;
+    const bool forced = forced_;
+    if (dut_->fi_new_o && !dut_->rst_i) {
+        if (dut_->fi_dead_o) ++dead_accesses;
+        else if (forced) ++forced_faults;
+        else {
+            ++fault_accesses;
+            if (dut_->fi_kind_i) ++fault_injected;
+            fault_drawn = true;
+        }
+    }
     dut_->clk_i = 1;
     dut_->eval();
     dut_->clk_i = 0;
     dut_->eval();
     ++cycle_;
+    if (forced) {                   // the drawn kind waits for the next request
+        forced_ = false;
+        dut_->fi_kind_i = drawn_kind_;
+    }
     // The controller's bus, as it sees it: an access begins when stb rises
     // or stays high after the previous access ended; it ends at ack or err
     // (or when the controller gives up and drops stb).
@@ -125,6 +153,10 @@ unsigned SystemSim::tick()
         bus_event.we = dut_->bus_we_o != 0;
         bus_event.board = static_cast<int>(dut_->bus_adr_o >> kAddrWidth) & 0xF;
         bus_event.addr = static_cast<uint32_t>(dut_->bus_adr_o & ((1u << kAddrWidth) - 1u)) << 2;
+        bus_event.sel = static_cast<uint8_t>(dut_->bus_sel_o & 0xFu);
+        bus_event.wdata = dut_->bus_wdat_o;
+        bus_event.rdata = dut_->bus_rdat_o;
+        bus_event.time = dut_->time_o;
         bus_event.start = bus_start_;
         bus_event.end = cycle_ + 1;    // the controller samples the answer at the next edge
         if (dut_->bus_ack_o) ++bus_accesses; else ++bus_failures;

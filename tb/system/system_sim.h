@@ -52,6 +52,20 @@ public:
     // Fault injection for the controller's accesses.
     void set_fault(unsigned kind);              // applied to the next access begun
     void set_dead(unsigned mask);               // permanently failed board links
+    // The injector's count of new requests (fi_new_o), at the edge that
+    // sampled their kind: to live boards (fault_accesses, of which
+    // fault_injected had a kind other than 0) and to dead boards.
+    // fault_drawn: the last tick started an access to a live board, so the
+    // kind set by set_fault has been used (draw the next one).
+    uint64_t fault_accesses = 0, fault_injected = 0, dead_accesses = 0;
+    bool fault_drawn = false;
+    // Targeted faults outside the random process (negative tests): if the
+    // next edge starts a new request to a live board, next_request() gives
+    // it; force_fault(k) gives that one request kind k instead of the drawn
+    // kind, which stays for the next one.  Counted in forced_faults only.
+    bool next_request(int &board, uint32_t &addr, bool &we, uint8_t &sel) const;
+    void force_fault(unsigned kind);
+    uint64_t forced_faults = 0;
 
     // The controller, as seen from outside.
     uint32_t time() const;                      // global time (clocks since reset)
@@ -63,6 +77,9 @@ public:
         bool done = false, ok = false, we = false;
         int board = 0;
         uint32_t addr = 0;          // byte address in that board's RAM
+        uint8_t sel = 0;            // byte lanes
+        uint32_t wdata = 0, rdata = 0;  // store data; load data (valid with ok)
+        uint32_t time = 0;          // the controller's time_o in the answer's clock
         uint64_t start = 0, end = 0;  // edges: request presented .. answer sampled
     } bus_event;
     bool bus_stb() const;
@@ -78,6 +95,8 @@ private:
     bool busy_[kBoards] = {};
     uint64_t issue_cycle_[kBoards] = {};
     bool bus_prev_stb_ = false;
+    unsigned drawn_kind_ = 0;     // set_fault's kind
+    bool forced_ = false;         // force_fault for the next edge
     uint64_t bus_start_ = 0;
     bool loading_[kBoards] = {};       // load() owns the CPU port
     BusRequest load_req_[kBoards] = {};

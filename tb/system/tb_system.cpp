@@ -5,8 +5,15 @@
 // disturbs it.  Every access and value is checked (system_checker.h).
 //
 //   tb_system --plan DIR [--cycles N] [--seed S]
-//             [--fault-rate R] [--burst L]        faulted share of the controller's
-//                                                 accesses, mean burst length (clocks)
+//             [--fault-rate R] [--burst L]        probability that a controller access (a
+//                                                 new request to a live board) fails; mean
+//                                                 run of faulted accesses (default: independent
+//                                                 accesses), tb/common/fault_model.h
+//             [--fault-clocking clock]            negative test: the old, wrong driving (one
+//                                                 draw per clock); the rate check must fail
+//             [--land-actual P]                   negative test: each store of a destination's
+//                                                 Actual is performed and its answer lost
+//                                                 (kind 3) with probability P, outside the rate
 //             [--dead-board B --dead-at C]        board B's link fails for good at cycle C
 //             [--corrupt-entry K]                 a run-time upset: flip a bit of schedule ROM
 //                                                 entry K's reserved word E6 at time 20000
@@ -14,6 +21,7 @@
 //             [--corrupt-actual CH:C]             channel CH's producer stores Actual = 7 at cycle C
 //             [--rom FILE] [--report FILE] [--label NAME]
 //             [--latency-scale F] [--expect-caught-by CHECKER]...   negative tests
+//             [--expect-failure TEXT]...          ... or a scenario failure containing TEXT
 //             [--trace-bus FROM:TO]      print the controller's accesses in that window
 //
 // DIR holds the compiler's output: rom.hex and tb_plan.txt.  Exit status 0:
@@ -36,6 +44,17 @@
 #include "board_program.h"
 
 using namespace tbsys;
+
+namespace {
+// addr is the control word of one of the plan's destination instances on board.
+bool is_dest_control(const Plan &plan, int board, uint32_t addr)
+{
+    for (const PlanChannel &c : plan.channels)
+        for (const PlanDest &d : c.dests)
+            if (d.board == board && d.base == addr) return true;
+    return false;
+}
+}  // namespace
 
 int main(int argc, char **argv)
 {
@@ -64,10 +83,15 @@ int main(int argc, char **argv)
         plusargs.push_back("+rom_upset_word=" + std::to_string(4 + 8 * o.corrupt_entry + 6));
         plusargs.push_back("+rom_upset_at=20000");
     }
-    std::printf("%s: %d boards, %zu channels, cycle %llu clocks (%s), %llu clocks, fault rate %.2f burst %.0f%s\n",
+    FaultModel faults(o.fault_rate, o.burst, o.seed ^ 0xFA17ull);
+    char burst_txt[80];
+    if (o.burst > 0) std::snprintf(burst_txt, sizeof burst_txt, "bursts of %.3g accesses", faults.mean_burst());
+    else std::snprintf(burst_txt, sizeof burst_txt, "independent");
+    std::printf("%s: %d boards, %zu channels, cycle %llu clocks (%s), %llu clocks, fault rate %.3g per access (%s%s)%s\n",
                 o.label.c_str(), plan.boards, plan.channels.size(), static_cast<unsigned long long>(plan.cycle),
                 plan.sync_mode ? "position-synchronised" : "time-rigid", static_cast<unsigned long long>(o.cycles),
-                o.fault_rate, o.burst, o.dead_board >= 0 ? ", one board dies" : "");
+                o.fault_rate, burst_txt, o.fault_per_clock ? ", drawn per CLOCK: the old, wrong injector" : "",
+                o.dead_board >= 0 ? ", one board dies" : "");
     std::fflush(stdout);
 
     SystemSim sim(rom, plusargs);
@@ -80,7 +104,7 @@ int main(int argc, char **argv)
     SystemChecker chk(plan, sim, time_offset);
     g_chk = &chk;
     sim.observer = &chk;
-    chk.set_latency_is_checked(o.fault_rate == 0 && o.dead_board < 0 && o.corrupt_entry < 0 && o.corrupt_channel < 0);
+    chk.set_latency_is_checked(o.fault_rate == 0 && o.land_actual == 0 && o.dead_board < 0 && o.corrupt_entry < 0 && o.corrupt_channel < 0);
 
     std::mt19937_64 rng(o.seed);
     std::vector<BoardCtx> boards(SystemSim::kBoards);
@@ -123,15 +147,16 @@ int main(int argc, char **argv)
     // to this loop, so no bound in simulated cycles can stop it: the wall-clock
     // hand-off watchdog ends the run with a message naming the CPU.
     SimCpu::arm_handoff_watchdog(10);
-    FaultModel faults(o.fault_rate, o.burst, o.seed ^ 0xFA17ull);
     uint64_t wait[SystemSim::kBoards] = {};
+    std::mt19937_64 land_rng(o.seed ^ 0x1A4Dull);
+    sim.fault_accesses = sim.fault_injected = sim.dead_accesses = 0;
+    sim.set_fault(faults.next());              // the kind of the first access
     const uint64_t start = sim.cycle(), report_every = o.cycles / 10;
     auto t0 = std::chrono::steady_clock::now();
     bool time_monotonic = true, controller_started = false;
     uint32_t last_time = sim.time();
     for (uint64_t n = 0; n < o.cycles; ++n) {
         if (o.dead_board >= 0 && sim.cycle() - start == o.dead_at) sim.set_dead(1u << o.dead_board);
-        sim.set_fault(faults.next());
         for (int b = 0; b < SystemSim::kBoards; ++b) {
             SimCpu &c = sim.cpu[b];
             if (boards[b].roles.empty() || sim.busy(b) || c.faulted) continue;
@@ -139,7 +164,18 @@ int main(int argc, char **argv)
             if (!c.has_request) c.resume();
             if (c.has_request) sim.issue(b);
         }
+        if (o.land_actual > 0) {
+            int rb = 0;
+            uint32_t ra = 0;
+            bool rwe = false;
+            uint8_t rsel = 0;
+            if (sim.next_request(rb, ra, rwe, rsel) && rwe && (rsel & (1u << ALB_OFF_ACTUAL)) && is_dest_control(plan, rb, ra) &&
+                std::uniform_real_distribution<double>(0, 1)(land_rng) < o.land_actual)
+                sim.force_fault(3);
+        }
         unsigned done = sim.tick();
+        // One draw per access begun (per clock: the old injector's driving).
+        if (sim.fault_drawn || o.fault_per_clock) sim.set_fault(faults.next());
         if (sim.bus_event.done && sim.cycle() >= o.trace_from && sim.cycle() <= o.trace_to) {
             const SystemSim::BusEvent &e = sim.bus_event;
             std::printf("  bus %8llu..%-8llu %s %-5s board %d addr 0x%03x  time %u\n",
@@ -152,6 +188,7 @@ int main(int argc, char **argv)
                 chk.set_latency_from(sim.bus_event.start + plan.cycle);
             }
             for (TransferMeter &t : meters) t.on(sim.bus_event);
+            chk.on_bus(sim.bus_event);
         }
         for (int b = 0; b < SystemSim::kBoards; ++b)
             if (done & (1u << b)) wait[b] = static_cast<uint64_t>((rng() % 3) * period[b]);
@@ -177,6 +214,24 @@ int main(int argc, char **argv)
     for (int b = 0; b < SystemSim::kBoards; ++b)
         if (sim.ref[b].violations) failures.push_back("board " + std::to_string(b) + ": " + sim.ref[b].first_violation);
     if (!time_monotonic) failures.push_back("global time went backwards");
+    // The injected rate, measured over the accesses to live boards, against
+    // the nominal one (tb/common/fault_model.h derives the tolerance).
+    const double rate_measured = sim.fault_accesses ? static_cast<double>(sim.fault_injected) / sim.fault_accesses : 0;
+    const double rate_tol = faults.tolerance(sim.fault_accesses);
+    const bool rate_ok = std::fabs(rate_measured - o.fault_rate) <= rate_tol;
+    if (sim.forced_faults)
+        std::printf("  forced: %llu destination Actual stores performed with their answer lost (--land-actual %.2f)\n",
+                    static_cast<unsigned long long>(sim.forced_faults), o.land_actual);
+    std::printf("  fault rate per access: nominal %.4f, measured %.4f (%llu of %llu accesses to live boards; "
+                "mean burst %.3g; tolerance +-%.4f, %.0f sigma)%s\n", o.fault_rate, rate_measured,
+                static_cast<unsigned long long>(sim.fault_injected), static_cast<unsigned long long>(sim.fault_accesses),
+                faults.mean_burst(), rate_tol, FaultModel::kSigmas, rate_ok ? "" : ": OUT OF TOLERANCE");
+    if (!rate_ok) {
+        std::snprintf(m, sizeof m, "fault rate: expected %.4f +- %.4f per access, got %.4f (%llu of %llu accesses faulted)",
+                      o.fault_rate, rate_tol, rate_measured, static_cast<unsigned long long>(sim.fault_injected),
+                      static_cast<unsigned long long>(sim.fault_accesses));
+        failures.push_back(m);
+    }
     if (sim.error()) failures.push_back("the controller flagged its ROM header as invalid");
     // The counters, as a CPU read them from the STATUS channel.
     bool has_status = false;
@@ -187,7 +242,7 @@ int main(int argc, char **argv)
                     static_cast<unsigned long long>(g_status.transfers), static_cast<unsigned long long>(g_status.retries),
                     static_cast<unsigned long long>(g_status.abandoned), static_cast<unsigned long long>(g_status.corrupt),
                     static_cast<unsigned long long>(g_status.rom_errors));
-        bool faulty = o.fault_rate > 0 || o.dead_board >= 0;
+        bool faulty = o.fault_rate > 0 || o.land_actual > 0 || o.dead_board >= 0;
         if (g_status.transfers == 0) failures.push_back("STATUS: no transfer counted");
         if (faulty && g_status.retries == 0) failures.push_back("STATUS: faults were injected, yet no retry was counted");
         if (!faulty && (g_status.retries || g_status.abandoned))
@@ -233,7 +288,7 @@ int main(int argc, char **argv)
                           "\"imports\": %llu, \"imports_new\": %llu, \"latency_max\": %llu, \"latency_mean\": %.1f, "
                           "\"latency_bound\": %llu, \"max_over_bound\": %.4f, \"latency_samples\": %llu, \"over_bound\": %llu, "
                           "\"delivered_within_bound\": %.5f, \"last_age_seen\": %llu, \"max_age_seen\": %llu, "
-                          "\"max_taken_minus_published\": %llu, \"period_bound\": %llu}",
+                          "\"max_taken_minus_published\": %llu, \"period_bound\": %llu, \"landed_unanswered\": %llu}",
                           chans.size() > 1 ? ", " : "", c.name.c_str(), c.kind.c_str(), c.dests[d].board,
                           static_cast<unsigned long long>(cs.exports), static_cast<unsigned long long>(ds.publications),
                           static_cast<unsigned long long>(ds.imports), static_cast<unsigned long long>(ds.imports_new),
@@ -243,7 +298,8 @@ int main(int argc, char **argv)
                           static_cast<unsigned long long>(ds.latency_over),
                           ds.latency_n ? 1.0 - static_cast<double>(ds.latency_over) / ds.latency_n : 0.0,
                           static_cast<unsigned long long>(ds.last_age_seen), static_cast<unsigned long long>(ds.max_age_seen),
-                          static_cast<unsigned long long>(ds.max_taken_minus_publish), static_cast<unsigned long long>(c.period));
+                          static_cast<unsigned long long>(ds.max_taken_minus_publish), static_cast<unsigned long long>(c.period),
+                          static_cast<unsigned long long>(ds.landed_unanswered));
             chans += b;
             // A dead board: consumers of its channels must see the age grow;
             // channels that do not involve it keep their fault-free bound, live
@@ -321,7 +377,14 @@ int main(int argc, char **argv)
         JsonReport rep;
         rep.str("label", o.label).str("mode", plan.sync_mode ? "position-synchronised" : "time-rigid")
             .num("cycle_clocks", static_cast<double>(plan.cycle)).num("clocks", static_cast<double>(o.cycles))
-            .num("fault_rate", o.fault_rate).num("burst", o.burst).num("dead_board", o.dead_board)
+            .num("fault_rate", o.fault_rate).num("burst", o.burst).num("fault_mean_burst", faults.mean_burst())
+            .str("fault_clocking", o.fault_per_clock ? "clock" : "access")
+            .num("fault_rate_measured", rate_measured).num("fault_rate_tolerance", rate_tol)
+            .num("fault_accesses", static_cast<double>(sim.fault_accesses))
+            .num("faults_injected", static_cast<double>(sim.fault_injected))
+            .num("dead_accesses", static_cast<double>(sim.dead_accesses))
+            .num("forced_landed_stores", static_cast<double>(sim.forced_faults)).num("fault_rate_ok", rate_ok ? 1 : 0)
+            .num("dead_board", o.dead_board)
             .num("corrupt_entry", o.corrupt_entry).num("rom_errors", sim.rom_errors())
             .num("bus_busy_cycles", static_cast<double>(sim.bus_busy_cycles))
             .num("bus_accesses", static_cast<double>(sim.bus_accesses))
@@ -331,6 +394,31 @@ int main(int argc, char **argv)
             .raw("transfers", transfers)
             .num("seconds", sec);
         rep.write(o.report);
+    }
+    if (!o.expect_failure.empty()) {
+        // An expected failure (a known limit kept visible, or a negative
+        // test of a scenario check): every TEXT is in some failure, every
+        // failure contains some TEXT, and no checker found a violation.
+        std::string missing, other;
+        for (const std::string &t : o.expect_failure) {
+            bool seen = false;
+            for (const std::string &f : failures) seen = seen || f.find(t) != std::string::npos;
+            if (!seen) missing += " \"" + t + "\"";
+        }
+        for (const std::string &f : failures) {
+            bool known = false;
+            for (const std::string &t : o.expect_failure) known = known || f.find(t) != std::string::npos;
+            if (!known) other += " \"" + f + "\"";
+        }
+        if (missing.empty() && other.empty() && chk.total() == 0) {
+            std::printf("%s: expected failure: it failed as expected, and no checker found a violation\n", o.label.c_str());
+            return 0;
+        }
+        std::printf("%s: expected failure did NOT happen as expected: expected failures containing%s%s; got%s%s, "
+                    "%llu checker violations\n", o.label.c_str(), missing.empty() ? " each text (seen)" : "",
+                    missing.c_str(), other.empty() ? " no other failure" : " other failures", other.c_str(),
+                    static_cast<unsigned long long>(chk.total()));
+        return 1;
     }
     if (!o.expect_caught_by.empty()) {
         std::string missing;

@@ -42,6 +42,8 @@ module tb_system #(
     // fault injection (tb/common/bus_fault_injector.v)
     input  wire [1:0]                 fi_kind_i,    // fault kind for the controller's next new request
     input  wire [NB-1:0]              fi_dead_i,    // board links that are down
+    output wire                       fi_new_o,     // a new controller request samples fi_kind_i now
+    output wire                       fi_dead_o,    // ... and goes to a dead board
     // every RAM's port B as performed (valid while mon_ack_o[b])
     output wire [NB-1:0]              mon_ack_o,    // the RAM performed an access (previous clock)
     output wire [NB-1:0]              mon_we_o,     // ... a write
@@ -54,6 +56,9 @@ module tb_system #(
     output wire                       bus_stb_o,    // strobe
     output wire                       bus_we_o,     // write enable
     output wire [ADDR_WIDTH+3:0]      bus_adr_o,    // {board[3:0], word}
+    output wire [3:0]                 bus_sel_o,    // byte lanes
+    output wire [31:0]                bus_wdat_o,   // write data
+    output wire [31:0]                bus_rdat_o,   // the read data it samples with ack
     output wire                       bus_ack_o,    // the ack it samples (after the injector)
     output wire                       bus_err_o,    // the err it samples (after the injector)
     // controller status
@@ -158,6 +163,8 @@ module tb_system #(
         .rst_i     (rst_i),
         .fi_kind_i (fi_kind_i),
         .fi_dead_i (fi_dead_i),
+        .fi_new_o  (fi_new_o),
+        .fi_dead_o (fi_dead_o),
         .c_cyc_i   (c_cyc),
         .c_stb_i   (c_stb),
         .c_we_i    (c_we),
@@ -182,6 +189,9 @@ module tb_system #(
     assign bus_stb_o = c_stb;
     assign bus_we_o  = c_we;
     assign bus_adr_o = c_adr;
+    assign bus_sel_o = c_sel;
+    assign bus_wdat_o = c_wdat;
+    assign bus_rdat_o = c_rdat;
     assign bus_ack_o = c_ack;
     assign bus_err_o = c_err;
 

@@ -30,7 +30,7 @@ PB_RTL      := sim/pico_boards.v soc/albatross_system.v soc/board_core.v soc/pic
                rtl/albatross_bus.v $(CTRL_RTL)
 PB_VFLAGS   := -Wall --timescale 1ns/1ps $(VLIB) --top-module pico_boards tb/pico/picorv32.vlt
 PB_SRC      := sim/mobot_sim.cpp sim/mobot_sim_options.cpp sim/mobot_sim_ages.cpp sim/mobot_sim_clock.cpp tb/common/plan.cpp
-PB_HDR      := sim/mobot_sim.h tb/common/report.h tb/common/plan.h tb/common/albatross_contract.h
+PB_HDR      := sim/mobot_sim.h tb/common/fault_model.h tb/common/report.h tb/common/plan.h tb/common/albatross_contract.h
 
 # $(1) = board: sim/firmware/mobot_<board>.c + the generated <board>.c of the
 # schedule build/schedule/<sched>/ + the driver -> $(PB_DIR)/<sched>/fw/.
@@ -134,7 +134,8 @@ PB_NEGATIVE := \
   nav_stale_early:staleness:fw:nav_stale_early: \
   nav_wrong_status:faults:fw:nav_wrong_status:--fault-rate,0.05 \
   age:age:fw:fw:--age-scale,0.5 \
-  hang:liveness:fw:fw:--hang,motor@200000
+  hang:liveness:fw:fw:--hang,motor@200000 \
+  fault_per_clock:faults:fw:fw:--fault-rate,0.2,--burst,10,--fault-clocking,clock
 pb_img = $(if $(filter fw,$(1)),$(PB_FWDIR)/$(2).hex,$(PB_DIR)/mutant/$(1)/$(2).hex)
 define pb_negative
 TESTS += pico-boards-negative-$(call neg_field,$(1),1)

@@ -6,7 +6,7 @@
 # build/reports/sim.json, build/sim/ages.csv, build/sim/ages.svg (each
 # channel's data age over time against its bound) and, with TRACE=1,
 # build/sim/mobot.vcd.
-#   make sim [SIM_CYCLES=N] [FAULT_RATE=R] [CRASH=board@cycle] [STALL=P]
+#   make sim [SIM_CYCLES=N] [FAULT_RATE=R] [BURST=L] [CRASH=board@cycle] [STALL=P]
 #            [TRACE=0|1] [TRACE_FROM=N] [TRACE_CYCLES=N] [SIM_DESC=file.toml] [SEED=S]
 #            [DRIFT=BOARD=PPM/BOARD=PPM...|random:MAX]
 # The boards run the firmware with the local clock (fw-clock/, c-driver/alb_clock.c):
@@ -24,6 +24,7 @@ SIM_FWDIR    := $(PB_DIR)/$(SIM_NAME)/fw-clock
 DRIFT        ?=
 SIM_CYCLES   ?= 2000000
 FAULT_RATE   ?= 0
+BURST        ?=
 CRASH        ?=
 STALL        ?= 0
 TRACE        ?= 1
@@ -40,11 +41,11 @@ endif
 endif
 
 .PHONY: sim
-sim: $(SIM_BIN) $(foreach b,$(PB_BOARDS),$(SIM_FWDIR)/$(b).hex) $(SIM_SCHED)/tb_plan.txt ## main demonstration: the robot (SIM_CYCLES=, FAULT_RATE=, CRASH=board@cycle, DRIFT=, TRACE=0|1, SIM_DESC=)
+sim: $(SIM_BIN) $(foreach b,$(PB_BOARDS),$(SIM_FWDIR)/$(b).hex) $(SIM_SCHED)/tb_plan.txt ## main demonstration: the robot (SIM_CYCLES=, FAULT_RATE=, BURST=, CRASH=board@cycle, DRIFT=, TRACE=0|1, SIM_DESC=)
 	@test -f $(SIM_DESC) || { echo "sim: no description $(SIM_DESC)"; exit 2; }
 	@mkdir -p $(SIM_DIR) $(REPORTS)
 	$(SIM_BIN) $(call pb_args,$(SIM_SCHED),$(SIM_FWDIR),$(SIM_FWDIR)/radar.hex,$(SIM_FWDIR)/navigation.hex) \
-	    --cycles $(SIM_CYCLES) --seed $(SEED) --stall $(STALL) --fault-rate $(FAULT_RATE) \
+	    --cycles $(SIM_CYCLES) --seed $(SEED) --stall $(STALL) --fault-rate $(FAULT_RATE) $(if $(BURST),--burst $(BURST)) \
 	    $(if $(CRASH),--crash $(CRASH)) $(if $(DRIFT),--drift-ppm $(DRIFT)) --label sim --report $(REPORTS)/sim.json --ages $(SIM_DIR)/ages.csv \
 	    $(if $(filter 1,$(TRACE)),--trace $(SIM_DIR)/mobot.vcd --trace-from $(TRACE_FROM) --trace-cycles $(TRACE_CYCLES))
 	@$(PYTHON) sim/plot_ages.py $(SIM_DIR)/ages.csv $(REPORTS)/sim.json $(SIM_DIR)/ages.svg

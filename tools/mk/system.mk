@@ -68,9 +68,15 @@ SYS_NORED   := $(BUILD)/schedule/mobot3-noredundancy
 sys_run      = tools/run_test.sh system-$(1) $(SYS_BIN) --label system-$(1) --seed $(SEED) \
                --cycles $(SYS_CYCLES) --report $(REPORTS)/system_$(1).json
 
-TESTS += system-rigid system-possync system-faults-5 system-faults-5-noredundancy \
-         system-burst system-burst-noredundancy system-dead-board system-corrupt-rom \
-         system-corrupt-control
+# Faults (tb/common/fault_model.h): --fault-rate R is the probability that
+# a controller access (a new request to a live board) fails, drawn once per
+# access; --burst L the mean run of faulted accesses (default independent).
+# Every run prints and reports the nominal and the measured rate and fails if
+# they differ by more than 6 sigma (corrected for the bursts' correlation).
+TESTS += system-rigid system-possync system-faults-5 system-faults-5-noredundancy system-faults-15 \
+         system-faults-20-burst-60 system-faults-20-burst-60-noredundancy system-faults-30-expect-fail \
+         system-faults-50-expect-fail system-faults-negative-per-clock system-landed-stores \
+         system-dead-board system-corrupt-rom system-corrupt-control
 
 test-system-rigid: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,rigid) --plan $(SYS_RIGID)
@@ -80,10 +86,34 @@ test-system-faults-5: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,faults-5) --plan $(SYS_RIGID) --fault-rate 0.05
 test-system-faults-5-noredundancy: $(SYS_BIN) $(SYS_NORED)/tb_plan.txt
 	@$(call sys_run,faults-5-noredundancy) --plan $(SYS_NORED) --fault-rate 0.05
-test-system-burst: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
-	@$(call sys_run,burst) --plan $(SYS_RIGID) --fault-rate 0.2 --burst 60
-test-system-burst-noredundancy: $(SYS_BIN) $(SYS_NORED)/tb_plan.txt
-	@$(call sys_run,burst-noredundancy) --plan $(SYS_NORED) --fault-rate 0.2 --burst 60
+test-system-faults-15: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,faults-15) --plan $(SYS_RIGID) --fault-rate 0.15
+test-system-faults-20-burst-60: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,faults-20-burst-60) --plan $(SYS_RIGID) --fault-rate 0.2 --burst 60
+test-system-faults-20-burst-60-noredundancy: $(SYS_BIN) $(SYS_NORED)/tb_plan.txt
+	@$(call sys_run,faults-20-burst-60-noredundancy) --plan $(SYS_NORED) --fault-rate 0.2 --burst 60
+# A known limit, kept visible (issue 15): at 30 % and 50 % independent faults
+# per access the unchanged controller never delivers RadarMap and/or Status to
+# board 2 (a destination is dropped for the rest of its slot after two failed
+# accesses).  These pass while exactly that happens -- no checker violation,
+# the rate within tolerance, no other failure -- and fail once the drop rule
+# delivers them: then they become ordinary tests.
+SYS_XFAIL := --expect-failure "no value was ever published" --expect-failure "STATUS: "
+test-system-faults-30-expect-fail: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,faults-30-expect-fail) --plan $(SYS_RIGID) --fault-rate 0.3 $(SYS_XFAIL)
+test-system-faults-50-expect-fail: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,faults-50-expect-fail) --plan $(SYS_RIGID) --fault-rate 0.5 $(SYS_XFAIL)
+# Negative of the rate check: the old injector's driving (the Gilbert chain
+# advanced every clock, not every access) at a nominal 20 % in bursts of 10
+# faults about 9 % of the accesses; only the rate check may fail.
+test-system-faults-negative-per-clock: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,faults-negative-per-clock) --plan $(SYS_RIGID) --fault-rate 0.2 --burst 10 \
+	    --fault-clocking clock --expect-failure "fault rate:"
+# Every store of a destination's Actual is performed and its answer lost
+# (kind 3; the retry too): the controller must read Actual back, count the
+# value delivered and never publish it again (negative: forget_landed below).
+test-system-landed-stores: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,landed-stores) --plan $(SYS_RIGID) --land-actual 1
 test-system-dead-board: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,dead-board) --plan $(SYS_RIGID) --dead-board 0 --dead-at 100000
 test-system-corrupt-rom: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
@@ -91,6 +121,20 @@ test-system-corrupt-rom: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 # A faulty producer leaves Actual = 7 in MotorCmd's source for two cycles.
 test-system-corrupt-control: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,corrupt-control) --plan $(SYS_RIGID) --corrupt-actual 2:100000
+
+# RadarMap and Position of the four-slot kind (sim/mobot3.toml with
+# four_slot = true added to both): the checkers' four-slot source paths (a
+# value complete from its producer's Slot store; a take's buffer from the Slot
+# byte of the pair the controller stored as ReadLocked), under 5 % faults.
+SYS_FS      := $(BUILD)/schedule/mobot3_fscopy
+$(SYS_FS)/rom.hex: sim/mobot3.toml $(SCHEDULE_SRC)
+	@mkdir -p $(@D)
+	sed -e '/^name *= *"Position"/a four_slot     = true' -e '/^name *= *"RadarMap"/a four_slot     = true' \
+	    $< > $(@D)/mobot3_fscopy.toml
+	$(SCHEDULE) $(@D)/mobot3_fscopy.toml --out $(@D) -q
+TESTS += system-four-slot-copy
+test-system-four-slot-copy: $(SYS_BIN) $(SYS_FS)/tb_plan.txt
+	@$(call sys_run,four-slot-copy) --plan $(SYS_FS) --fault-rate 0.05
 
 # Figures: bus cycles per transfer against the protocol's minimum (4, 16, 64,
 # 256-byte channels), and latency against the compiler's bound.
@@ -106,7 +150,9 @@ SYS_NEGATIVE := \
   never_delivered:mutant-never_delivered:duplicate_new \
   bad_index:mutant-bad_index:driver_error \
   wrong_lane:mutant-wrong_lane:ownership \
-  time_wraps:mutant-time_wraps:global_time
+  time_wraps:mutant-time_wraps:global_time \
+  taken_at_end:mutant-taken_at_end:taken_at:--fault-rate,0.15 \
+  forget_landed:mutant-forget_landed:duplicate_new:--land-actual,1
 define sys_negative
 TESTS += system-negative-$(call neg_field,$(1),1)
 test-system-negative-$(call neg_field,$(1),1): $(SYS_DIR)/$(call neg_field,$(1),2)/tb_system $(SYS_RIGID)/tb_plan.txt
@@ -115,6 +161,15 @@ test-system-negative-$(call neg_field,$(1),1): $(SYS_DIR)/$(call neg_field,$(1),
 	    --expect-caught-by $(call neg_field,$(1),3) $(subst $(comma), ,$(call neg_field,$(1),4))
 endef
 $(foreach n,$(SYS_NEGATIVE),$(eval $(call sys_negative,$(n))))
+
+# The exactness check on four-slot sources too: a controller that writes the
+# taken_at word with the time of that store (mutant taken_at_store) on the
+# plan with RadarMap and Position four-slot, fault-free.  TIME's taken_at goes
+# wrong as well, so global_time fires beside taken_at.
+TESTS += system-negative-taken_at_store
+test-system-negative-taken_at_store: $(SYS_DIR)/mutant-taken_at_store/tb_system $(SYS_FS)/tb_plan.txt
+	@tools/run_test.sh system-negative-taken_at_store $< --plan $(SYS_FS) --seed $(SEED) --cycles 300000 \
+	    --label system-negative-taken_at_store --expect-caught-by taken_at
 
 # The wall-clock hand-off watchdog: a controller that zeroes ReadLocked makes a
 # consumer's driver loop without a RAM access; the run must end with the

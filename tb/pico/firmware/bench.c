@@ -27,8 +27,8 @@
 #include "albatross.h"
 #include "board.h"
 
-#define BENCH_EVENT  ((uintptr_t)0x20000020u)  /* board_memmap EVENT */
-#define BENCH_ARG    ((uintptr_t)0x20000024u)  /* board_memmap ARG   */
+#define BENCH_EVENT  ((uintptr_t)BOARD_EVENT)     /* board_memmap EVENT */
+#define BENCH_ARG    ((uintptr_t)BOARD_EVENT_ARG) /* board_memmap ARG   */
 #ifndef BENCH_KIND
 #define BENCH_KIND   ALB_THREE_BUFFER                /* the channel kind measured */
 #endif
