@@ -3,9 +3,11 @@
 The description's [faults] table states the faults the plan must tolerate:
 a per-access fault probability `rate` (p) and a mean burst length
 `mean_burst` (B), as a two-state Markov chain over the controller's bus
-accesses (the test injector's model): after a good access the next one fails
-with probability a = p / (B (1 - p)), after a failed one with b = 1 - 1/B, so
-bursts are geometric with mean B and the stationary fault probability is p.
+accesses (the test injector's model, tb/common/fault_model.h): after a good
+access the next one fails with probability a = p / (B (1 - p)), after a
+failed one with b = 1 - 1/B, so bursts are geometric with mean B and the
+stationary fault probability is p.  Without mean_burst the accesses are
+independent (B = 1 / (1 - p): a = b = p), as the injector without --burst.
 `probability` is the target (for example 0.999999999): every age bound the
 report gives at the target holds with at least that probability.
 Permanently failed boards are not part of the hypothesis: isolation (the
@@ -68,8 +70,13 @@ class Hypothesis:
     def eps(self) -> float:
         return 1.0 - self.probability
 
+    @property
+    def independent(self) -> bool:
+        return abs(self.a - self.b) < 1e-12
+
     def as_dict(self) -> dict:
-        return {"rate": self.rate, "mean_burst": self.mean_burst, "probability": self.probability,
+        return {"rate": self.rate, "mean_burst": self.mean_burst, "independent": self.independent,
+                "probability": self.probability,
                 "miss_probability": self.eps, "p_fail_after_good": self.a, "p_fail_after_fail": self.b}
 
 
@@ -96,7 +103,10 @@ def parse_faults(table, err, describe) -> Optional[Hypothesis]:
             return None
         return float(v)
 
-    rate, burst, prob = num("rate"), num("mean_burst", 1.0), num("probability")
+    rate, prob = num("rate"), num("probability")
+    # no mean_burst: independent accesses, B = 1 / (1 - rate) (a = b = rate)
+    burst = num("mean_burst") if "mean_burst" in table else (None if rate is None or not 0 <= rate < 1
+                                                              else 1.0 / (1.0 - rate))
     if rate is not None and not 0.0 <= rate < 1.0:
         err.system("rate", f"{describe(rate)} is not a probability in [0, 1) (per bus access)", table="faults")
         ok = False
@@ -104,9 +114,9 @@ def parse_faults(table, err, describe) -> Optional[Hypothesis]:
         err.system("mean_burst", f"{describe(burst)} is below 1 (a burst is at least one failed access)",
                    table="faults")
         ok = False
-    if prob is not None and not 0.0 < prob < 1.0:
-        err.system("probability", f"{describe(prob)} is not a probability strictly between 0 and 1 "
-                   "(for example 0.999999999)", table="faults")
+    if prob is not None and not 0.0 < prob <= 1.0 - 1e-12:
+        err.system("probability", f"{describe(prob)} is not a probability between 0 and 1 - 1e-12 "
+                   "(for example 0.999999999; closer to 1 is below the precision of the sums)", table="faults")
         ok = False
     if None in (rate, burst, prob) or not ok:
         return None
@@ -260,7 +270,8 @@ def _failure_cost(bus) -> int:
 
 
 def _describe_h(h: Hypothesis) -> str:
-    return (f"rate {h.rate:g} per access, mean burst {h.mean_burst:g}, probability {h.probability:.12g}")
+    burst = "independent" if h.independent else f"mean burst {h.mean_burst:g}"
+    return f"rate {h.rate:g} per access, {burst}, probability {h.probability:.12g}"
 
 
 def evaluate(system, plan, curves) -> dict:

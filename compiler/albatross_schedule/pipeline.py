@@ -81,16 +81,19 @@ def write_outputs(files: dict, out_dir: str):
 
 
 def compile_file(path: str, out_dir: Optional[str] = None, no_redundancy: bool = False, faults=None):
-    """faults: [rate, mean_burst, probability] (the last two optional, from
-    the description's [faults] or 1 and 1 - 1e-9) overriding its [faults]."""
+    """faults: [rate, mean_burst, probability] replacing the description's
+    [faults]; mean_burst None: independent accesses; probability None (or
+    absent): the description's, else 1 - 1e-9."""
     if faults is None:
         system = load_description(path)
     else:
         data, text = load_toml(path)
         old = data.get("faults") if isinstance(data.get("faults"), dict) else {}
-        keys = ["rate", "mean_burst", "probability"]
-        new = {"mean_burst": old.get("mean_burst", 1.0), "probability": old.get("probability", 1.0 - 1e-9)}
-        new.update(dict(zip(keys, faults)))
+        faults = list(faults) + [None] * (3 - len(faults))
+        new = {"rate": faults[0],
+               "probability": faults[2] if faults[2] is not None else old.get("probability", 1.0 - 1e-9)}
+        if faults[1] is not None:
+            new["mean_burst"] = faults[1]
         data["faults"] = new
         system = parse_description(data, path, text)
     if no_redundancy:   # one slot per channel and cycle: the spare capacity stays idle

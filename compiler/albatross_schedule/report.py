@@ -186,7 +186,9 @@ def render_report_txt(rep: dict) -> str:
     L.append("")
     fh = rep.get("fault_hypothesis")
     if fh:
-        L.append(f"Fault hypothesis: rate {fh['rate']:g} per access, mean burst {fh['mean_burst']:g}, target "
+        burst = (f"independent (mean burst {fh['mean_burst']:.3g})" if fh["independent"]
+                 else f"mean burst {fh['mean_burst']:g}")
+        L.append(f"Fault hypothesis: rate {fh['rate']:g} per access, {burst}, target "
                  f"probability {fh['probability']:.12g}; drop run K = {fh['drop_run']}")
         L.append("  channel -> consumer: R retries per slot, slot delivery q, cycle delivery, age bound "
                  "fault-free / with retries / at the target (us)")

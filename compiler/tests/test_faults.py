@@ -312,17 +312,21 @@ class PlanForHypothesis(unittest.TestCase):
             self.assertNotIn("faults", c["consumers"][0])
 
     def test_robot_at_rates(self):
-        """The robot planned for 5, 20, 30 and 50 % (burst 1): every consumer
-        meets its period at the target; R >= K with two or more consumers;
-        the slot lengths hold R failures; H2 = K."""
-        for rate in (0.05, 0.2, 0.3, 0.5):
-            r, out = compile_desc(f"mobot3_{rate}", os.path.join(EXAMPLES, "mobot3.toml"), f"{rate},1")
+        """The robot planned for independent faults at 5, 20, 30 % (probability
+        1 - 1e-9) and 50 % (0.99, the first target it plans for): every
+        consumer meets its period at the target; R >= K with two or more
+        consumers; the slot lengths hold R failures; H2 = K; the header bounds."""
+        for rate, spec in ((0.05, "0.05"), (0.2, "0.2"), (0.3, "0.3"), (0.5, "0.5,,0.99")):
+            r, out = compile_desc(f"mobot3_{rate}", os.path.join(EXAMPLES, "mobot3.toml"), spec)
             with self.subTest(rate=rate):
                 self.assertEqual(r.returncode, 0, r.stderr)
                 with open(os.path.join(out, "report.json")) as f:
                     rep = json.load(f)
                 fh, bus = rep["fault_hypothesis"], rep["bus"]
                 self.assertEqual(fh["rate"], rate)
+                self.assertTrue(fh["independent"])
+                self.assertAlmostEqual(fh["p_fail_after_good"], rate, places=12)
+                self.assertAlmostEqual(fh["p_fail_after_fail"], rate, places=12)
                 self.assertEqual(rom_drop_run(out), fh["drop_run"])
                 cost = bus["timeout_cycles"] + bus["access_cycles"] + 1
                 for c in rep["channels"]:
@@ -342,6 +346,16 @@ class PlanForHypothesis(unittest.TestCase):
                         self.assertGreaterEqual(x["age_bound"]["at_target"]["clocks"],
                                                 x["age_bound"]["with_retries"]["clocks"])
                         self.assertGreaterEqual(x["slot_delivery_probability"], 0.0)
+
+    def test_robot_at_50_rejected_at_1e_9(self):
+        """Independent 50 %: the robot's 50 us channels cannot be planned for
+        1 - 1e-9; the error names them."""
+        r, out = compile_desc("mobot3_50_1e9", os.path.join(EXAMPLES, "mobot3.toml"), "0.5")
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertIn("cannot meet the channels' periods under the fault hypothesis (rate 0.5 per access, "
+                      "independent, probability 0.999999999", r.stderr)
+        for name in ("Position", "MotorCmd", "GlobalTime"):
+            self.assertIn(f"channel '{name}' (max_period_us = 50", r.stderr)
 
     def test_bad_faults_option(self):
         r, out = compile_desc("badopt", os.path.join(EXAMPLES, "mobot3.toml"), "0.2,x")
