@@ -29,7 +29,7 @@ AXIL_SRC       := tb/axil/tb_axil.v tb/axil/test_axil.py tb/axil/run_axil.py \
                   rtl/albatross_dpram_axil.v rtl/albatross_axil2native.v rtl/albatross_dpram_core.v
 AXIL_OPS       ?= 1500
 AXIL_SOAK_OPS  ?= 40000
-AXIL_SEED      ?= 1
+AXIL_SEED      ?= $(SEED)
 AXIL_MUT       := $(BUILD)/axil/mutant-src
 AXIL_COCOTB_NEG := drop_wstrb_lane late_start
 # the message each negative must fail with
@@ -43,7 +43,7 @@ test-axil-cocotb: $(AXIL_SRC)
 	@tools/run_test.sh axil-cocotb $(AXIL_RUN) axil-cocotb --ops $(AXIL_OPS) --seed $(AXIL_SEED) \
 	    --report $(REPORTS)/axil_cocotb.json
 
-soak-axil-cocotb: $(AXIL_SRC)
+soak-axil-cocotb: $(AXIL_SRC) ## AXI4-Lite DPRAM cocotb test, AXIL_SOAK_OPS accesses per phase (a few minutes)
 	$(AXIL_RUN) axil-cocotb-soak --ops $(AXIL_SOAK_OPS) --seed $(SEED)
 
 # The adapter mutants are the formal ones (formal/axil/mutants/*.sed), built here
