@@ -22,6 +22,7 @@
 #                                          lane 0: must fail with "byte mismatch"
 #   axil-cocotb-negative-late_start        the adapter that starts a request a clock
 #                                          late: must fail with "write response bound"
+# Synthesis: axil-bram (block RAM inferred through the wrapper, about 25 s).
 # Longer random run: make soak-axil-cocotb (AXIL_SOAK_OPS accesses per phase, seed SEED).
 
 AXIL_RUN       := $(PYTHON) tb/axil/run_axil.py
@@ -61,3 +62,14 @@ test-axil-cocotb-negative-$(1): $(AXIL_SRC) $(AXIL_MUT)/$(1)/albatross_axil2nati
 	    --expect-fail '$(AXIL_NEG_MSG_$(1))'
 endef
 $(foreach n,$(AXIL_COCOTB_NEG),$(eval $(call axil_cocotb_neg,$(n))))
+
+# The AXI4-Lite wrapper still infers block RAM on iCE40, ECP5 and xc7 (Yosys,
+# ADDR_WIDTH 10; about 25 s; figures in build/reports/synth_albatross_dpram_axil.json).
+# Its negative is dpram-bram-negative (tools/mk/synth_check.mk): the same check
+# rejects a RAM that does not map.
+TESTS += axil-bram
+.PHONY: test-axil-bram
+test-axil-bram: rtl/albatross_dpram_axil.v rtl/albatross_axil2native.v rtl/albatross_dpram_core.v
+	@tools/run_test.sh axil-bram $(SYNTH_REPORT) albatross_dpram_axil \
+	    --file rtl/albatross_dpram_axil.v,rtl/albatross_axil2native.v,rtl/albatross_dpram_core.v --require-bram \
+	    --report $(REPORTS)/synth_albatross_dpram_axil.json
