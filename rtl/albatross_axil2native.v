@@ -29,10 +29,12 @@
 //     (AXI4-Lite: the strobes say which bytes are written; reads return the
 //     whole word).
 //   * Latency (native access bound NAT clocks from req to ack; 2 for
-//     albatross_dpram_core): with the response channel free, BVALID / RVALID
-//     rises at most 2 * NAT + 1 clocks after the handshake that completed the
-//     request (one access of the other kind may go first), at least 2 clocks.
-//     Time the master stalls a previous B or R is added on top, nothing else.
+//     albatross_dpram_core): with its response channel free, BVALID rises at
+//     most 2 * NAT + 1 clocks after the edge of the handshake that completed
+//     the write (a read may go first), RVALID at most 2 * NAT after the AR
+//     handshake (reads go first, so a read waits only for a write already
+//     started); at least 2 clocks.  Clocks in which an earlier B (R) waits for
+//     the master's BREADY (RREADY) come on top, nothing else.
 //   * Throughput: one access per 3 to 4 clocks per direction with BREADY /
 //     RREADY high (the holding register is released at the ack).
 //   * Reset (synchronous, active high) empties every register and drops req.

@@ -13,10 +13,11 @@
 //     2 clocks at most, whatever port A does.
 //   * Port A (AXI4-Lite, byte addresses, 32-bit data): AW and W in any order or
 //     together, WSTRB = byte enables, BRESP/RRESP always OKAY, one access in
-//     flight; BVALID / RVALID rise 2 to 5 clocks after the handshake that
-//     completed the request, with the response channel free (the adapter's
-//     bound 2 * 2 + 1 over the core's 2); a stalled B or R delays only that
-//     kind of access.  The bound holds whatever port B does.
+//     flight; with the response channel free, BVALID rises 2 to 5 clocks
+//     after the handshake that completed the write, RVALID 2 to 4 clocks after
+//     the AR handshake (the adapter's 2 * 2 + 1 and 2 * 2 over the core's
+//     bound 2); a stalled B or R delays only the next access of that kind.
+//     The bounds hold whatever port B does.
 //   * Byte atomicity as the core: every access of either port is one whole
 //     access of the single-ported array, so a read sees each byte wholly old
 //     or wholly new.
