@@ -47,7 +47,7 @@ TB_COMMON_INC := -I$(abspath tb/common)
 # so is soc/albatross_system.v as a top (its default boards are cores), while
 # make lint reaches it through tb/system/tb_system.v (every board external).
 TB_RTL        := $(sort soc/board_memmap.v soc/pico_wb_adapter.v soc/serv_bridge.v soc/vexriscv_bridge.v soc/board_reset.v \
-                 soc/beat_divider.v $(wildcard tb/common/*.v tb/dpram/*.v tb/cdc/*.v tb/system/*.v))
+                 soc/beat_divider.v $(wildcard tb/common/*.v tb/dpram/*.v tb/cdc/*.v tb/system/*.v tb/axil/*.v))
 
 # Helpers for the fragments: field N of a colon-separated list entry.
 comma         := ,
