@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""fusesoc_check.py --root DIR --work DIR [--sim VLNV] [--skip-lint VLNV ...]
+"""fusesoc_check.py --root DIR --work DIR [--sim VLNV] [--library DIR] [--picorv32 FILE]
 
 Checks the FuseSoC (CAPI2) core files of the library DIR the way a user of
 the IP meets them (tools/mk/fusesoc.mk, docs/integration.md):
@@ -8,6 +8,11 @@ the IP meets them (tools/mk/fusesoc.mk, docs/integration.md):
     `fusesoc library add --sync-type local --no-auto-sync`; build and cache
     roots in WORK): FuseSoC never fetches (a local library, and no core may
     have a `provider:` section), and no user or global fusesoc.conf is read.
+ 1b. The CPUs' cores for albatross:soc:system: --library DIR adds a folder
+    as one more local library (pythondata-cpu-serv's, which holds ::serv);
+    --picorv32 FILE writes WORK/deps/picorv32.core, ::picorv32:0-r1 naming
+    FILE (pythondata-cpu-picorv32's picorv32.v: the package's own
+    picorv32.core has an empty depend: list that FuseSoC 2.4 refuses).
  2. Every *.core file under DIR (folders holding a FUSESOC_IGNORE file are
     skipped, as FuseSoC does: build/ gets one) is valid YAML with CAPI=2
     and a name, every file its filesets name exists, and FuseSoC loaded it
@@ -60,6 +65,14 @@ def tail(text, n=12):
     return '\n'.join('    ' + ln for ln in (errors[:n] if errors else lines[-n:]))
 
 
+def picorv32_core(path):
+    """A CAPI2 core for the PicoRV32 of the PyPI package, by absolute path."""
+    return ('CAPI=2:\n# Written by tools/fusesoc_check.py: the PicoRV32 of pythondata-cpu-picorv32.\n'
+            'name: ::picorv32:0-r1\ndescription: PicoRV32 (pythondata-cpu-picorv32)\n'
+            'filesets:\n  rtl:\n    files: [%s]\n    file_type: verilogSource\n'
+            'targets:\n  default:\n    filesets: [rtl]\n' % path)
+
+
 def find_cores(root):
     cores = []
     for d, subdirs, files in os.walk(root):
@@ -106,6 +119,8 @@ def main():
     ap.add_argument('--root', required=True, help='library folder (the checkout)')
     ap.add_argument('--work', required=True, help='folder for the config, builds and logs')
     ap.add_argument('--sim', action='append', default=[], help='core whose sim target must print PASS')
+    ap.add_argument('--library', action='append', default=[], help='one more library folder (read only)')
+    ap.add_argument('--picorv32', help='picorv32.v, for a ::picorv32:0-r1 core written into WORK')
     args = ap.parse_args()
     root = os.path.abspath(args.root)
     work = os.path.abspath(args.work)
@@ -119,10 +134,18 @@ def main():
                XDG_DATA_HOME=os.path.join(work, 'xdg', 'data'), XDG_CACHE_HOME=os.path.join(work, 'xdg', 'cache'))
     fsoc = ['fusesoc', '--config', conf, '--monochrome']
     log = os.path.join(work, 'logs')
-    rc, out = run(fsoc + ['library', 'add', '--sync-type', 'local', '--no-auto-sync', 'albatross', root],
-                  os.path.join(log, 'library_add.log'), env)
-    if rc:
-        fail('fusesoc library add %s: expected exit 0, got %d:\n%s' % (root, rc, tail(out)))
+    libs = [('albatross', root)] + [('lib%d' % i, os.path.abspath(d)) for i, d in enumerate(args.library)]
+    if args.picorv32:
+        deps = os.path.join(work, 'deps')
+        os.makedirs(deps)
+        with open(os.path.join(deps, 'picorv32.core'), 'w') as f:
+            f.write(picorv32_core(os.path.abspath(args.picorv32)))
+        libs.append(('picorv32', deps))
+    for lib_name, d in libs:
+        rc, out = run(fsoc + ['library', 'add', '--sync-type', 'local', '--no-auto-sync', lib_name, d],
+                      os.path.join(log, 'library_add_%s.log' % lib_name), env)
+        if rc:
+            fail('fusesoc library add %s: expected exit 0, got %d:\n%s' % (d, rc, tail(out)))
 
     # 2. the core files: YAML, names, files; all loaded by FuseSoC
     paths = find_cores(root)
@@ -164,12 +187,18 @@ def main():
         for t in flows:
             lg = os.path.join(log, '%s.%s.log' % (name.replace(':', '_'), t))
             rc, out = run(fsoc + ['run', '--target', t, name], lg, env)
+            deprecated = [ln for ln in out.splitlines() if 'deprecat' in ln.lower()]
+            if deprecated and not rc:
+                fail('%s: expected target %s of %s to run without a deprecation warning, got:\n%s'
+                     % (p, t, name, tail('\n'.join(deprecated))))
             if rc:
                 fail('%s: expected target %s of %s to pass, got exit %d (log %s):\n%s' % (p, t, name, rc, lg, tail(out)))
             print('fusesoc-check: lint ok  %s (target %s)' % (name, t))
             n_lint += 1
         cfiles = []
         for fs_name in (targets.get('default') or {}).get('filesets') or []:
+            if '?' in fs_name:   # a conditional fileset ("flag? (name)"): not part of a plain build
+                continue
             cfiles += [(n, a) for n, a, ft in fileset_files(c, fs_name, p) if ft.startswith('cSource')]
         if cfiles:
             d = os.path.dirname(p)
