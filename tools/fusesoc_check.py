@@ -49,9 +49,16 @@ def fail(msg):
     sys.exit(1)
 
 
+TIMEOUT = 600   # seconds for one FuseSoC call or compile: the check ends on its own
+
+
 def run(cmd, log, env):
     """Run cmd, its output to log; returns (exit status, output)."""
-    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
+    try:
+        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env,
+                           timeout=TIMEOUT)
+    except subprocess.TimeoutExpired:
+        fail('expected %s to end within %d s, it did not (log %s)' % (' '.join(cmd[:6]), TIMEOUT, log))
     with open(log, 'w') as f:
         f.write(' '.join(cmd) + '\n' + p.stdout)
     return p.returncode, p.stdout
@@ -220,6 +227,10 @@ def main():
             fail('expected a core %s for the simulation, got none in %s' % (name, root))
         lg = os.path.join(log, '%s.sim.log' % name.replace(':', '_'))
         rc, out = run(fsoc + ['run', '--target', 'sim', name], lg, env)
+        deprecated = [ln for ln in out.splitlines() if 'deprecat' in ln.lower()]
+        if deprecated:
+            fail('%s: expected target sim of %s to run without a deprecation warning, got:\n%s'
+                 % (cores[name][0], name, tail('\n'.join(deprecated))))
         passed = [ln for ln in out.splitlines() if ln.startswith('PASS')]
         failed = [ln for ln in out.splitlines() if ln.startswith('FAIL')]
         if rc or failed or not passed:
