@@ -63,5 +63,8 @@ fusesoc-boards: test-fusesoc $(FPGA_IMAGES) ## the board targets through FuseSoC
 	        albatross:board:duo:1.0.0 --ROM_FILE=$(abspath $(FPGA_IMG))/rom.hex --FW_PREFIX=$(abspath $(FPGA_IMG))/fw \
 	        --RAM_PREFIX=$(abspath $(FPGA_IMG))/ram > $(FUSESOC_DIR)/boards/$$t.log 2>&1 || \
 	        { tail -n 20 $(FUSESOC_DIR)/boards/$$t.log; exit 1; }; done
-	@grep -h "ICESTORM_LC:\|ICESTORM_RAM:\|Max frequency" $(FUSESOC_DIR)/boards/icebreaker.log | tail -n 3
-	@grep -h "TRELLIS_COMB:\|DP16KD:\|Max frequency" $(FUSESOC_DIR)/boards/ulx3s.log | tail -n 4
+	@# nextpnr's fit and its final timing (the last report: one line per clock)
+	@echo "icebreaker:"; grep -h "ICESTORM_LC:\|ICESTORM_RAM:" $(FUSESOC_DIR)/boards/icebreaker.log | tail -n 2; \
+	    grep -h "Max frequency" $(FUSESOC_DIR)/boards/icebreaker.log | tail -n 1
+	@echo "ulx3s:"; grep -h "TRELLIS_COMB:\|DP16KD:" $(FUSESOC_DIR)/boards/ulx3s.log | tail -n 2; \
+	    grep -h "Max frequency" $(FUSESOC_DIR)/boards/ulx3s.log | tail -n 2
