@@ -190,7 +190,7 @@ module albatross_export #(
     wire [DESTS-1:0]      d_bit;                // d_q as a mask
     wire [3*DESTS-1:0]    d_mask3;              // d_q's 3-bit fields as a mask
     wire [2:0]            buf_d;                // d_q's picked buffer
-    wire [ADDR_WIDTH-1:0] adr;
+    wire [ADDR_WIDTH-1:0] adr;                  // word address of the current access
     wire [DESTS-1:0]      need_m;               // need_q without d_q if it leaves now
     wire                  has_next, known_next; // a destination after d_q takes part: next_d, its copy known
     wire [1:0]            next_d, first_d;      // first_d: the first destination that takes part
