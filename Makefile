@@ -36,9 +36,10 @@ VLIB          := -Irtl -y rtl -y soc -y tb/common
 # that holds the controller.
 RTL_INC       := $(sort $(wildcard rtl/*.vh))
 # The controller's files: its thin top and the parts it composes.
-CTRL_RTL      := rtl/albatross_controller.v rtl/albatross_sequencer.v rtl/albatross_rom_check.v \
-                 rtl/albatross_entry_check.v rtl/albatross_import.v rtl/albatross_export.v \
-                 rtl/albatross_bus_master.v rtl/albatross_counters.v
+CTRL_RTL      := rtl/albatross_controller.v rtl/albatross_sequencer.v rtl/albatross_schedule_rom.v \
+                 rtl/albatross_rom_check.v rtl/albatross_entry_check.v rtl/albatross_import.v \
+                 rtl/albatross_export.v rtl/albatross_export_dest.v rtl/albatross_bus_master.v \
+                 rtl/albatross_counters.v
 # The shared harness headers (tb/common/: report.h, plan.h, ...) for Verilator-built benches.
 TB_COMMON_INC := -I$(abspath tb/common)
 # Files `make lint` checks besides rtl/: the board parts and test benches that
@@ -47,7 +48,7 @@ TB_COMMON_INC := -I$(abspath tb/common)
 # so is soc/albatross_system.v as a top (its default boards are cores), while
 # make lint reaches it through tb/system/tb_system.v (every board external).
 TB_RTL        := $(sort soc/board_memmap.v soc/pico_wb_adapter.v soc/serv_bridge.v soc/vexriscv_bridge.v soc/board_reset.v \
-                 soc/beat_divider.v $(wildcard tb/common/*.v tb/dpram/*.v tb/cdc/*.v tb/system/*.v))
+                 soc/beat_divider.v $(wildcard tb/common/*.v tb/dpram/*.v tb/cdc/*.v tb/system/*.v tb/axil/*.v))
 
 # Helpers for the fragments: field N of a colon-separated list entry.
 comma         := ,

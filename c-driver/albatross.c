@@ -254,6 +254,7 @@ static int fs_select_read(alb_channel_t *ch, uint8_t *buffer)
     }
     /* 3. announce its pair: from now on the producer writes the other one */
     pair = ALB_FS_PAIR(latest);
+    alb_fence();         /* release: the last Import's data loads before this store */
     alb_wr8(ch->base + ALB_OFF_READLOCKED, latest);
     ch->fs_read_locked = latest;
     alb_fence();          /* store ReadLocked before loading the slot byte */
@@ -417,6 +418,7 @@ int alb_import(alb_channel_t *ch, void *dst)
         if (!ALB_VALID_INDEX(actual))
             return ALB_ERR_CORRUPT;
         ch->read_locked = actual;                           /* ReadLocked:= Actual */
+        alb_fence();     /* release: the last Import's data loads before this store */
         alb_wr8(ch->base + ALB_OFF_READLOCKED, actual);
         alb_fence();                  /* store ReadLocked before loading Actual */
         actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);

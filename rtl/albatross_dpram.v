@@ -1,24 +1,23 @@
-// albatross_dpram -- byte-arbitrated dual-ported RAM (ALBATROSS, seed 3.1).
+// albatross_dpram -- byte-arbitrated dual-ported RAM, Wishbone B4 classic on
+// both ports (ALBATROSS, seed 3.1; docs/rtl.md "albatross_dpram").
 //
-// Two Wishbone B4 classic slave ports, A and B, share one single-ported
-// memory array.  Arbitration is a fixed time division, not a lock:
-//   * The array performs exactly one access per clock.  Cycles alternate
-//     between the ports: slot_q == 0 belongs to port A, slot_q == 1 to B.
-//   * A request (cyc & stb, no ack pending) is performed at the first rising
-//     edge that falls in the port's own slot; ack is high for exactly the one
-//     cycle after that edge, with the read data.  Access time, stb to ack, is
-//     1 or 2 cycles whatever the other port does: neither port ever waits for
-//     the other, and each may issue one access every 2 cycles.
-//   * Byte atomicity: every byte is only ever touched by one whole access of
-//     one port at a time, so a read returns the complete old or the complete
-//     new byte, and two writes to one byte leave the complete later value.
-//     Requests presented in the same cycle take effect in slot order.
+// A thin wrapper: the RAM, its arbitration and its timing are those of the
+// native core albatross_dpram_core (whose header states the rules); this file
+// only maps each Wishbone B4 classic slave port onto a native port
+// (req = cyc & stb, sel = byte enables, ack and dat_o straight through), so
+// every rule holds here unchanged, clock for clock:
+//   * The array performs one access per clock; cycles alternate between the
+//     ports (fixed time division, not a lock).  A request is performed at the
+//     first rising edge in its port's own slot; ack is high for exactly the one
+//     cycle after that edge.  Access time, stb to ack, is 1 or 2 cycles
+//     whatever the other port does; each port may issue one access every 2
+//     cycles.
+//   * Byte atomicity: a read returns the complete old or the complete new
+//     byte; two writes to one byte leave the complete later value.  Requests
+//     presented in the same cycle take effect in slot order.
 //   * Writes honour sel byte lanes (lane 0 = bits 7:0 = lowest byte address);
-//     adr is a word address.  Reads return the whole word.
-//   * The array is a plain single-port RAM with byte enables, so it infers
-//     block RAM on every FPGA family (iCE40 SB_RAM40_4K, ECP5 DP16KD, Xilinx
-//     RAMB) and never relies on a RAM primitive's cross-port collision
-//     behaviour.  Reset clears the slot and the acks, never the array.
+//     adr is a word address.  Reads return the whole word.  Reset clears the
+//     slot and the acks, never the array.
 `default_nettype none
 
 module albatross_dpram #(
@@ -47,52 +46,16 @@ module albatross_dpram #(
     output wire                  b_ack_o
 );
 
-    reg [31:0] mem [0:(1<<ADDR_WIDTH)-1];
-    initial if (INIT_FILE != "") $readmemh(INIT_FILE, mem);  // block-RAM contents, no reset
-    reg        slot_q;   // whose cycle this is: 0 = port A, 1 = port B
-    reg        a_ack_q;
-    reg        b_ack_q;
-    reg [31:0] rdata_q;
-
-    // A port goes when it requests in its own slot (never on its ack cycle).
-    wire a_go = ~rst_i & ~slot_q & a_cyc_i & a_stb_i & ~a_ack_q;
-    wire b_go = ~rst_i &  slot_q & b_cyc_i & b_stb_i & ~b_ack_q;
-
-    // The one access of this cycle: the slot owner's.
-    wire [ADDR_WIDTH-1:0] adr   = slot_q ? b_adr_i : a_adr_i;
-    wire [31:0]           wdata = slot_q ? b_dat_i : a_dat_i;
-    wire [3:0]            wen   = slot_q ? ({4{b_go & b_we_i}} & b_sel_i)
-                                         : ({4{a_go & a_we_i}} & a_sel_i);
-
-    always @(posedge clk_i) begin
-        if (rst_i) begin
-            slot_q  <= 1'b0;
-            a_ack_q <= 1'b0;
-            b_ack_q <= 1'b0;
-        end else begin
-            slot_q  <= ~slot_q;
-            a_ack_q <= a_go;
-            b_ack_q <= b_go;
-        end
-    end
-
-    // Memory array: one read/write port with byte enables, never reset.  It
-    // reads only when it does not write, so no RAM primitive ever sees a
-    // read and a write of one address at one edge (no read-first emulation).
-    always @(posedge clk_i) begin
-        if (wen[0]) mem[adr][7:0]   <= wdata[7:0];
-        if (wen[1]) mem[adr][15:8]  <= wdata[15:8];
-        if (wen[2]) mem[adr][23:16] <= wdata[23:16];
-        if (wen[3]) mem[adr][31:24] <= wdata[31:24];
-        if (~|wen) rdata_q <= mem[adr];
-    end
-
-    // Read data is valid while the port's ack is high after a read (Wishbone
-    // leaves dat_o undefined on a write ack; here it holds the last read).
-    assign a_dat_o = rdata_q;
-    assign b_dat_o = rdata_q;
-    assign a_ack_o = a_ack_q;
-    assign b_ack_o = b_ack_q;
+    albatross_dpram_core #(
+        .ADDR_WIDTH(ADDR_WIDTH),
+        .INIT_FILE (INIT_FILE)
+    ) u_core (
+        .clk_i(clk_i), .rst_i(rst_i),
+        .a_req_i(a_cyc_i & a_stb_i), .a_we_i(a_we_i), .a_adr_i(a_adr_i), .a_be_i(a_sel_i),
+        .a_wdata_i(a_dat_i), .a_rdata_o(a_dat_o), .a_ack_o(a_ack_o),
+        .b_req_i(b_cyc_i & b_stb_i), .b_we_i(b_we_i), .b_adr_i(b_adr_i), .b_be_i(b_sel_i),
+        .b_wdata_i(b_dat_i), .b_rdata_o(b_dat_o), .b_ack_o(b_ack_o)
+    );
 
 endmodule
 

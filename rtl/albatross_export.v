@@ -7,7 +7,9 @@
 // controller can run many channels through one engine and
 // albatross_export_endpoint can keep one channel in registers.  With four_i
 // at start every destination is of the four-slot kind (issue 13,
-// rtl/albatross_contract.toml [layout.four_slot]).
+// rtl/albatross_contract.toml [layout.four_slot]).  This module holds the
+// registers and the order of the steps; albatross_export_dest (its rules) the
+// current destination's fields, the visiting order, the pick, the address.
 // Rules:
 //   * Four-slot (four_i), for the destinations d in need_i: 1. per d: load
 //     the control word (all four lanes; the Actual copy is not used): R =
@@ -113,28 +115,19 @@ module albatross_export #(
     output wire [ADDR_WIDTH-1:0]   wb_adr_o,     // word address
     output wire [3:0]              wb_sel_o,
     output wire [31:0]             wb_dat_o,
-    /* verilator lint_off UNUSEDSIGNAL */
     input  wire [31:0]             wb_dat_i,     // only the control bytes are read
-    /* verilator lint_on UNUSEDSIGNAL */
     input  wire                    wb_ack_i,
     input  wire                    wb_err_i
 );
 
 `include "albatross_contract.vh"
 
-    // Channel layout: both control bytes in one word, buffers from BUF_WORD.
+    // Channel layout: the control bytes and slot bytes in one word
+    // (albatross_export_dest has the buffers' addresses).
     localparam integer          CTRL_WORD_I = ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES;
-    localparam integer          BUF_WORD_I  = ALB_CH_OFF_BUFFERS / ALB_CH_WORD_BYTES;
-    localparam [ADDR_WIDTH-1:0] CTRL_WORD   = CTRL_WORD_I[ADDR_WIDTH-1:0];
-    localparam [ADDR_WIDTH-1:0] BUF_WORD    = BUF_WORD_I[ADDR_WIDTH-1:0];
     localparam                  ACT_BIT     = 8 * (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
-    localparam                  RL_BIT      = 8 * (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
     localparam [3:0]            SEL_ACT     = 4'b0001 << (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
     localparam [3:0]            SEL_RL      = 4'b0001 << (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
-    localparam [1:0]            BUFFER1     = ALB_CH_BUFFER1[1:0];
-    localparam [1:0]            BUFFER2     = BUFFER1 + 2'd1;
-    localparam [1:0]            BUFFER3     = ALB_CH_BUFFER_LAST[1:0];
-    localparam integer          TAKEN_WORDS = TAKEN_AT ? ALB_CH_TAKEN_AT_WORDS : 0;
     // Four-slot: the slot bytes Slot0, Slot1 (rtl/albatross_contract.toml
     // [layout.four_slot]).
     localparam integer          OFF_SLOT0   = ALB_CH_OFF_SLOT0;
@@ -191,132 +184,50 @@ module albatross_export #(
     reg                        retry_q;        // the clock after a failed access: cyc low
     reg                        drop_q;         // ... and its destination is dropped
 
-    // d_q leaves the Export now: dropped (second failure) or found published (read-back).
-    wire       drop_now;
-    wire       landed;
-    wire       leave;
-    wire       adv;
-    wire       ctrl_end;
-    wire [DESTS-1:0] d_bit0 = {{(DESTS-1){1'b0}}, 1'b1} << d_q;
+    // The per-destination datapath (rtl/albatross_export_dest.v).
+    wire                  leave;                // d_q leaves the Export now: dropped or found published
+    wire                  landed;               // ... found published by the read-back
+    wire [DESTS-1:0]      d_bit;                // d_q as a mask
+    wire [3*DESTS-1:0]    d_mask3;              // d_q's 3-bit fields as a mask
+    wire [2:0]            buf_d;                // d_q's picked buffer
+    wire [ADDR_WIDTH-1:0] adr;                  // word address of the current access
+    wire [DESTS-1:0]      need_m;               // need_q without d_q if it leaves now
+    wire                  has_next, known_next; // a destination after d_q takes part: next_d, its copy known
+    wire [1:0]            next_d, first_d;      // first_d: the first destination that takes part
+    wire                  any_in, known_in;     // at start: need_i names a destination: first_in, its copy known
+    wire [1:0]            first_in;
+    wire                  act_valid, rl_valid;  // the loaded Actual / ReadLocked names a buffer
+    wire [1:0]            act_buf;              // the loaded Actual's buffer
+    wire [2:0]            pick;                 // the buffer picked for d_q
+    wire                  ack       = wb_ack_i && stb_q;
+    wire                  drop_now  = retry_q && drop_q;
+    wire                  ctrl      = state_q == S_LOAD_ACTUAL || state_q == S_LOAD_RL || state_q == S_STORE_ACTUAL ||
+                                      state_q == S_STORE_SLOT;
+    albatross_export_dest #(.ADDR_WIDTH(ADDR_WIDTH), .WORDS_WIDTH(WORDS_WIDTH), .TAKEN_AT(TAKEN_AT),
+                            .DESTS(DESTS)) u_dest (
+        .d_i(d_q), .need_i(need_q), .base_i(base_q), .buf_i(buf_q), .known_i(act_known_q), .act_i(act_q),
+        .tried_i(tried_q), .four_i(four_q), .words_i(words_q), .k_i(take_k_q), .drop_i(drop_now),
+        .read_act_i(ack && (state_q == S_LOAD_ACTUAL || (four_q && state_q == S_LOAD_RL))),
+        .ctrl_i(ctrl), .taken_i(state_q == S_STORE_TAKEN), .dat_i(wb_dat_i),
+        .start_need_i(need_i), .start_known_i(act_known_i),
+        .d_bit_o(d_bit), .d_mask3_o(d_mask3), .buf_o(buf_d), .adr_o(adr), .landed_o(landed), .leave_o(leave),
+        .need_o(need_m), .has_next_o(has_next), .next_o(next_d), .known_next_o(known_next), .first_o(first_d),
+        .any_in_o(any_in), .first_in_o(first_in), .known_in_o(known_in),
+        .act_valid_o(act_valid), .act_buf_o(act_buf), .rl_valid_o(rl_valid), .pick_o(pick));
 
-    // The current destination's fields.
-    reg [ADDR_WIDTH-1:0] base_d;
-    reg [2:0]            buf_d;
-    reg [1:0]            copy_d;               // its Actual copy, 0 when unknown
-    reg [2:0]            tried_d;              // its tried buffer
-    reg                  known_d;
-    reg [DESTS-1:0]      need_m;               // need_q without d_q if it leaves now
-    reg                  has_next;             // a destination after d_q takes part
-    reg [1:0]            next_d;
-    reg [1:0]            first_d;              // the first destination that takes part
-    reg [DESTS-1:0]      d_bit;                // d_q as a mask
-    reg                  known_next;           // next_d's Actual copy is known
-    reg                  any_in;               // at start: need_i names a destination,
-    reg [1:0]            first_in;             // the first one,
-    reg                  known_in;             // and its Actual copy is known
-    integer i;
-    always @* begin
-        base_d   = base_q[0 +: ADDR_WIDTH];
-        buf_d    = buf_q[2:0];
-        copy_d   = act_q[1:0];
-        known_d  = act_known_q[0];
-        tried_d  = tried_q[2:0];
-        need_m   = need_q & ~(leave ? d_bit0 : {DESTS{1'b0}});
-        has_next = 1'b0;
-        next_d   = 2'd0;
-        first_d  = 2'd0;
-        known_next = 1'b0;
-        d_bit    = {DESTS{1'b0}};
-        any_in   = |need_i;
-        first_in = 2'd0;
-        known_in = act_known_i[0];
-        for (i = DESTS - 1; i >= 0; i = i - 1) begin
-            if (d_q == i[1:0]) begin
-                d_bit[i] = 1'b1;
-                base_d  = base_q[i*ADDR_WIDTH +: ADDR_WIDTH];
-                buf_d   = buf_q[3*i +: 3];
-                copy_d  = act_q[2*i +: 2];
-                tried_d = tried_q[3*i +: 3];
-                known_d = act_known_q[i];
-            end
-            if (need_q[i] && i[1:0] > d_q) begin
-                has_next   = 1'b1;
-                next_d     = i[1:0];
-                known_next = act_known_q[i];
-            end
-            if (need_m[i]) first_d = i[1:0];
-            if (need_i[i]) begin
-                first_in = i[1:0];
-                known_in = act_known_i[i];
-            end
-        end
-        if (!known_d) copy_d = 2'd0;
-    end
-
-    // d_q's 3-bit fields as a mask (a part-select at 3*d_q would be a barrel shifter).
-    wire [3*DESTS-1:0] d_mask3;
-    genvar g;
-    generate
-        for (g = 0; g < DESTS; g = g + 1) begin : g_mask3
-            assign d_mask3[3*g +: 3] = {3{d_bit[g]}};
-        end
-    endgenerate
-
-    wire [7:0] act_byte  = wb_dat_i[ACT_BIT +: 8];
-    wire [7:0] rl_byte   = wb_dat_i[RL_BIT +: 8];
-    // A control byte names a buffer: 1..3, four-slot 1..4.
-    wire       act_valid = act_byte[7:3] == 5'd0 && act_byte[2:0] != 3'd0 &&
-                           (four_q ? act_byte[2:0] <= 3'd4 : !act_byte[2]);
-    wire       rl_valid  = rl_byte[7:3] == 5'd0 && rl_byte[2:0] != 3'd0 &&
-                           (four_q ? rl_byte[2:0] <= 3'd4 : !rl_byte[2]);
-    wire [1:0] rl_lock   = rl_valid ? rl_byte[1:0] : 2'd0;
-    // Figure 4: the last of Buffer1..3 that is neither Actual nor ReadLocked.
-    wire [1:0] pick3     = (copy_d != BUFFER3 && rl_lock != BUFFER3) ? BUFFER3 :
-                           (copy_d != BUFFER2 && rl_lock != BUFFER2) ? BUFFER2 : BUFFER1;
-    // Four-slot: p = 1 - pair(ReadLocked) (else 1 - pair(Actual)), s = 1 - Slot_p,
-    // the buffer 1 + 2p + s; pair(x) = (x - 1) >> 1 for x = 1..4.
-    wire       rl_pair   = rl_byte[2] | (rl_byte[1] & rl_byte[0]);
-    wire       act_pair  = act_byte[2] | (act_byte[1] & act_byte[0]);
-    wire       pick_p    = rl_valid ? !rl_pair : act_valid ? !act_pair : 1'b1;
-    wire       pick_s    = !(pick_p ? wb_dat_i[SLOT1_BIT] : wb_dat_i[SLOT0_BIT]);
-    wire [2:0] pick4     = {1'b0, pick_p, pick_s} + 3'd1;
-    wire [2:0] pick      = four_q ? pick4 : {1'b0, pick3};
     // Four-slot, S_STORE_SLOT: d's p and s from its buffer (b - 1 = {p, s}).
     wire [1:0] buf_m1    = buf_d[1:0] - 2'd1;
     // In S_STORE_WORD the last word is being stored when every word was taken.
     wire       last_word = take_k_q == words_q;
-    wire       ack       = wb_ack_i && stb_q;
     wire       ctrl_ld   = state_q == S_LOAD_ACTUAL || state_q == S_LOAD_RL;
-    assign drop_now = retry_q && drop_q;
-    assign landed   = ack && (state_q == S_LOAD_ACTUAL || (four_q && state_q == S_LOAD_RL)) && act_valid &&
-                      act_byte[2:0] == tried_d && tried_d != 3'd0;
-    assign leave    = drop_now || landed;
-    assign adv      = ack || drop_now;             // go on to the next access
-    assign ctrl_end = adv && (state_q == S_LOAD_RL || (state_q == S_LOAD_ACTUAL && leave));
+    wire       adv       = ack || drop_now;             // go on to the next access
+    wire       ctrl_end  = adv && (state_q == S_LOAD_RL || (state_q == S_LOAD_ACTUAL && leave));
     // After the value (and taken_at): the slot bytes (four-slot), then Actual.
     wire [2:0] after_data = four_q ? S_STORE_SLOT : S_STORE_ACTUAL;
     // The clock where the engine takes a word from the stream.
     wire       want_word = state_q == S_WAIT_WORD ||
                            (!has_next && need_m != {DESTS{1'b0}} &&
                             (ctrl_end || (adv && state_q == S_STORE_WORD && !last_word)));
-
-    // Address of the current access: a control word, or word k of d's buffer
-    // base + BUF_WORD + (buf - 1) * S + k, S = W + TAKEN_WORDS (no multiplier;
-    // (buf - 1) * S = 0, S, 2S or, four-slot, 3S).
-    // Word k is stored (S_STORE_WORD) when take_k_q = k + 1, taken_at (word W,
-    // S_STORE_TAKEN, TAKEN_AT = 1) at S - 1 = W: the -1 goes into the constant.
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire [ADDR_WIDTH+WORDS_WIDTH-1:0] w_wide = {{ADDR_WIDTH{1'b0}}, words_q};
-    wire [ADDR_WIDTH+WORDS_WIDTH-1:0] k_wide = {{ADDR_WIDTH{1'b0}}, take_k_q};
-    /* verilator lint_on UNUSEDSIGNAL */
-    wire [ADDR_WIDTH-1:0] w_ext   = w_wide[ADDR_WIDTH-1:0];
-    wire [ADDR_WIDTH-1:0] stride  = w_ext + TAKEN_WORDS[ADDR_WIDTH-1:0];
-    wire [ADDR_WIDTH-1:0] buf_off = buf_d == 3'd1 ? {ADDR_WIDTH{1'b0}} : buf_d == 3'd2 ? stride :
-                                    buf_d == 3'd3 ? (stride << 1) : (stride << 1) + stride;
-    wire                  ctrl    = state_q == S_LOAD_ACTUAL || state_q == S_LOAD_RL || state_q == S_STORE_ACTUAL ||
-                                    state_q == S_STORE_SLOT;
-    wire [ADDR_WIDTH-1:0] word_k1 = state_q == S_STORE_TAKEN ? stride : k_wide[ADDR_WIDTH-1:0];  // k + 1
-    wire [ADDR_WIDTH-1:0] adr     = base_d + (ctrl ? CTRL_WORD : BUF_WORD - 1'b1 + buf_off + word_k1);
 
     // Put the next access (state s, destination d) on the bus, or end the
     // Export here if no access may begin.
@@ -400,7 +311,7 @@ module albatross_export #(
                 S_LOAD_ACTUAL: if (adv) begin
                     if (ack) tried_q <= tried_q & ~d_mask3;          // read back
                     if (ack && act_valid) begin
-                        act_q[2*d_q +: 2]  <= act_byte[1:0];
+                        act_q[2*d_q +: 2]  <= act_buf;
                         act_known_q <= act_known_q | d_bit;
                     end else if (ack) begin
                         corrupt_q   <= corrupt_q | d_bit;

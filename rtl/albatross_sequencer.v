@@ -9,7 +9,8 @@
 //   * ROM format (rtl/albatross_contract.toml): header H0..H3, entry k at
 //     word 4 + 8k; H3 is the CRC of the whole ROM image (words 0 .. 4+8*NE-1,
 //     H3 read as 0); no per-entry checksum.  The CRC and the prefix
-//     signatures are rtl/albatross_rom_check.v's (its rules).
+//     signatures are rtl/albatross_rom_check.v's, the ROM, its loading and
+//     the word read in each clock rtl/albatross_schedule_rom.v's (their rules).
 //   * Start-up (after enable_i): read the header (5 clocks), then one CRC
 //     pass over the image, one word a clock, storing the CRC after the header
 //     and after each entry (their prefix CRCs).  A bad magic, NE outside
@@ -103,7 +104,6 @@ module albatross_sequencer #(
     localparam [PC_BITS-1:0]  POLL_LAST   = POLL_LAST_I[PC_BITS-1:0];
     localparam integer        MIN_LEN_I   = FETCH_CYCLES + MARGIN;
     localparam [TB:0]         MARGIN_T    = MARGIN[TB:0];
-    localparam [ROM_AW-1:0]   A1 = 1, A3 = 3, A5 = 5;
     localparam [7:0]          NE_MAX8     = NE_MAX[7:0];
     localparam                HFLAG_SYNC  = ALB_ROM_H0_FLAGS_LSB + ALB_ROM_HFLAG_SYNC_MODE;
     localparam                EFLAG_SYNC  = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_SYNC;
@@ -179,81 +179,22 @@ module albatross_sequencer #(
     reg [PC_BITS-1:0]  pc_q;
     reg                poll_q;
 
-    // ------------------------------------------------------------ memories (never reset)
-    reg [31:0] rom [0:ROM_WORDS-1];
-    reg [31:0] rom_q;
-
-    integer ri;
-`ifndef SYNTHESIS
-    reg [8*1024-1:0] rom_arg;
-`endif
-`ifndef SYNTHESIS
-    // Simulation only: +rom_upset_word=N +rom_upset_at=T flips bit 16 of ROM
-    // word N at global time T (a run-time upset for the background check).
-    integer upset_word, upset_at;
-`endif
-    initial begin
-        for (ri = 0; ri < ROM_WORDS; ri = ri + 1) rom[ri] = 32'd0;
-        if (ROM_FILE != "") $readmemh(ROM_FILE, rom);
-`ifndef SYNTHESIS
-        if ($value$plusargs("rom=%s", rom_arg)) $readmemh(rom_arg, rom);
-        if (!$value$plusargs("rom_upset_word=%d", upset_word)) upset_word = -1;
-        if (!$value$plusargs("rom_upset_at=%d", upset_at)) upset_at = 0;
-`endif
-    end
-
-    // ------------------------------------------------------------ ROM port
+    // ------------------------------------------------------------ ROM and its read port
     wire               start_now = state_q == ST_WAIT && rel_q >= start_q;   // clock S (late only after an overrun)
-    wire               fetch_rom = state_q == ST_FETCH && step_q <= 3'd5;
-    wire               main_rom  = state_q == ST_HEADER || start_now || fetch_rom;
+    wire               main_rom;      // a main read: the background check waits
+    wire [31:0]        rom_q;         // the word read in the previous clock
     wire               bg_on     = state_q == ST_CHECK || state_q == ST_WAIT ||
                                    state_q == ST_TRANSFER || state_q == ST_CYCLE_END;
     /* verilator lint_off UNUSEDSIGNAL */
     wire [ROM_AW+11:0] last_wide = {{ROM_AW{1'b0}}, 1'b0, ne_q, 3'b011}; // 4 + 8*NE - 1
     /* verilator lint_on UNUSEDSIGNAL */
     wire [ROM_AW-1:0]  last_word = last_wide[ROM_AW-1:0];
-    // Main reads: header H0, H1, H3, E1 of entry 0; fetch E0 (clock S), E2..E5, E1 of the next
-    // (of entry 0 after the last entry: start_q then holds the next cycle's first start).
-    // Entry k's word j is 4 + 8k + j = {k, 3'b100} + j (mod 2^ROM_AW): E0, E2, E3 are
-    // {k, 1jj}, E4, E5 and the next E1 are {k + 1, 0jj / 101}; ent_inc is k + 1 (shared
-    // with the entry count).
-    wire [ROM_AW-1:0] bg_adr;         // the ROM check's next word
-    wire [7:0]        ent_inc = ent_q + 8'd1;
-    wire              adr_inc = state_q == ST_FETCH && step_q >= 3'd3;   // E4, E5, next E1
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire [7:0]        ent_sel = adr_inc ? ent_inc : ent_q;
-    wire              adr_wrap = state_q == ST_FETCH && step_q >= 3'd5 && ent_inc == ne_q;  // last entry: word 5
-    /* verilator lint_on UNUSEDSIGNAL */
-    reg  [2:0]        adr_lo;
-    always @* begin
-        adr_lo = 3'b100;                                             // E0 (start_now)
-        if (state_q == ST_FETCH)
-            case (step_q)
-                3'd1:    adr_lo = 3'b110;                            // E2
-                3'd2:    adr_lo = 3'b111;                            // E3
-                3'd3:    adr_lo = 3'b000;                            // E4
-                3'd4:    adr_lo = 3'b001;                            // E5
-                default: adr_lo = 3'b101;                            // E1 of the next entry
-            endcase
-    end
-    reg [ROM_AW-1:0] main_adr;
-    always @* begin
-        main_adr = {adr_wrap ? {(ROM_AW-3){1'b0}} : ent_sel[ROM_AW-4:0], adr_lo};
-        if (state_q == ST_HEADER)
-            case (step_q)
-                3'd0:    main_adr = {ROM_AW{1'b0}};
-                3'd1:    main_adr = A1;
-                3'd2:    main_adr = A3;
-                default: main_adr = A5;                              // E1 of entry 0
-            endcase
-    end
-    always @(posedge clk_i) begin
-        rom_q <= rom[main_rom ? main_adr : bg_adr];
-`ifndef SYNTHESIS
-        if (upset_word >= 0 && upset_word < ROM_WORDS && time_q == upset_at[31:0])
-            rom[upset_word] <= rom[upset_word] ^ 32'h00010000;
-`endif
-    end
+    wire [ROM_AW-1:0]  bg_adr;        // the ROM check's next word
+    wire [7:0]         ent_inc   = ent_q + 8'd1;
+    albatross_schedule_rom #(.ROM_WORDS(ROM_WORDS), .ROM_FILE(ROM_FILE)) u_rom (
+        .clk_i(clk_i), .time_i(time_q), .header_i(state_q == ST_HEADER), .start_i(start_now),
+        .fetch_i(state_q == ST_FETCH), .step_i(step_q), .ent_i(ent_q), .ne_i(ne_q), .bg_adr_i(bg_adr),
+        .main_o(main_rom), .dat_o(rom_q));
 
     // ------------------------------------------------------------ ROM check
     // The start-up CRC and the background re-check; in the clock S of a

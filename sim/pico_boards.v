@@ -152,7 +152,7 @@ module pico_boards #(
                     2:       have_img = $value$plusargs("ram2=%s", img_file);
                     default: have_img = $value$plusargs("ram3=%s", img_file);
                 endcase
-                if (have_img != 0) $readmemh(img_file, u_sys.g_board[c].u_ram.mem);
+                if (have_img != 0) $readmemh(img_file, u_sys.g_board[c].u_ram.u_core.mem);
             end
         end
     endgenerate

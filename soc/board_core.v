@@ -12,7 +12,10 @@
 module board_core #(
     parameter SERV       = 0,     // 0: PicoRV32, 1: SERV
     parameter VEX        = 0,     // 1: VexRiscv (soc/vexriscv_core.v), whatever SERV is
+    // Read only in the VexRiscv branch below: unused (UNUSEDPARAM) when VEX = 0.
+    /* verilator lint_off UNUSEDPARAM */
     parameter CACHED_ALIAS = 0,   // VexRiscv only: 1 also maps the DPRAM window cached (a negative test)
+    /* verilator lint_on UNUSEDPARAM */
     parameter CORE       = 0,     // index: the firmware plusarg is +fw<CORE>=FILE (0..3)
     parameter ADDR_WIDTH = 10,    // word-address bits of the DPRAM port
     parameter RAM_WORDS  = 4096,  // words of the local RAM (16 KiB)

@@ -11,12 +11,14 @@ set -euo pipefail
 rev=${1:-main}
 clocks=${2:-2000000}
 out=build/equiv
-parts="controller sequencer rom_check entry_check import export bus_master counters"
+# Every controller part of either tree (a part the reference does not have yet is skipped).
+parts="controller sequencer schedule_rom rom_check entry_check import export export_dest bus_master counters"
 rm -rf "$out/ref" "$out/obj"
 mkdir -p "$out/ref"
 git archive "$rev" rtl | tar -x -C "$out/ref"
 alt=$(echo $parts | tr ' ' '|')
 for p in $parts; do
+    [ -f "$out/ref/rtl/albatross_$p.v" ] || continue
     sed -E "s/\balbatross_($alt)\b/ref_albatross_\1/g" "$out/ref/rtl/albatross_$p.v" > "$out/ref/ref_albatross_$p.v"
 done
 make -s build/schedule/mobot3/rom.hex build/schedule/mobot3_possync/rom.hex >/dev/null

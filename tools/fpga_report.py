@@ -6,7 +6,7 @@
     tools/fpga_report.py --self-test     (the negative test of the top checks)
 
 Designs (files are read with -DSYNTHESIS; parameters as the systems use them):
-  dpram       rtl/albatross_dpram.v, ADDR_WIDTH 10 (4 KiB)
+  dpram       rtl/albatross_dpram.v + _core.v, ADDR_WIDTH 10 (4 KiB)
   controller  rtl/albatross_controller.v and its parts, NB 4, ADDR_WIDTH 10, N_CHAN 16, ROM_WORDS 1024,
               ROM_FILE the robot's schedule (build/schedule/mobot3/rom.hex)
               (the four-board robot's configuration)
@@ -52,10 +52,18 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from synth_report import FAMILIES, cell_types, count, write_json  # noqa: E402
 
 # The controller: its thin top and the parts it composes.
+<<<<<<< HEAD
 CTRL_FILES = ["rtl/albatross_controller.v", "rtl/albatross_sequencer.v", "rtl/albatross_rom_check.v",
              "rtl/albatross_entry_check.v", "rtl/albatross_import.v",
              "rtl/albatross_export.v", "rtl/albatross_bus_master.v", "rtl/albatross_counters.v"]
+SOC_FILES = ["rtl/albatross_dpram.v", "rtl/albatross_dpram_core.v", "rtl/albatross_wb_cdc.v", "rtl/albatross_bus.v"] + CTRL_FILES + [
+=======
+CTRL_FILES = ["rtl/albatross_controller.v", "rtl/albatross_sequencer.v", "rtl/albatross_schedule_rom.v",
+             "rtl/albatross_rom_check.v", "rtl/albatross_entry_check.v", "rtl/albatross_import.v",
+             "rtl/albatross_export.v", "rtl/albatross_export_dest.v", "rtl/albatross_bus_master.v",
+             "rtl/albatross_counters.v"]
 SOC_FILES = ["rtl/albatross_dpram.v", "rtl/albatross_wb_cdc.v", "rtl/albatross_bus.v"] + CTRL_FILES + [
+>>>>>>> split
              "soc/board_core.v", "soc/pico_core.v", "soc/serv_core.v", "soc/serv_bridge.v", "soc/board_memmap.v",
              "soc/pico_wb_adapter.v", "soc/albatross_system.v", "soc/board_reset.v", "soc/beat_divider.v",
              "fpga/duo_system.v"]
@@ -75,7 +83,7 @@ CDC_BUDGET_PERIODS = 1
 def design(name, fam, picorv32, serv):
     """(files, top, chparam) of a design on a family."""
     if name == "dpram":
-        return ["rtl/albatross_dpram.v"], "albatross_dpram", "chparam -set ADDR_WIDTH 10 albatross_dpram"
+        return ["rtl/albatross_dpram.v", "rtl/albatross_dpram_core.v"], "albatross_dpram", "chparam -set ADDR_WIDTH 10 albatross_dpram"
     if name == "controller":
         # The robot's schedule (make schedule): with no ROM image the ROM is all
         # zero, Yosys folds it to a constant and drops much of the controller.

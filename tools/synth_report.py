@@ -140,7 +140,7 @@ def synth_family(fam, src, top, aw, outdir, args):
     spec = FAMILIES[fam]
     synth = spec["synth"].format(top=top)
     head = "read_verilog -DSYNTHESIS -Irtl %s; chparam -set ADDR_WIDTH %d %s; " % (
-        yosys_quote(src), aw, top)
+        " ".join(yosys_quote(f) for f in src.split(",")), aw, top)
     r = {"script": head + synth, "luts": None, "ffs": None, "carries": None,
          "brams": None, "lutrams": None, "logic_ram_bits": None,
          "mem_cells_left": None, "bram_inferred": False, "full_synthesis": False,
@@ -222,7 +222,8 @@ def fmt(v):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("module")
-    ap.add_argument("--file", help="Verilog source (default rtl/, soc/ or tb/dpram/MODULE.v)")
+    ap.add_argument("--file", help="Verilog source (default rtl/, soc/ or tb/dpram/MODULE.v); "
+                    "several as a comma-separated list (a wrapper and its core)")
     ap.add_argument("--addr-width", type=int, default=10)
     ap.add_argument("--families", default="ice40,ecp5,xc7")
     ap.add_argument("--require-bram", action="store_true",
@@ -251,7 +252,7 @@ def main():
         if f not in families:
             families.append(f)
     src = args.file or find_source(args.module)
-    if not src or not os.path.isfile(src):
+    if not src or not all(os.path.isfile(f) for f in src.split(",")):
         print("synth_report: no source for module %s (give --file)" % args.module)
         return 2
 

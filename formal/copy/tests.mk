@@ -1,10 +1,11 @@
 # formal/copy/tests.mk -- the SymbiYosys tests of formal/copy/copy.sby
 # (tools/mk/formal_sby.mk says the fields: NAME:CORE:TASK:EXPECT, CORE:VARIANT:FILE).
-# The harness composes three rtl files; the mutants edit the Export engine.
-FSBY_RTL_copy := rtl/albatross_import.v rtl/albatross_export.v rtl/albatross_bus_master.v
+# The harness composes the rtl files below; the mutants edit the Export engine
+# (writes_locked its buffer pick, in albatross_export_dest.v).
+FSBY_RTL_copy := rtl/albatross_import.v rtl/albatross_export.v rtl/albatross_export_dest.v rtl/albatross_bus_master.v
 FSBY_TESTS_SPEC += \
     formal-copy:copy:prove:pass \
     formal-copy-cover:copy:cover:pass \
     formal-copy-negative-early_publish:copy:neg_early_publish:publish_complete \
     formal-copy-negative-writes_locked:copy:neg_writes_locked:no_write_read
-FSBY_MUTANTS += copy:early_publish:albatross_export.v copy:writes_locked:albatross_export.v
+FSBY_MUTANTS += copy:early_publish:albatross_export.v copy:writes_locked:albatross_export_dest.v

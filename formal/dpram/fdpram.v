@@ -125,7 +125,7 @@ module fdpram #(
 
     // ------------------------------------------------ induction strengthening
 `ifdef F_PROBE
-    (* keep *) wire [32*(1<<ADDR_WIDTH)-1:0] f_mem;   // dut.mem[0..], joined by the script
+    (* keep *) wire [32*(1<<ADDR_WIDTH)-1:0] f_mem;   // dut.u_core.mem[0..], joined by the script
     (* keep *) wire        f_slot;       // dut.slot_q
     (* keep *) wire [31:0] f_rdata;      // dut.rdata_q
     wire [31:0] f_mem_word = f_mem[32*fa +: 32];

@@ -7,4 +7,6 @@ FSBY_TESTS_SPEC += \
     formal-dpram-negative-priority_a:dpram:neg_priority_a:wb_b.props.ans_max_wait \
     formal-dpram-negative-no_arbitration:dpram:neg_no_arbitration:atomicity_a|atomicity_b \
     formal-dpram-negative-drop_ack:dpram:neg_drop_ack:wb_a.props.ans_max_wait
-FSBY_MUTANTS += dpram:drop_ack
+FSBY_MUTANTS += dpram:drop_ack:albatross_dpram_core.v
+# the wrapper and its core (the mutant edits the core)
+FSBY_RTL_dpram := rtl/albatross_dpram.v rtl/albatross_dpram_core.v

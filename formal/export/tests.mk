@@ -17,6 +17,9 @@ FSBY_TESTS_SPEC += \
     formal-export-four-negative-actual_first4:export:four_neg_actual_first4:fs_actual_store \
     formal-export-four-negative-early_slot4:export:four_neg_early_slot4:fs_slot_store|fs_actual_store|fs_count \
     formal-export-four-negative-extra_load4:export:four_neg_extra_load4:fs_count|fs_ctrl_lanes
-FSBY_MUTANTS += export:early_publish export:writes_locked export:ignore_actual export:extra_access \
-                export:ignore_rl4 export:same_slot4 export:actual_first4 export:early_slot4 \
-                export:extra_load4
+# The buffer pick is in albatross_export_dest.v: its mutants edit that file.
+FSBY_MUTANTS += export:early_publish export:writes_locked:albatross_export_dest.v \
+                export:ignore_actual:albatross_export_dest.v export:extra_access \
+                export:ignore_rl4:albatross_export_dest.v export:same_slot4:albatross_export_dest.v \
+                export:actual_first4 export:early_slot4 export:extra_load4
+FSBY_RTL_export := rtl/albatross_export.v rtl/albatross_export_dest.v

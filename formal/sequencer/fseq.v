@@ -1,5 +1,5 @@
-// fseq -- property harness of albatross_sequencer (with albatross_rom_check and
-// albatross_entry_check inside it) for the unbounded proofs of
+// fseq -- property harness of albatross_sequencer (with albatross_schedule_rom,
+// albatross_rom_check and albatross_entry_check inside it) for the unbounded proofs of
 // formal/sequencer/sequencer.sby (docs/verification.md "Sequencer (unbounded)").
 // Rules:
 //   * The ROM is a fixed image, fseq_rom.hex, and fseq_rom.vh gives the

@@ -37,7 +37,7 @@ static const uint32_t AMASK = (1u << AW) - 1;
 static inline uint64_t t0_of(int ne) { return 2 * NCH + 10 + 8 * (uint64_t)ne; }
 
 // ------------------------------------------------------------------ checks
-enum { G_TIMING = 1, G_DATA = 2, G_ROM = 4, G_FAULT = 8, G_DEAD = 16 };
+enum { G_TIMING = 1, G_DATA = 2, G_ROM = 4, G_FAULT = 8, G_DEAD = 16, G_ABANDON = 32 };
 extern unsigned g_failed_groups;
 extern unsigned g_checks, g_fails;
 extern bool g_inject_timing;
@@ -308,3 +308,4 @@ void scenario_four();
 void scenario_faults();
 void scenario_dead();
 void scenario_sync();
+void scenario_abandon();

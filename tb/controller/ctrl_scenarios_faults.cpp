@@ -1,5 +1,6 @@
 // ctrl_scenarios_faults.cpp -- test_controller scenarios faults (retried fault
-// kinds), dead (a board's link down) and sync (position-synchronised mode).
+// kinds), dead (a board's link down), sync (position-synchronised mode) and
+// abandon (the abandoned count of a COPY whose Import ends without choosing).
 #include "ctrl_bench.h"
 
 // Fault kinds 1..3 on single accesses of the COPY slot, one cycle each.
@@ -256,4 +257,60 @@ void scenario_sync() {
     for (const Attempt &a : p2) last_end = std::max(last_end, a.end);
     check(G_TIMING, !p2.empty() && last_end <= c1 + H1, "sync: polls until the cycle end: expected polls ending by %"
           PRIu64 ", got %zu polls, last end %" PRIu64, c1 + H1, p2.size(), last_end);
+}
+
+// The abandoned count of a COPY slot whose Import ends without choosing (its
+// source board dead for the slot): the destinations still in need are the
+// channel's stored need (state RAM), not what the last Export of another
+// channel left in the controller's registers.  The regression 7e46d73 fixed
+// (the field-by-field state-RAM write-back of 59c3c2d, the abandoned count
+// taken from the Export's need unconditionally) counted 0 here instead of 1:
+// its mutant tb/mutants/controller/stale_need.sed must fail this scenario.
+void scenario_abandon() {
+    std::printf("== abandon: a COPY whose Import ends without choosing counts the channel's stored need\n");
+    std::vector<Entry> es = schedule();
+    write_rom(build_rom(H1, 0, es));
+    Sim s;
+    Setup u(s);
+    const uint64_t T0 = t0_of((int)es.size());
+    u.prod.publish(s, value(0));
+    s.run_until(T0 + TAIL);
+    std::vector<uint32_t> got;
+    u.cons.import(s, got);
+    bool isnew = u.stat.import(s, got);
+    const uint32_t ab0 = got[2] >> 16;            // channel 0 abandoned before (0)
+    u.prod.publish(s, value(1));
+    // Cycle 1: board 1 (COPY's destination) dead for the COPY slot only: the
+    // Import chooses value(1), the Export drops the destination: need stays 1,
+    // abandoned + 1.  TIME and STATUS then publish to every destination, so
+    // the last Export before cycle 2's COPY published its destination 0.
+    const uint64_t C1 = T0 + H1, C2 = C1 + H1, C3 = C2 + H1;
+    s.run_until(C1);
+    s.top->fi_dead_i = 1u << 1;
+    s.run_until(C1 + L_COPY);
+    s.top->fi_dead_i = 0;
+    // Cycle 2: board 0 (COPY's source) dead for the COPY slot: the Import is
+    // retried to the deadline and never chooses, no Export runs: the
+    // destination still needs value(1): abandoned + 1.
+    s.run_until(C2);
+    s.top->fi_dead_i = 1u << 0;
+    s.run_until(C2 + L_COPY);
+    s.top->fi_dead_i = 0;
+    std::vector<Attempt> v2 = s.attempts(C2, C2 + L_COPY);
+    size_t src_fail = 0;
+    for (const Attempt &a : v2) src_fail += (a.adr >> AW) == 0 && a.result != 1;
+    check(G_FAULT, !v2.empty() && src_fail == v2.size(),
+          "abandon: cycle 2's COPY slot only tries its dead source (the Import never chooses): expected every one "
+          "of %zu attempts to board 0 and failed, got %zu", v2.size(), src_fail);
+    // Cycle 3: healthy: the Import finds value(1) Old and serves the stored need.
+    s.run_until(C3 + TAIL);
+    isnew = u.cons.import(s, got);
+    check(G_FAULT, isnew && got[0] == value(1)[0],
+          "abandon: cycle 3 delivers the value abandoned twice: expected New 0x%08x, got %s 0x%08x", value(1)[0],
+          isnew ? "New" : "Old", got[0]);
+    isnew = u.stat.import(s, got);
+    check(G_ABANDON, isnew && (got[2] >> 16) == ab0 + 2,
+          "abandon: STATUS channel 0 abandoned after cycles 1 (destination dead) and 2 (source dead, Import ended "
+          "without choosing; the count must come from the state RAM's need): expected %u, got %u", ab0 + 2,
+          got[2] >> 16);
 }

@@ -32,14 +32,18 @@
 //            a landed Actual store that timed out is read back (the 3-bit
 //            tried buffer) and not published twice; a fourth buffer past the
 //            RAM and SYNC with FOUR_SLOT are invalid
+//   abandon  a COPY whose Import ends without choosing (source dead) counts
+//            the channel's stored need as abandoned (group 32: the state-RAM
+//            write-back regression; negative controller-negative-stale_need)
 // Each check prints what it expected and what it got.  Exit status 0 if all
 // pass, else 64 + a bit mask of the failed groups (1 timing, 2 data, 4 rom,
-// 8 faults, 16 dead).  --inject=timing makes the timing checker expect one
+// 8 faults, 16 dead, 32 abandon).  --inject=timing makes the timing checker expect one
 // clock more (its negative test: it must fail with bit 1).
 // Options: --dir=DIR (work directory for the ROM file, created)  --inject=timing
 //          --scenario=NAME (default: all)
 // Files: ctrl_bench.h/.cpp (checks, ROM builder, model wrapper, CPU protocol),
-//        ctrl_scenarios_data.cpp (basic, corrupt, four), ctrl_scenarios_faults.cpp (faults, dead, sync).
+//        ctrl_scenarios_data.cpp (basic, corrupt, four), ctrl_scenarios_faults.cpp (faults, dead, sync,
+//        abandon).
 #include "ctrl_bench.h"
 
 // ------------------------------------------------------------------ main
@@ -59,7 +63,7 @@ int main(int argc, char **argv) {
             }
         }
         else {
-            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|sync|four]\n",
+            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|sync|four|abandon]\n",
                          argv[0]);
             return 2;
         }
@@ -67,7 +71,7 @@ int main(int argc, char **argv) {
     if (g_inject_timing) std::printf("injected: the timing checker expects every completion one clock late\n");
     struct { const char *name; void (*fn)(); } sc[] = {
         {"basic", scenario_basic}, {"corrupt", scenario_corrupt}, {"faults", scenario_faults}, {"dead", scenario_dead},
-        {"sync", scenario_sync}, {"four", scenario_four}};
+        {"sync", scenario_sync}, {"four", scenario_four}, {"abandon", scenario_abandon}};
     for (auto &x : sc)
         if (only.empty() || only == x.name) x.fn();
     std::printf("test_controller: %u checks, %u failed%s\n", g_checks, g_fails,

@@ -71,7 +71,7 @@ module tb_sequencer;
             $finish;
         end
         if (error || rerr != 0 || gos < 15) begin $display("FAIL error %0d rom_errors %0d gos %0d", error, rerr, gos); errors = errors + 1; end
-        dut.rom[4 + 8 + 3] = 32'h00001234;     // upset entry 1 (E3, unused by TIME)
+        dut.u_rom.rom[4 + 8 + 3] = 32'h00001234;     // upset entry 1 (E3, unused by TIME)
         gos = 0;
         repeat (3000) @(posedge clk);
         if (rerr == 0) begin $display("FAIL upset not counted"); errors = errors + 1; end

@@ -200,6 +200,13 @@ static void fs_import_order(void)
     check_int("Import: Old", ALB_OLD, alb_import(&c, d));
     check_counts("Import, nothing new", 0, 0, 1 + words(8u), 0);
     check_bytes("the same value", v, d, sizeof d);
+    /* A new Actual in the other pair (set in the RAM): the announcement, which
+     * hands the pair just read back to the producer, must follow a fence
+     * after that read's data loads. */
+    *ram(ch_base + ALB_OFF_ACTUAL) = 1u;
+    check_int("Import after a new Actual: New", ALB_NEW, alb_import(&c, d));
+    check_fence_between("release: the last Import's data loads before the ReadLocked store",
+                        UNIT_RD32, 0u, UNIT_WR8, ch_base + ALB_OFF_READLOCKED);
 
     /* The producer completes a value in the announced pair (Slot1 := 0,
      * Buffer3) but has not yet stored Actual when the consumer loads the

@@ -76,6 +76,15 @@ static void sweep_one(uint32_t size, unsigned so, unsigned dof)
                sizeof dbuf.b - (4u + dof + size), guard);
     check_fence_between("acquire: Actual before data", UNIT_RD8, a_actual(), UNIT_RD32, 0u);
 
+    /* The next Import finds a new Actual (set in the RAM, no producer call in
+     * the log): its ReadLocked store, which hands the buffer just read back to
+     * the producer, must follow a fence after that read's data loads (a
+     * weakly ordered CPU may otherwise make the store visible first). */
+    *ram(a_actual()) = 1u;
+    check_int("alb_import after a new Actual: New", ALB_NEW, alb_import(&c, dst));
+    check_fence_between("release: the last Import's data loads before the ReadLocked store",
+                        UNIT_RD32, 0u, UNIT_WR8, a_rl());
+
     /* Two exports in a row: store of Actual, fence, load of ReadLocked */
     port_reset(ch_base, ch_base + ALB_CHANNEL_BYTES(size));
     alb_export(&p, src);

@@ -54,6 +54,7 @@ class AlbatrossDPRAM(LiteXModule):
         # albatross_dpram never answers err.
         self.comb += [a.err.eq(0), b.err.eq(0)]
         platform.add_source(os.path.join(ROOT, "rtl", "albatross_dpram.v"))
+        platform.add_source(os.path.join(ROOT, "rtl", "albatross_dpram_core.v"))
 
 
 def add_albatross(soc, name="albatross", origin=0x90000000, size=0x1000):

@@ -14,7 +14,7 @@
 
 PBN_DIR     := $(BUILD)/pico_bench
 PBN_RTL     := tb/pico/pico_bench.v soc/pico_core.v soc/board_memmap.v soc/pico_wb_adapter.v \
-               rtl/albatross_dpram.v
+               rtl/albatross_dpram.v rtl/albatross_dpram_core.v
 PBN_VFLAGS  := -Wall --timescale 1ns/1ps $(VLIB) --top-module pico_bench tb/pico/picorv32.vlt
 PBN_BIN     := $(PBN_DIR)/obj/Vpico_bench
 PBN_MAX_CYCLES ?= 5000000

@@ -4,6 +4,12 @@
 #   make test-controller-smoke            the self-checking run (all scenarios)
 #   make test-controller-smoke-negative   the timing checker, given a formula one
 #                                         clock off, must fail (exit 65: timing only)
+#   make test-controller-abandon          the abandon scenario alone (about 2 s once built)
+#   make test-controller-negative-stale_need
+#                                         the bench built on the state-RAM write-back
+#                                         regression of 59c3c2d (tb/mutants/controller/
+#                                         stale_need.sed) must fail the abandon scenario's
+#                                         check (group 32) and name it
 # The model reads its ROM from "ctrl_rom.hex" in the working directory that
 # each run selects with --dir, so the two runs never share a ROM file.
 
@@ -12,7 +18,7 @@ CTRL_BIN := $(CTRL_DIR)/obj/Vtb_system
 CTRL_CPP := tb/controller/test_controller.cpp tb/controller/ctrl_bench.cpp \
             tb/controller/ctrl_scenarios_data.cpp tb/controller/ctrl_scenarios_faults.cpp
 CTRL_SRC := tb/system/tb_system.v soc/albatross_system.v tb/common/bus_fault_injector.v $(CTRL_RTL) \
-            rtl/albatross_bus.v rtl/albatross_dpram.v $(CTRL_CPP) tb/controller/ctrl_bench.h \
+            rtl/albatross_bus.v rtl/albatross_dpram.v rtl/albatross_dpram_core.v $(CTRL_CPP) tb/controller/ctrl_bench.h \
             $(RTL_INC) tb/common/albatross_contract.h
 
 $(CTRL_BIN): $(CTRL_SRC) tools/mk/controller.mk
@@ -34,3 +40,32 @@ test-controller-smoke-negative: $(CTRL_BIN)
 	    grep -m 3 "^FAIL" $(CTRL_DIR)/negative.log | sed "s/^FAIL/  caught (injected):/"; \
 	    if [ $$rc -eq 65 ]; then echo "timing checker failed on the wrong formula, as it must (exit 65)"; \
 	    else echo "expected exit 65 (timing checker only), came exit $$rc"; tail -n 5 $(CTRL_DIR)/negative.log; exit 1; fi'
+
+# The abandon scenario alone, and its negative: the controller mutant that
+# reproduces the state-RAM write-back regression (the abandoned count of a COPY
+# whose Import ended without choosing taken from a stale Export's need).
+CTRL_MUT_DIR := $(CTRL_DIR)/mutant-stale_need
+$(CTRL_MUT_DIR)/src/albatross_controller.v: rtl/albatross_controller.v tb/mutants/controller/stale_need.sed
+	@mkdir -p $(@D)
+	sed -f tb/mutants/controller/stale_need.sed $< > $@
+	@if cmp -s $@ $<; then echo "mutant stale_need did not apply: rtl/albatross_controller.v no longer has the line it edits"; \
+	    rm -f $@; exit 1; fi
+$(CTRL_MUT_DIR)/obj/Vtb_system: $(CTRL_SRC) $(CTRL_MUT_DIR)/src/albatross_controller.v tools/mk/controller.mk
+	@mkdir -p $(CTRL_MUT_DIR)
+	verilator --cc --exe --build -j 2 -O3 -Wall --top-module tb_system \
+	    -GROM_FILE='"ctrl_rom.hex"' -CFLAGS "-O2 -std=c++17 -Wall -Wextra $(TB_COMMON_INC)" \
+	    --Mdir $(CTRL_MUT_DIR)/obj -y $(CTRL_MUT_DIR)/src $(VLIB) tb/system/tb_system.v $(abspath $(CTRL_CPP)) \
+	    > $(CTRL_MUT_DIR)/build.log 2>&1 || { cat $(CTRL_MUT_DIR)/build.log; exit 1; }
+
+TESTS += controller-abandon controller-negative-stale_need
+.PHONY: test-controller-abandon test-controller-negative-stale_need
+test-controller-abandon: $(CTRL_BIN)
+	@tools/run_test.sh controller-abandon $(CTRL_BIN) --dir=$(CTRL_DIR)/abandon --scenario=abandon
+
+test-controller-negative-stale_need: $(CTRL_MUT_DIR)/obj/Vtb_system
+	@tools/run_test.sh controller-negative-stale_need bash -c '$< --dir=$(CTRL_MUT_DIR)/run --scenario=abandon \
+	    > $(CTRL_MUT_DIR)/run.log 2>&1; rc=$$?; \
+	    grep -m 3 "^FAIL" $(CTRL_MUT_DIR)/run.log | sed "s/^FAIL/  caught:/"; \
+	    if [ $$rc -ge 64 ] && [ $$(( (rc - 64) & 32 )) -ne 0 ] && grep -q "^FAIL abandon: STATUS channel 0 abandoned" $(CTRL_MUT_DIR)/run.log; then \
+	        echo "the abandon check failed on the stale-need mutant, as it must (exit $$rc)"; \
+	    else echo "expected exit 64+32 with the abandon check failing, came exit $$rc"; tail -n 5 $(CTRL_MUT_DIR)/run.log; exit 1; fi'

@@ -1,7 +1,8 @@
 # tools/mk/endpoint.mk -- the hardware endpoints (rtl/albatross_export_endpoint.v,
-# rtl/albatross_import_endpoint.v, engines rtl/albatross_export.v and
-# rtl/albatross_import.v) against a PicoRV32 running the real C driver, with
-# the protocol checker watching both ports of the RAM (tb/endpoint/):
+# rtl/albatross_import_endpoint.v, engines rtl/albatross_export.v with
+# rtl/albatross_export_dest.v, and rtl/albatross_import.v) against a PicoRV32
+# running the real C driver, with the protocol checker watching both ports of
+# the RAM (tb/endpoint/):
 #   make test-endpoint-export            pair_source + export endpoint on port A,
 #                                        PicoRV32 consumer (tb/pico/firmware/consumer.c)
 #                                        on port B; build/reports/endpoint_export.json
@@ -25,8 +26,8 @@ EP_VALUES     ?= 20000
 EP_MAX_CYCLES ?= 20000000
 EP_VFLAGS     := -Wall --timescale 1ns/1ps $(VLIB) -y tb/endpoint/export -y tb/endpoint/import tb/pico/picorv32.vlt
 EP_CXXFLAGS   := -O2 -std=c++17 -U_FORTIFY_SOURCE $(TB_COMMON_INC) -I$(abspath c-driver)
-EP_ENGINES    := rtl/albatross_export.v rtl/albatross_import.v rtl/albatross_export_endpoint.v \
-                 rtl/albatross_import_endpoint.v rtl/albatross_dpram.v $(RTL_INC)
+EP_ENGINES    := rtl/albatross_export.v rtl/albatross_export_dest.v rtl/albatross_import.v rtl/albatross_export_endpoint.v \
+                 rtl/albatross_import_endpoint.v rtl/albatross_dpram.v rtl/albatross_dpram_core.v $(RTL_INC)
 EP_CORE       := soc/board_core.v soc/pico_core.v soc/board_memmap.v soc/pico_wb_adapter.v
 EP_CHECK      := tb/common/protocol_checker.cpp tb/common/protocol_checker.h tb/endpoint/channel_watch.h tb/endpoint/bench_options.h \
                  tb/common/report.h
@@ -78,7 +79,7 @@ test-endpoint-import: $(EP_DIR)/import/Vimport_pico $$(PICO_DIR)/fw/producer.hex
 # header says what it breaks) built into the test top in place of the engine;
 # the test passes only if the named checker of the protocol checker fails.
 # name : engine file : test top : checker
-EP_NEGATIVES := export_writes_locked:albatross_export:export_pico:mutual_exclusion \
+EP_NEGATIVES := export_writes_locked:albatross_export_dest:export_pico:mutual_exclusion \
                 export_early_publish:albatross_export:export_pico:definite_results \
                 import_no_readlocked:albatross_import:import_pico:mutual_exclusion
 EP_FW_export_pico := +fw1=$(EP_DIR)/fw/consumer.hex --values $(EP_VALUES)

@@ -38,7 +38,7 @@ FPGA_RAM    := 2048   # bytes of each core's program RAM (RAM_WORDS 512 in the t
 FPGA_TOPS   := $(wildcard fpga/*_top.v)
 FPGA_OWN    := fpga/duo_system.v $(FPGA_TOPS)
 FPGA_RTL    := $(FPGA_OWN) soc/albatross_system.v soc/board_reset.v soc/beat_divider.v \
-               rtl/albatross_dpram.v rtl/albatross_wb_cdc.v rtl/albatross_bus.v $(CTRL_RTL) \
+               rtl/albatross_dpram.v rtl/albatross_dpram_core.v rtl/albatross_wb_cdc.v rtl/albatross_bus.v $(CTRL_RTL) \
                soc/board_core.v soc/pico_core.v soc/serv_core.v soc/serv_bridge.v soc/board_memmap.v \
                soc/pico_wb_adapter.v
 # Files fpga-lint checks each as a top: the demonstration and the FPGA-only soc/ parts.

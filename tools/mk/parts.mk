@@ -1,5 +1,5 @@
 # tools/mk/parts.mk -- the controller's parts (issue 12): albatross_sequencer
-# (with its albatross_rom_check and albatross_entry_check),
+# (with its albatross_schedule_rom, albatross_rom_check and albatross_entry_check),
 # albatross_bus_master, albatross_counters, each on its own (the engines have
 # tools/mk/endpoint.mk; rtl/albatross_controller.v composes them all).
 #   make test-parts-lint        Verilator -Wall, Icarus -g2005 and Yosys of each part
@@ -18,7 +18,10 @@
 # Outputs in build/parts/.
 
 PARTS_DIR := $(BUILD)/parts
-PARTS     := albatross_sequencer albatross_rom_check albatross_entry_check albatross_bus_master albatross_counters
+PARTS     := albatross_sequencer albatross_schedule_rom albatross_rom_check albatross_entry_check \
+             albatross_bus_master albatross_counters
+# The modules albatross_sequencer instantiates.
+SEQ_SUB   := rtl/albatross_schedule_rom.v rtl/albatross_rom_check.v rtl/albatross_entry_check.v
 
 TESTS += parts-lint sequencer sequencer-bad-start0 sequencer-negative-slot_late
 .PHONY: test-parts-lint test-sequencer test-sequencer-bad-start0 test-sequencer-negative-slot_late
@@ -28,34 +31,34 @@ test-parts-lint: $(addprefix rtl/,$(addsuffix .v,$(PARTS))) $(RTL_INC)
 	@tools/run_test.sh parts-lint bash -c 'set -e; for m in $(PARTS); do \
 	    verilator --lint-only -Wall -Irtl rtl/$$m.v; \
 	    iverilog -g2005 -Irtl -y rtl -o $(PARTS_DIR)/$$m.vvp rtl/$$m.v; \
-	    sub=; if [ $$m = albatross_sequencer ]; then sub="rtl/albatross_rom_check.v rtl/albatross_entry_check.v"; fi; \
+	    sub=; if [ $$m = albatross_sequencer ]; then sub="$(SEQ_SUB)"; fi; \
 	    yosys -q -p "read_verilog -Irtl rtl/$$m.v $$sub; synth -top $$m" > $(PARTS_DIR)/$$m.yosys.log; \
 	    echo "$$m: lint, Icarus and Yosys clean"; done'
 
-test-sequencer: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v rtl/albatross_rom_check.v rtl/albatross_entry_check.v $(RTL_INC)
+test-sequencer: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v $(SEQ_SUB) $(RTL_INC)
 	@mkdir -p $(PARTS_DIR)/seq
 	@tools/run_test.sh sequencer bash -c 'set -e; $(PYTHON) tb/sequencer/make_rom.py $(PARTS_DIR)/seq/seq_rom.hex; \
-	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/seq/tb tb/sequencer/tb_sequencer.v rtl/albatross_sequencer.v rtl/albatross_rom_check.v \
-	        rtl/albatross_entry_check.v; \
+	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/seq/tb tb/sequencer/tb_sequencer.v rtl/albatross_sequencer.v \
+	        $(SEQ_SUB); \
 	    cd $(PARTS_DIR)/seq && vvp -n tb | grep -v readmemh | tee tb.log; grep -q "^PASS" tb.log'
 
 # The negative: the mutant must make the bench print the slot-start failure.
 test-sequencer-negative-slot_late: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v \
-        formal/rtl/mutants/slot_late.sed rtl/albatross_rom_check.v rtl/albatross_entry_check.v $(RTL_INC)
+        formal/rtl/mutants/slot_late.sed $(SEQ_SUB) $(RTL_INC)
 	@mkdir -p $(PARTS_DIR)/seq-neg
 	@tools/run_test.sh sequencer-negative-slot_late bash -c 'set -e; $(PYTHON) tb/sequencer/make_rom.py $(PARTS_DIR)/seq-neg/seq_rom.hex; \
 	    sed -f formal/rtl/mutants/slot_late.sed rtl/albatross_sequencer.v > $(PARTS_DIR)/seq-neg/albatross_sequencer.v; \
 	    if cmp -s $(PARTS_DIR)/seq-neg/albatross_sequencer.v rtl/albatross_sequencer.v; then echo "mutant slot_late did not apply"; exit 1; fi; \
 	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/seq-neg/tb tb/sequencer/tb_sequencer.v $(PARTS_DIR)/seq-neg/albatross_sequencer.v \
-	        rtl/albatross_rom_check.v rtl/albatross_entry_check.v; \
+	        $(SEQ_SUB); \
 	    cd $(PARTS_DIR)/seq-neg && vvp -n tb | grep -v readmemh > tb.log || true; \
 	    if grep -q "^PASS" tb.log; then echo "the bench passed a sequencer whose slots start late"; exit 1; fi; \
 	    if ! grep -q "^FAIL entry .* go at" tb.log; then echo "expected a FAIL naming the go clock, got: $$(head -n 3 tb.log)"; exit 1; fi; \
 	    echo "caught: $$(grep -m1 "^FAIL entry" tb.log)"'
 
-test-sequencer-bad-start0: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v rtl/albatross_rom_check.v rtl/albatross_entry_check.v $(RTL_INC)
+test-sequencer-bad-start0: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v $(SEQ_SUB) $(RTL_INC)
 	@mkdir -p $(PARTS_DIR)/seq-bad0
 	@tools/run_test.sh sequencer-bad-start0 bash -c 'set -e; $(PYTHON) tb/sequencer/make_rom.py $(PARTS_DIR)/seq-bad0/seq_rom.hex --bad-start0; \
-	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/seq-bad0/tb tb/sequencer/tb_sequencer.v rtl/albatross_sequencer.v rtl/albatross_rom_check.v \
-	        rtl/albatross_entry_check.v; \
+	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/seq-bad0/tb tb/sequencer/tb_sequencer.v rtl/albatross_sequencer.v \
+	        $(SEQ_SUB); \
 	    cd $(PARTS_DIR)/seq-bad0 && vvp -n tb +bad_start0 | grep -v readmemh | tee tb.log; grep -q "^PASS" tb.log'

@@ -34,7 +34,7 @@ static inline void alb_wr32(uintptr_t addr, uint32_t v)
 static inline void alb_fence(void)
 {
 #if defined(__riscv)
-    __asm__ volatile("fence rw, rw" ::: "memory");
+    __asm__ volatile("fence iorw, iorw" ::: "memory");   /* also an I/O-mapped window */
 #else
     __sync_synchronize();
 #endif
