@@ -104,6 +104,7 @@ module albatross_controller #(
     wire [3:0]    src_board, poll_board;
     wire [AW-1:0] src_base, poll_adr;
     wire [15:0]   dst_board, cycles;
+    wire [7:0]    drop_run;     // ROM H2: the Export engine's drop run K
     wire [4*AW-1:0] dst_base;
     wire [31:0]   slot_time;
     wire [31:0]   bus_rdat;
@@ -121,7 +122,8 @@ module albatross_controller #(
         .slot_time_o(slot_time), .sync_entry_o(sync_entry), .four_o(four), .may_access_o(may_access), .slot_done_i(slot_end),
         .poll_cyc_o(poll_cyc), .poll_board_o(poll_board), .poll_adr_o(poll_adr), .poll_dat_i(bus_rdat),
         .poll_ack_i(r_ack[2]), .poll_err_i(r_err[2]), .sync_rl_i(sync_rl_q),
-        .time_o(time_o), .cycle_o(cycle_start), .error_o(error_o), .rom_errors_o(rom_errors_o), .cycles_o(cycles));
+        .time_o(time_o), .cycle_o(cycle_start), .error_o(error_o), .rom_errors_o(rom_errors_o), .cycles_o(cycles),
+        .drop_run_o(drop_run));
 
     wire [CH_BITS-1:0] chan   = chan5[CH_BITS-1:0];
     wire [3:0]         active = (nd == 3'd1) ? 4'b0001 : (nd == 3'd2) ? 4'b0011 : (nd == 3'd3) ? 4'b0111 : 4'b1111;
@@ -223,7 +225,7 @@ module albatross_controller #(
 
     albatross_export #(.ADDR_WIDTH(AW), .WORDS_WIDTH(12), .COUNT_WIDTH(1), .TAKEN_AT(1), .DESTS(4), .DROP(1)) u_export (
         .clk_i(clk_i), .rst_i(rst_i),
-        .start_i(exp_start), .four_i(four), .base_i(dst_base), .need_i(exp_need), .words_i(words), .taken_at_i(exp_taken),
+        .start_i(exp_start), .drop_run_i(drop_run), .four_i(four), .base_i(dst_base), .need_i(exp_need), .words_i(words), .taken_at_i(exp_taken),
         .act_known_i(known_in), .act_i(st_act), .tried_i(exp_tried_in),
         .may_access_i(may_access), .idle_o(exp_idle),
         .word_i(word), .word_valid_i(word_ok), .word_ready_o(exp_ready), .word_index_o(exp_index),

@@ -51,10 +51,13 @@
 //     first store is on the bus in the next clock.
 //   * Failures: an access answered with err counts in fails_o; cyc/stb drop
 //     for one clock, and in that clock may_access_i decides: the same access
-//     again in the next clock, or the cut-off.  DROP = 1: a destination whose
-//     accesses fail twice in one Export is dropped for the rest of it (in
-//     that clock the engine goes on as if the access had been acked, without
-//     its effect), so a dead board never blocks the others.  A failed store
+//     again in the next clock, or the cut-off.  DROP = 1: a destination one
+//     of whose accesses fails K = drop_run_i times in a row (K below 2 reads
+//     as 2; the compiler plans K from the fault hypothesis, ROM H2, issue 15)
+//     is dropped for the rest of the Export (in the clock after the K-th
+//     failure the engine goes on as if the access had been acked, without its
+//     effect), so a dead board never blocks the others; failures that are not
+//     K in a row (an ack between them) never drop a destination.  A failed store
 //     of Actual makes d's copy unknown and remembers the buffer it tried
 //     (tried_o[2d +: 2], 0 = none); the next Export's read-back of Actual
 //     (tried_i) then shows whether it landed: if so the value counts as
@@ -77,12 +80,13 @@ module albatross_export #(
     parameter COUNT_WIDTH = 8,  // bits of fails_o (saturating)
     parameter TAKEN_AT    = 0,  // 1: store taken_at_i after the value (stride W + 1)
     parameter DESTS       = 1,  // destination channels in lockstep, 1..4
-    parameter DROP        = 0   // 1: drop a destination after its second failed access
+    parameter DROP        = 0   // 1: drop a destination after drop_run_i failed attempts of one access in a row
 ) (
     input  wire                    clk_i,
     input  wire                    rst_i,        // synchronous, active high
     // command and the destinations' state
     input  wire                    start_i,      // begin an Export (taken when idle_o)
+    input  wire [7:0]              drop_run_i,   // K (DROP = 1; below 2: 2), held while an Export runs
     input  wire                    four_i,       // the destinations are of the four-slot kind (sampled at start)
     input  wire [DESTS*ADDR_WIDTH-1:0] base_i,   // destination d's base at [d*ADDR_WIDTH +: ADDR_WIDTH]
     input  wire [DESTS-1:0]        need_i,       // destinations that take this value
@@ -180,7 +184,7 @@ module albatross_export #(
     reg                        done_q;
     reg [COUNT_WIDTH-1:0]      fails_q;
     reg [3*DESTS-1:0]          tried_q;
-    reg [DESTS-1:0]            fail1_q;        // d had a failed access in this Export
+    reg [7:0]                  run_q;          // failed attempts of the present access in a row
     reg                        retry_q;        // the clock after a failed access: cyc low
     reg                        drop_q;         // ... and its destination is dropped
 
@@ -201,6 +205,9 @@ module albatross_export #(
     wire [2:0]            pick;                 // the buffer picked for d_q
     wire                  ack       = wb_ack_i && stb_q;
     wire                  drop_now  = retry_q && drop_q;
+    // The drop rule: this failure is the K-th of the access in a row.
+    wire [8:0]            run_inc   = {1'b0, run_q} + 9'd1;
+    wire [8:0]            drop_k    = drop_run_i < 8'd2 ? 9'd2 : {1'b0, drop_run_i};
     wire                  ctrl      = state_q == S_LOAD_ACTUAL || state_q == S_LOAD_RL || state_q == S_STORE_ACTUAL ||
                                       state_q == S_STORE_SLOT;
     albatross_export_dest #(.ADDR_WIDTH(ADDR_WIDTH), .WORDS_WIDTH(WORDS_WIDTH), .TAKEN_AT(TAKEN_AT),
@@ -264,14 +271,15 @@ module albatross_export #(
             tried_q     <= {3*DESTS{1'b0}};
             retry_q     <= 1'b0;
             drop_q      <= 1'b0;
+            run_q       <= 8'd0;
         end else if (wb_err_i && stb_q) begin
             // A failed access: count it, drop cyc for a clock.  The store of
             // Actual may have landed: the copy is unknown, the buffer tried.
             if (~&fails_q) fails_q <= fails_q + 1'b1;
             stb_q   <= 1'b0;
             retry_q <= 1'b1;
-            drop_q  <= DROP != 0 && |(fail1_q & d_bit);
-            fail1_q <= fail1_q | d_bit;
+            drop_q  <= DROP != 0 && run_inc >= drop_k;
+            if (!run_inc[8]) run_q <= run_inc[7:0];
             if (state_q == S_STORE_ACTUAL) begin
                 act_known_q <= act_known_q & ~d_bit;
                 tried_q <= (tried_q & ~d_mask3) | ({DESTS{buf_d}} & d_mask3);
@@ -298,7 +306,7 @@ module albatross_export #(
                     act_known_q <= act_known_i;
                     act_q       <= act_i;
                     tried_q     <= tried_i;
-                    fail1_q     <= {DESTS{1'b0}};
+                    run_q       <= 8'd0;
                     drop_q      <= 1'b0;
                     published_q <= {DESTS{1'b0}};
                     corrupt_q   <= {DESTS{1'b0}};
@@ -339,6 +347,7 @@ module albatross_export #(
             // next destination (a load: LR if its copy is known, else LA); else
             // the next step (after the last word, taken_at, then Actual), or end.
             if (adv) begin
+                run_q <= 8'd0;                              // the next access: a new run
                 if (need_m == {DESTS{1'b0}}) begin          // the last destination left
                     stb_q   <= 1'b0;
                     state_q <= S_IDLE;

@@ -80,7 +80,7 @@ module albatross_export_endpoint #(
     albatross_export #(.ADDR_WIDTH(ADDR_WIDTH), .WORDS_WIDTH(16), .COUNT_WIDTH(8), .TAKEN_AT(TAKEN_AT),
                        .DESTS(1)) u_export (
         .clk_i(clk_i), .rst_i(rst_i),
-        .start_i(publish_i), .four_i(FOUR_SLOT != 0), .base_i(BASE_W), .need_i(1'b1), .words_i(WORDS_W),
+        .start_i(publish_i), .drop_run_i(8'd0), .four_i(FOUR_SLOT != 0), .base_i(BASE_W), .need_i(1'b1), .words_i(WORDS_W),
         .taken_at_i(taken_at_i),
         .act_known_i(act_known), .act_i(act),       // the copy stays in the engine
         .tried_i(tried),

@@ -28,6 +28,8 @@
 //     clock fetch_i (no background read is issued then), which reads part
 //     fetch_part_i; bad_o is that part's bad mark in the next clock (as it
 //     was before a write in the clock fetch_i).
+//   * h2_o: the drop run field of H2 (rtl/albatross_contract.toml) as the
+//     start-up pass read it; 0 after reset, until the pass has read word 2.
 //   * Reset (synchronous) clears the read address and the CRC; the
 //     signature memory is never reset (the start-up pass writes it).
 `default_nettype none
@@ -51,7 +53,8 @@ module albatross_rom_check #(
     output wire                     last_o,       // the check of last_word_i
     output wire                     crc_ok_o,     // the CRC including this word equals h3_i
     output wire                     mism_o,       // a part's first background mismatch
-    output wire                     bad_o         // the bad mark read for fetch_ent_i
+    output wire                     bad_o,        // the bad mark read for fetch_ent_i
+    output wire [7:0]               h2_o          // H2's drop run, as the start-up pass read it
 );
 
 `include "albatross_contract.vh"
@@ -112,12 +115,15 @@ module albatross_rom_check #(
         clash_bad_q <= sig_q[32];
     end
 
+    reg [7:0] h2_q;                   // H2's drop run (start-up pass)
     always @(posedge clk_i) begin
         if (rst_i) begin
             bg_data_q <= 1'b0;
             bg_adr_q  <= {ROM_AW{1'b0}};
             crc_q     <= CRC_SEED;
+            h2_q      <= 8'd0;
         end else begin
+            if (bg_data_q && learn_i && bg_dadr_q == 2) h2_q <= rom_dat_i[ALB_ROM_H2_DROP_RUN_LSB +: 8];
             bg_data_q <= bg_issue;
             bg_dadr_q <= bg_adr_q;
             if (bg_issue) bg_adr_q <= (bg_adr_q == last_word_i) ? {ROM_AW{1'b0}} : bg_adr_q + 1'b1;
@@ -130,6 +136,7 @@ module albatross_rom_check #(
     assign crc_ok_o = crc_n == h3_i;
     assign mism_o   = mism && !sig_q[32];
     assign bad_o    = clash_q ? clash_bad_q : sig_q[32];
+    assign h2_o     = h2_q;
 
 endmodule
 

@@ -88,7 +88,8 @@ module albatross_sequencer #(
     output wire                    cycle_o,        // one clock: a cycle starts
     output wire                    error_o,        // the ROM is invalid: idle for good
     output wire [15:0]             rom_errors_o,   // skipped entries and background mismatches
-    output wire [15:0]             cycles_o
+    output wire [15:0]             cycles_o,
+    output wire [7:0]              drop_run_o      // ROM H2: the drop run K (issue 15), from the start-up pass
 );
 
 `include "albatross_contract.vh"
@@ -204,7 +205,7 @@ module albatross_sequencer #(
         .clk_i(clk_i), .rst_i(rst_i), .learn_i(state_q == ST_CHECK), .bg_on_i(bg_on),
         .main_rom_i(main_rom), .last_word_i(last_word), .adr_o(bg_adr), .rom_dat_i(rom_q),
         .h3_i(h3_q), .fetch_i(start_now), .fetch_ent_i(ent_q), .last_o(p_last), .crc_ok_o(crc_ok),
-        .mism_o(mism_new), .bad_o(bad_mark));
+        .mism_o(mism_new), .bad_o(bad_mark), .h2_o(drop_run_o));
 
     // ------------------------------------------------------------ field checks at fetch
     wire [1:0]  e0_kind = rom_q[ALB_ROM_E0_KIND_LSB +: 2];   // (rules: rtl/albatross_entry_check.v)

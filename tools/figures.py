@@ -450,6 +450,42 @@ SECTIONS = {"fpga": fpga, "controller-area": controller_area, "robot": robot, "r
 SECTIONS["formal-rtl"] = formal_rtl
 
 
+def fault_plan():
+    """The compiler's predictions for the robot at several fault rates (make bench-fault-plan)."""
+    rep = load("fault_plan.json")
+    if not rep:
+        missing("fault_plan.json", "make bench-fault-plan")
+    runs = [r for r in rep["runs"] if r.get("independent")]
+    head = ["channel -> consumer"] + [f"{100 * r['rate']:g} %" for r in runs]
+    keys = []
+    for r in runs:
+        for c in r.get("channels", []):
+            if (c["channel"], c["consumer"]) not in keys:
+                keys.append((c["channel"], c["consumer"]))
+    rows = [["target probability"] + [f"1 - {1 - r['probability']:.0e}" if r["probability"] > 0.995 else
+                                      f"{r['probability']:g}" for r in runs]]
+    for ch, co in keys:
+        row = [f"{ch} -> {co}"]
+        for r in runs:
+            c = next((c for c in r.get("channels", []) if (c["channel"], c["consumer"]) == (ch, co)), None)
+            if c is None:
+                row.append("rejected")
+                continue
+            miss = c["slot_miss_probability"]
+            q = "1" if miss < 1e-14 else f"1 - {miss:.1e}"   # below 1e-14: rounding of the sum
+            row.append(f"x{c['slots']}, R {c['retries_per_slot']}, q {q}: "
+                       f"{c['age_bound']['fault_free']['us']:.2f} / {c['age_bound']['at_target']['us']:.2f}")
+        rows.append(row)
+    rows.append(["drop run K"] + [str(r.get("drop_run", "-")) for r in runs])
+    bursty = [r for r in rep["runs"] if not r.get("independent")]
+    note = "; ".join(f"mean burst {r['mean_burst']:g}, {100 * r['rate']:g} %: "
+                     + (f"planned, K = {r['drop_run']}" if r["planned"] else "rejected") for r in bursty)
+    return table(head, rows) + (f"\n\nAt 1 - 1e-9 with bursts: {note}." if bursty else "")
+
+
+SECTIONS["fault-plan"] = fault_plan
+
+
 def formal_sby():
     rep = load("formal_sby.json")
     if not rep:

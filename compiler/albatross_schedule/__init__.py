@@ -31,6 +31,11 @@ Description (TOML)
   n_chan              16  the controller's N_CHAN (channel ids 0..n_chan-1)
   poll_cycles         16  position poll interval (position-synchronised)
 
+[faults]        optional, the fault hypothesis the plan tolerates (faults.py)
+  rate          probability that a bus access fails (stationary, per access)
+  mean_burst    mean run of failed accesses (two-state chain), default 1
+  probability   the target of the bounds "at the target" (e.g. 0.999999999)
+
 [board.<name>]  optional, a board's Import loop timing (termination bounds)
   core          "picorv32" | "serv": T and V from termination.CORE_TIMING
   clock_hz      the board CPU's clock (default [system] clock_hz)
@@ -90,6 +95,7 @@ Modules (standard library only):
 
 from .cgen import board_instances, render_board_c, render_board_header, render_ram_hex
 from .description import load_description, load_toml, parse_description
+from .faults import Hypothesis, plan_for_hypothesis
 from .layout import allocate_ram, channel_bytes, verify_ram_layout
 from .model import (DEFAULT_RAM_BYTES, MODE_RIGID, MODE_SYNC, Bus, Channel, Plan, ScheduleError,
                     Slot, System)
@@ -103,7 +109,7 @@ from .rom import (CRC_POLY, CRC_SEED, FLAG_SYNC, KIND_CODE, KIND_NAME, MAX_BASE_
 from .cli import main
 
 __all__ = [
-    "Bus", "CRC_POLY", "CRC_SEED", "Channel", "DEFAULT_RAM_BYTES", "FLAG_SYNC", "KIND_CODE", "KIND_NAME",
+    "Bus", "CRC_POLY", "Hypothesis", "plan_for_hypothesis", "CRC_SEED", "Channel", "DEFAULT_RAM_BYTES", "FLAG_SYNC", "KIND_CODE", "KIND_NAME",
     "MAX_BASE_WORD", "MAX_BOARDS", "MAX_DESTS", "MAX_ENTRIES", "MAX_WORDS", "MODE_RIGID", "MODE_SYNC",
     "Plan", "ROM_MAGIC", "ScheduleError", "Slot", "System", "allocate_ram", "board_instances",
     "build_plan", "build_report", "channel_bounds", "channel_bytes", "channel_gaps",

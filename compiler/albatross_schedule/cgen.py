@@ -102,6 +102,16 @@ def render_board_header(system: System, b: int, desc_name: str, plan: Plan) -> s
             else:
                 L.append(f"#define ALB_{N}_AGE_CLOCKS  {bnd['age_bound_clocks']['with_retries']}u"
                          "  /* guaranteed: now - taken_at of the newest value here (with retries) */")
+            fe = getattr(system, "fault_eval", None)
+            if system.faults is not None and fe is not None:
+                x = fe[ch.index][ch.consumers.index(b)]
+                if x["period_at_target_clocks"] is not None:
+                    back = system.bus.sample_offset if ch.kind == "copy" else 0
+                    at = x["period_at_target_clocks"] + bnd["pub_offset_clocks"]["with_retries"] - back
+                    what = "LATENCY" if ch.kind == "copy" else "AGE"
+                    L.append(f"#define ALB_{N}_{what}_AT_TARGET_CLOCKS  {at}u  /* under the fault hypothesis: holds "
+                             f"with probability {system.faults.probability:.12g} (slot delivery "
+                             f"{x['slot_delivery_probability']:.12g}, {len(ch.slots)} per cycle) */")
             term = channel_termination(system, plan, ch)[ch.consumers.index(b)]
             if term["bounded"]:
                 L.append(f"#define ALB_{N}_IMPORT_MAX_PASSES    {term['max_passes']}u"

@@ -18,9 +18,22 @@ def main(argv=None) -> int:
     ap.add_argument("-q", "--quiet", action="store_true", help="print nothing on success")
     ap.add_argument("--no-redundancy", action="store_true",
                     help="one slot per channel and cycle (to measure what redundancy buys)")
+    ap.add_argument("--faults", metavar="RATE[,BURST[,PROBABILITY]]",
+                    help="plan for this fault hypothesis instead of the description's [faults] "
+                         "(per-access rate; mean burst length, empty or absent: independent accesses; "
+                         "target probability, absent: the description's or 1 - 1e-9)")
     args = ap.parse_args(argv)
     try:
-        system, plan, rep, files = compile_file(args.description, args.out, args.no_redundancy)
+        faults = None
+        if args.faults is not None:
+            try:
+                parts = args.faults.split(",")
+                if not 1 <= len(parts) <= 3 or not parts[0].strip():
+                    raise ValueError
+                faults = [float(x) if x.strip() else None for x in parts]
+            except ValueError:
+                raise ScheduleError(f"--faults {args.faults!r}: expected RATE[,BURST[,PROBABILITY]] (numbers)")
+        system, plan, rep, files = compile_file(args.description, args.out, args.no_redundancy, faults)
     except ScheduleError as e:
         for m in e.messages:
             print(f"error: {m}", file=sys.stderr)

@@ -13,6 +13,7 @@ from .model import (BUS_DEFAULTS, BUS_MINIMUM, CHANNEL_KEYS, CTYPE_RE, DEFAULT_R
 from .rom import BOARD_BITS, MAX_BOARDS, MAX_CHAN_IDS, MAX_DESTS, MAX_ENTRIES, MAX_WORDS
 from .contract import load as _load_contract
 from .fourslot import FOUR_SLOT, LAYOUTS, THREE_BUFFER
+from .faults import parse_faults
 from .termination import parse_board_timing
 
 CONTRACT_TIME_BITS = _load_contract().time_bits
@@ -127,8 +128,8 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
     err = Errors(loc)
 
     for key in data:
-        if key not in ("system", "bus", "channel", "board"):
-            err.general(f"unknown section [{key}] (expected [system], [bus], [board.<name>], [[channel]])")
+        if key not in ("system", "bus", "channel", "board", "faults"):
+            err.general(f"unknown section [{key}] (expected [system], [bus], [faults], [board.<name>], [[channel]])")
 
     # ---- [system]
     sysd = data.get("system")
@@ -466,11 +467,12 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
     err.raise_if_any()
 
     timing = parse_board_timing(data.get("board", {}), boards, clock_hz, err, _describe)
+    faults = parse_faults(data.get("faults"), err, _describe)
     err.raise_if_any()
 
     system = System(name=name, clock_hz=clock_hz, boards=boards, ram_bytes=ram_bytes,
                     mode=mode, types_header=types_header, bus=bus, channels=channels, source=path,
-                    timing=timing)
+                    timing=timing, faults=faults)
     for ch in channels:
         ch.period_clocks = ch.max_period_us * clock_hz // 1_000_000
         if ch.period_clocks < 1:

@@ -77,6 +77,14 @@ class Bus:
     def retry_budget(self) -> int:
         return self.retries_per_slot * (self.timeout_cycles + self.access_cycles + 1)
 
+    def retries_of(self, ch) -> int:
+        """The retry budget (failed accesses) of ch's slots."""
+        return self.retries_per_slot if ch.retries is None else ch.retries
+
+    def retry_budget_of(self, ch) -> int:
+        """The clocks of ch's retry budget: each failure costs at most timeout + access + 1."""
+        return self.retries_of(ch) * (self.timeout_cycles + self.access_cycles + 1)
+
     @property
     def sample_offset(self) -> int:
         return self.fetch_cycles + self.access_cycles
@@ -99,6 +107,7 @@ class Channel:
     max_slots: Optional[int] = None
     layout: str = "three_buffer"    # channel kind: three_buffer | four_slot (copy, time, status)
     max_import_passes: Optional[int] = None   # three-buffer consumers: passes per Import at most
+    retries: Optional[int] = None   # this channel's slot retry budget (None: [bus] retries_per_slot)
     # filled by the plan
     src_base: Optional[int] = None  # byte offset in the producer's RAM
     dst_bases: list = dataclasses.field(default_factory=list)
@@ -147,6 +156,8 @@ class System:
     channels: list
     source: str = "<description>"
     timing: dict = dataclasses.field(default_factory=dict)  # board index -> BoardTiming
+    faults: Optional[object] = None  # the fault hypothesis ([faults], faults.Hypothesis) or None
+    drop_run: int = 2               # K: a destination is dropped after K failures in a row (ROM H2)
 
     @property
     def sync_mode(self) -> bool:

@@ -8,7 +8,8 @@ import os
 from typing import Optional
 
 from .cgen import render_board_c, render_board_header, render_ram_hex
-from .description import load_description
+from .description import load_description, load_toml, parse_description
+from .faults import plan_for_hypothesis
 from .layout import allocate_ram, verify_ram_layout
 from .model import Plan, ScheduleError, System
 from .picture import render_svg
@@ -41,7 +42,9 @@ def self_check(system: System, plan: Plan, rom: list, layout: dict):
 
 def compile_system(system: System):
     layout = allocate_ram(system)
-    plan = enforce_termination(system, build_plan)   # build_plan, spacing slots for bounded Imports
+    # build_plan, spacing slots for bounded Imports, with retry budgets, drop run
+    # and redundancy sized for the fault hypothesis (if the description has one)
+    plan = plan_for_hypothesis(system, lambda s: enforce_termination(s, build_plan))
     rom = encode_rom(system, plan)
     self_check(system, plan, rom, layout)
     rep = build_report(system, plan)
@@ -77,8 +80,22 @@ def write_outputs(files: dict, out_dir: str):
         raise ScheduleError(f"{out_dir}: cannot write the outputs: {e.strerror or e}")
 
 
-def compile_file(path: str, out_dir: Optional[str] = None, no_redundancy: bool = False):
-    system = load_description(path)
+def compile_file(path: str, out_dir: Optional[str] = None, no_redundancy: bool = False, faults=None):
+    """faults: [rate, mean_burst, probability] replacing the description's
+    [faults]; mean_burst None: independent accesses; probability None (or
+    absent): the description's, else 1 - 1e-9."""
+    if faults is None:
+        system = load_description(path)
+    else:
+        data, text = load_toml(path)
+        old = data.get("faults") if isinstance(data.get("faults"), dict) else {}
+        faults = list(faults) + [None] * (3 - len(faults))
+        new = {"rate": faults[0],
+               "probability": faults[2] if faults[2] is not None else old.get("probability", 1.0 - 1e-9)}
+        if faults[1] is not None:
+            new["mean_burst"] = faults[1]
+        data["faults"] = new
+        system = parse_description(data, path, text)
     if no_redundancy:   # one slot per channel and cycle: the spare capacity stays idle
         for ch in system.channels:
             ch.max_slots = 1

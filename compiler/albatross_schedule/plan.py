@@ -23,12 +23,12 @@ def transfer_accesses(ch: Channel) -> int:
 
 def slot_length(ch: Channel, bus: Bus) -> int:
     return (bus.fetch_cycles + bus.first_access_extra + bus.access_cycles * transfer_accesses(ch)
-            + bus.retry_budget + bus.guard_cycles)
+            + bus.retry_budget_of(ch) + bus.guard_cycles)
 
 
 def pub_offset(ch: Channel, bus: Bus, retries: bool) -> int:
     off = bus.fetch_cycles + bus.first_access_extra + bus.access_cycles * ch.accesses
-    return off + (bus.retry_budget if retries else 0)
+    return off + (bus.retry_budget_of(ch) if retries else 0)
 
 
 def channel_gaps(starts, cycle):

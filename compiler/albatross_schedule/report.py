@@ -5,6 +5,7 @@ from __future__ import annotations
 import dataclasses
 import os
 
+from .faults import log10_or_none
 from .layout import channel_bytes
 from .model import Plan, System, us
 from .cgen import board_instances
@@ -44,6 +45,7 @@ def build_report(system: System, plan: Plan) -> dict:
             "sync": ch.sync, "priority": ch.priority,
             "max_period": t(ch.period_clocks), "max_period_us_required": ch.max_period_us,
             "accesses": ch.accesses, "slot_length": ch.slot_len,
+            "retries_per_slot": bus.retries_of(ch),
             "slots": [{"start": s.start, "length": s.length, "entry": i, "redundant": s.redundant,
                        "sync": s.sync} for i, s in enumerate(plan.slots) if s.channel is ch],
             "redundancy": n,
@@ -56,6 +58,26 @@ def build_report(system: System, plan: Plan) -> dict:
                 "fault_free": t(b["age_bound_clocks"]["fault_free"]),
                 "with_retries": t(b["age_bound_clocks"]["with_retries"])},
         }
+        fe = getattr(system, "fault_eval", None)
+        if system.faults is not None and fe is not None:
+            ff = (b["latency_clocks"] or b["age_bound_clocks"])["fault_free"]
+            rt = (b["latency_clocks"] or b["age_bound_clocks"])["with_retries"]
+            back = bus.sample_offset if ch.kind == "copy" else 0
+            for cons, x in zip(entry["consumers"], fe[ch.index]):
+                p = x["period_at_target_clocks"]
+                at = None if p is None else p + b["pub_offset_clocks"]["with_retries"] - back
+                cons["faults"] = {
+                    "slot_delivery_probability": x["slot_delivery_probability"],
+                    "slot_miss_probability": x["slot_miss_probability"],
+                    "slot_miss_log10": log10_or_none(x["slot_miss_probability"]),
+                    "cycle_delivery_probability": x["cycle_delivery_probability"],
+                    "cycle_miss_probability": x["cycle_miss_probability"],
+                    "cycle_miss_log10": log10_or_none(x["cycle_miss_probability"]),
+                    "slots_needed_at_target": x["slots_needed"],
+                    "period_at_target": None if p is None else t(p),
+                    "age_bound": {"fault_free": t(ff), "with_retries": t(rt),
+                                  "at_target": None if at is None else t(at)},
+                }
         chans.append(entry)
     boards = []
     for bi, name in enumerate(system.boards):
@@ -73,12 +95,27 @@ def build_report(system: System, plan: Plan) -> dict:
         "capacity_clocks": plan.capacity,
         "entries": len(plan.slots),
         "bus": dataclasses.asdict(bus),
+        "drop_run": system.drop_run,
+        "fault_hypothesis": None if system.faults is None else dict(
+            system.faults.as_dict(), drop_run=system.drop_run,
+            slots_relied_on=getattr(system, "fault_split", None)),
         "definitions": {
             "slot_length": "fetch + first_access_extra + access_cycles*A + retries_per_slot*(timeout+access+1) + guard",
             "guaranteed_period": "largest gap between consecutive slot starts of the channel (cyclic)",
             "latency": "producer's store of source Actual -> controller's store of the last destination Actual: "
                        "max over slots of start(next)+pub_offset - (start+fetch+access)",
             "age_bound": "TIME/STATUS: guaranteed_period + pub_offset",
+            "retries_per_slot": "the slot's retry budget R: failed accesses its length absorbs (sized from the "
+                                "fault hypothesis when the description has one)",
+            "drop_run": "K (ROM H2): a destination is dropped for the rest of an Export after K failed "
+                        "attempts of one access in a row",
+            "faults": "per consumer, under the fault hypothesis: slot_delivery_probability q = the worst "
+                      "start state's probability that one slot delivers (a new value at every destination); "
+                      "cycle_delivery_probability >= 1 - (1 - q)^slots; slots_needed_at_target m = fewest "
+                      "slots in a row that all miss with probability <= 1 - probability; period_at_target = "
+                      "max over slots of start(i+m) - start(i); age_bound.at_target = period_at_target + "
+                      "pub_offset with retries (COPY: - fetch - access, as latency), holding with the target "
+                      "probability",
             "bus_utilisation": "sum over slots of access_cycles*A (fault-free bus-busy clocks) / cycle",
             "controller_busy": "sum over slots of fetch + first_access_extra + access_cycles*A / cycle",
             "schedule_fill": "sum of slot lengths / cycle",
@@ -104,6 +141,9 @@ def build_report(system: System, plan: Plan) -> dict:
 def render_report_txt(rep: dict) -> str:
     def f(x):
         return f"{x:.2f}"
+
+    def e10(lg):
+        return "0" if lg is None else f"1e{lg:.1f}"
 
     L = []
     L.append(f"ALBATROSS schedule of '{rep['system']}' ({rep['description']}), {rep['mode']}")
@@ -144,6 +184,26 @@ def render_report_txt(rep: dict) -> str:
             spaced = " (slots spaced)" if c["spaced_for_termination"] else ""
             L.append(f"  {c['name']} -> {d['board']}: D {t['D_clocks']}{tv}: {termination_summary(t)}{spaced}")
     L.append("")
+    fh = rep.get("fault_hypothesis")
+    if fh:
+        burst = (f"independent (mean burst {fh['mean_burst']:.3g})" if fh["independent"]
+                 else f"mean burst {fh['mean_burst']:g}")
+        L.append(f"Fault hypothesis: rate {fh['rate']:g} per access, {burst}, target "
+                 f"probability {fh['probability']:.12g}; drop run K = {fh['drop_run']}")
+        L.append("  channel -> consumer: R retries per slot, slot delivery q, cycle delivery, age bound "
+                 "fault-free / with retries / at the target (us)")
+        for c in rep["channels"]:
+            for d in c["consumers"]:
+                x = d.get("faults")
+                if not x:
+                    continue
+                a = x["age_bound"]
+                at = "never" if a["at_target"] is None else f(a["at_target"]["us"])
+                L.append(f"  {c['name']} -> {d['board']}: R {c['retries_per_slot']}, q {x['slot_delivery_probability']:.9f}"
+                         f" (miss {e10(x['slot_miss_log10'])}), cycle {x['cycle_delivery_probability']:.12f} (x{c['redundancy']}"
+                         f", miss {e10(x['cycle_miss_log10'])}), m {x['slots_needed_at_target']}: age "
+                         f"{f(a['fault_free']['us'])} / {f(a['with_retries']['us'])} / {at}")
+        L.append("")
     L.append("RAM per board (byte offsets)")
     for b in rep["boards"]:
         L.append(f"  {b['name']} (board {b['index']}): {b['used_bytes']} of {b['ram_bytes']} bytes")

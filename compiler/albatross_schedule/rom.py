@@ -67,7 +67,7 @@ def encode_entry(slot: Slot) -> list:
 def encode_rom(system: System, plan: Plan) -> list:
     words = _pack(C.header, {("H0", "magic"): ROM_MAGIC, ("H0", "ne"): len(plan.slots),
                              ("H0", "flags"): HFLAG_SYNC_MODE if system.sync_mode else 0,
-                             ("H1", "cycle"): plan.cycle})
+                             ("H1", "cycle"): plan.cycle, ("H2", "drop_run"): system.drop_run})
     for s in plan.slots:
         words += encode_entry(s)
     words[C.crc_index] = rom_crc(words)
@@ -113,6 +113,9 @@ def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None
     problems += [f"{w.name} (reserved) is not 0" for w in C.header if w.reserved and hdr[w.index] != 0]
     problems += [f"{w.name}: bits outside its fields are not 0" for w in C.header
                  if not w.reserved and hdr[w.index] & ~sum(f.mask for f in w.fields) & 0xFFFFFFFF]
+    drop_run = get(hdr, "H2", "drop_run")
+    if drop_run < 2:
+        problems.append(f"H2 drop run {drop_run}, the compiler writes 2..255")
     ne = get(hdr, "H0", "ne")
     hflags = get(hdr, "H0", "flags")
     sync_mode = bool(hflags & HFLAG_SYNC_MODE)

@@ -88,7 +88,7 @@ def decode(words):
             "src_board": (e[3] >> 12) & 0xF, "src_word": e[3] & 0xFFF,
             "dst": [((d >> 12) & 0xF, d & 0xFFF) for d in dst[:nd]], "unused_dst": dst[nd:]})
     return {"magic": h0 >> 16, "ne": ne, "flags": h0 & 0xFF, "cycle": words[1] & 0xFFFF,
-            "cycle_high": words[1] >> 16}, entries
+            "cycle_high": words[1] >> 16, "drop_run": words[2] & 0xFF, "h2_high": words[2] >> 8}, entries
 
 
 def rom_problems(words, n_chan, ram_words):
@@ -103,8 +103,10 @@ def rom_problems(words, n_chan, ram_words):
         p.append("ROM CRC")
     if hdr["cycle_high"]:
         p.append("H1 above 16 bits")
-    if words[2] != 0:
-        p.append("H2 not 0")
+    if hdr["h2_high"]:
+        p.append("H2 above its 8-bit drop run")
+    if hdr["drop_run"] < 2:
+        p.append("H2 drop run below 2")
     if not 1 <= hdr["ne"] <= 255:
         p.append("entry count")
     if len(words) != 4 + 8 * hdr["ne"]:

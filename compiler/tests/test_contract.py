@@ -69,7 +69,8 @@ class RomDecoderOracle(unittest.TestCase):
         return found
 
     def test_header_fields(self):
-        keys = {"magic": ("H0", "magic"), "ne": ("H0", "ne"), "flags": ("H0", "flags"), "cycle": ("H1", "cycle")}
+        keys = {"magic": ("H0", "magic"), "ne": ("H0", "ne"), "flags": ("H0", "flags"), "cycle": ("H1", "cycle"),
+                "drop_run": ("H2", "drop_run")}
         for key, (w, f) in keys.items():
             fld = C.field(w, f)
             got = {}
@@ -123,6 +124,7 @@ class RomDecoderOracle(unittest.TestCase):
         hdr = header(1)
         hdr[C.field("H0", "magic").index] |= C.field("H0", "magic").put(C.magic)
         hdr[C.field("H1", "cycle").index] |= C.field("H1", "cycle").put(1000)
+        hdr[C.field("H2", "drop_run").index] |= C.field("H2", "drop_run").put(2)
         e = [0] * C.entry_words
         vals = {("E0", "kind"): C.kind[kind], ("E0", "id"): 0, ("E0", "nd"): 1, ("E0", "w"): w,
                 ("E1", "start"): 0, ("E2", "length"): 100}

@@ -117,9 +117,12 @@ class ExampleTests(unittest.TestCase):
         """Recompute A, L, the latency and age bounds from the formulas of docs/compiler.md "Plan"."""
         for name, out, rep in self.each():
             bus = rep["bus"]
-            budget = bus["retries_per_slot"] * (bus["timeout_cycles"] + bus["access_cycles"] + 1)
             cycle = rep["cycle"]["clocks"]
             for c in rep["channels"]:
+                # the slot's retry budget: [bus] retries_per_slot, or sized from [faults] (test_faults.py)
+                if rep["fault_hypothesis"] is None:
+                    self.assertEqual(c["retries_per_slot"], bus["retries_per_slot"], c["name"])
+                budget = c["retries_per_slot"] * (bus["timeout_cycles"] + bus["access_cycles"] + 1)
                 W, ND = c["words"], len(c["consumers"])
                 # per destination W + 3 accesses (three-buffer) or W + 4 (four-slot: the Slot store)
                 per = W + (4 if c["channel_kind"] == "four_slot" else 3)

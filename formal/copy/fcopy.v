@@ -168,8 +168,12 @@ module fcopy #(
         .wb_cyc_o(r_cyc[0]), .wb_stb_o(imp_stb), .wb_we_o(r_we[0]), .wb_adr_o(r_adr[0 +: AW]), .wb_sel_o(r_sel[0 +: 4]),
         .wb_dat_o(r_wdat[0 +: 32]), .wb_dat_i(bus_rdat), .wb_ack_i(r_ack[0]), .wb_err_i(r_err[0]));
 
+    // The drop run K (ROM H2, issue 15): any constant 0..3 (0 and 1 read as 2).
+    (* anyconst *) reg [7:0] f_drop_run;
+    always @* small_k: assume(f_drop_run <= 8'd3);
     albatross_export #(.ADDR_WIDTH(AW), .WORDS_WIDTH(WW), .COUNT_WIDTH(1), .TAKEN_AT(1), .DESTS(4), .DROP(1)) u_export (
         .clk_i(clk_i), .rst_i(rst_i),
+        .drop_run_i(f_drop_run),
         .start_i(exp_start), .four_i(1'b0), .base_i(dst_base), .need_i(exp_need), .words_i(words), .taken_at_i(exp_taken),
         .act_known_i(known_in), .act_i(st_act), .tried_i(exp_tried_in12),
         .may_access_i(may_access_i), .idle_o(exp_idle),

@@ -33,7 +33,9 @@
 //                   Actual (0001, a buffer 1..3).
 //   access_order    accesses follow the header's order (loads per d; word 0, word
 //                   1, taken_at, Actual, each in d order), each once; after an err
-//   retry_same      the next access is the same one again, unless DROP drops d.
+//   retry_same      the next access is the same one again, unless DROP drops d
+//                   (the K-th failed attempt of the access in a row; K = drop_run_i,
+//                   a free constant 0..3 here, values below 2 read as 2).
 //   pick_rule       d's buffer is figure 4's: the last of 1..3 that is neither its
 //                   Actual copy (known or read back) nor the ReadLocked loaded.
 //   no_locked_write a buffer store of d follows d's acked ReadLocked load, never to
@@ -47,7 +49,9 @@
 //   word_order      words are taken in order 0..W-1, each once.
 //   access_start    an access begins only in the clock after an edge with
 //                   may_access_i = 1.
-//   drop_dead       DROP = 1: no access to d after its second err in this Export;
+//   drop_dead       DROP = 1: no access to d after K failed attempts of one of its
+//                   accesses in a row (run_x: errs of d's present access in a row,
+//                   cleared by an ack of d);
 //   landed_leave    none after a read-back of Actual equal to tried_i[d] != 0.
 //   exact_accesses  at done_o: undisturbed (no err, may_access_i high at every edge
 //                   of the Export, word_valid_i high whenever word_ready_o), acks =
@@ -57,14 +61,17 @@
 //                   done_o.
 //   published_exact at done_o published_o[d] = Actual acked, or landed read-back;
 //   complete_export at done_o without cut_o every d in need_i is published or
-//                   (DROP = 1) dropped: a failing destination never blocks the others;
+//                   (DROP = 1) dropped after K failures in a row: a failing destination
+//                   never blocks the others, and one whose failures are not K in a row
+//                   is never dropped;
 //   fail_copy       after an err on d's Actual store not repeated with an ack:
 //                   act_known_o[d] = 0 and tried_o[d] = the buffer tried.
 //   copy_ok, published_ok, tried_sound  (every clock) a known copy is the RAM's
 //                   Actual; a published d's Actual names a complete buffer; tried_o
 //                   meets the tried_i assumption of the next Export.
 // Covers (cover task): cov_both (undisturbed, both destinations), cov_unknown (a
-// read-back), cov_landed, cov_failed, cov_cut, cov_drop, cov_retry, cov_moved (a
+// read-back), cov_landed, cov_failed, cov_cut, cov_drop, cov_drop3 (K = 3),
+// cov_two_kept (two errs of d, not in a row, and d published), cov_retry, cov_moved (a
 // store while the consumer holds a buffer it locked after the engine's load).
 // With -DF_PROBE the invariants of fexport_inv.v are added (instance inv); the
 // script joins its f_* wires to the engine's registers (Yosys has no
@@ -103,6 +110,8 @@ module fexport #(
     localparam [2:0] PH_SA = 1 + S;                  // phase of the Actual stores
 
     (* anyconst *) reg [DESTS*AW-1:0] f_base;
+    (* anyconst *) reg [7:0]          f_k;             // drop_run_i, K (0 and 1 read as 2)
+    wire [1:0] kk = f_k < 8'd2 ? 2'd2 : f_k[1:0];      // the K in force (f_k <= 3, assumed)
 
     wire          idle, ready, done, cut;
     wire [1:0]    windex, published, corrupt, known_o, dest;
@@ -118,7 +127,7 @@ module fexport #(
     albatross_export #(.ADDR_WIDTH(AW), .WORDS_WIDTH(2), .COUNT_WIDTH(2), .TAKEN_AT(TAKEN_AT),
                        .DESTS(DESTS), .DROP(DROP)) dut (
         .clk_i(clk_i), .rst_i(rst_i),
-        .start_i(start_i), .base_i(f_base), .need_i(need_i), .words_i(W[1:0]), .taken_at_i(taken_at_i),
+        .start_i(start_i), .drop_run_i(f_k), .base_i(f_base), .need_i(need_i), .words_i(W[1:0]), .taken_at_i(taken_at_i),
         .act_known_i(act_known_i), .act_i(act_i),
         .tried_i({1'b0, tried_i[3:2], 1'b0, tried_i[1:0]}), .four_i(1'b0), .may_access_i(may_access_i),
         .idle_o(idle), .word_i(word_i), .word_valid_i(word_valid_i), .word_ready_o(ready),
@@ -186,7 +195,9 @@ module fexport #(
     reg  [DESTS-1:0]     need_x, known_x, landed_x, la_ok_x, rl_ok_x, sa_ack_x, sa_err_x;
     reg  [2*DESTS-1:0]   copy_x;     // d's Actual copy (0: none), at [2d +: 2]
     reg  [2*DESTS-1:0]   rl_x;       // the ReadLocked loaded (0: none or invalid)
-    reg  [2*DESTS-1:0]   tried_x, sa_buf_x, fails_x;   // fails_x: errs, saturating at 2
+    reg  [2*DESTS-1:0]   tried_x, sa_buf_x, run_x;   // run_x: errs of d's present access in a row (sat. 3)
+    reg  [DESTS-1:0]     err1_x;     // d had an err in this Export (cov_two_kept)
+    reg  [DESTS-1:0]     err2_x;     // ... and a second one after an ack of d
     wire [DESTS-1:0]     env_known, env_tried;         // the start assumptions
     genvar g, gb, gk;
     generate for (g = 0; g < DESTS; g = g + 1) begin : ch
@@ -205,7 +216,7 @@ module fexport #(
                 held_q[g]        <= f_init2_i[4*g+3];
                 comp_q[3*g +: 3] <= f_init2_i[4*g +: 3];
                 need_x[g] <= 1'b0; landed_x[g] <= 1'b0; sa_ack_x[g] <= 1'b0; sa_err_x[g] <= 1'b0;
-                fails_x[2*g +: 2] <= 2'd0; la_ok_x[g] <= 1'b0; rl_ok_x[g] <= 1'b0; tried_x[2*g +: 2] <= 2'd0;
+                run_x[2*g +: 2] <= 2'd0; la_ok_x[g] <= 1'b0; err1_x[g] <= 1'b0; err2_x[g] <= 1'b0; rl_ok_x[g] <= 1'b0; tried_x[2*g +: 2] <= 2'd0;
                 known_x[g] <= 1'b0; copy_x[2*g +: 2] <= 2'd0;
             end else begin
                 if (op == 2'd1) begin seen_q[8*g +: 8] <= a; if (a == rl_q[8*g +: 8]) held_q[g] <= 1'b1; end
@@ -216,15 +227,19 @@ module fexport #(
                     need_x[g] <= need_i[g]; known_x[g] <= act_known_i[g]; tried_x[2*g +: 2] <= tried_i[2*g +: 2];
                     copy_x[2*g +: 2] <= act_known_i[g] ? act_i[2*g +: 2] : 2'd0;
                     landed_x[g] <= 1'b0; la_ok_x[g] <= 1'b0; rl_ok_x[g] <= 1'b0; rl_x[2*g +: 2] <= 2'd0;
-                    sa_ack_x[g] <= 1'b0; sa_err_x[g] <= 1'b0; fails_x[2*g +: 2] <= 2'd0;
+                    sa_ack_x[g] <= 1'b0; sa_err_x[g] <= 1'b0; run_x[2*g +: 2] <= 2'd0;
+                    err1_x[g] <= 1'b0; err2_x[g] <= 1'b0;
                         comp_q[3*g +: 3]   <= same_i ? comp[3*g +: 3] : 3'd0;
                 end else begin
                     comp_q[3*g +: 3] <= comp[3*g +: 3];
                     if (err && mine) begin
-                        if (fails_x[2*g +: 2] != 2'd2) fails_x[2*g +: 2] <= fails_x[2*g +: 2] + 2'd1;
+                        if (run_x[2*g +: 2] != 2'd3) run_x[2*g +: 2] <= run_x[2*g +: 2] + 2'd1;
+                        err1_x[g] <= 1'b1;
+                        if (err1_x[g] && run_x[2*g +: 2] == 2'd0) err2_x[g] <= 1'b1;
                         if (k_sa) begin sa_err_x[g] <= 1'b1; sa_buf_x[2*g +: 2] <= dat[1:0]; end
                     end
                     if (ack && mine) begin
+                        run_x[2*g +: 2] <= 2'd0;
                         if (k_la) la_ok_x[g] <= 1'b1;
                         if (k_la && rvalid) copy_x[2*g +: 2] <= rbyte[1:0];
                         if (k_la && rvalid && rbyte[1:0] == tried_x[2*g +: 2]) landed_x[g] <= 1'b1;
@@ -278,6 +293,7 @@ module fexport #(
         assume(word_i[31:1] == 0 && taken_at_i[31:1] == 0);
 `endif
         no_overlap: assume(gap >= CH && gap <= (1 << AW) - CH);
+        small_k: assume(f_k <= 8'd3);
         if (go) known_copy: assume(&env_known);
         if (go) tried_copy: assume(&env_tried);
         // the RAM answers a read of a control word with its bytes
@@ -298,7 +314,7 @@ module fexport #(
     reg  [1:0] takes_x;                              // words taken
     reg        p_stb, p_ans, p_may, p_err;
     wire       new_acc = stb && (!p_stb || p_ans);
-    wire       dropped = DROP != 0 && f2(fails_x, e_d) == 2'd2;
+    wire       dropped = DROP != 0 && f2(run_x, e_d) >= kk;
     wire       take = open_q && ready && word_valid_i;
     wire [1:0] pick_c = f2(copy_x, a_d), pick_r = f2(rl_x, a_d);
     wire [1:0] pick = (pick_c != 2'd3 && pick_r != 2'd3) ? 2'd3 : (pick_c != 2'd2 && pick_r != 2'd2) ? 2'd2 : 2'd1;
@@ -350,7 +366,7 @@ module fexport #(
         end
         if (k_sa) complete_publish: assert(cbit(f3(full, a_d), dat[1:0]));
         if (new_acc) access_start: assert(p_may);
-        if (DROP != 0) drop_dead: assert(f2(fails_x, a_d) != 2'd2);
+        if (DROP != 0) drop_dead: assert(f2(run_x, a_d) < kk);
         landed_leave: assert(!f1(landed_x, a_d));
     end
     // The engine's 3-bit tried fields keep their top bit clear (three-buffer runs only here).
@@ -369,7 +385,7 @@ module fexport #(
         assign ok_copy[g]      = !known_o[g] || a == {6'd0, act_o[2*g +: 2]};
         assign ok_pub[g]       = !published[g] || (a[7:2] == 6'd0 && cbit(c, a[1:0]));
         assign ok_tried[g]     = t == 2'd0 || a != {6'd0, t} || cbit(c, t);
-        assign ok_complete[g]  = !need_x[g] || published[g] || (DROP != 0 && fails_x[2*g +: 2] == 2'd2);
+        assign ok_complete[g]  = !need_x[g] || published[g] || (DROP != 0 && run_x[2*g +: 2] >= kk);
     end endgenerate
     always @* if (chk && open_q && done) begin
         published_exact: assert(&ok_pub_exact);
@@ -394,7 +410,7 @@ module fexport #(
         .takes_x_i(takes_x), .tw0_x_i(tw0_x), .tw1_x_i(tw1_x), .taken_x_i(taken_x), .need_x_i(need_x),
         .known_x_i(known_x), .landed_x_i(landed_x), .la_ok_x_i(la_ok_x), .rl_ok_x_i(rl_ok_x),
         .sa_ack_x_i(sa_ack_x), .sa_err_x_i(sa_err_x), .copy_x_i(copy_x), .rl_x_i(rl_x), .tried_x_i(tried_x),
-        .sa_buf_x_i(sa_buf_x), .fails_x_i(fails_x), .wr_q_i(wr_q), .comp_i(comp), .full_i(full),
+        .sa_buf_x_i(sa_buf_x), .run_x_i(run_x), .kk_i(kk), .wr_q_i(wr_q), .comp_i(comp), .full_i(full),
         .act_q_i(act_q), .rl_q_i(rl_q), .held_q_i(held_q));
 `endif
 
@@ -405,7 +421,9 @@ module fexport #(
         cov_landed:  cover(landed_x != 2'b00);
         cov_failed:  cover((sa_err_x & ~sa_ack_x) != 2'b00);
         cov_cut:     cover(cut && sa_ack_x != 2'b00);
-        if (DROP != 0) cov_drop: cover(fails_x[1:0] == 2'd2 && sa_ack_x[1]);
+        if (DROP != 0) cov_drop: cover(run_x[1:0] >= kk && sa_ack_x[1]);
+        if (DROP != 0) cov_drop3: cover(kk == 2'd3 && run_x[1:0] == 2'd3 && sa_ack_x[1]);
+        if (DROP != 0) cov_two_kept: cover(kk == 2'd2 && err2_x[0] && published[0]);
     end
     always @* if (chk && open_q && new_acc && any_x && eret_x && !dropped) cov_retry: cover(k_st);
     // a store while the consumer holds a buffer it locked after the engine's load

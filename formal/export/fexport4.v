@@ -84,9 +84,13 @@ module fexport4 #(
     wire [31:0]   wdat;
     reg  [31:0]   rdat;
 
+    // The drop run K (ROM H2, issue 15): any constant 0..3 (0 and 1 read as 2).
+    (* anyconst *) reg [7:0] f_drop_run;
+    always @* small_k: assume(f_drop_run <= 8'd3);
     albatross_export #(.ADDR_WIDTH(AW), .WORDS_WIDTH(2), .COUNT_WIDTH(1), .TAKEN_AT(1),
                        .DESTS(DESTS), .DROP(1)) dut (
         .clk_i(clk_i), .rst_i(rst_i),
+        .drop_run_i(f_drop_run),
         .start_i(start_i), .four_i(1'b1), .base_i(f_base), .need_i(need_i), .words_i(f_w),
         .taken_at_i(taken_at_i), .act_known_i(known), .act_i(act), .tried_i(tried),
         .may_access_i(may_access_i), .idle_o(idle),

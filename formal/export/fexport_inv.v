@@ -2,7 +2,7 @@
 // (formal/export/export.sby task prove, harness fexport.v; docs/verification.md
 // "Export engine (unbounded)").  Inputs only, every one an assertion; fexport
 // instantiates it with -DF_PROBE, its f_* inputs joined by the script to the
-// engine's registers (state_q, need_q, buf_q, fail1_q, retry_q, drop_q,
+// engine's registers (state_q, need_q, buf_q, run_q, retry_q, drop_q,
 // base_q, words_q, word_q, taken_q), the rest the harness's own state.
 // Rules: the engine's position is a key kcur (the harness's access order: the
 // present access, or the next word's first store while waiting for a word);
@@ -25,7 +25,8 @@ module fexport_inv #(
     input wire [1:0] a_d_i, e_d_i, takes_x_i, need_x_i, known_x_i, landed_x_i, la_ok_x_i, rl_ok_x_i,
     input wire [1:0] sa_ack_x_i, sa_err_x_i, held_q_i,
     input wire [3:0] act_o_i, tried_o_i, sel_i, e_sel_i, acks_x_i, copy_x_i, rl_x_i, tried_x_i,
-    input wire [3:0] sa_buf_x_i, fails_x_i,
+    input wire [3:0] sa_buf_x_i, run_x_i,
+    input wire [1:0] kk_i,           // the drop run K in force (2 or 3)
     input wire [2*AW-1:0] f_base_i,
     input wire [31:0] dat_i, e_dat_i, tw0_x_i, tw1_x_i, taken_x_i,
     input wire [AW-1:0] adr_i, e_adr_i,
@@ -45,7 +46,7 @@ module fexport_inv #(
     (* keep *) wire [5:0]      f_buf6;      // dut.buf_q (3-bit fields: four-slot buffers 1..4)
     (* keep *) wire            f_four;      // dut.four_q
     wire [3:0]                 f_buf = {f_buf6[4:3], f_buf6[1:0]};
-    (* keep *) wire [1:0]      f_fail1;     // dut.fail1_q (DROP = 1 only: else optimised away)
+    (* keep *) wire [7:0]      f_run;       // dut.run_q (DROP = 1 only: else optimised away)
     (* keep *) wire            f_retry;     // dut.retry_q
     (* keep *) wire            f_drop;      // dut.drop_q (DROP = 1 only)
     (* keep *) wire [2*AW-1:0] f_base_q;    // dut.base_q
@@ -75,7 +76,7 @@ module fexport_inv #(
                        f_state == E_SA ? PH_SA : f_state == E_WAIT ? {1'b0, takes_x_i} + 3'd1 : 3'd0;
     wire [5:0] kcur  = f_state == E_IDLE ? 6'h3f : f_state == E_WAIT ? {e_ph, 3'b000} :
                        {e_ph, dest_i, f_state == E_LR};
-    wire       e_drop = DROP != 0 && f2(fails_x_i, e_d_i) == 2'd2;
+    wire       e_drop = DROP != 0 && f2(run_x_i, e_d_i) >= kk_i;
     // planned accesses below the position (exact count of an undisturbed Export)
     function [3:0] pcount(input [5:0] kc);
         integer j, l;
@@ -109,7 +110,7 @@ module fexport_inv #(
         inv_first: assert(idle_i || any_x_i || (e_acc && stb_i && !p_stb_i));
         inv_new:   assert(!(stb_i && any_x_i && key_x_i < kcur) || new_acc_i);
         inv_acks:  assert((idle_i || (dist_x_i ? acks_x_i <= pcount(kcur) : acks_x_i == pcount(kcur))) &&
-                          (dist_x_i || (fails_x_i == 4'd0 && !eret_x_i)));
+                          (dist_x_i || (run_x_i == 4'd0 && !eret_x_i)));
         inv_pub:   assert(published_i == (need_x_i & (sa_ack_x_i | landed_x_i)));
     end
     wire [DESTS-1:0] v_wr, v_need, v_fails, v_loads, v_copy, v_act, v_held, v_tried, v_sa, v_land;   // per-d invariants
@@ -138,16 +139,19 @@ module fexport_inv #(
         end
         assign v_wr[g] = wr_ok;
         assign v_need[g] = idle_i || ((!live || need_x_i[g]) && (!landed_x_i[g] || !live) &&
-                              (!need_x_i[g] || live || landed_x_i[g] || (DROP != 0 && fails_x_i[2*g +: 2] == 2'd2)));
-        assign v_fails[g] = fails_x_i[2*g +: 2] != 2'd3 && (idle_i || fails_x_i[2*g +: 2] == 2'd0 || {3'd0, gd, known_x_i[g]} <= kcur) && (DROP == 0 || idle_i || f_fail1[g] == (fails_x_i[2*g +: 2] != 2'd0)) &&
-                              (DROP == 0 || fails_x_i[2*g +: 2] != 2'd2 || !live || idle_i ||
+                              (!need_x_i[g] || live || landed_x_i[g] || (DROP != 0 && run_x_i[2*g +: 2] >= kk_i)));
+        assign v_fails[g] = (DROP == 0 || run_x_i[2*g +: 2] <= kk_i) &&
+                              (idle_i || run_x_i[2*g +: 2] == 2'd0 || {3'd0, gd, known_x_i[g]} <= kcur) &&
+                              (DROP == 0 || idle_i || !live ||
+                               (dest_i == gd ? f_run == {6'd0, run_x_i[2*g +: 2]} : run_x_i[2*g +: 2] == 2'd0)) &&
+                              (DROP == 0 || run_x_i[2*g +: 2] < kk_i || !live || idle_i ||
                                (f_retry && f_drop && e_d_i == gd));
         assign v_loads[g] = idle_i || !live || (la_ok_x_i[g] == (!known_x_i[g] && {3'd0, gd, 1'b0} < kcur) &&
                                                 rl_ok_x_i[g] == ({3'd0, gd, 1'b1} < kcur) &&
                                                 (!rl_ok_x_i[g] || (bq == pk && !f_buf6[3*g+2])) &&
                                                 sa_ack_x_i[g] == sa_k && (!sa_err_x_i[g] || sa_k || kcur == {PH_SA, gd, 1'b0}));
         assign v_copy[g] = idle_i || !live || !pre_sa || (known_o_i[g] == (cx != 2'd0) && (!known_o_i[g] || act_o_i[2*g +: 2] == cx) &&
-                           (fails_x_i[2*g +: 2] == 2'd0 || {3'd0, gd, known_x_i[g]} <= kcur));
+                           (run_x_i[2*g +: 2] == 2'd0 || {3'd0, gd, known_x_i[g]} <= kcur));
         assign v_act[g] = (!known_x_i[g] || cx != 2'd0) && (known_x_i[g] || la_ok_x_i[g] || cx == 2'd0) && (idle_i || !live || !pre_sa || !(known_x_i[g] || la_ok_x_i[g]) ||
                               (cx != 2'd0 ? a == {6'd0, cx} : !av));
         assign v_held[g] = idle_i || !live || !pre_sa || !rl_ok_x_i[g] || !held_q_i[g] || !rv ||
@@ -166,6 +170,10 @@ module fexport_inv #(
         inv_wr: assert(&v_wr);
         inv_need: assert(&v_need);
         inv_fails: assert(&v_fails);
+        // a failure run lasts from an err to the next ack or drop, on a live destination
+        inv_run:   assert(DROP == 0 || idle_i || f_run == 8'd0 ||
+                          (f_run == {6'd0, f2(run_x_i, dest_i)} && f1(f_need, dest_i) && e_acc && eret_x_i &&
+                           e_d_i == dest_i));
         inv_loads: assert(&v_loads);
         inv_copy: assert(&v_copy);
         inv_act: assert(&v_act);

@@ -34,12 +34,13 @@ void reseal(std::vector<uint32_t> &r, size_t ne) {
 }
 
 // hflags: the H0 flags field (C::HFLAG_SYNC_MODE: position-synchronised).
-std::vector<uint32_t> build_rom(uint32_t h1, unsigned hflags, const std::vector<Entry> &es) {
+std::vector<uint32_t> build_rom(uint32_t h1, unsigned hflags, const std::vector<Entry> &es, unsigned drop_run) {
     std::vector<uint32_t> r(ROMW, 0);
     r[C::H0_MAGIC.word] |= C::H0_MAGIC.put(C::ROM_MAGIC);
     r[C::H0_NE.word] |= C::H0_NE.put((uint32_t)es.size());
     r[C::H0_FLAGS.word] |= C::H0_FLAGS.put(hflags);
     r[C::H1_CYCLE.word] |= C::H1_CYCLE.put(h1);
+    r[C::H2_DROP_RUN.word] |= C::H2_DROP_RUN.put(drop_run);
     for (size_t k = 0; k < es.size(); ++k) {
         const Entry &e = es[k];
         uint32_t *w = &r[rom_addr(k, 0)];

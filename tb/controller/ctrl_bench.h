@@ -82,7 +82,8 @@ size_t rom_addr(size_t k, unsigned j);
 void reseal(std::vector<uint32_t> &r, size_t ne);
 
 // hflags: the H0 flags field (C::HFLAG_SYNC_MODE: position-synchronised).
-std::vector<uint32_t> build_rom(uint32_t h1, unsigned hflags, const std::vector<Entry> &es);
+// drop_run: H2's drop run K (issue 15; 0 = an image from before, read as 2).
+std::vector<uint32_t> build_rom(uint32_t h1, unsigned hflags, const std::vector<Entry> &es, unsigned drop_run = 0);
 
 void write_rom(const std::vector<uint32_t> &r);
 
@@ -307,5 +308,6 @@ void scenario_four();
 // ctrl_scenarios_faults.cpp
 void scenario_faults();
 void scenario_dead();
+void scenario_droprun();
 void scenario_sync();
 void scenario_abandon();

@@ -194,6 +194,47 @@ void scenario_dead() {
     }
 }
 
+// The drop run from the ROM (issue 15): H2 = 3, board 1's link down for a
+// cycle: COPY's only destination is tried 3 times (not 2) and dropped; TIME
+// still reaches board 0 (tried first) and drops board 1 after 3 failures.
+void scenario_droprun() {
+    std::printf("== droprun: H2 drop run 3: a dead destination is tried 3 times in a row, then dropped\n");
+    std::vector<Entry> es = schedule();
+    write_rom(build_rom(H1, 0, es, 3));
+    Sim s;
+    Setup u(s);
+    const uint64_t T0 = t0_of((int)es.size());
+    u.prod.publish(s, value(0));
+    s.run_until(T0 + TAIL);
+    std::vector<uint32_t> got;
+    u.cons.import(s, got);
+    u.time0.import(s, got);
+    u.time1.import(s, got);
+    u.prod.publish(s, value(1));
+    const uint64_t C = T0 + H1;
+    s.run_until(C);
+    s.top->fi_dead_i = 1u << 1;
+    s.run_until(C + H1);
+    s.top->fi_dead_i = 0;
+    const uint32_t starts[2] = {S_COPY, S_TIME}, lens[2] = {L_COPY, L_TIME};
+    const char *names[2] = {"COPY", "TIME"};
+    for (int e = 0; e < 2; ++e) {
+        std::vector<Attempt> v = s.attempts(C + starts[e], C + starts[e] + lens[e]);
+        size_t to_dead = 0, failed = 0;
+        for (const Attempt &a : v) {
+            to_dead += (a.adr >> AW) == 1u;
+            failed += (a.adr >> AW) == 1u && a.result == 3;
+        }
+        char m[160];
+        std::snprintf(m, sizeof m, "drop run 3, %s: the dead destination is tried 3 times, then dropped", names[e]);
+        check(G_DEAD, to_dead == 3 && failed == 3, "%s: expected 3 attempts to it, all timed out, got %zu, %zu timed out",
+              m, to_dead, failed);
+    }
+    bool isnew = u.time0.import(s, got);
+    check(G_DEAD, isnew && got[0] == C + S_TIME, "drop run 3: TIME still published to board 0: expected New %" PRIu64
+          ", got %s %u", C + S_TIME, isnew ? "New" : "Old", got[0]);
+}
+
 // Position-synchronised mode: entry 0 is the SYNC COPY.  After the last entry the
 // controller polls the SYNC source's Actual every POLL clocks; a new value starts
 // the next cycle in the clock after the poll's ack, else the cycle ends at H1.

@@ -24,6 +24,8 @@
 //   dead     a board's link is down for a whole cycle: the slots still start on
 //            time, no access starts after its deadline, a dead destination is
 //            dropped after two failed accesses and the others are still served
+//   droprun  the same with the ROM's drop run H2 = 3 (issue 15): the dead
+//            destination is tried 3 times in a row, then dropped
 //   four     the COPY and TIME entries with E0 flag FOUR_SLOT (issue 13), a C++
 //            four-slot producer and consumer: exact timing and access sequence
 //            (Import 3 + W / 1 access, Export W + 4 per destination), the
@@ -71,6 +73,7 @@ int main(int argc, char **argv) {
     if (g_inject_timing) std::printf("injected: the timing checker expects every completion one clock late\n");
     struct { const char *name; void (*fn)(); } sc[] = {
         {"basic", scenario_basic}, {"corrupt", scenario_corrupt}, {"faults", scenario_faults}, {"dead", scenario_dead},
+        {"droprun", scenario_droprun},
         {"sync", scenario_sync}, {"four", scenario_four}, {"abandon", scenario_abandon}};
     for (auto &x : sc)
         if (only.empty() || only == x.name) x.fn();

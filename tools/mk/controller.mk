@@ -10,6 +10,10 @@
 #                                         regression of 59c3c2d (tb/mutants/controller/
 #                                         stale_need.sed) must fail the abandon scenario's
 #                                         check (group 32) and name it
+#   make test-controller-smoke-negative-droprun
+#                                         a controller that ignores the ROM's drop
+#                                         run (H2, issue 15) fails scenario droprun
+#                                         (exit 80: dead group only)
 # The model reads its ROM from "ctrl_rom.hex" in the working directory that
 # each run selects with --dir, so the two runs never share a ROM file.
 
@@ -69,3 +73,27 @@ test-controller-negative-stale_need: $(CTRL_MUT_DIR)/obj/Vtb_system
 	    if [ $$rc -ge 64 ] && [ $$(( (rc - 64) & 32 )) -ne 0 ] && grep -q "^FAIL abandon: STATUS channel 0 abandoned" $(CTRL_MUT_DIR)/run.log; then \
 	        echo "the abandon check failed on the stale-need mutant, as it must (exit $$rc)"; \
 	    else echo "expected exit 64+32 with the abandon check failing, came exit $$rc"; tail -n 5 $(CTRL_MUT_DIR)/run.log; exit 1; fi'
+# The ROM's drop run must reach the Export engine: the controller with H2 not
+# connected (K read as 2) is caught by scenario droprun (the dead destination
+# is tried twice, not 3 times).  One more model build (about a minute).
+CTRL_NEG_DR := $(CTRL_DIR)/mutant-droprun
+$(CTRL_NEG_DR)/src/albatross_controller.v: rtl/albatross_controller.v tools/mk/controller.mk
+	@mkdir -p $(@D)
+	sed 's/\.drop_run_i(drop_run)/.drop_run_i(8'"'"'d0)/' $< > $@
+	@if cmp -s $@ $<; then echo "mutant droprun did not apply: $< no longer connects .drop_run_i(drop_run)"; \
+	    rm -f $@; exit 1; fi
+$(CTRL_NEG_DR)/obj/Vtb_system: $(CTRL_SRC) $(CTRL_NEG_DR)/src/albatross_controller.v
+	@mkdir -p $(CTRL_NEG_DR)
+	verilator --cc --exe --build -j 2 -O3 -Wall -Wno-UNUSEDSIGNAL --top-module tb_system \
+	    -GROM_FILE='"ctrl_rom.hex"' -CFLAGS "-O2 -std=c++17 -Wall -Wextra $(TB_COMMON_INC)" \
+	    --Mdir $(CTRL_NEG_DR)/obj -y $(CTRL_NEG_DR)/src $(VLIB) tb/system/tb_system.v $(abspath $(CTRL_CPP)) \
+	    > $(CTRL_NEG_DR)/build.log 2>&1 || { cat $(CTRL_NEG_DR)/build.log; exit 1; }
+
+TESTS += controller-smoke-negative-droprun
+.PHONY: test-controller-smoke-negative-droprun
+test-controller-smoke-negative-droprun: $(CTRL_NEG_DR)/obj/Vtb_system
+	@tools/run_test.sh controller-smoke-negative-droprun bash -c '$< --dir=$(CTRL_NEG_DR)/run --scenario=droprun \
+	    > $(CTRL_NEG_DR)/run.log 2>&1; rc=$$?; \
+	    grep -m 3 "^FAIL" $(CTRL_NEG_DR)/run.log | sed "s/^FAIL/  caught:/"; \
+	    if [ $$rc -eq 80 ]; then echo "the controller that ignores H2 fails scenario droprun, as it must (exit 80)"; \
+	    else echo "expected exit 80 (dead group only), came exit $$rc"; tail -n 5 $(CTRL_NEG_DR)/run.log; exit 1; fi'
