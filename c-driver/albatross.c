@@ -254,7 +254,6 @@ static int fs_select_read(alb_channel_t *ch, uint8_t *buffer)
     }
     /* 3. announce its pair: from now on the producer writes the other one */
     pair = ALB_FS_PAIR(latest);
-    alb_fence();         /* release: the last Import's data loads before this store */
     alb_wr8(ch->base + ALB_OFF_READLOCKED, latest);
     ch->fs_read_locked = latest;
     alb_fence();          /* store ReadLocked before loading the slot byte */
@@ -295,6 +294,7 @@ ALB_NOINLINE int fs_import(alb_channel_t *ch, void *dst)
         return result;
     alb_fence();              /* acquire: the control loads before the data */
     fs_copy_in(ch, buffer, dst);                 /* step 5 */
+    alb_fence();   /* release: these data loads before the next ReadLocked store */
     return result;
 }
 #define ALB_FS_IMPORT(ch, dst) fs_import(ch, dst)
@@ -418,7 +418,6 @@ int alb_import(alb_channel_t *ch, void *dst)
         if (!ALB_VALID_INDEX(actual))
             return ALB_ERR_CORRUPT;
         ch->read_locked = actual;                           /* ReadLocked:= Actual */
-        alb_fence();     /* release: the last Import's data loads before this store */
         alb_wr8(ch->base + ALB_OFF_READLOCKED, actual);
         alb_fence();                  /* store ReadLocked before loading Actual */
         actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
@@ -428,6 +427,7 @@ int alb_import(alb_channel_t *ch, void *dst)
 
     /* --- Phase 2: read-access to the selected buffer */
     read_from(ch, ch->read_locked, dst);
+    alb_fence();   /* release: these data loads before the next ReadLocked store */
     return result;
 #else
     return ch != 0 && dst != 0 && ch->kind == ALB_FOUR_SLOT ? ALB_FS_IMPORT(ch, dst) : ALB_ERR_ARG;

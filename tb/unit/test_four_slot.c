@@ -206,7 +206,7 @@ static void fs_import_order(void)
     *ram(ch_base + ALB_OFF_ACTUAL) = 1u;
     check_int("Import after a new Actual: New", ALB_NEW, alb_import(&c, d));
     check_fence_between("release: the last Import's data loads before the ReadLocked store",
-                        UNIT_RD32, 0u, UNIT_WR8, ch_base + ALB_OFF_READLOCKED);
+                        UNIT_RD32, ch_base + ALB_OFF_BUFFER(4u, 8u), UNIT_WR8, ch_base + ALB_OFF_READLOCKED);
 
     /* The producer completes a value in the announced pair (Slot1 := 0,
      * Buffer3) but has not yet stored Actual when the consumer loads the
