@@ -220,14 +220,13 @@ def plan_for(desc, rate, burst, out_root):
         tag = "f%g%s" % (rate * 100, "b%d" % burst if burst else "")
         d = os.path.join(out_root, "%s-t%d" % (tag, round(-math.log10(1 - t))))
         spec = "%r,%s,%r" % (rate, burst or "", t)
-        if not os.path.exists(os.path.join(d, "tb_plan.txt")):
-            r = subprocess.run([sys.executable, "-m", "albatross_schedule", desc, "--out", d, "-q", "--faults", spec],
-                               capture_output=True, text=True, env=env)
-            if r.returncode != 0:
-                last = r.stderr.strip().splitlines()[-1] if r.stderr.strip() else "rejected"
-                continue
-            subprocess.run([sys.executable, "tb/common/plan_for_tb.py", os.path.join(d, "report.json"),
-                            os.path.join(d, "tb_plan.txt")], check=True, capture_output=True)
+        r = subprocess.run([sys.executable, "-m", "albatross_schedule", desc, "--out", d, "-q", "--faults", spec],
+                           capture_output=True, text=True, env=env)
+        if r.returncode != 0:
+            last = r.stderr.strip().splitlines()[-1] if r.stderr.strip() else "rejected"
+            continue
+        subprocess.run([sys.executable, "tb/common/plan_for_tb.py", os.path.join(d, "report.json"),
+                        os.path.join(d, "tb_plan.txt")], check=True, capture_output=True)
         return d, t
     return None, last
 
@@ -287,9 +286,8 @@ def robot_point(a, rate, root):
     tag = os.path.basename(d)
     # The plan under build/schedule/ for make's firmware rules (tools/mk/pico_boards.mk).
     sched = os.path.join("build", "schedule", "fr-" + tag)
-    if not os.path.exists(os.path.join(sched, "tb_plan.txt")):
-        subprocess.run(["rm", "-rf", sched], check=True)
-        subprocess.run(["cp", "-r", d, sched], check=True)
+    subprocess.run(["rm", "-rf", sched], check=True)
+    subprocess.run(["cp", "-r", d, sched], check=True)
     fw = os.path.join("build", "pico_boards", "fr-" + tag, "fw")
     subprocess.run(["make", "-s", "--no-print-directory"] + [os.path.join(fw, b + ".hex") for b in BOARDS],
                    check=True, capture_output=True)
