@@ -29,11 +29,18 @@ B_m.  Ages are not independent trials (all values published between two
 slots share their fate), so the trials are the slots: N_eff = min(N, slots
 of that consumer in the measured span) and k_eff = ceil(k * N_eff / N).  The
 check fails when k_eff is improbable for a binomial(N_eff, p_m):
-P(X >= k_eff) < ALPHA (one-sided, ALPHA = 1e-4: a false alarm in about one of 10,000 checks).  With p_m = 1e-9 and a few
-thousand slots that means: no age above the bound.  The per-cycle delivery
-probability is the same at m = n (one cycle's slots): measured = 1 - k/N of
-the ages above B_n, predicted = cycle_delivery_probability.  Every channel
-and consumer must have ages (delivered).
+P(X >= k_eff) < ALPHA (one-sided, ALPHA = 1e-4: a false alarm in about one
+of 10,000 checks).  With p_m = 1e-9 and a few thousand slots that means: no
+age above the bound.  The per-cycle delivery probability is the same at
+m = n (one cycle's slots): measured = 1 - k/N of the ages above B_n,
+predicted = cycle_delivery_probability.  Every channel and consumer must
+have ages (delivered).
+
+The slot delivery itself (tb_system, whose rows are publications): each
+publication is a slot that delivered, after #{m: age > B_m} slots in a row
+that missed (copy channels: the oldest value the publication reaches, so a
+slot without a new value is no trial); missed slots against a
+binomial(trials, 1 - q), one-sided, the same ALPHA.
 
 --optimistic F multiplies every predicted miss probability by F (< 1: a
 prediction too optimistic; the negative test).  --expect-caught TEXT inverts
@@ -106,15 +113,34 @@ def consumer_bounds(report, chan, cons):
 
 
 def load_samples(path, skip):
-    """{(channel, board): [(age, producer_gap)]} of the samples at or after cycle skip."""
+    """{(channel, board): [(age, producer_gap, cycle)]} of the samples at or
+    after cycle skip.  tb_system's rows (no producer_gap column) are
+    publications at the destination (cycle: of the publication); the robot's
+    are Imports."""
     ages = {}
     with open(path) as fh:
         for row in csv.DictReader(fh):
             if int(row["cycle"]) < skip:
                 continue
             key = (row["channel"], int(row["board"]))
-            ages.setdefault(key, []).append((int(row["age"]), int(row.get("producer_gap") or 0)))
+            ages.setdefault(key, []).append((int(row["age"]), int(row.get("producer_gap") or 0),
+                                             int(row["cycle"]) if "producer_gap" not in row else None))
     return ages
+
+
+def slot_delivery(samples, bounds):
+    """Measured slot delivery from publications (tb_system): each publication
+    is one slot that delivered, after missed = #{m: age > B_m} slots in a row
+    that had the value and missed it (a copy channel: the oldest value the
+    publication reaches, so slots without a new value are not counted).
+    Returns (missed slots, slot trials) or None (no publication cycles)."""
+    if not samples or samples[0][2] is None:
+        return None
+    worst = {}
+    for a, _, c in samples:
+        worst[c] = max(worst.get(c, 0), a)
+    missed = sum(sum(1 for _, B, _ in bounds if a > B) for a in worst.values())
+    return missed, missed + len(worst)
 
 
 def check(report, ages, span_cycles, optimistic=1.0):
@@ -139,13 +165,26 @@ def check(report, ages, span_cycles, optimistic=1.0):
             if not samples:
                 failures.append("%s: expected values delivered, got no age measured (never delivered)" % name)
                 continue
-            res["worst_age"] = max(a for a, _ in samples)
-            res["worst_age_minus_gap"] = max(a - g for a, g in samples)
-            res["worst_producer_gap"] = max(g for _, g in samples)
+            res["worst_age"] = max(a for a, _, _ in samples)
+            res["worst_age_minus_gap"] = max(a - g for a, g, _ in samples)
+            res["worst_producer_gap"] = max(g for _, g, _ in samples)
             N = len(samples)
-            for m, B, p in consumer_bounds(report, chan, cons):
+            bounds = consumer_bounds(report, chan, cons)
+            sd = slot_delivery(samples, bounds)
+            if sd:
+                # The slot delivery itself, one-sided: missed slots against a binomial(trials, 1 - q).
+                miss, trials = sd
+                pq = (1 - f["slot_delivery_probability"]) * optimistic
+                kmax = k_allowed(trials, min(pq, 1.0))
+                res.update(measured_slot_delivery=1 - miss / trials, slot_trials=trials, slots_missed=miss,
+                           slots_missed_allowed=kmax)
+                if miss > kmax:
+                    failures.append("%s: slot delivery: expected at least %.6g (at most %d of %d slots missed, "
+                                    "binomial tolerance), got %.6g (%d of %d slots missed)"
+                                    % (name, 1 - pq, kmax, trials, 1 - miss / trials, miss, trials))
+            for m, B, p in bounds:
                 p *= optimistic
-                k = sum(1 for a, g in samples if a > B + g)
+                k = sum(1 for a, g, _ in samples if a > B + g)
                 n_eff = min(N, max(1, span_cycles * n_slots))
                 k_eff = math.ceil(k * n_eff / N) if k else 0
                 kmax = k_allowed(n_eff, min(p, 1.0))
@@ -177,12 +216,15 @@ def cmd_check(a):
     results, failures = check(report, ages, span, a.optimistic)
     print("%s: measured ages against the compiler's bounds (plan %s, %d cycles measured%s)"
           % (a.label, a.plan, span, ", predictions x %g" % a.optimistic if a.optimistic != 1 else ""))
-    print("  %-10s %-5s %7s %10s %10s %9s %9s" % ("channel", "board", "ages", "cycle pred", "cycle meas",
-                                                  "worst clk", "at-target"))
+    print("  %-10s %-5s %7s %10s %10s %10s %14s %9s %9s" % (
+        "channel", "board", "ages", "cycle pred", "cycle meas", "slot pred", "slot meas", "worst clk", "at-target"))
     for r in results:
-        print("  %-10s %-5d %7d %10.6f %10s %9s %9d" % (
+        print("  %-10s %-5d %7d %10.6f %10s %10.6f %14s %9s %9d" % (
             r["channel"], r["board_index"], r["samples"], r["predicted_cycle_delivery"],
             "%.6f" % r["measured_cycle_delivery"] if "measured_cycle_delivery" in r else "-",
+            r["predicted_slot_delivery"],
+            "%.6f (%d/%d)" % (r["measured_slot_delivery"], r["slots_missed"], r["slot_trials"])
+            if "measured_slot_delivery" in r else "-",
             r.get("worst_age", "-"), r["age_bound_at_target"]))
     for f in failures:
         print("  FAIL " + f)
@@ -237,10 +279,13 @@ def per_channel(results):
     for r in results:
         c = out.setdefault(r["channel"], {"channel": r["channel"], "size": r["size"], "consumers": 0,
                                           "predicted_cycle_delivery": 1.0, "measured_cycle_delivery": 1.0,
+                                          "predicted_slot_delivery": 1.0, "measured_slot_delivery": 1.0,
                                           "worst_age": 0, "age_bound_at_target": 0, "age_bound_fault_free": 0})
         c["consumers"] += 1
         c["predicted_cycle_delivery"] = min(c["predicted_cycle_delivery"], r["predicted_cycle_delivery"])
         c["measured_cycle_delivery"] = min(c["measured_cycle_delivery"], r.get("measured_cycle_delivery", 0.0))
+        c["predicted_slot_delivery"] = min(c["predicted_slot_delivery"], r["predicted_slot_delivery"])
+        c["measured_slot_delivery"] = min(c["measured_slot_delivery"], r.get("measured_slot_delivery", 1.0))
         c["worst_age"] = max(c["worst_age"], r.get("worst_age", 0))
         c["age_bound_at_target"] = max(c["age_bound_at_target"], r["age_bound_at_target"])
         c["age_bound_fault_free"] = max(c["age_bound_fault_free"], r["age_bound_fault_free"])

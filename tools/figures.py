@@ -527,12 +527,15 @@ def fault_rates_50():
     rob = next((r for r in rep.get("robot", []) if r["rate"] == 0.5), None)
     if sysp is None:
         raise Absent()
-    head = ["channel (size) -> consumer", "slot q predicted", "delivery/cycle predicted",
-            "measured tb_system", "measured robot", "worst age us tb_system / robot", "bound at target us"]
+    head = ["channel (size) -> consumer", "slot q predicted", "slot measured tb_system (missed/slots)",
+            "delivery/cycle predicted", "measured tb_system", "measured robot", "worst age us tb_system / robot",
+            "bound at target us"]
     rows = []
     for c in sysp["consumers"]:
         r = next((x for x in (rob or {}).get("consumers", []) if (x["channel"], x["board"]) == (c["channel"], c["board"])), None)
         rows.append([f"{c['channel']} ({c['size']} B) -> {c['board']}", f"{c['predicted_slot_delivery']:.4f}",
+                     f"{c['measured_slot_delivery']:.4f} ({c['slots_missed']}/{c['slot_trials']})"
+                     if "measured_slot_delivery" in c else "-",
                      f"{c['predicted_cycle_delivery']:.4f}", f"{c.get('measured_cycle_delivery', 0):.4f}",
                      f"{r.get('measured_cycle_delivery', 0):.4f}" if r else "-",
                      f"{c.get('worst_age', 0) / 50:.1f} / " + (f"{r.get('worst_age', 0) / 50:.1f}" if r else "-"),
