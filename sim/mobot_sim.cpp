@@ -11,6 +11,7 @@
 //             [--crash BOARD@CYCLE] [--hang BOARD@CYCLE]
 //             [--trace FILE.vcd [--trace-from N] [--trace-cycles N]]
 //             [--report FILE] [--ages FILE.csv] [--label NAME] [--progress K]
+//             [--age-samples FILE.csv]  every imported age (channel,board,cycle,age,producer_gap)
 //             [--age-scale X] [--require-done] [--expect-caught-by CHECK]
 //             [--drift-ppm BOARD=PPM[,/BOARD=PPM...]|random:MAX] [--clock-scale X]
 //             [--termination-scale X]
@@ -134,6 +135,14 @@ int main(int argc, char **argv)
     auto age_bound = [&](const Series &s) -> uint64_t {
         return s.ch->copy() ? s.ch->latency_retry + producers[s.ch->id].max_gap : s.ch->latency_retry;
     };
+    // --age-samples: every imported age, with the producer's longest gap
+    // between Actual stores so far (copy channels; the age bound's slack).
+    std::FILE *samples = nullptr;
+    if (!o.age_samples.empty()) {
+        samples = std::fopen(o.age_samples.c_str(), "w");
+        if (!samples) { std::fprintf(stderr, "mobot_sim: cannot write %s\n", o.age_samples.c_str()); return 2; }
+        std::fprintf(samples, "channel,board,cycle,age,producer_gap\n");
+    }
     auto find_series = [&](int board, uint32_t id) -> Series * {
         for (Series &s : series)
             if (s.board == board && uint32_t(s.ch->id) == id) return &s;
@@ -324,6 +333,10 @@ int main(int argc, char **argv)
                 const uint64_t t_load = s->ch->four_slot && first_seen[c][w] ? first_load[c][w] : last_load[c][w];
                 const uint64_t age = t_load > arg ? t_load - arg : 0;
                 s->age.add(age);
+                if (samples)
+                    std::fprintf(samples, "%s,%d,%llu,%llu,%llu\n", s->ch->name.c_str(), c, (unsigned long long)cycle,
+                                 (unsigned long long)age,
+                                 (unsigned long long)(s->ch->copy() ? producers[s->ch->id].max_gap : 0));
                 s->import_cycles.add(cyc);
                 const uint64_t k = std::min<uint64_t>(cycle / bucket_len, n_buckets - 1);
                 s->bucket_max[k] = std::max(s->bucket_max[k], age);
@@ -378,6 +391,7 @@ int main(int argc, char **argv)
     if (vcd && vcd->isOpen()) vcd->close();
 #endif
 
+    if (samples) std::fclose(samples);
     // ---- bounds and checks ----
     for (Series &s : series) {
         const PlanChannel &c = *s.ch;

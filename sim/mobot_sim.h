@@ -15,6 +15,7 @@ enum : uint32_t { EV_NEW = 1, EV_OLD, EV_ERROR, EV_BEGIN, EV_EXPORT, EV_STALE, E
 const char *const kChecks[] = {"cpu", "liveness", "age", "staleness", "faults", "clock", "termination"};
 
 struct Options {
+    std::string age_samples;  // --age-samples FILE: every imported age (CSV, tools/fault_rates.py)
     std::string plan, report, ages, trace, label = "mobot-sim", expect, crash_arg, hang_arg, drift_arg;
     uint64_t cycles = 2000000, seed = 1, stall = 0, trace_from = 0, trace_cycles = 20000, progress = 10;
     double fault_rate = 0, age_scale = 1, burst = 0;   // burst 0: independent accesses (tb/common/fault_model.h)

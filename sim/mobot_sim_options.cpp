@@ -70,7 +70,7 @@ int usage(const char *msg)
                  "                 [--seed S] [--stall P] [--fault-rate R] [--burst L] [--fault-clocking access|clock]\n"
                  "                 [--crash BOARD@CYCLE] [--hang BOARD@CYCLE]\n"
                  "                 [--trace FILE.vcd [--trace-from N] [--trace-cycles N]] [--report FILE]\n"
-                 "                 [--ages FILE.csv] [--label NAME] [--progress K] [--age-scale X] [--require-done]\n"
+                 "                 [--ages FILE.csv] [--age-samples FILE.csv] [--label NAME] [--progress K] [--age-scale X] [--require-done]\n"
                  "                 [--termination-scale X]\n"
                  "                 [--drift-ppm BOARD=PPM[,BOARD=PPM...]|random:MAX] [--clock-scale X]\n"
                  "                 [--expect-caught-by cpu|liveness|age|staleness|faults|clock|termination]\n", msg);
@@ -107,6 +107,7 @@ int parse_options(int argc, char **argv, Options &o, Plan &plan, std::vector<std
         if (a == "--plan") o.plan = v;
         else if (a == "--report") o.report = v;
         else if (a == "--ages") o.ages = v;
+        else if (a == "--age-samples") o.age_samples = v;
         else if (a == "--trace") o.trace = v;
         else if (a == "--label") o.label = v;
         else if (a == "--expect-caught-by") o.expect = v;

@@ -486,6 +486,70 @@ def fault_plan():
 SECTIONS["fault-plan"] = fault_plan
 
 
+def _miss(p):
+    """A delivery probability as 1 - miss (or 1)."""
+    return "1" if 1 - p < 5e-10 else f"1 - {1 - p:.1e}"
+
+
+def fault_rates():
+    """Per channel, delivery per cycle and worst age against the true fault rate,
+    measured beside the compiler's prediction (make bench-fault-rates)."""
+    rep = load("fault_rates.json")
+    if not rep:
+        missing("fault_rates.json", "make bench-fault-rates")
+    pts = [p for p in rep["points"] if p.get("planned")]
+    head = ["true rate", "plan for", "channel (size)", "delivery/cycle predicted", "measured",
+            "worst age us measured", "bound at target us", "checks"]
+    rows = []
+    for p in pts:
+        rate = f"{100 * p['rate']:g} %" + (f", burst {p['mean_burst']:g}" if not p["independent"] else "")
+        target = f"1 - {1 - p['probability']:.0e}" if p["probability"] > 0.995 else f"{p['probability']:g}"
+        ok = ("tb_system " + ("pass" if p["tb_system_passed"] else "FAIL") + ", ages " +
+              ("pass" if not p["check_failures"] else "FAIL"))
+        for c in p["channels"]:
+            rows.append([rate, target, f"{c['channel']} ({c['size']} B)", _miss(c["predicted_cycle_delivery"]),
+                         _miss(c["measured_cycle_delivery"]), f"{c['worst_age'] / 50:.1f}",
+                         f"{c['age_bound_at_target'] / 50:.1f}", ok])
+            rate = target = ok = ""
+    rejected = [p for p in rep["points"] if not p.get("planned")]
+    note = "; ".join(f"{100 * p['rate']:g} %" + (f" burst {p['mean_burst']:g}" if p["mean_burst"] else "")
+                     for p in rejected)
+    return table(head, rows) + (f"\n\nNot planned at any target: {note}." if rejected else "")
+
+
+def fault_rates_50():
+    """Per channel and consumer at 50 % true faults: predicted and measured
+    delivery per cycle, tb_system and the robot (make bench-fault-rates)."""
+    rep = load("fault_rates.json")
+    if not rep:
+        missing("fault_rates.json", "make bench-fault-rates")
+    sysp = next((p for p in rep["points"] if p["independent"] and p["rate"] == 0.5 and p.get("planned")), None)
+    rob = next((r for r in rep.get("robot", []) if r["rate"] == 0.5), None)
+    if sysp is None:
+        raise Absent()
+    head = ["channel (size) -> consumer", "slot q predicted", "slot measured tb_system (missed/slots)",
+            "delivery/cycle predicted", "measured tb_system", "measured robot", "worst age us tb_system / robot",
+            "bound at target us"]
+    rows = []
+    for c in sysp["consumers"]:
+        r = next((x for x in (rob or {}).get("consumers", []) if (x["channel"], x["board"]) == (c["channel"], c["board"])), None)
+        rows.append([f"{c['channel']} ({c['size']} B) -> {c['board']}", f"{c['predicted_slot_delivery']:.4f}",
+                     f"{c['measured_slot_delivery']:.4f} ({c['slots_missed']}/{c['slot_trials']})"
+                     if "measured_slot_delivery" in c else "-",
+                     f"{c['predicted_cycle_delivery']:.4f}", f"{c.get('measured_cycle_delivery', 0):.4f}",
+                     f"{r.get('measured_cycle_delivery', 0):.4f}" if r else "-",
+                     f"{c.get('worst_age', 0) / 50:.1f} / " + (f"{r.get('worst_age', 0) / 50:.1f}" if r else "-"),
+                     f"{c['age_bound_at_target'] / 50:.1f}"])
+    return table(head, rows) + (f"\n\nPlanned for {sysp['probability']:g} (K = {sysp['drop_run']}); "
+                                f"tb_system {sysp['cycles_measured']} cycles measured, measured fault rate "
+                                f"{sysp['fault_rate_measured']:.4f}; the robot's copy channels' ages include "
+                                f"their producer's gaps.")
+
+
+SECTIONS["fault-rates"] = fault_rates
+SECTIONS["fault-rates-50"] = fault_rates_50
+
+
 def formal_sby():
     rep = load("formal_sby.json")
     if not rep:

@@ -31,6 +31,7 @@ int usage(const char *why)
                  "usage: tb_system --plan DIR [--cycles N] [--seed S] [--fault-rate R] [--burst L]\n"
                  "                 [--fault-clocking access|clock] [--land-actual P] [--dead-board B --dead-at C]\n"
                  "                 [--corrupt-entry K] [--rom FILE] [--report FILE] [--label NAME]\n"
+                 "                 [--ages FILE]\n"
                  "                 [--latency-scale F] [--expect-caught-by CHECKER]... [--expect-failure TEXT]...\n", why);
     return 2;
 }
@@ -146,6 +147,7 @@ int parse_options(int argc, char **argv, Options &o)
         if (a == "--plan") o.plan_dir = v;
         else if (a == "--rom") o.rom = v;
         else if (a == "--report") o.report = v;
+        else if (a == "--ages") o.ages = v;
         else if (a == "--label") o.label = v;
         else if (a == "--cycles" && num && x >= 1000) o.cycles = static_cast<uint64_t>(x);
         else if (a == "--seed" && num && x >= 0) o.seed = static_cast<uint64_t>(x);

@@ -19,6 +19,7 @@ namespace tbsys {
 
 struct Options {
     std::string plan_dir, rom, report, label = "system";
+    std::string ages;                            // --ages FILE: every measured latency/age (CSV)
     uint64_t cycles = 400000, seed = 1, dead_at = 0;
     double fault_rate = 0, burst = 0, latency_scale = 1;   // burst 0: independent accesses
     bool fault_per_clock = false;                // negative test: the old injector, one draw per clock

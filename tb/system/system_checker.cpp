@@ -371,6 +371,9 @@ void SystemChecker::measure(Instance &in, const DestPub &p, const DestPub &prev,
         for (; d.pending <= p.seq && d.pending < s.publish_cycle.size(); ++d.pending) {
             if (s.publish_cycle[d.pending] < latency_from_) continue;
             uint64_t lat = cycle - s.publish_cycle[d.pending];
+            if (ages_)
+                std::fprintf(ages_, "%s,%d,%llu,%llu\n", c.name.c_str(), in.board, static_cast<unsigned long long>(cycle),
+                             static_cast<unsigned long long>(lat));
             st.latency_max = std::max(st.latency_max, lat);
             st.latency_sum += lat;
             ++st.latency_n;
@@ -393,6 +396,9 @@ void SystemChecker::measure(Instance &in, const DestPub &p, const DestPub &prev,
         // this one replaced it.
         const uint64_t last_taken = prev.taken_at + time_offset_;
         uint64_t age = !prev_is_image && last_taken >= latency_from_ ? cycle - last_taken : 0;
+        if (ages_ && !prev_is_image && last_taken >= latency_from_)
+            std::fprintf(ages_, "%s,%d,%llu,%llu\n", c.name.c_str(), in.board, static_cast<unsigned long long>(cycle),
+                         static_cast<unsigned long long>(age));
         st.latency_max = std::max(st.latency_max, age);
         st.latency_sum += age;
         ++st.latency_n;

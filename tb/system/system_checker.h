@@ -44,6 +44,7 @@
 //   freshness         consumers age every value with taken_at.
 #pragma once
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <string>
 #include <vector>
@@ -82,6 +83,12 @@ public:
     // Values published before this cycle are not measured (the controller's
     // first cycle after reset follows its scan of the ROM).
     void set_latency_from(uint64_t cycle) { latency_from_ = cycle; }
+    uint64_t latency_from() const { return latency_from_; }
+    // Every measured latency (copy) or age (time, status) is also written
+    // to f as "channel,board,cycle,age" (tb_system --ages; the fault-rate
+    // check tools/fault_rates.py compares their distribution with the
+    // compiler's probabilistic bounds).
+    void set_ages_file(std::FILE *f) { ages_ = f; }
     void end_of_run();                                         // close open read windows
 
     uint64_t violations[KINDS] = {};
@@ -158,6 +165,7 @@ private:
     uint64_t time_offset_;             // cycle = controller time + time_offset
     bool latency_checked_ = true;
     uint64_t latency_from_ = ~0ull;
+    std::FILE *ages_ = nullptr;
     std::vector<Instance> inst_;
     std::vector<SourceState> src_;
     std::vector<std::vector<DestState>> dst_;

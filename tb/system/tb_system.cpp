@@ -20,6 +20,8 @@
 //                                                 (the background CRC check must find it)
 //             [--corrupt-actual CH:C]             channel CH's producer stores Actual = 7 at cycle C
 //             [--rom FILE] [--report FILE] [--label NAME]
+//             [--ages FILE]                       every measured latency / age as CSV
+//                                                 (channel,board,cycle,age; tools/fault_rates.py)
 //             [--latency-scale F] [--expect-caught-by CHECKER]...   negative tests
 //             [--expect-failure TEXT]...          ... or a scenario failure containing TEXT
 //             [--trace-bus FROM:TO]      print the controller's accesses in that window
@@ -104,6 +106,13 @@ int main(int argc, char **argv)
     SystemChecker chk(plan, sim, time_offset);
     g_chk = &chk;
     sim.observer = &chk;
+    std::FILE *ages = nullptr;
+    if (!o.ages.empty()) {
+        ages = std::fopen(o.ages.c_str(), "w");
+        if (!ages) { std::fprintf(stderr, "tb_system: cannot write %s\n", o.ages.c_str()); return 2; }
+        std::fprintf(ages, "channel,board,cycle,age\n");
+        chk.set_ages_file(ages);
+    }
     chk.set_latency_is_checked(o.fault_rate == 0 && o.land_actual == 0 && o.dead_board < 0 && o.corrupt_entry < 0 && o.corrupt_channel < 0);
 
     std::mt19937_64 rng(o.seed);
@@ -201,6 +210,7 @@ int main(int argc, char **argv)
         }
     }
     chk.end_of_run();
+    if (ages) { chk.set_ages_file(nullptr); std::fclose(ages); }
     double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     // ---- scenario expectations beyond the checkers
@@ -377,6 +387,7 @@ int main(int argc, char **argv)
         JsonReport rep;
         rep.str("label", o.label).str("mode", plan.sync_mode ? "position-synchronised" : "time-rigid")
             .num("cycle_clocks", static_cast<double>(plan.cycle)).num("clocks", static_cast<double>(o.cycles))
+            .num("measured_from", static_cast<double>(chk.latency_from()))
             .num("fault_rate", o.fault_rate).num("burst", o.burst).num("fault_mean_burst", faults.mean_burst())
             .str("fault_clocking", o.fault_per_clock ? "clock" : "access")
             .num("fault_rate_measured", rate_measured).num("fault_rate_tolerance", rate_tol)

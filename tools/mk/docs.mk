@@ -9,6 +9,11 @@
 #                                      committed copy differs from the fresh one
 #   make test-docs-pictures-negative   the check must catch a stale picture
 #   make docs-pictures                 refreshes the committed copies
+#   docs/img/fault_rates.svg  delivery and worst age against the true fault
+#                          rate (make bench-fault-rates, seed 1; deterministic,
+#                          refreshed by make docs-pictures but, at about 40 s,
+#                          not compared by test-docs-pictures:
+#                          tools/mk/system_fault_rates.mk)
 # The simulation is deterministic for a given seed: the same tree gives the
 # same pictures bit for bit.  A change that moves any timing of the robot
 # (RTL, firmware, schedule) changes ages.svg, and this test asks for a refresh.
@@ -30,7 +35,7 @@ docs-pictures-build:
 	@$(MAKE) --no-print-directory sim $(DOCS_SIM_ARGS) > $(DOCS_DIR)/sim.log 2>&1 || \
 	    { tail -n 20 $(DOCS_DIR)/sim.log; echo "docs-pictures: make sim failed"; exit 1; }
 
-docs-pictures: docs-pictures-build ## refresh the committed pictures of the manual (docs/img/) from make schedule and make sim
+docs-pictures: docs-pictures-build docs-pictures-fault-rates ## refresh the committed pictures of the manual (docs/img/) from make schedule and make sim
 	cp $(BUILD)/schedule/mobot3/timeline.svg docs/img/timeline.svg
 	cp $(DOCS_DIR)/sim/ages.svg docs/img/ages.svg
 
