@@ -31,6 +31,25 @@ def pub_offset(ch: Channel, bus: Bus, retries: bool) -> int:
     return off + (bus.retry_budget_of(ch) if retries else 0)
 
 
+def import_extra_passes(ch: Channel, bus: Bus) -> int:
+    """E: the extra passes of the controller's source Import (figure 3's loop
+    in rtl/albatross_import.v) that a producer publishing during it can cause,
+    at most.  Each pass stores ReadLocked and loads Actual again (2 accesses);
+    one more follows only if the producer stored Actual within the pass.  A
+    producer's Export is W + 2 accesses of its DPRAM port, which serves one
+    access every 2 clocks, so its Actual stores are m = 2 (W + 2) clocks apart
+    at least: e passes in a row need e stores within (e + 1) passes' time,
+    (e - 1) m <= 2 access_cycles e.  Copy channels only (the controller
+    produces time and status values itself)."""
+    if ch.kind != "copy":
+        return 0
+    m, p = 2 * (ch.words + 2), 2 * bus.access_cycles
+    if m <= p:
+        raise ScheduleError(f"channel '{ch.name}': a producer can publish faster than one Import pass "
+                            f"({m} <= {p} clocks); the controller's Import has no bound")
+    return max(1, m // (m - p))
+
+
 def channel_gaps(starts, cycle):
     """Gaps between consecutive slot starts of one channel, cyclic."""
     s = sorted(starts)
@@ -317,8 +336,11 @@ def channel_bounds(system: System, plan: Plan, ch: Channel) -> dict:
     bus = system.bus
     gaps = channel_gaps(ch.slots, plan.cycle)
     period = max(gaps)
-    pub_ff = pub_offset(ch, bus, False)
-    pub_rt = pub_offset(ch, bus, True)
+    # A source value published during the Import costs the slot E extra
+    # passes (2 accesses each) before the destinations' Actual stores.
+    extra = import_extra_passes(ch, bus) * 2 * bus.access_cycles
+    pub_ff = pub_offset(ch, bus, False) + extra
+    pub_rt = pub_offset(ch, bus, True) + extra
     b = {
         "guaranteed_period_clocks": period,
         "min_gap_clocks": min(gaps),
