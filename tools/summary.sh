@@ -13,5 +13,11 @@ for t in "$@"; do
         [ -e "$f" ] && echo "failed: $t" || echo "failed: $t (did not run: its build failed)"
     fi
 done
+# The slowest runs (build/results/NAME.ms, by run_test.sh; builds not included).
+slow=$(for t in "$@"; do [ -e "build/results/$t.ms" ] && echo "$(cat "build/results/$t.ms") $t"; done | sort -rn | head -n 8)
+if [ -n "$slow" ]; then
+    echo "slowest runs:"
+    echo "$slow" | awk '{ printf "  %7.1f s  %s\n", $1 / 1000, $2 }'
+fi
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
