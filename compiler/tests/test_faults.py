@@ -314,6 +314,35 @@ class PlanForHypothesis(unittest.TestCase):
             self.assertEqual(c["retries_per_slot"], rep["bus"]["retries_per_slot"], c["name"])
             self.assertNotIn("faults", c["consumers"][0])
 
+    def test_description_states_hypothesis(self):
+        """compiler/examples/faults.toml states its hypothesis in [faults]
+        (20 %, mean burst 2, 1 - 1e-9): the report plans for exactly that, H2
+        carries its K, every consumer meets its period at the target and has
+        its delivery probabilities, and R >= K where two consumers share a slot."""
+        r, out = compile_desc("faults_example", os.path.join(COMPILER_DIR, "examples", "faults.toml"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(out, "report.json")) as f:
+            rep = json.load(f)
+        fh = rep["fault_hypothesis"]
+        self.assertEqual((fh["rate"], fh["mean_burst"], fh["probability"]), (0.2, 2.0, 0.999999999))
+        self.assertFalse(fh["independent"])
+        a, b = chain(0.2, 2.0)
+        self.assertAlmostEqual(fh["p_fail_after_good"], a, places=12)
+        self.assertAlmostEqual(fh["p_fail_after_fail"], b, places=12)
+        self.assertEqual(rom_drop_run(out), fh["drop_run"])
+        self.assertEqual(rep["drop_run"], fh["drop_run"])
+        for c in rep["channels"]:
+            if len(c["consumers"]) >= 2:
+                self.assertGreaterEqual(c["retries_per_slot"], fh["drop_run"], c["name"])
+            for cons in c["consumers"]:
+                x = cons["faults"]
+                with self.subTest(channel=c["name"], consumer=cons["board"]):
+                    self.assertLessEqual(x["period_at_target"]["clocks"], c["max_period"]["clocks"])
+                    self.assertGreaterEqual(x["cycle_delivery_probability"], x["slot_delivery_probability"])
+                    self.assertGreater(x["slot_delivery_probability"], 0.99)
+                    self.assertGreaterEqual(x["age_bound"]["at_target"]["clocks"],
+                                            x["age_bound"]["with_retries"]["clocks"])
+
     def test_robot_at_rates(self):
         """The robot planned for independent faults at 5, 20, 30 % (probability
         1 - 1e-9) and 50 % (0.99, the first target it plans for): every
