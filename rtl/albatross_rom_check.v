@@ -83,13 +83,13 @@ module albatross_rom_check #(
     reg                clash_q;       // the fetch read met a write of its part ...
     reg                clash_bad_q;   // ... whose old mark this is
 
-    function [31:0] crc_step;            // (c * x^32 + w) mod P
-        input [31:0] c;
+    function [31:0] crc_step;            // (crc * x^32 + w) mod P
+        input [31:0] crc;
         input [31:0] w;
         integer i;
         reg [31:0] x;
         begin
-            x = c;
+            x = crc;
             for (i = 0; i < 32; i = i + 1) x = {x[30:0], 1'b0} ^ (x[31] ? CRC_POLY : 32'd0);
             crc_step = x ^ w;
         end
