@@ -386,19 +386,21 @@ COLOURS = {"RadarMap": "#1f77b4", "Status": "#9467bd", "Position": "#2ca02c", "M
 
 
 def svg(data, path):
-    W, H, L, R, T, B, GAP = 900, 300, 70, 170, 40, 40, 60
+    W, H, L, R, T, B, GAP = 900, 300, 70, 170, 56, 40, 76
     pw = W - L - R
-    panels = [("delivery per cycle, worst consumer (log scale of 1 - p)", "miss"),
-              ("worst age (us)", "age")]
+    panels = [("delivery per cycle, worst consumer (log scale of 1 - p; a run with no miss at the top)", "miss"),
+              ("worst age (us); dashed: the age bound at the plan's target, which a fraction 1 - target "
+               "of the ages may exceed", "age")]
     clk_us = 1e6 / 50e6
     pts = [p for p in data["points"] if p["independent"] and p.get("planned")]
     bpts = [p for p in data["points"] if not p["independent"] and p.get("planned")]
     total_h = T + 2 * H + GAP + B + 30
     o = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" font-size="11">'
          % (W, total_h), '<rect width="100%" height="100%" fill="white"/>',
-         '<text x="%d" y="18" font-size="13">Delivery and worst age against the true per-access fault rate: '
-         'measured (solid, dots) beside the compiler\'s prediction (dashed), tb_system, seed %d</text>'
-         % (L, data["seed"])]
+         '<text x="%d" y="18" font-size="13">Delivery and worst age against the true per-access fault rate:</text>'
+         % L,
+         '<text x="%d" y="34" font-size="13">measured (solid, dots) beside the compiler\'s prediction (dashed), '
+         'tb_system, seed %d</text>' % (L, data["seed"])]
     x_of = lambda r: L + pw * r / 0.5
     names = []
     for p in pts:
@@ -412,6 +414,11 @@ def svg(data, path):
         for r in (0, 0.1, 0.2, 0.3, 0.4, 0.5):
             o.append('<line x1="%.1f" y1="%d" x2="%.1f" y2="%d" stroke="#eee"/>' % (x_of(r), y0, x_of(r), y0 + H))
             o.append('<text x="%.1f" y="%d" text-anchor="middle">%d %%</text>' % (x_of(r), y0 + H + 14, r * 100))
+            tp = next((p["probability"] for p in pts if abs(p["rate"] - r) < 1e-9), None)
+            if tp is not None:
+                tgt = "1-1e-%d" % round(-math.log10(1 - tp)) if tp > 0.999 else "%g" % tp
+                o.append('<text x="%.1f" y="%d" text-anchor="middle" fill="#666">(%s)</text>'
+                         % (x_of(r), y0 + H + 27, tgt))
         if kind == "miss":
             # y: -log10(1 - p) from 0 (p = 0) to 10 (p = 1 - 1e-10); 1 - p below 1e-10 drawn at the top
             ymap = lambda p: y0 + H - H * min(10.0, -math.log10(max(1e-10, 1 - p))) / 10.0
@@ -454,7 +461,8 @@ def svg(data, path):
     o.append('<text x="%d" y="%d">dashed: predicted</text>' % (W - R + 10, ly + 24))
     o.append('<text x="%d" y="%d">squares: measured,</text>' % (W - R + 10, ly + 40))
     o.append('<text x="%d" y="%d">mean burst %d</text>' % (W - R + 10, ly + 54, data["burst"]))
-    o.append('<text x="%d" y="%d">true fault rate per access (independent; plan made for each rate)</text>'
+    o.append('<text x="%d" y="%d">true fault rate per access (independent; a plan made for each rate, '
+             'its target probability in brackets)</text>'
              % (L, total_h - 8))
     o.append("</svg>")
     with open(path, "w") as fh:
