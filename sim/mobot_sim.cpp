@@ -536,41 +536,10 @@ int main(int argc, char **argv)
      .str("crash_board", crash_run ? plan.board_names[o.crash_board] : "").num("crash_cycle", double(crash_cycle))
      .num("stale_events", double(stale_events)).num("first_stale_cycle", double(first_stale))
      .num("fresh_events", double(fresh_events));
-    std::string js = "[";
-    for (const Series &s : series) {
-        std::printf("  %-11s %-11s %7llu %7llu %9llu %9.0f %9llu %9llu %6.3f %11.0f\n", s.ch->name.c_str(),
-                    plan.board_names[s.board].c_str(), (unsigned long long)s.news, (unsigned long long)s.olds,
-                    (unsigned long long)s.age.min, s.age.mean(), (unsigned long long)s.age.max,
-                    (unsigned long long)s.bound, s.bound ? double(s.age.max) / double(s.bound) : 0.0,
-                    s.import_cycles.mean());
-        JsonReport e;
-        e.str("channel", s.ch->name).str("kind", s.ch->kind).str("consumer", plan.board_names[s.board])
-         .num("new", double(s.news)).num("old", double(s.olds)).num("bound", double(s.bound))
-         .num("latency_bound", double(s.ch->latency_retry)).num("period", double(s.ch->period))
-         .num("over_bound_buckets", double(s.over_bound)).num("new_after_crash", double(s.news_after_crash)).raw("age", s.age.json())
-         .raw("import_cycles", s.import_cycles.json()).raw("termination", termination_json(s.term));
-        std::string t = e.text();
-        js += (js.size() > 1 ? ",\n  " : "\n  ") + t.substr(0, t.size() - 1);
-    }
-    r.raw("series", js + "]").num("termination_bounded_series", n_term);
+    r.raw("series", series_report(series, plan)).num("termination_bounded_series", n_term);
     if (n_term) print_termination(series, plan, o);
     else std::printf("  Import termination: no bounds (the description has no [board] timing): not checked\n");
-    js = "[";
-    std::printf("  %-11s %-11s %7s %9s %9s %13s\n", "channel", "producer", "Exports", "cyc mean", "cyc max",
-                "max gap (clk)");
-    for (auto &pp : producers) {
-        const Producer &p = pp.second;
-        std::printf("  %-11s %-11s %7llu %9.0f %9llu %13llu\n", p.ch->name.c_str(),
-                    plan.board_names[p.ch->src_board].c_str(), (unsigned long long)p.exports, p.export_cycles.mean(),
-                    (unsigned long long)p.export_cycles.max, (unsigned long long)p.max_gap);
-        JsonReport e;
-        e.str("channel", p.ch->name).str("producer", plan.board_names[p.ch->src_board])
-         .num("exports", double(p.exports)).num("actual_stores", double(p.stores)).num("max_gap", double(p.max_gap))
-         .raw("export_cycles", p.export_cycles.json());
-        std::string t = e.text();
-        js += (js.size() > 1 ? ",\n  " : "\n  ") + t.substr(0, t.size() - 1);
-    }
-    r.raw("producers", js + "]");
+    r.raw("producers", producers_report(producers, plan));
     for (int c = 0; c < NB; ++c) {
         std::printf("  board %d %-10s %s%s, exit code 0x%x (%s), %llu events\n", c, plan.board_names[c].c_str(),
                     (done >> c & 1u) ? "done at cycle " : "not done", (done >> c & 1u) ? std::to_string(done_at[c]).c_str() : "",
@@ -593,24 +562,9 @@ int main(int argc, char **argv)
         !write_ages(o.ages, series, plan, n_buckets, bucket_len, cycle, crash_cycle, first_stale))
         return 1;
 
-    std::string verdict = "pass", last;
+    std::string last;
     std::vector<std::string> lines;
-    if (o.expect.empty()) {
-        for (auto &f : failed) lines.push_back(f.first + ": " + f.second);
-        if (!failed.empty()) verdict = "fail";
-        last = lines.empty() ? "pass" : "FAIL: " + lines.front();
-    } else {
-        std::string caught_by;
-        for (const std::string &e : expect) {
-            if (failed.count(e)) caught_by += (caught_by.empty() ? "" : "; ") + e + ": " + failed[e];
-            else lines.push_back("negative test: expected the fault to be caught by " + e + ", it was not");
-        }
-        for (auto &f : failed)
-            if (std::find(expect.begin(), expect.end(), f.first) == expect.end())
-                lines.push_back("also failed, unexpectedly: " + f.first + ": " + f.second);
-        verdict = lines.empty() ? "pass" : "fail";
-        last = verdict == "pass" ? "pass: negative test: caught as expected by " + caught_by : "FAIL: " + lines.back();
-    }
+    const std::string verdict = judge(failed, expect, o.expect.empty(), last, lines);
     std::string checks = "{";
     for (const char *c : kChecks)
         checks += std::string(checks.size() > 1 ? ", " : "") + "\"" + c + "\": \"" + (failed.count(c) ? "fail" : "pass") + "\"";

@@ -5,6 +5,7 @@
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 #include "plan.h"
@@ -114,6 +115,15 @@ std::string clock_report(const LocalClock clocks[NB], const Options &o, const Pl
 int load_termination(const std::string &plan_path, std::vector<Series> &series, const Plan &plan);
 void print_termination(const std::vector<Series> &series, const Plan &plan, const Options &o);
 std::string termination_json(const Termination &t);
+// The end of a run (sim/mobot_sim_report.cpp): the series' and the producers'
+// console tables, each returning its JSON array, and the verdict ("pass" or
+// "fail") from the failed checks (check -> first failure) and, for a negative
+// test (positive false), the checks that must fail; last is the closing line,
+// lines the failures to print.
+std::string series_report(const std::vector<Series> &series, const Plan &plan);
+std::string producers_report(const std::map<int, Producer> &producers, const Plan &plan);
+std::string judge(const std::map<std::string, std::string> &failed, const std::vector<std::string> &expect,
+                  bool positive, std::string &last, std::vector<std::string> &lines);
 // The --ages CSV (sim/mobot_sim_ages.cpp); false if it cannot be written.
 bool write_ages(const std::string &path, const std::vector<Series> &series, const Plan &plan, uint64_t n_buckets,
                 uint64_t bucket_len, uint64_t cycle, uint64_t crash_cycle, uint64_t first_stale);

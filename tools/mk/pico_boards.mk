@@ -3,7 +3,8 @@
 # with its own albatross_dpram, joined by albatross_bus and
 # albatross_controller behind a bus fault injector (sim/pico_boards.v: the
 # shared soc/albatross_system.v, the injector and the images' plusargs);
-# harness sim/mobot_sim.cpp with sim/mobot_sim_options.cpp, sim/mobot_sim_ages.cpp, sim/mobot_sim_clock.cpp
+# harness sim/mobot_sim.cpp with sim/mobot_sim_options.cpp, sim/mobot_sim_ages.cpp, sim/mobot_sim_clock.cpp,
+# sim/mobot_sim_report.cpp
 # and sim/mobot_sim.h (make sim runs the same model, tools/mk/sim.mk).
 # Each board's firmware is sim/firmware/mobot_<board>.c linked with the
 # compiler-generated <board>.c and the real driver; the DPRAMs start from the
@@ -29,7 +30,8 @@ PB_RTL      := sim/pico_boards.v soc/albatross_system.v soc/board_core.v soc/pic
                tb/common/bus_fault_injector.v soc/pico_wb_adapter.v rtl/albatross_dpram.v rtl/albatross_dpram_core.v rtl/albatross_wb_cdc.v \
                rtl/albatross_bus.v $(CTRL_RTL)
 PB_VFLAGS   := -Wall --timescale 1ns/1ps $(VLIB) --top-module pico_boards tb/pico/picorv32.vlt
-PB_SRC      := sim/mobot_sim.cpp sim/mobot_sim_options.cpp sim/mobot_sim_ages.cpp sim/mobot_sim_clock.cpp tb/common/plan.cpp
+PB_SRC      := sim/mobot_sim.cpp sim/mobot_sim_options.cpp sim/mobot_sim_ages.cpp sim/mobot_sim_clock.cpp \
+               sim/mobot_sim_report.cpp tb/common/plan.cpp
 PB_HDR      := sim/mobot_sim.h tb/common/fault_model.h tb/common/report.h tb/common/plan.h tb/common/albatross_contract.h
 
 # $(1) = board: sim/firmware/mobot_<board>.c + the generated <board>.c of the
