@@ -1,0 +1,307 @@
+"""figures_integration.py -- the figure tables of faults, channel kinds, cores
+and hosts (tools/figures.py): the compiler's fault plan, the fault rates
+measured against it, the SymbiYosys proofs, the kinds' cost, VexRiscv's cost
+and tests, the make sim excerpt, the driver on host threads.  SECTIONS maps
+each block name to the function that makes its table."""
+from figures_common import Absent, load, missing, table, n
+
+
+SECTIONS = {}
+
+
+def fault_plan():
+    """The compiler's predictions for the robot at several fault rates (make bench-fault-plan)."""
+    rep = load("fault_plan.json")
+    if not rep:
+        missing("fault_plan.json", "make bench-fault-plan")
+    runs = [r for r in rep["runs"] if r.get("independent")]
+    head = ["channel -> consumer"] + [f"{100 * r['rate']:g} %" for r in runs]
+    keys = []
+    for r in runs:
+        for c in r.get("channels", []):
+            if (c["channel"], c["consumer"]) not in keys:
+                keys.append((c["channel"], c["consumer"]))
+    rows = [["target probability"] + [f"1 - {1 - r['probability']:.0e}" if r["probability"] > 0.995 else
+                                      f"{r['probability']:g}" for r in runs]]
+    for ch, co in keys:
+        row = [f"{ch} -> {co}"]
+        for r in runs:
+            c = next((c for c in r.get("channels", []) if (c["channel"], c["consumer"]) == (ch, co)), None)
+            if c is None:
+                row.append("rejected")
+                continue
+            miss = c["slot_miss_probability"]
+            q = "1" if miss < 1e-14 else f"1 - {miss:.1e}"   # below 1e-14: rounding of the sum
+            row.append(f"x{c['slots']}, R {c['retries_per_slot']}, q {q}: "
+                       f"{c['age_bound']['fault_free']['us']:.2f} / {c['age_bound']['at_target']['us']:.2f}")
+        rows.append(row)
+    rows.append(["drop run K"] + [str(r.get("drop_run", "-")) for r in runs])
+    bursty = [r for r in rep["runs"] if not r.get("independent")]
+    note = "; ".join(f"mean burst {r['mean_burst']:g}, {100 * r['rate']:g} %: "
+                     + (f"planned, K = {r['drop_run']}" if r["planned"] else "rejected") for r in bursty)
+    return table(head, rows) + (f"\n\nAt 1 - 1e-9 with bursts: {note}." if bursty else "")
+
+
+SECTIONS["fault-plan"] = fault_plan
+
+
+def _miss(p):
+    """A delivery probability as 1 - miss (or 1)."""
+    return "1" if 1 - p < 5e-10 else f"1 - {1 - p:.1e}"
+
+
+def fault_rates():
+    """Per channel, delivery per cycle and worst age against the true fault rate,
+    measured beside the compiler's prediction (make bench-fault-rates)."""
+    rep = load("fault_rates.json")
+    if not rep:
+        missing("fault_rates.json", "make bench-fault-rates")
+    pts = [p for p in rep["points"] if p.get("planned")]
+    head = ["true rate", "plan for", "channel (size)", "delivery/cycle predicted", "measured",
+            "worst age us measured", "bound at target us", "checks"]
+    rows = []
+    for p in pts:
+        rate = f"{100 * p['rate']:g} %" + (f", burst {p['mean_burst']:g}" if not p["independent"] else "")
+        target = f"1 - {1 - p['probability']:.0e}" if p["probability"] > 0.995 else f"{p['probability']:g}"
+        ok = ("tb_system " + ("pass" if p["tb_system_passed"] else "FAIL") + ", ages " +
+              ("pass" if not p["check_failures"] else "FAIL"))
+        for c in p["channels"]:
+            rows.append([rate, target, f"{c['channel']} ({c['size']} B)", _miss(c["predicted_cycle_delivery"]),
+                         _miss(c["measured_cycle_delivery"]), f"{c['worst_age'] / 50:.1f}",
+                         f"{c['age_bound_at_target'] / 50:.1f}", ok])
+            rate = target = ok = ""
+    rejected = [p for p in rep["points"] if not p.get("planned")]
+    note = "; ".join(f"{100 * p['rate']:g} %" + (f" burst {p['mean_burst']:g}" if p["mean_burst"] else "")
+                     for p in rejected)
+    return table(head, rows) + (f"\n\nNot planned at any target: {note}." if rejected else "")
+
+
+def fault_rates_50():
+    """Per channel and consumer at 50 % true faults: predicted and measured
+    delivery per cycle, tb_system and the robot (make bench-fault-rates)."""
+    rep = load("fault_rates.json")
+    if not rep:
+        missing("fault_rates.json", "make bench-fault-rates")
+    sysp = next((p for p in rep["points"] if p["independent"] and p["rate"] == 0.5 and p.get("planned")), None)
+    rob = next((r for r in rep.get("robot", []) if r["rate"] == 0.5), None)
+    if sysp is None:
+        raise Absent()
+    head = ["channel (size) -> consumer", "slot q predicted", "slot measured tb_system (missed/slots)",
+            "delivery/cycle predicted", "measured tb_system", "measured robot", "worst age us tb_system / robot",
+            "bound at target us"]
+    rows = []
+    for c in sysp["consumers"]:
+        r = next((x for x in (rob or {}).get("consumers", []) if (x["channel"], x["board"]) == (c["channel"], c["board"])), None)
+        rows.append([f"{c['channel']} ({c['size']} B) -> {c['board']}", f"{c['predicted_slot_delivery']:.4f}",
+                     f"{c['measured_slot_delivery']:.4f} ({c['slots_missed']}/{c['slot_trials']})"
+                     if "measured_slot_delivery" in c else "-",
+                     f"{c['predicted_cycle_delivery']:.4f}", f"{c.get('measured_cycle_delivery', 0):.4f}",
+                     f"{r.get('measured_cycle_delivery', 0):.4f}" if r else "-",
+                     f"{c.get('worst_age', 0) / 50:.1f} / " + (f"{r.get('worst_age', 0) / 50:.1f}" if r else "-"),
+                     f"{c['age_bound_at_target'] / 50:.1f}"])
+    return table(head, rows) + (f"\n\nPlanned for {sysp['probability']:g} (K = {sysp['drop_run']}); "
+                                f"tb_system {sysp['cycles_measured']} cycles measured, measured fault rate "
+                                f"{sysp['fault_rate_measured']:.4f}; the robot's copy channels' ages include "
+                                f"their producer's gaps.")
+
+
+SECTIONS["fault-rates"] = fault_rates
+SECTIONS["fault-rates-50"] = fault_rates_50
+
+
+def formal_sby():
+    rep = load("formal_sby.json")
+    if not rep:
+        missing("formal_sby.json", "make formal")
+    rows = []
+    for c in rep.get("checks", []):
+        if c["expect"] == "pass":
+            what = {"prove": "proof", "cover": "covers (non-vacuity)"}.get(c["mode"], c["mode"])
+            result = c["result"] if c["ok"] else f"**{c['result']}**"
+        else:
+            what = "broken variant, must fail on " + " or ".join(f"`{e}`" for e in c["expect"].split("|"))
+            hit = [f["property"] for f in c.get("failed", [])
+                   if any(f["property"].endswith(e) for e in c["expect"].split("|"))]
+            result = (f"caught by `{hit[0].split('.', 1)[-1]}` (step {[f['step'] for f in c['failed'] if f['property'] == hit[0]][0]})"
+                      if c["ok"] and hit else "**not caught**")
+        depth = c["depth"] if c["depth"] is not None else "unbounded (PDR)"
+        rows.append([c["check"], f"`{c['engine']}`", c["mode"], what, depth, result, f"{c['seconds']:.1f}"])
+    return table(["check", "engine", "mode", "what", "depth (steps)", "result", "seconds"], rows)
+
+
+SECTIONS["formal-sby"] = formal_sby
+
+
+def kinds_cost():
+    """Cycles per call of both channel kinds on PicoRV32 and SERV (make bench-kinds),
+    and the RAM of one channel instance per kind."""
+    runs = [("PicoRV32", "three-buffer", "bench_pico.json"), ("PicoRV32", "four-slot", "bench_pico_four_slot.json"),
+            ("SERV", "three-buffer", "bench_serv.json"), ("SERV", "four-slot", "bench_serv_four_slot.json")]
+    reps = {f: load(f) for _, _, f in runs}
+    ram = load("channel_ram.json")
+    absent = [f for f, r in reps.items() if not r] + ([] if ram else ["channel_ram.json"])
+    if absent:
+        missing(absent[0], "make bench-kinds")
+    rams = {e["bytes"]: e for e in ram["sizes"]}
+    rows = []
+    for cpu, kind, f in runs:
+        for e in reps[f]["sizes"]:
+            rb = rams.get(e["bytes"])
+            key = "four_slot" if kind == "four-slot" else "three_buffer"
+            rows.append([cpu, kind, e["bytes"], f"{e['export']['mean']:.0f}", f"{e['import_new']['mean']:.0f}",
+                         f"{e['import_old']['mean']:.0f}", rb[key] if rb else "-"])
+    return table(["CPU", "kind", "payload bytes", "Export", "Import, New", "Import, Old",
+                  "RAM bytes per channel instance"], rows)
+
+
+SECTIONS["kinds-cost"] = kinds_cost
+
+
+def vex_cost():
+    """Cycles per call on VexRiscv (data cache, DPRAM window uncached) next to PicoRV32,
+    the same bench.c and driver, rv32i -Os (make bench-vex)."""
+    p, v = load("bench_pico.json"), load("bench_vex.json")
+    if not p or not v:
+        missing("bench_vex.json" if p else "bench_pico.json", "make bench-vex")
+    rows = []
+    for ep, ev in zip(p["sizes"], v["sizes"]):
+        row = [ep["bytes"]]
+        for k in ("export", "import_new", "import_old", "copy_to_dpram", "copy_from_dpram"):
+            a, b = ep[k]["mean"], ev[k]["mean"]
+            row.append(f"{a:.0f} / {b:.0f} ({a / b:.1f}x)")
+        rows.append(row)
+    return table(["payload bytes", "Export", "Import, New", "Import, Old", "plain copy to DPRAM",
+                  "plain copy from DPRAM"], rows) + (
+        "\n\nEach cell: PicoRV32 / VexRiscv cycles per call (mean of "
+        f"{v['calls_per_figure']} calls, the counter pair subtracted), and how many times fewer VexRiscv needs.")
+
+
+SECTIONS["vex-cost"] = vex_cost
+
+
+def vex_tests():
+    """The VexRiscv pair tests and their negatives (make test-vex-*); "-": not a figure of that run
+    (the robot runs have their own checks, docs/robot.md)."""
+    runs = [("vex_pair.json", "PicoRV32 producer, VexRiscv consumer, window uncached"),
+            ("vex_pair_producer.json", "VexRiscv producer, PicoRV32 consumer, window uncached"),
+            ("vex_pair_cached_negative.json", "negative: VexRiscv producer, window cached"),
+            ("vex_pair_cached_consumer_negative.json", "negative: VexRiscv consumer, channel cached"),
+            ("vex_boards.json", "the robot's motor board on VexRiscv"),
+            ("vex_boards_alias_negative.json", "negative: cached alias on the normal (robot) board")]
+    rows = []
+    for f, what in runs:
+        r = load(f)
+        if not r:
+            continue
+        vl = r.get("violations", {})
+        if not isinstance(vl, dict):   # the robot's report: its own checks, not the pair checker's
+            vl = {}
+
+        def g(d, k):
+            return n(d[k]) if k in d else "-"
+        rows.append([f"`{r['label']}`", what, r["verdict"], g(r, "checked_exports"), g(r, "checked_imports"),
+                     g(r, "consumer_reported_imports"), g(vl, "mutual_exclusion"), g(vl, "definite_results"),
+                     g(r, "consumer_faulty_imports"), g(r, "stale_imports")])
+    if not rows:
+        missing("vex_pair.json", "make test-vex-pair")
+    return table(["test", "what", "verdict", "Exports watched", "Imports watched at the RAM",
+                  "Imports reported by the consumer", "mutual-exclusion violations", "definite-results violations",
+                  "faulty values found by the consumer", "stale Imports"], rows)
+
+
+SECTIONS["vex-tests"] = vex_tests
+
+
+def sim_excerpt():
+    """The head of `make sim`'s console report, as sim/mobot_sim.cpp prints it."""
+    r = load("sim.json")
+    if not r:
+        missing("sim.json", "make sim")
+    hz = r["clock_hz"]
+    lines = ["```",
+             f"{r['label']}: {r['cycles']} cycles ({1e3 * r['cycles'] / hz:.2f} ms at {hz / 1e6:.0f} MHz), "
+             f"controller time {r['cycles']}, bus busy {100 * r['bus_busy_fraction']:.1f} %, {r['requests']} requests, "
+             f"{r['faults_injected']} faults injected, STATUS: {r['status_retries']} retries, "
+             f"{r['status_abandoned']} abandoned"]
+    if "fault_rate_measured" in r:
+        lines.append(f"  fault rate per access: nominal {r['fault_rate']:.4f}, measured {r['fault_rate_measured']:.4f} "
+                     f"(mean burst {r['fault_mean_burst']:.3g} accesses; tolerance +-{r['fault_rate_tolerance']:.4f}, "
+                     f"6 sigma){'' if r['fault_rate_ok'] else ': OUT OF TOLERANCE'}")
+    lines += ["  %-11s %-11s %7s %7s %9s %9s %9s %9s %6s %11s" % ("channel", "consumer", "New", "Old", "age min",
+                                                             "age mean", "age max", "bound", "ratio", "cyc/Import")]
+    for s in r["series"][:4]:
+        a = s["age"]
+        lines.append("  %-11s %-11s %7d %7d %9d %9.0f %9d %9d %6.3f %11.0f" % (
+            s["channel"], s["consumer"], s["new"], s["old"], a["min"], a["mean"], a["max"], s["bound"],
+            a["max"] / s["bound"] if s["bound"] else 0.0, s["import_cycles"]["mean"]))
+    return "\n".join(lines + ["  ...", "```"])
+
+
+SECTIONS["sim-excerpt"] = sim_excerpt
+
+
+def host_threads():
+    """The real driver on two host threads (make test-host-threads and its negative;
+    make soak-host for the long run): every Import checked, with and without the fence."""
+    r = load("host_threads.json")
+    if not r or "checked" not in r:
+        missing("host_threads.json", "make test-host-threads")
+    rows = []
+    for sec, port in (("checked", "mmio (`lock or` fence)"), ("no_fence", "fence does nothing")):
+        for x in r.get(sec, {}).get("runs", []):
+            first = x.get("first_violation_at", 0)
+            rows.append([port, x["kind"], x["payload_words"], n(x["imports"]), n(x["new"]), n(x["old"]),
+                         n(x["overtaken"]), x["torn"], x["back_in_time"], x["stale"], x["wrong_new"],
+                         x["wrong_old"], n(first) if first else "-"])
+    return (f"Machine: {r['machine']['cpu']}, {r['machine']['cores']} cores. "
+            f"{n(r['checked']['imports_total'])} Imports checked with the fence.\n\n"
+            + table(["port", "kind", "words", "Imports", "New", "Old", "overtaken", "torn", "back in time",
+                     "stale", "wrong New", "wrong Old", "first violation at Import"], rows))
+
+
+SECTIONS["host-threads"] = host_threads
+
+
+def host_threads_sites():
+    """Each fence site of albatross.c dropped alone (make test-host-threads-sites)."""
+    r = load("host_threads.json")
+    if not r or "sites" not in r:
+        missing("host_threads.json", "make test-host-threads-sites")
+    rows = []
+    for s in r["sites"]["sites"]:
+        x = s.get("run")
+        rows.append([s["line"], f"`{s['function']}`", s["comment"] or "-", s["order"],
+                     s["kind"] if x else "-", n(x["imports"]) if x else "-",
+                     f"{x['violations']} ({x['torn']} torn, {x['wrong_old']} wrong Old, "
+                     f"{x['back_in_time'] + x['stale'] + x['wrong_new']} other)" if x else "-",
+                     s["verdict"]])
+    return table(["line", "function", "the fence orders", "order", "run on", "Imports",
+                  "violations", "without this fence alone"], rows)
+
+
+SECTIONS["host-threads-sites"] = host_threads_sites
+
+
+def host_threads_reliability():
+    """How reliably the fence-less builds fail within their budget (make soak-host)."""
+    r = load("host_threads.json")
+    if not r or "reliability" not in r:
+        missing("host_threads.json", "make soak-host")
+    rows = []
+    for v in r["reliability"]["variants"]:
+        f = sorted(x for x in v["first_violation_at"] if x)
+        vi = sorted(v["violations"])
+        rows.append([v["variant"], v["kind"], f"{v['failed']} of {v['runs']}", n(v["budget_imports"]),
+                     f"{n(f[0])} / {n(f[len(f) // 2])} / {n(f[-1])}" if f else "-",
+                     f"{vi[0]} / {vi[len(vi) // 2]} / {vi[-1]}"])
+    rel = r["reliability"]
+    over = (f" and until the producer overtook {n(rel['min_overtaken'])} of them (up to 40 s)"
+            if rel.get("min_overtaken") else "")
+    return (f"Payload {rel['words']} words. A run's budget is the Imports in the table{over}; "
+            f"it stops at {rel['stop_after']} violations.\n\n"
+            + table(["fence left out", "kind", "runs failed", "budget (Imports)",
+                     "first violation at Import (min / median / max)", "violations per run (min / median / max)"],
+                    rows))
+
+
+SECTIONS["host-threads-reliability"] = host_threads_reliability
