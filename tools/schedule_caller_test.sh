@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# make -C <checkout> schedule SCHEDULE_DESC=<relative path>, run from another
+# directory, as a user with a description of their own runs it:
+#   1. plant.toml in the caller's directory compiles, and the printed report is
+#      plant's (the report's first line names it);
+#   2. with plant.toml gone, the same command fails and names the path it looked
+#      for, although build/schedule/plant/ still holds the previous output;
+#   3. make ... build/schedule/plant/rom.hex then fails too (no rule treats the
+#      missing description as an intermediate file it may skip);
+#   4. a path that exists only inside the checkout (sim/mobot3.toml) is not
+#      found from the caller's directory.
+set -uo pipefail
+repo=$(cd "$(dirname "$0")/.." && pwd)
+work="$repo/build/schedule-caller"
+rm -rf "$work" "$repo/build/schedule/plant"
+mkdir -p "$work"
+cp "$repo/compiler/examples/four_slot.toml" "$work/plant.toml"
+# A fresh top-level make, as from a shell: not the test runner's caller directory.
+mk() { (cd "$work" && env -u ALB_CALLER_DIR PWD="$work" make --no-print-directory -C "$repo" "$@" 2>&1); }
+fail() { echo "schedule-caller-dir: $*"; exit 1; }
+
+out=$(mk schedule SCHEDULE_DESC=plant.toml); rc=$?
+[ $rc = 0 ] || fail "1: expected make schedule SCHEDULE_DESC=plant.toml (in $work) to pass, it exited $rc: $out"
+grep -q "^ALBATROSS schedule of .* (plant.toml)" <<<"$out" || fail "1: expected the report of plant.toml, got: $(head -3 <<<"$out")"
+grep -q "^Import termination per consumer" <<<"$out" || fail "1: expected the termination section in the printed report"
+[ -f "$repo/build/schedule/plant/rom.hex" ] || fail "1: expected build/schedule/plant/rom.hex"
+echo "schedule-caller-dir: 1. plant.toml from $work compiled, its report printed"
+
+rm "$work/plant.toml"
+out=$(mk schedule SCHEDULE_DESC=plant.toml); rc=$?
+[ $rc != 0 ] || fail "2: expected make schedule to fail without plant.toml, it passed and printed: $(head -3 <<<"$out")"
+grep -q "no description $work/plant.toml" <<<"$out" || fail "2: expected the message to name $work/plant.toml, got: $out"
+grep -q "^ALBATROSS schedule" <<<"$out" && fail "2: a report was printed although the description is missing"
+echo "schedule-caller-dir: 2. missing plant.toml: exit $rc, '$out'"
+
+out=$(mk build/schedule/plant/rom.hex SCHEDULE_DESC=plant.toml); rc=$?
+[ $rc != 0 ] || fail "3: expected make build/schedule/plant/rom.hex to fail without plant.toml, it passed: $out"
+grep -q "$work/plant.toml" <<<"$out" || fail "3: expected the message to name $work/plant.toml, got: $out"
+echo "schedule-caller-dir: 3. the old rom.hex is not taken as current: '$out'"
+
+out=$(mk schedule SCHEDULE_DESC=sim/mobot3.toml); rc=$?
+[ $rc != 0 ] || fail "4: expected sim/mobot3.toml not to be found from $work, make passed"
+grep -q "no description $work/sim/mobot3.toml" <<<"$out" || fail "4: expected the message to name $work/sim/mobot3.toml, got: $out"
+echo "schedule-caller-dir: 4. a checkout-relative path is not looked up in the checkout: '$out'"
+rm -rf "$work" "$repo/build/schedule/plant"
+echo "schedule-caller-dir: pass"
