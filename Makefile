@@ -16,6 +16,11 @@ PYTHON        := $(VENV)/bin/python
 ifeq ($(filter $(VENV)/bin,$(subst :, ,$(PATH))),)
 export PATH   := $(VENV)/bin:$(PATH)
 endif
+ifeq ($(wildcard $(PYTHON)),)
+ifneq ($(filter-out deps deps-venv help clean distclean,$(MAKECMDGOALS)),)
+$(warning $(PYTHON) is missing: run make deps (or make deps-venv for the Python part) first)
+endif
+endif
 SUDO          := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # Debian packages and PyPI packages that `make deps` installs.
