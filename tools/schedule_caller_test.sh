@@ -8,15 +8,16 @@
 #   3. make ... build/schedule/plant/rom.hex then fails too (no rule treats the
 #      missing description as an intermediate file it may skip);
 #   4. a path that exists only inside the checkout (sim/mobot3.toml) is not
-#      found from the caller's directory.
+#      found from the caller's directory;
+#   5. a sub-make of the checkout's recipes sees the caller's absolute path.
 set -uo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 work="$repo/build/schedule-caller"
 rm -rf "$work" "$repo/build/schedule/plant"
 mkdir -p "$work"
 cp "$repo/compiler/examples/four_slot.toml" "$work/plant.toml"
-# A fresh top-level make, as from a shell: not the test runner's caller directory.
-mk() { (cd "$work" && env -u ALB_CALLER_DIR PWD="$work" make --no-print-directory -C "$repo" "$@" 2>&1); }
+# make as from a shell in $work (bash sets PWD there).
+mk() { (cd "$work" && make --no-print-directory -C "$repo" "$@" 2>&1); }
 fail() { echo "schedule-caller-dir: $*"; exit 1; }
 
 out=$(mk schedule SCHEDULE_DESC=plant.toml); rc=$?
@@ -42,5 +43,12 @@ out=$(mk schedule SCHEDULE_DESC=sim/mobot3.toml); rc=$?
 [ $rc != 0 ] || fail "4: expected sim/mobot3.toml not to be found from $work, make passed"
 grep -q "no description $work/sim/mobot3.toml" <<<"$out" || fail "4: expected the message to name $work/sim/mobot3.toml, got: $out"
 echo "schedule-caller-dir: 4. a checkout-relative path is not looked up in the checkout: '$out'"
+# 5. A sub-make of the checkout's own recipes gets the caller's file, not the
+#    relative path looked up again from the checkout (make test runs sub-makes).
+cp "$repo/compiler/examples/four_slot.toml" "$work/plant.toml"
+out=$(mk schedule-probe SCHEDULE_DESC=plant.toml); rc=$?
+[ $rc = 0 ] && grep -q "probe: SCHEDULE_DESC=$work/plant.toml" <<<"$out" || \
+    fail "5: expected a sub-make to see SCHEDULE_DESC=$work/plant.toml, got (exit $rc): $out"
+echo "schedule-caller-dir: 5. a sub-make sees $work/plant.toml"
 rm -rf "$work" "$repo/build/schedule/plant"
 echo "schedule-caller-dir: pass"

@@ -9,15 +9,14 @@
 
 # A description named on the command line (SCHEDULE_DESC=, SIM_DESC=) is a file
 # of the caller: a relative path is taken from the directory make was started in
-# (the shell's PWD, also under make -C), not from the checkout.  ALB_CALLER_DIR
-# is fixed by the first make of the checkout and handed to its sub-makes
-# through the environment.
-ifeq ($(origin ALB_CALLER_DIR),undefined)
-export ALB_CALLER_DIR := $(or $(PWD),$(CURDIR))
-endif
+# (the shell's PWD, also under make -C; a recipe's shell sets it to the recipe's
+# directory), not from the checkout.  The absolute path is handed on to sub-makes
+# (MAKEOVERRIDES), so that they do not take the relative one from another place.
+ALB_CALLER_DIR := $(or $(PWD),$(CURDIR))
 caller_path    = $(abspath $(if $(filter /%,$(1)),,$(ALB_CALLER_DIR)/)$(1))
 ifneq ($(filter command line environment,$(origin SCHEDULE_DESC)),)
 override SCHEDULE_DESC := $(call caller_path,$(SCHEDULE_DESC))
+MAKEOVERRIDES  += SCHEDULE_DESC=$(SCHEDULE_DESC)
 endif
 SCHEDULE_DESC ?= sim/mobot3.toml
 # SCHEDULE runs the compiler (the console command of compiler/pyproject.toml, in
@@ -47,8 +46,19 @@ schedule: ## compile SCHEDULE_DESC (default: the MOBOT-III example) -> build/sch
 test-schedule-caller-dir:
 	@tools/run_test.sh schedule-caller-dir tools/schedule_caller_test.sh
 
+# For test 5 of schedule-caller-dir: what a sub-make sees.
+.PHONY: schedule-probe schedule-probe-leaf
+schedule-probe:
+	@$(MAKE) --no-print-directory schedule-probe-leaf
+schedule-probe-leaf:
+	@echo "probe: SCHEDULE_DESC=$(SCHEDULE_DESC)"
+
+# The example descriptions have the pattern rules below; any other gets its own.
+example_desc   = $(filter $(CURDIR)/sim/$(notdir $(1)) $(CURDIR)/compiler/examples/$(notdir $(1)),$(abspath $(1)))
+ifeq ($(call example_desc,$(SCHEDULE_DESC)),)
 $(SCHEDULE_DIR)/rom.hex: $(SCHEDULE_DESC) $(SCHEDULE_SRC)
 	$(SCHEDULE) $(SCHEDULE_DESC) -o $(@D)
+endif
 
 # Any example description: the robot's (sim/) or the compiler's own (compiler/examples/).
 $(BUILD)/schedule/%/rom.hex: sim/%.toml $(SCHEDULE_SRC)
