@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # make -C <checkout> schedule SCHEDULE_DESC=<relative path>, run from another
 # directory, as a user with a description of their own runs it:
-#   1. plant.toml in the caller's directory compiles, and the printed report is
-#      plant's (the report's first line names it);
+#   1. plant.toml (a copy of compiler/examples/faults.toml) in the caller's
+#      directory compiles, and the printed report is plant's (its first line
+#      names it), with the termination and fault sections, probabilities as 1 - miss;
 #   2. with plant.toml gone, the same command fails and names the path it looked
 #      for, although build/schedule/plant/ still holds the previous output;
 #   3. make ... build/schedule/plant/rom.hex then fails too (no rule treats the
@@ -15,7 +16,7 @@ repo=$(cd "$(dirname "$0")/.." && pwd)
 work="$repo/build/schedule-caller"
 rm -rf "$work" "$repo/build/schedule/plant"
 mkdir -p "$work"
-cp "$repo/compiler/examples/four_slot.toml" "$work/plant.toml"
+cp "$repo/compiler/examples/faults.toml" "$work/plant.toml"
 # make as from a shell in $work (bash sets PWD there).
 mk() { (cd "$work" && make --no-print-directory -C "$repo" "$@" 2>&1); }
 fail() { echo "schedule-caller-dir: $*"; exit 1; }
@@ -24,6 +25,9 @@ out=$(mk schedule SCHEDULE_DESC=plant.toml); rc=$?
 [ $rc = 0 ] || fail "1: expected make schedule SCHEDULE_DESC=plant.toml (in $work) to pass, it exited $rc: $out"
 grep -q "^ALBATROSS schedule of .* (plant.toml)" <<<"$out" || fail "1: expected the report of plant.toml, got: $(head -3 <<<"$out")"
 grep -q "^Import termination per consumer" <<<"$out" || fail "1: expected the termination section in the printed report"
+grep -q "^Fault hypothesis: .*target probability 1 - 1.0e-09" <<<"$out" || fail "1: expected the fault section in the printed report"
+grep -Eq "q 1 - [0-9.]+e-[0-9]+, cycle 1 - [0-9.]+e-[0-9]+" <<<"$out" || fail "1: expected delivery probabilities as 1 - miss"
+grep -Eq "(q|cycle) (0\.9|1\.0)" <<<"$out" && fail "1: a delivery probability is printed as a decimal that reads as certainty"
 [ -f "$repo/build/schedule/plant/rom.hex" ] || fail "1: expected build/schedule/plant/rom.hex"
 echo "schedule-caller-dir: 1. plant.toml from $work compiled, its report printed"
 
