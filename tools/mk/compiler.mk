@@ -66,7 +66,9 @@ $(BUILD)/schedule/%/rom.hex: sim/%.toml $(SCHEDULE_SRC)
 $(BUILD)/schedule/%/rom.hex: compiler/examples/%.toml $(SCHEDULE_SRC)
 	$(SCHEDULE) $< -o $(@D)
 # Compiled schedules are kept when make reaches them only through another
-# file (tb_plan.txt): named here, so that no other file is treated so.
+# file (tb_plan.txt).  Named by this pattern: a bare .SECONDARY: would cover every
+# file, and make would then take a missing description for a deleted
+# intermediate file and print an old report as if it were current.
 .PRECIOUS: $(BUILD)/schedule/%/rom.hex
 
 # The compiler's predictions for the robot under several fault hypotheses
