@@ -53,8 +53,10 @@ schedule-probe:
 schedule-probe-leaf:
 	@echo "probe: SCHEDULE_DESC=$(SCHEDULE_DESC)"
 
-# The example descriptions have the pattern rules below; any other gets its own.
-example_desc   = $(filter $(CURDIR)/sim/$(notdir $(1)) $(CURDIR)/compiler/examples/$(notdir $(1)),$(abspath $(1)))
+# The example descriptions have the pattern rules below, the FPGA demo's its
+# own rule (tools/mk/fpga.mk); any other description gets this one.
+example_desc   = $(filter $(CURDIR)/sim/$(notdir $(1)) $(CURDIR)/compiler/examples/$(notdir $(1)) \
+                          $(CURDIR)/fpga/$(notdir $(1)),$(abspath $(1)))
 ifeq ($(call example_desc,$(SCHEDULE_DESC)),)
 $(SCHEDULE_DIR)/rom.hex: $(SCHEDULE_DESC) $(SCHEDULE_SRC)
 	$(SCHEDULE) $(SCHEDULE_DESC) -o $(@D)
