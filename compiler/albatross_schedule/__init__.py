@@ -1,6 +1,6 @@
 """albatross_schedule -- the ALBATROSS schedule compiler (seed 3.3, 4.a, 4.d).
 
-    PYTHONPATH=compiler python3 -m albatross_schedule DESCRIPTION.toml --out DIR
+    albatross-schedule DESCRIPTION.toml -o DIR     (pip install ./compiler; make deps)
 
 reads a human-written system description and builds the pre-calculated
 cyclic plan that albatross_controller executes: the worst case is the normal
@@ -85,7 +85,7 @@ Modules (standard library only):
   termination  board Import timing, D, the Import bounds, spacing the slots
   rom          the schedule ROM: encoder, hex image, verify_rom
   contract     the contract (ROM format, channel layout) from rtl/albatross_contract.toml
-  contract_gen the files generated from it (python3 -m albatross_schedule.contract_gen)
+  contract_gen the files generated from it (python -m albatross_schedule.contract_gen)
   cgen         generated C: board headers, set-up sources, RAM images
   report       report.json and report.txt
   picture      timeline.svg

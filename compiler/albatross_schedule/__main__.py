@@ -1,4 +1,4 @@
-"""python3 -m albatross_schedule DESCRIPTION.toml --out DIR  (compiler/ on PYTHONPATH)."""
+"""python -m albatross_schedule DESCRIPTION.toml -o DIR: the same as the albatross-schedule command."""
 
 import sys
 

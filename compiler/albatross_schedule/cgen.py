@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from .contract import load as load_contract
 from .fourslot import FOUR_SLOT, initial_control_word
-from .model import Plan, System
+from .model import Plan, System, one_minus
 from .plan import channel_bounds
 from .termination import channel_termination
 from .rom import rom_hex
@@ -110,8 +110,8 @@ def render_board_header(system: System, b: int, desc_name: str, plan: Plan) -> s
                     at = x["period_at_target_clocks"] + bnd["pub_offset_clocks"]["with_retries"] - back
                     what = "LATENCY" if ch.kind == "copy" else "AGE"
                     L.append(f"#define ALB_{N}_{what}_AT_TARGET_CLOCKS  {at}u  /* under the fault hypothesis: holds "
-                             f"with probability {system.faults.probability:.12g} (slot delivery "
-                             f"{x['slot_delivery_probability']:.12g}, {len(ch.slots)} per cycle) */")
+                             f"with probability {one_minus(1.0 - system.faults.probability)} (slot delivery "
+                             f"{one_minus(x['slot_miss_probability'])}, {len(ch.slots)} per cycle) */")
             term = channel_termination(system, plan, ch)[ch.consumers.index(b)]
             if term["bounded"]:
                 L.append(f"#define ALB_{N}_IMPORT_MAX_PASSES    {term['max_passes']}u"

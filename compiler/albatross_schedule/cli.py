@@ -1,4 +1,6 @@
-"""The command line: python3 -m albatross_schedule DESCRIPTION.toml --out DIR."""
+"""The command line: albatross-schedule DESCRIPTION.toml -o DIR (the console
+command that pip install ./compiler provides; python -m albatross_schedule is
+the same)."""
 
 from __future__ import annotations
 
@@ -11,10 +13,11 @@ from .pipeline import compile_file
 
 
 def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(prog="albatross_schedule", description="ALBATROSS schedule compiler: system description (TOML) "
+    ap = argparse.ArgumentParser(prog="albatross-schedule", description="ALBATROSS schedule compiler: system description (TOML) "
                                  "-> schedule ROM, board headers, RAM images, reports.")
     ap.add_argument("description", help="system description (.toml)")
-    ap.add_argument("--out", required=True, help="output directory")
+    ap.add_argument("-o", "--out", required=True, metavar="DIR",
+                    help="output folder (created if missing; the files of a previous run in it are replaced)")
     ap.add_argument("-q", "--quiet", action="store_true", help="print nothing on success")
     ap.add_argument("--no-redundancy", action="store_true",
                     help="one slot per channel and cycle (to measure what redundancy buys)")
@@ -41,7 +44,7 @@ def main(argv=None) -> int:
     except Exception as e:  # a bug of the compiler, never a bad description
         if os.environ.get("ALB_DEBUG"):
             raise
-        print(f"internal error of the schedule compiler (albatross_schedule): {type(e).__name__}: {e} "
+        print(f"internal error of the schedule compiler (albatross-schedule): {type(e).__name__}: {e} "
               "(set ALB_DEBUG=1 for the traceback)", file=sys.stderr)
         return 3
     if not args.quiet:

@@ -4,7 +4,7 @@ loads and checks the definition; the compiler's encoder and verify_rom use
 it, and contract_gen.py generates the Verilog include, the C and C++
 headers and the markdown tables from it (see docs/contract.md):
 
-    PYTHONPATH=compiler python3 -m albatross_schedule.contract_gen [--check]
+    python -m albatross_schedule.contract_gen [--check]     (the project's venv python)
                                   [--definition FILE] [--root DIR] [FILE.md ...]
 
 ALB_CONTRACT=FILE in the environment makes the compiler read another
@@ -19,7 +19,10 @@ import tomllib
 PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(PACKAGE_DIR))
 DEFINITION = "rtl/albatross_contract.toml"            # relative to the repository
-DEFAULT_PATH = os.path.join(REPO, DEFINITION)
+# The package's albatross_contract.toml is a symbolic link to the definition in
+# the checkout (an editable install or the checkout itself resolves it there); a
+# wheel built by pip install ./compiler carries the file itself.
+DEFAULT_PATH = os.path.realpath(os.path.join(PACKAGE_DIR, "albatross_contract.toml"))
 
 
 class ContractError(Exception):

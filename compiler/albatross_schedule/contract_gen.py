@@ -3,7 +3,7 @@ the Verilog include of the controller, the C driver's layout header, the
 testbenches' C++ header, and markdown tables.  main() writes them or, with
 --check, names every one that differs from what the definition gives.
 
-    PYTHONPATH=compiler python3 -m albatross_schedule.contract_gen [--check]
+    python -m albatross_schedule.contract_gen [--check]     (the project Python, build/venv)
                                   [--definition FILE] [--root DIR] [FILE.md ...]"""
 
 from __future__ import annotations

@@ -8,11 +8,12 @@ import re
 import tomllib
 
 from .model import (BUS_DEFAULTS, BUS_MINIMUM, CHANNEL_KEYS, CTYPE_RE, DEFAULT_RAM_BYTES, HEADER_RE,
-                    IDENT_RE, MODE_RIGID, MODE_SYNC, RESERVED_FILES, SYSTEM_KEYS, Bus, Channel,
+                    IDENT_RE, MODE_RIGID, MODE_SYNC, SYSTEM_KEYS, Bus, Channel,
                     ScheduleError, System)
 from .rom import BOARD_BITS, MAX_BOARDS, MAX_CHAN_IDS, MAX_DESTS, MAX_ENTRIES, MAX_WORDS
 from .contract import load as _load_contract
 from .fourslot import FOUR_SLOT, LAYOUTS, THREE_BUFFER
+from .cnames import check_names as check_c_names
 from .faults import parse_faults
 from .termination import parse_board_timing
 
@@ -182,9 +183,6 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
                            + (f" (same file name as '{seen[b.lower()]}')" if seen[b.lower()] != b else ""))
                 board_ok = False
             seen[b.lower()] = b
-            if b.lower() in RESERVED_FILES:
-                err.system("boards", f"board name '{b}' would overwrite the driver header {b}.h")
-                board_ok = False
         boards = [b for b in boards if isinstance(b, str)]
     board_index = {b: i for i, b in enumerate(boards)}
 
@@ -464,6 +462,7 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
     if mode == MODE_SYNC and n_sync == 0:
         err.system("mode", f"{MODE_SYNC} mode needs exactly one channel with sync = true "
                    "(the position channel that starts the cycle)")
+    check_c_names(name, boards if board_ok else [], channels, err)
     err.raise_if_any()
 
     timing = parse_board_timing(data.get("board", {}), boards, clock_hz, err, _describe)

@@ -39,7 +39,7 @@ import math
 from typing import Optional
 
 from .fourslot import FOUR_SLOT
-from .model import ScheduleError
+from .model import ScheduleError, one_minus
 
 FAULT_KEYS = {"rate", "mean_burst", "probability"}
 DROP_RUN_MAX = 255           # H2[7:0]: the drop run K
@@ -271,7 +271,7 @@ def _failure_cost(bus) -> int:
 
 def _describe_h(h: Hypothesis) -> str:
     burst = "independent" if h.independent else f"mean burst {h.mean_burst:g}"
-    return f"rate {h.rate:g} per access, {burst}, probability {h.probability:.12g}"
+    return f"rate {h.rate:g} per access, {burst}, probability {one_minus(1.0 - h.probability)}"
 
 
 def evaluate(system, plan, curves) -> dict:
@@ -422,7 +422,7 @@ def plan_for_hypothesis(system, plan_fn):
                 f"{system.source}: channel '{ch.name}', consumer '{system.boards[ch.consumers[d]]}': cannot meet "
                 f"max_period_us = {ch.max_period_us} under the fault hypothesis ({_describe_h(h)}): each of its "
                 f"{len(ch.slots)} slots per cycle (retry budget {bj[ch.index]}, drop run {k}) delivers with "
-                f"probability {x['slot_delivery_probability']:.6g}, so {x['slots_needed'] or 'no number of'} slots "
+                f"probability {one_minus(x['slot_miss_probability'])}, so {x['slots_needed'] or 'no number of'} slots "
                 f"in a row are needed for the target and the period that holds with it is {got} against "
                 f"{ch.period_clocks} clocks. Lower the hypothesis, relax max_period_us, shrink the channel or "
                 "raise clock_hz")

@@ -40,8 +40,6 @@ CHANNEL_KEYS = {"name", "kind", "type", "size", "producer", "consumers",
 IDENT_RE = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
 CTYPE_RE = re.compile(r"^((struct|union|enum)\s+)?[A-Za-z_][A-Za-z0-9_]*$")
 HEADER_RE = re.compile(r'^[A-Za-z0-9_./+-]+\.h$')
-# File names a board header must not take: the driver's own headers.
-RESERVED_FILES = {"albatross", "albatross_layout", "alb_port", "alb_port_impl"}
 
 
 class ScheduleError(Exception):
@@ -56,6 +54,13 @@ class ScheduleError(Exception):
 
 def us(clocks: float, clock_hz: int) -> float:
     return clocks * 1e6 / clock_hz
+
+
+def one_minus(miss) -> str:
+    """A probability close to 1 written as 1 minus its complement, "1 - 4.0e-10",
+    so that it never reads as certainty (0.9999999996 printed to 9 places is
+    1.000000000).  miss: the probability of failure."""
+    return "1" if not miss or miss <= 0 else f"1 - {miss:.1e}"
 
 
 # ---------------------------------------------------------------------------

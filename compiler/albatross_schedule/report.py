@@ -7,7 +7,7 @@ import os
 
 from .faults import log10_or_none
 from .layout import channel_bytes
-from .model import Plan, System, us
+from .model import Plan, System, one_minus, us
 from .cgen import board_instances
 from .plan import channel_bounds, pub_offset
 from .termination import channel_termination, termination_summary
@@ -142,9 +142,6 @@ def render_report_txt(rep: dict) -> str:
     def f(x):
         return f"{x:.2f}"
 
-    def e10(lg):
-        return "0" if lg is None else f"1e{lg:.1f}"
-
     L = []
     L.append(f"ALBATROSS schedule of '{rep['system']}' ({rep['description']}), {rep['mode']}")
     L.append(f"clock {rep['clock_hz']} Hz; cycle {rep['cycle']['clocks']} clocks = {f(rep['cycle']['us'])} us "
@@ -189,9 +186,10 @@ def render_report_txt(rep: dict) -> str:
         burst = (f"independent (mean burst {fh['mean_burst']:.3g})" if fh["independent"]
                  else f"mean burst {fh['mean_burst']:g}")
         L.append(f"Fault hypothesis: rate {fh['rate']:g} per access, {burst}, target "
-                 f"probability {fh['probability']:.12g}; drop run K = {fh['drop_run']}")
-        L.append("  channel -> consumer: R retries per slot, slot delivery q, cycle delivery, age bound "
-                 "fault-free / with retries / at the target (us)")
+                 f"probability {one_minus(1.0 - fh['probability'])}; drop run K = {fh['drop_run']}")
+        L.append("  channel -> consumer: R retries per slot, slot delivery q, cycle delivery (xN slots per "
+                 "cycle), m slots needed at the target, age bound fault-free / with retries / at the target (us)")
+        L.append("  (probabilities as 1 - the probability of a miss)")
         for c in rep["channels"]:
             for d in c["consumers"]:
                 x = d.get("faults")
@@ -199,9 +197,9 @@ def render_report_txt(rep: dict) -> str:
                     continue
                 a = x["age_bound"]
                 at = "never" if a["at_target"] is None else f(a["at_target"]["us"])
-                L.append(f"  {c['name']} -> {d['board']}: R {c['retries_per_slot']}, q {x['slot_delivery_probability']:.9f}"
-                         f" (miss {e10(x['slot_miss_log10'])}), cycle {x['cycle_delivery_probability']:.12f} (x{c['redundancy']}"
-                         f", miss {e10(x['cycle_miss_log10'])}), m {x['slots_needed_at_target']}: age "
+                L.append(f"  {c['name']} -> {d['board']}: R {c['retries_per_slot']}, q {one_minus(x['slot_miss_probability'])}"
+                         f", cycle {one_minus(x['cycle_miss_probability'])} (x{c['redundancy']}"
+                         f"), m {x['slots_needed_at_target']}: age "
                          f"{f(a['fault_free']['us'])} / {f(a['with_retries']['us'])} / {at}")
         L.append("")
     L.append("RAM per board (byte offsets)")

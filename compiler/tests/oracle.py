@@ -16,17 +16,20 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 COMPILER_DIR = os.path.dirname(HERE)
 REPO = os.path.dirname(COMPILER_DIR)
-# The command line, as the build runs it: python3 -m albatross_schedule with compiler/ on the path.
-TOOL = [sys.executable, "-m", "albatross_schedule"]
-TOOL_ENV = dict(os.environ, PYTHONPATH=COMPILER_DIR)
+# The command line, as the build runs it: the albatross-schedule command that
+# make deps installs (pip install -e ./compiler) beside this Python (build/venv/bin).
+TOOL = [os.path.join(os.path.dirname(sys.executable), "albatross-schedule")]
+TOOL_ENV = dict(os.environ)
+if not os.path.exists(TOOL[0]):
+    sys.exit(f"{TOOL[0]} not found: run the tests with the project's Python (build/venv/bin/python) "
+             "after make deps, which installs the compiler there")
 EXAMPLES = os.path.join(REPO, "sim")  # the MOBOT-III robot's descriptions
 BAD = os.path.join(HERE, "bad")
 OUT = os.path.join(REPO, "build", "compiler-tests")
 CFLAGS = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"]
 CINC = ["-I" + os.path.join(REPO, "c-driver"), "-I" + os.path.join(REPO, "c-driver", "port", "mmio")]
 
-sys.path.insert(0, COMPILER_DIR)
-import albatross_schedule as S  # noqa: E402
+import albatross_schedule as S  # noqa: E402  (installed by make deps)
 
 EXAMPLE_FILES = ["mobot3.toml", "mobot3_possync.toml"]
 

@@ -21,7 +21,6 @@ import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 COMPILER_DIR = os.path.dirname(HERE)
-sys.path.insert(0, COMPILER_DIR)
 sys.path.insert(0, HERE)
 
 from albatross_schedule import contract  # noqa: E402

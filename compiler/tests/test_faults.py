@@ -385,7 +385,7 @@ class PlanForHypothesis(unittest.TestCase):
         r, out = compile_desc("mobot3_50_1e9", os.path.join(EXAMPLES, "mobot3.toml"), "0.5")
         self.assertEqual(r.returncode, 2, r.stderr)
         self.assertIn("cannot meet the channels' periods under the fault hypothesis (rate 0.5 per access, "
-                      "independent, probability 0.999999999", r.stderr)
+                      "independent, probability 1 - 1.0e-09", r.stderr)
         for name in ("Position", "MotorCmd", "GlobalTime"):
             self.assertIn(f"channel '{name}' (max_period_us = 50", r.stderr)
 

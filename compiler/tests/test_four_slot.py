@@ -21,7 +21,6 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from oracle import (  # noqa: E402
     CFLAGS, CINC, COMPILER_DIR, ControllerModel, ORACLE_FOUR_SLOT, OUT, REPO, RamImage, TOOL, TOOL_ENV,
     crc, decode, harness_source, layout_problems, pattern, plan_problems, read_hex, rom_problems)
-sys.path.insert(0, COMPILER_DIR)
 import albatross_schedule as S  # noqa: E402
 
 EXAMPLE = os.path.join(REPO, "compiler", "examples", "four_slot.toml")

@@ -25,7 +25,6 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from oracle import (  # noqa: E402
     COMPILER_DIR, ControllerModel, ORACLE_FOUR_SLOT, OUT, RamImage, TOOL, TOOL_ENV, decode, layout_problems,
     plan_problems, read_hex, rom_problems)
-sys.path.insert(0, COMPILER_DIR)
 import albatross_schedule as S  # noqa: E402
 
 DESC = """

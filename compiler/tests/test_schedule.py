@@ -11,6 +11,7 @@ boards' RAM images with a small Python model of the controller executing
 rom.hex.  Outputs go to build/compiler-tests/ only.
 """
 
+import glob
 import json
 import os
 import re
@@ -24,7 +25,6 @@ from oracle import (  # noqa: E402  (the oracles, the controller model, the path
     BAD, CFLAGS, CINC, COMPILER_DIR, ControllerModel, EXAMPLES, EXAMPLE_FILES,
     OUT, REPO, RamImage, TOOL, TOOL_ENV, compile_example, crc,
     decode, harness_source, layout_problems, pattern, plan_problems, read_hex, rom_problems)
-sys.path.insert(0, COMPILER_DIR)
 import albatross_schedule as S  # noqa: E402
 
 
@@ -385,7 +385,7 @@ class BadDescriptionTests(unittest.TestCase):
 
 
 class PackageTests(unittest.TestCase):
-    """The compiler is a small package run with python3 -m albatross_schedule."""
+    """The compiler is a small package, installed by make deps as the albatross-schedule command."""
 
     def test_modules_are_small(self):
         pkg = os.path.join(COMPILER_DIR, "albatross_schedule")
@@ -398,11 +398,31 @@ class PackageTests(unittest.TestCase):
     def test_command_line(self):
         r = subprocess.run(TOOL + ["--help"], capture_output=True, text=True, env=TOOL_ENV)
         self.assertEqual(r.returncode, 0, r.stderr)
-        for flag in ("--out", "--quiet", "--no-redundancy", "description"):
+        for flag in ("-o DIR, --out DIR", "--quiet", "--no-redundancy", "description"):
             self.assertIn(flag, r.stdout)
         r = subprocess.run(TOOL, capture_output=True, text=True, env=TOOL_ENV)
         self.assertEqual(r.returncode, 2)
-        self.assertIn("usage: albatross_schedule", r.stderr)
+        self.assertIn("usage: albatross-schedule", r.stderr)
+
+    def test_installed_from_the_checkout(self):
+        """make deps installs the package editable: the command runs this checkout's
+        modules (an edit takes effect at once) and reads this checkout's contract."""
+        r = subprocess.run([sys.executable, "-c", "import albatross_schedule as s, albatross_schedule.contract as c; "
+                            "print(s.__file__); print(c.DEFAULT_PATH)"], capture_output=True, text=True,
+                           cwd="/", env=TOOL_ENV)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        mod, contract = r.stdout.split()
+        self.assertEqual(os.path.realpath(mod), os.path.realpath(os.path.join(COMPILER_DIR, "albatross_schedule",
+                                                                              "__init__.py")))
+        self.assertEqual(contract, os.path.realpath(os.path.join(REPO, "rtl", "albatross_contract.toml")))
+
+    def test_output_folder_option(self):
+        out = os.path.join(OUT, "short-o")
+        shutil.rmtree(out, ignore_errors=True)
+        r = subprocess.run(TOOL + [os.path.join(EXAMPLES, "mobot3.toml"), "-o", out, "-q"], capture_output=True,
+                           text=True, env=TOOL_ENV)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertTrue(os.path.isfile(os.path.join(out, "rom.hex")), f"expected {out}/rom.hex")
 
 
 def description(channels, boards=("a", "b", "c"), extra_system="", bus=""):
@@ -571,3 +591,46 @@ class CheckerNegativeTests(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class CNameTests(unittest.TestCase):
+    """The names check (albatross_schedule/cnames.py) knows the driver's identifiers, and
+    what it rejects really breaks the generated C (compiler/tests/bad/cname_*.toml and
+    board_*.toml give its messages)."""
+
+    def test_driver_identifiers_listed(self):
+        from albatross_schedule.cnames import DRIVER_IDENTIFIERS
+        found = set()
+        for pattern in ("c-driver/*.h", "c-driver/port/*/*.h"):
+            for path in glob.glob(os.path.join(REPO, pattern)):
+                with open(path) as f:
+                    text = f.read()
+                text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+                text = re.sub(r"//[^\n]*", "", text)
+                # alb_ch_##Name and the like are prefixes of generated names, not identifiers
+                found |= set(re.findall(r"\b((?:alb|ALB|ALBATROSS)_\w*[A-Za-z0-9])\b(?!\s*##)", text))
+        self.assertGreater(len(found), 40)
+        self.assertEqual(sorted(found - DRIVER_IDENTIFIERS), [],
+                         "identifiers of the driver headers missing from cnames.DRIVER_IDENTIFIERS")
+
+    @unittest.skipUnless(shutil.which("gcc"), "gcc not found")
+    def test_rejected_names_break_c(self):
+        """Without the check, a channel uint32 declares uint32_t again and gcc stops: the
+        check guards a real fault (the header is generated with the check switched off)."""
+        import albatross_schedule.description as D
+        desc = os.path.join(BAD, "cname_stdint_type.toml")
+        out = os.path.join(OUT, "cname-unchecked")
+        shutil.rmtree(out, ignore_errors=True)
+        saved = D.check_c_names
+        D.check_c_names = lambda *a: None
+        try:
+            S.compile_file(desc, out)
+        finally:
+            D.check_c_names = saved
+        src = os.path.join(out, "use.c")
+        with open(src, "w") as f:
+            f.write('#include "a.h"\nint main(void) { return 0; }\n')
+        r = subprocess.run(["gcc"] + CFLAGS + CINC + ["-I" + out, "-fsyntax-only", src], capture_output=True,
+                           text=True)
+        self.assertNotEqual(r.returncode, 0, "expected gcc to reject the header of a channel named uint32")
+        self.assertIn("uint32_t", r.stderr)

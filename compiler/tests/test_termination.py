@@ -27,7 +27,6 @@ from functools import lru_cache
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from oracle import COMPILER_DIR, OUT, REPO, TOOL, TOOL_ENV, plan_problems, rom_problems, read_hex  # noqa: E402
-sys.path.insert(0, COMPILER_DIR)
 import albatross_schedule as S  # noqa: E402
 from albatross_schedule import termination as TM  # noqa: E402
 

@@ -87,7 +87,7 @@ bench-kinds: $(PBN_KINDS_DEPS) ## cycles per Import/Export, both channel kinds, 
 	$(PBN_SERV_BIN) +fw0=$(PBN_DIR)/bench-serv-four_slot.hex --max-cycles $(PBN_SERV_MAX_CYCLES) \
 	    --label bench-serv-four-slot --kind four_slot --cpu "SERV rv32i (tb/pico/pico_bench.v SERV=1), firmware -Os" \
 	    --report $(REPORTS)/bench_serv_four_slot.json
-	env PYTHONPATH=compiler $(PYTHON) -c 'import json; from albatross_schedule.fourslot import channel_bytes as b; \
+	$(PYTHON) -c 'import json; from albatross_schedule.fourslot import channel_bytes as b; \
 	    json.dump({"label": "channel-ram", "note": "bytes of one channel instance (control word and buffers) for a payload of N bytes; a destination adds taken_at (4 bytes) to the payload", \
 	    "sizes": [{"bytes": n, "three_buffer": b(n, "three_buffer"), "four_slot": b(n, "four_slot")} for n in (4, 16, 64, 256)]}, \
 	    open("$(REPORTS)/channel_ram.json", "w"), indent=2)'

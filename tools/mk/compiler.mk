@@ -1,5 +1,5 @@
 # tools/mk/compiler.mk -- the schedule compiler (the package compiler/albatross_schedule/,
-# run as PYTHONPATH=compiler python3 -m albatross_schedule DESC.toml --out DIR):
+# installed into build/venv by make deps, run as albatross-schedule DESC.toml -o DIR):
 # a system description (TOML) -> schedule ROM, board headers and sources, RAM
 # images, reports and a timeline picture.  Standard-library Python only.
 #   make schedule [SCHEDULE_DESC=file.toml]   -> build/schedule/<file name>/
@@ -7,30 +7,71 @@
 #   make test-compiler                        compiler/tests (examples, bad
 #                                             descriptions, gcc, end-to-end)
 
+# A description named on the command line (SCHEDULE_DESC=, SIM_DESC=) is a file
+# of the caller: a relative path is taken from the directory make was started in
+# (the shell's PWD, also under make -C; a recipe's shell sets it to the recipe's
+# directory), not from the checkout.  The absolute path is handed on to sub-makes
+# (MAKEOVERRIDES), so that they do not take the relative one from another place.
+ALB_CALLER_DIR := $(or $(PWD),$(CURDIR))
+caller_path    = $(abspath $(if $(filter /%,$(1)),,$(ALB_CALLER_DIR)/)$(1))
+ifneq ($(filter command line environment,$(origin SCHEDULE_DESC)),)
+override SCHEDULE_DESC := $(call caller_path,$(SCHEDULE_DESC))
+MAKEOVERRIDES  += SCHEDULE_DESC=$(SCHEDULE_DESC)
+endif
 SCHEDULE_DESC ?= sim/mobot3.toml
-# SCHEDULE runs the compiler; rules that run it depend on SCHEDULE_SRC (every module).
-SCHEDULE      := env PYTHONPATH=compiler $(PYTHON) -m albatross_schedule
+# SCHEDULE runs the compiler (the console command of compiler/pyproject.toml, in
+# build/venv/bin); rules that run it depend on SCHEDULE_SRC (every module).
+SCHEDULE      := albatross-schedule
 SCHEDULE_SRC  := $(sort $(wildcard compiler/albatross_schedule/*.py)) rtl/albatross_contract.toml
 SCHEDULE_DIR  := $(BUILD)/schedule/$(basename $(notdir $(SCHEDULE_DESC)))
 
-TESTS += compiler
-.PHONY: test-compiler schedule
+TESTS += compiler schedule-caller-dir
+.PHONY: test-compiler schedule test-schedule-caller-dir
 
 test-compiler:
 	@tools/run_test.sh compiler $(PYTHON) -m unittest discover -s compiler/tests -v
 
-schedule: $(SCHEDULE_DIR)/rom.hex ## compile SCHEDULE_DESC (default: the MOBOT-III example) -> build/schedule/<name>/
-	@sed -n "1,/^(times/p" $(SCHEDULE_DIR)/report.txt
-	@echo "schedule: $(SCHEDULE_DIR)/ (rom.hex, <board>.h/.c, <board>_ram.hex, report.json, timeline.svg)"
+# make schedule always runs the compiler (about a second), so the report it
+# prints is this description's, never an older output found in the folder; a
+# missing description stops it with the path that was looked for.
+schedule: ## compile SCHEDULE_DESC (default: the MOBOT-III example) -> build/schedule/<name>/
+	@test -f $(SCHEDULE_DESC) || { echo "schedule: no description $(SCHEDULE_DESC)$(if $(filter /%,$(SCHEDULE_DESC)),, (relative to $(CURDIR)))" >&2; exit 2; }
+	@$(SCHEDULE) $(SCHEDULE_DESC) -o $(SCHEDULE_DIR)
+	@sed -n "1,/^RAM per board/{/^RAM per board/!p}" $(SCHEDULE_DIR)/report.txt
+	@echo "schedule: $(SCHEDULE_DIR)/ (rom.hex, <board>.h/.c, <board>_ram.hex, report.json, timeline.svg;"
+	@echo "          report.txt also lists each board's RAM map and the ROM entries)"
 
+# make -C <checkout> schedule from another directory, with a relative and a
+# missing description (tools/schedule_caller_test.sh).
+test-schedule-caller-dir:
+	@tools/run_test.sh schedule-caller-dir tools/schedule_caller_test.sh
+
+# For test 5 of schedule-caller-dir: what a sub-make sees.
+.PHONY: schedule-probe schedule-probe-leaf
+schedule-probe:
+	@$(MAKE) --no-print-directory schedule-probe-leaf
+schedule-probe-leaf:
+	@echo "probe: SCHEDULE_DESC=$(SCHEDULE_DESC)"
+
+# The example descriptions have the pattern rules below, the FPGA demo's its
+# own rule (tools/mk/fpga.mk); any other description gets this one.
+example_desc   = $(filter $(CURDIR)/sim/$(notdir $(1)) $(CURDIR)/compiler/examples/$(notdir $(1)) \
+                          $(CURDIR)/fpga/$(notdir $(1)),$(abspath $(1)))
+ifeq ($(call example_desc,$(SCHEDULE_DESC)),)
 $(SCHEDULE_DIR)/rom.hex: $(SCHEDULE_DESC) $(SCHEDULE_SRC)
-	$(SCHEDULE) $(SCHEDULE_DESC) --out $(@D)
+	$(SCHEDULE) $(SCHEDULE_DESC) -o $(@D)
+endif
 
 # Any example description: the robot's (sim/) or the compiler's own (compiler/examples/).
 $(BUILD)/schedule/%/rom.hex: sim/%.toml $(SCHEDULE_SRC)
-	$(SCHEDULE) $< --out $(@D)
+	$(SCHEDULE) $< -o $(@D)
 $(BUILD)/schedule/%/rom.hex: compiler/examples/%.toml $(SCHEDULE_SRC)
-	$(SCHEDULE) $< --out $(@D)
+	$(SCHEDULE) $< -o $(@D)
+# Compiled schedules are kept when make reaches them only through another
+# file (tb_plan.txt).  Named by this pattern: a bare .SECONDARY: would cover every
+# file, and make would then take a missing description for a deleted
+# intermediate file and print an old report as if it were current.
+.PRECIOUS: $(BUILD)/schedule/%/rom.hex
 
 # The compiler's predictions for the robot under several fault hypotheses
 # (issue 15 section 2; 5, 20, 30, 50 % with and without bursts of mean 2):
@@ -50,12 +91,12 @@ FAULT_PLAN_BURSTS := 2 5
 FAULT_PLAN_NINES  := 2 3 6
 define fault_plan_rule
 $(BUILD)/schedule/mobot3-f$(1)/rom.hex: sim/mobot3.toml $(SCHEDULE_SRC)
-	$(SCHEDULE) $$< --out $$(@D) -q --faults $(shell awk 'BEGIN { print $(1) / 100 }')
+	$(SCHEDULE) $$< -o $$(@D) -q --faults $(shell awk 'BEGIN { print $(1) / 100 }')
 $(foreach b,$(FAULT_PLAN_BURSTS),
 $(BUILD)/schedule/mobot3-f$(1)b$(b)/rom.hex: sim/mobot3.toml $(SCHEDULE_SRC)
-	$(SCHEDULE) $$< --out $$(@D) -q --faults $(shell awk 'BEGIN { print $(1) / 100 }'),$(b))
+	$(SCHEDULE) $$< -o $$(@D) -q --faults $(shell awk 'BEGIN { print $(1) / 100 }'),$(b))
 $(foreach n,$(FAULT_PLAN_NINES),
 $(BUILD)/schedule/mobot3-f$(1)p$(n)/rom.hex: sim/mobot3.toml $(SCHEDULE_SRC)
-	$(SCHEDULE) $$< --out $$(@D) -q --faults $(shell awk 'BEGIN { print $(1) / 100 }'),,$(shell awk 'BEGIN { printf "%.12g", 1 - 10 ^ -$(n) }'))
+	$(SCHEDULE) $$< -o $$(@D) -q --faults $(shell awk 'BEGIN { print $(1) / 100 }'),,$(shell awk 'BEGIN { printf "%.12g", 1 - 10 ^ -$(n) }'))
 endef
 $(foreach p,$(FAULT_PLAN_PCTS),$(eval $(call fault_plan_rule,$(p))))

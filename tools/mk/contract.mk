@@ -12,7 +12,7 @@
 #                                   a [layout.four_slot] with Slot1 moved past the control
 #                                   word: the generator refuses it, naming the byte
 
-CONTRACT      := env PYTHONPATH=compiler $(PYTHON) -m albatross_schedule.contract_gen
+CONTRACT      := $(PYTHON) -m albatross_schedule.contract_gen
 CONTRACT_DEF  := rtl/albatross_contract.toml
 CONTRACT_MD    = $(wildcard README.md docs/*.md)
 CONTRACT_NEG  := $(BUILD)/contract-negative

@@ -38,8 +38,10 @@ test-formal-controller: $(FRTL_DEPS) formal/rtl/ctrl_time.hex $(CTRL_PARTS)
 # Controller mutants: tb/mutants/controller/ignore_readlocked.sed (shared with
 # the system tests) and formal/rtl/mutants/*.sed (formal only); each names the
 # file it edits on its '# target:' line.
-.SECONDARY:
 FRTL_CTRL_NEG := ignore_readlocked:no_locked_write publish_early:complete_publish slot_late:slot_start
+# The mutated copies are kept between runs (named: a bare .SECONDARY: would make
+# every file secondary, and make would then skip missing prerequisites).
+.SECONDARY: $(foreach n,$(FRTL_CTRL_NEG),$(call ctrl_mutant_file,$(call neg_field,$(n),1)))
 define frtl_ctrl_negative
 $(call ctrl_mutant_file,$(call neg_field,$(1),1)): $(call ctrl_mutant_sed,$(call neg_field,$(1),1)) $(call ctrl_mutant_target,$(call neg_field,$(1),1))
 	@mkdir -p $$(@D)

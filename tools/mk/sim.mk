@@ -17,6 +17,10 @@
 # example sim/mobot3_possync.toml.
 
 SIM_DIR      := $(BUILD)/sim
+ifneq ($(filter command line environment,$(origin SIM_DESC)),)
+override SIM_DESC := $(call caller_path,$(SIM_DESC))
+MAKEOVERRIDES += SIM_DESC=$(SIM_DESC)
+endif
 SIM_DESC     ?= sim/mobot3.toml
 SIM_NAME     := $(basename $(notdir $(SIM_DESC)))
 SIM_SCHED    := $(BUILD)/schedule/$(SIM_NAME)
@@ -33,10 +37,10 @@ TRACE_CYCLES ?= 20000
 SIM_BIN      := $(PB_DIR)/$(if $(filter 1,$(TRACE)),obj-trace,obj)/Vpico_boards
 
 # A description outside sim/ and compiler/examples/ (those have a pattern rule).
-ifeq ($(filter sim/% compiler/examples/%,$(SIM_DESC)),)
-ifneq ($(SIM_DESC),$(SCHEDULE_DESC))
+ifeq ($(call example_desc,$(SIM_DESC)),)
+ifneq ($(abspath $(SIM_DESC)),$(abspath $(SCHEDULE_DESC)))
 $(SIM_SCHED)/rom.hex: $(SIM_DESC) $(SCHEDULE_SRC)
-	$(SCHEDULE) $(SIM_DESC) --out $(@D)
+	$(SCHEDULE) $(SIM_DESC) -o $(@D)
 endif
 endif
 

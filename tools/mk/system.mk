@@ -55,8 +55,11 @@ endef
 $(foreach m,$(CTRL_MUTANTS),$(eval $(call sys_mutant,$(m))))
 
 # The testbench's view of a compiled schedule; a plan without redundancy.  The
-# compiler outputs are kept (make would delete them as intermediate files).
-.SECONDARY:
+# compiler outputs and the robot's firmware images are kept (make would delete
+# them as intermediate files); named by their rules' patterns, so that make
+# never takes a missing prerequisite for a deleted intermediate file.
+.PRECIOUS: $(BUILD)/schedule/%-noredundancy/rom.hex \
+           $(foreach b,$(PB_BOARDS),$(foreach d,fw fw-clock fw-clock-norate,$(PB_DIR)/%/$(d)/$(b).elf))
 $(BUILD)/schedule/%/tb_plan.txt: $(BUILD)/schedule/%/rom.hex tb/common/plan_for_tb.py
 	$(PYTHON) tb/common/plan_for_tb.py $(@D)/report.json $@
 $(BUILD)/schedule/%-noredundancy/rom.hex: sim/%.toml $(SCHEDULE_SRC)
