@@ -4,21 +4,36 @@
 // Rules:
 //   * Requesters are Wishbone B4 classic masters on a word address plus a
 //     board field; the master adds the board field (m_adr_o = {board, word}).
+//   * The system bus obeys Wishbone classic whatever the requesters do.  An
+//     access (the bus request m_*) starts with the owner's fields, passed
+//     through in the clock it is raised (no idle bus clock is added); from
+//     its second clock on, m_we_o, m_adr_o, m_sel_o and m_dat_o come from a
+//     register holding the first clock's values, until ack, err or the
+//     timeout ends the access.  So an owner that changes its fields in the
+//     middle of an access cannot change the slave's request.  An owner that
+//     drops cyc before the answer abandons the access: m_cyc_o/m_stb_o drop
+//     in that clock (a Wishbone abort), the owner loses the bus, and another
+//     requester gets it at the earliest in the next clock.  Between two
+//     accesses there is therefore either an answer (ack/err) or at least one
+//     clock with cyc low: a requester raising cyc in the clock in which the
+//     owner drops it never inherits the owner's access.
 //   * Arbitration: at most one requester is expected to hold cyc at a time
 //     (the word stream between the engines guarantees it).  The master makes
 //     it explicit and safe: a free bus goes to the lowest-indexed requester
 //     holding cyc (a requester that was waiting included), which keeps it
 //     until it drops cyc; any other requester's cyc waits (it sees neither
 //     ack nor err) and overlap_o goes high for good (a design error that a
-//     test or proof can watch for).  A request passes in the clock it is
-//     raised: no idle bus clock is added.
+//     test or proof can watch for).  ack and err go only to the owner, and
+//     only in a clock in which it holds cyc.
 //   * Timeout: an access that sees neither ack nor err in TIMEOUT clocks of
 //     cyc fails: the owner gets err in the TIMEOUT-th clock, and the request
 //     is dropped at the slave.
 //   * Every failed access (err, or the timeout) drops cyc/stb for the next
 //     clock, so the slave sees the retry as a new request; fail_o is high in
 //     the failure clock and fails_o counts failures (16-bit, saturating).
-//   * Reset (synchronous) clears the owner, the timeout and the counters.
+//   * Reset (synchronous) clears the owner, the pending access, the timeout
+//     and the counters (not the held fields: they are used only while an
+//     access is pending); cyc stays low in the clock after a reset clock.
 `default_nettype none
 
 module albatross_bus_master #(
@@ -66,9 +81,13 @@ module albatross_bus_master #(
         end
     endgenerate
 
+    localparam FW = 1 + BOARD_BITS + ADDR_WIDTH + 4 + 32;   // we, adr, sel, dat
+
     reg                 busy_q;      // owner_q holds the bus
+    reg                 pend_q;      // an access is pending: on the bus in the last clock, unanswered
+    reg [FW-1:0]        held_q;      // the bus fields of the last clock {we, adr, sel, dat}
     reg [OWN_BITS-1:0]  owner_q;
-    reg                 gap_q;       // the clock after a failure: cyc low
+    reg                 gap_q;       // the clock after a failure or a reset: cyc low
     reg [TMO_BITS-1:0]  tmo_q;       // clocks of the current access without an answer
     reg [15:0]          fails_q;
     reg                 overlap_q;
@@ -85,8 +104,14 @@ module albatross_bus_master #(
             n_req = n_req + {2'd0, r_cyc_i[r]};
         end
     end
-    wire [OWN_BITS-1:0] owner = (busy_q && r_cyc_i[owner_q]) ? owner_q : first;
+    // A pending access keeps its owner; it ends (an abort) if the owner drops cyc.
+    wire [OWN_BITS-1:0] owner = (pend_q || (busy_q && r_cyc_i[owner_q])) ? owner_q : first;
     wire                cyc   = r_cyc_i[owner] && !gap_q;
+    // The bus fields: the owner's in an access's first clock, then held.
+    wire [FW-1:0]       live  = {r_we_i[owner],
+                                 r_board_i[owner*BOARD_BITS +: BOARD_BITS], r_adr_i[owner*ADDR_WIDTH +: ADDR_WIDTH],
+                                 r_sel_i[owner*4 +: 4], r_dat_i[owner*32 +: 32]};
+    wire [FW-1:0]       field = pend_q ? held_q : live;
     wire                tmo   = cyc && !m_ack_i && !m_err_i && tmo_q == TMO_LAST;
     wire                fail  = cyc && !m_ack_i && (m_err_i || tmo);
     wire                ack   = cyc && m_ack_i;
@@ -94,13 +119,15 @@ module albatross_bus_master #(
     always @(posedge clk_i) begin
         if (rst_i) begin
             busy_q    <= 1'b0;
+            pend_q    <= 1'b0;
             owner_q   <= {OWN_BITS{1'b0}};
-            gap_q     <= 1'b0;
+            gap_q     <= 1'b1;   // cyc stays low in the clock after reset
             tmo_q     <= {TMO_BITS{1'b0}};
             fails_q   <= 16'd0;
             overlap_q <= 1'b0;
         end else begin
-            busy_q  <= |r_cyc_i;
+            busy_q  <= r_cyc_i[owner];
+            pend_q  <= cyc && !m_ack_i && !fail;
             owner_q <= owner;
             gap_q   <= fail;
             if (!cyc || m_ack_i || m_err_i || tmo) tmo_q <= {TMO_BITS{1'b0}};
@@ -110,12 +137,14 @@ module albatross_bus_master #(
         end
     end
 
+    always @(posedge clk_i) held_q <= field;   // data only: used while pend_q
+
     assign m_cyc_o   = cyc;
     assign m_stb_o   = cyc;
-    assign m_we_o    = r_we_i[owner];
-    assign m_adr_o   = {r_board_i[owner*BOARD_BITS +: BOARD_BITS], r_adr_i[owner*ADDR_WIDTH +: ADDR_WIDTH]};
-    assign m_sel_o   = r_sel_i[owner*4 +: 4];
-    assign m_dat_o   = r_dat_i[owner*32 +: 32];
+    assign m_we_o    = field[FW-1];
+    assign m_adr_o   = field[36 +: BOARD_BITS + ADDR_WIDTH];
+    assign m_sel_o   = field[32 +: 4];
+    assign m_dat_o   = field[31:0];
     assign r_dat_o   = m_dat_i;
     assign r_ack_o   = {{(REQS-1){1'b0}}, ack} << owner;
     assign r_err_o   = {{(REQS-1){1'b0}}, fail} << owner;

@@ -1,26 +1,33 @@
 // fbus_master -- proof harness of albatross_bus_master
 // (formal/bus_master/bus_master.sby, docs/verification.md "Bus master (unbounded)").
 //
-// Every input is free, constrained only by the Wishbone property sets: each
-// requester r_* is a Wishbone B4 classic master that obeys the rules
-// (formal/wb/fwb_slave.v per requester, which asserts the bus master's answers
-// to it, OPT_ABORT = 0, no answer bound since a waiting requester may wait for
-// ever), and the system-bus slave answers as a classic slave may, or never
-// (formal/wb/fwb_master.v on m_*, which asserts the master's requests; OPT_ABORT
-// = 1 because a timeout withdraws a request without an answer, as Wishbone B4
-// allows a master to; abort_tmo below says it happens only then).  Reset is high
-// in the first clock only: the RTL's registers start unconstrained, so this is a
-// reset from any state; a later reset would let a requester change its request
-// in the reset clock, which m_* passes on combinationally and fwb_master's
-// req_stable (not exempt in reset clocks) would flag.  One clock.
+// Every input is free.  The requesters r_* are NOT constrained at all: any
+// requester behaviour, including the ones Wishbone forbids (changing its fields
+// in the middle of an access, dropping cyc before the answer while another
+// requester raises it in the same clock, raising cyc in the clock after reset).
+// The system-bus slave answers as a classic slave may, or never
+// (formal/wb/fwb_master.v on m_*, which asserts the master's requests: stb only
+// with cyc, cyc low after reset, and req_stable -- a request carried over an
+// edge without an answer keeps we, adr, sel and write data; OPT_ABORT = 1
+// because a timeout or an abandoning owner withdraws a request without an
+// answer, as Wishbone B4 allows a master to; abort_why below says when it
+// happens).  Each requester's answers are asserted here (req_ans_*): ack/err
+// never together, only to a requester holding cyc, none in the clock after
+// reset.  Reset is high in the first clock only: the RTL's registers start
+// unconstrained, so this is a reset from any state.  One clock.
 // REQS = 3, ADDR_WIDTH = 2, BOARD_BITS = 2, TIMEOUT = 5 (3 counter bits, so a
 // timeout one clock late is representable).
 // A reference model (f_*) states the rules of the RTL header:
-//   owner   the owner of the last clock while it keeps cyc; else the lowest
-//           index among the requesters with cyc now: from an idle bus, the
-//           first to raise cyc (ties to the lowest index); when the owner drops
-//           cyc while others wait, the lowest-indexed waiter (not the earliest:
-//           the RTL header leaves that case open).  Reset: no owner.
+//   pend    an access is pending: on m_* in the last clock, neither acked nor
+//           failed (f_outstanding_o of the m_* property set, not in the gap
+//           after a timeout).
+//   owner   while an access is pending, its owner; else the owner of the last
+//           clock while it keeps cyc; else the lowest index among the
+//           requesters with cyc now: from an idle bus, the first to raise cyc
+//           (ties to the lowest index); when the owner drops cyc while others
+//           wait, the lowest-indexed waiter (not the earliest: the RTL header
+//           leaves that case open).  An owner that abandons a pending access
+//           (drops cyc) loses the bus.  Reset: no owner.
 //   wait    clocks the present m_* request has waited without ack/err
 //           (f_wait_o of the m_* property set).
 //   fail    m_cyc_o & !m_ack_i & (m_err_i | wait == TIMEOUT-1): an err, or the
@@ -30,8 +37,15 @@
 //               clock): a request passes in the clock it is raised, and a
 //               failure drops cyc for exactly one clock.
 //   fail_gap    in the clock after a failure m_cyc_o is low.
-//   own_fields  with m_cyc_o, m_we_o, m_sel_o, m_dat_o are the owner's.
-//   adr_owner   with m_cyc_o, m_adr_o = {owner's board, owner's word}.
+//   own_fields  in an access's first clock, m_we_o, m_sel_o, m_dat_o are the
+//               owner's.
+//   adr_owner   in an access's first clock, m_adr_o = {owner's board, owner's
+//               word}.
+//   hold_fields while an access is pending, m_* keep the last clock's fields
+//               (whatever the owner now drives; req_stable of fwb_master says
+//               the same from the slave's side).
+//   handover    a different owner's access never follows another's without an
+//               answer or an idle clock between them.
 //   own_silent  a requester other than the owner sees neither ack nor err.
 //   ack_pass    the owner's ack = m_cyc_o & m_ack_i; r_dat_o = m_dat_i.
 //   err_tmo     the owner's err = fail (exactly in the TIMEOUT-th clock).
@@ -40,12 +54,17 @@
 //   fails_count fails_o = failures since reset, saturating at 16'hFFFF.
 //   overlap     overlap_o is high from the clock after a clock in which two or
 //               more requesters held cyc, until reset.
-//   abort_tmo   a request pending on m_* disappears (no reset) only in the
-//               clock after a failure (a timeout: it had no answer).
+//   abort_why   a request pending on m_* disappears only in the clock after a
+//               failure (a timeout: it had no answer) or when its owner
+//               dropped cyc.
+//   req_ans_excl, req_ans_cyc, req_ans_reset  a requester's ack and err are
+//               never together, come only while it holds cyc, and never in the
+//               clock after reset.
 //   own_range   the model's owner is a requester (< REQS): its own invariant.
 // Induction strengthening (white-box): with -DF_PROBE the script connects f_busy,
-// f_owner, f_gap and f_tmo to the RTL's busy_q, owner_q, gap_q, tmo_q (Yosys has
-// no hierarchical references: joined after flatten); inv_* tie them to the model.
+// f_owner, f_gap, f_tmo, f_pend and f_held to the RTL's busy_q, owner_q, gap_q,
+// tmo_q, pend_q, held_q (Yosys has no hierarchical references: joined after
+// flatten); inv_* tie them to the model.
 `default_nettype none
 
 module fbus_master #(
@@ -93,7 +112,7 @@ module fbus_master #(
 `ifdef FORMAL
     reg init_q = 1'b1;   // high in the first clock only
     always @(posedge clk_i) init_q <= 1'b0;
-    always @* assume(rst_i == init_q);
+    always @* assume(!init_q || rst_i);   // reset in the first clock; later, at any time
 
     // ------------------------------------------------ the Wishbone property sets
     wire       m_pv, m_out, m_rack;
@@ -103,18 +122,6 @@ module fbus_master #(
         .adr_i(m_adr_o), .sel_i(m_sel_o), .wdat_i(m_dat_o), .rdat_i(m_dat_i),
         .ack_i(m_ack_i), .err_i(m_err_i),
         .f_past_valid_o(m_pv), .f_outstanding_o(m_out), .f_wait_o(m_wait), .f_read_ack_o(m_rack));
-
-    genvar g;
-    generate for (g = 0; g < REQS; g = g + 1) begin : req
-        wire       pv, out, rack;
-        wire [3:0] wt;
-        fwb_slave #(.AW(AW), .DW(32)) wb (
-            .clk_i(clk_i), .rst_i(rst_i), .cyc_i(r_cyc_i[g]), .stb_i(r_cyc_i[g]), .we_i(r_we_i[g]),
-            .adr_i({r_board_i[g*BOARD_BITS +: BOARD_BITS], r_adr_i[g*ADDR_WIDTH +: ADDR_WIDTH]}),
-            .sel_i(r_sel_i[g*4 +: 4]), .wdat_i(r_dat_i[g*32 +: 32]), .rdat_i(r_dat_o),
-            .ack_i(r_ack_o[g]), .err_i(r_err_o[g]),
-            .f_past_valid_o(pv), .f_outstanding_o(out), .f_wait_o(wt), .f_read_ack_o(rack));
-    end endgenerate
 
     // ------------------------------------------------------- reference model
     wire [3:0] cyc4 = {{(4-REQS){1'b0}}, r_cyc_i};   // index 0..3 without running off the end
@@ -135,9 +142,17 @@ module fbus_master #(
     reg  [15:0] f_fails_q = 16'd0;
     reg         f_ov_q    = 1'b0;
     reg  [REQS-1:0] f_cyc_q = {REQS{1'b0}};   // r_cyc_i of the last clock (covers)
+    reg         f_rst_q   = 1'b0;   // the last clock was a reset clock
+    reg         f_mcyc_q  = 1'b0;   // m_cyc_o of the last clock
+    reg         f_mans_q  = 1'b0;   // an answer (ack/err) on m_* in the last clock
+    reg         f_abort_q = 1'b0;   // the last clock ended an access by its owner's drop (covers)
+    localparam FW = 1 + AW + 4 + 32;
+    reg  [FW-1:0] f_fld_q;          // m_* fields of the last clock
     reg         f_gap2_q  = 1'b0;   // the clock before the last was a failure (covers)
-    wire [1:0]  f_own  = (f_hold_q && cyc4[f_own_q]) ? f_own_q : f_first;
+    wire        f_pend = m_out && !f_gap_q;
+    wire [1:0]  f_own  = (f_pend || (f_hold_q && cyc4[f_own_q])) ? f_own_q : f_first;
     wire        m_req  = m_cyc_o && m_stb_o;
+    wire [FW-1:0] m_fld = {m_we_o, m_adr_o, m_sel_o, m_dat_o};
     wire        f_fail = m_req && !m_ack_i && (m_err_i || m_wait == TIMEOUT - 1);
     always @(posedge clk_i) begin
         if (rst_i) begin
@@ -147,13 +162,18 @@ module fbus_master #(
             f_fails_q <= 16'd0;
             f_ov_q    <= 1'b0;
         end else begin
-            f_hold_q  <= |r_cyc_i;
+            f_hold_q  <= cyc4[f_own];
             f_own_q   <= f_own;
             f_gap_q   <= f_fail;
             if (f_fail && f_fails_q != 16'hFFFF) f_fails_q <= f_fails_q + 16'd1;
             if (f_n > 3'd1) f_ov_q <= 1'b1;
         end
         f_cyc_q  <= r_cyc_i;
+        f_rst_q  <= rst_i;
+        f_mcyc_q <= m_cyc_o && !rst_i;
+        f_mans_q <= m_ack_i || m_err_i;
+        f_abort_q <= f_pend && !cyc4[f_own] && !rst_i;
+        f_fld_q  <= m_fld;
         f_gap2_q <= f_gap_q && !rst_i;
     end
 
@@ -168,11 +188,13 @@ module fbus_master #(
     wire own_err = r_err_o[f_own];
     always @* begin
         if (!init_q) begin
-            pass_now:    assert(m_cyc_o == (cyc4[f_own] && !f_gap_q) && m_stb_o == m_cyc_o);
+            pass_now:    assert(m_cyc_o == (cyc4[f_own] && !f_gap_q && !f_rst_q) && m_stb_o == m_cyc_o);
             fail_gap:    assert(!f_gap_q || !m_cyc_o);
-            own_fields:  assert(!m_cyc_o || (m_we_o == r_we_i[f_own] && m_sel_o == r_sel_i[f_own*4 +: 4] &&
+            own_fields:  assert(!m_cyc_o || f_pend || (m_we_o == r_we_i[f_own] && m_sel_o == r_sel_i[f_own*4 +: 4] &&
                                              m_dat_o == r_dat_i[f_own*32 +: 32]));
-            adr_owner:   assert(!m_cyc_o || m_adr_o == {r_board_i[f_own*BOARD_BITS +: BOARD_BITS],
+            hold_fields: assert(!m_cyc_o || !f_pend || m_fld == f_fld_q);
+            handover:    assert(!(m_cyc_o && f_mcyc_q && !f_mans_q) || f_pend);
+            adr_owner:   assert(!m_cyc_o || f_pend || m_adr_o == {r_board_i[f_own*BOARD_BITS +: BOARD_BITS],
                                                         r_adr_i[f_own*ADDR_WIDTH +: ADDR_WIDTH]});
             own_silent:  assert(ok_silent);
             ack_pass:    assert(own_ack == (m_req && m_ack_i) && r_dat_o == m_dat_i);
@@ -181,7 +203,10 @@ module fbus_master #(
             fail_flag:   assert(fail_o == f_fail);
             fails_count: assert(fails_o == f_fails_q);
             overlap:     assert(overlap_o == f_ov_q);
-            abort_tmo:   assert(!(m_out && !m_req && !rst_i) || f_gap_q);
+            abort_why:   assert(!(m_out && !m_req && !rst_i) || f_gap_q || !cyc4[f_own_q]);
+            req_ans_excl:  assert((r_ack_o & r_err_o) == {REQS{1'b0}});
+            req_ans_cyc:   assert(((r_ack_o | r_err_o) & ~r_cyc_i) == {REQS{1'b0}});
+            req_ans_reset: assert(!f_rst_q || (r_ack_o | r_err_o) == {REQS{1'b0}});
             own_range:   assert(f_own_q < REQS);   // the model's own invariant
         end
     end
@@ -192,12 +217,16 @@ module fbus_master #(
     (* keep *) wire [1:0] f_owner;   // dut.owner_q
     (* keep *) wire       f_gap;     // dut.gap_q
     (* keep *) wire [2:0] f_tmo;     // dut.tmo_q
+    (* keep *) wire       f_pendr;   // dut.pend_q
+    (* keep *) wire [FW-1:0] f_held; // dut.held_q
     always @* begin
         if (!init_q) begin
             inv_owner: assert(f_busy == f_hold_q && f_owner == f_own_q);
-            inv_gap:   assert(f_gap == f_gap_q);
-            inv_tmo:   assert(f_tmo == (f_gap_q ? 3'd0 : m_wait[2:0]) && (f_gap_q || m_wait < TIMEOUT));
+            inv_gap:   assert(f_gap == (f_gap_q || f_rst_q));
+            inv_tmo:   assert(f_tmo == ((f_gap_q || f_rst_q) ? 3'd0 : m_wait[2:0]) && (f_gap_q || m_wait < TIMEOUT));
             inv_out:   assert(m_out == (m_wait != 4'd0));
+            inv_pend:  assert(f_pendr == f_pend);
+            inv_held:  assert(!f_pend || f_held == f_fld_q);
         end
     end
 `endif
@@ -212,6 +241,18 @@ module fbus_master #(
             cover_handover: cover(f_hold_q && f_own != f_own_q && f_cyc_q[f_own] && m_req && m_ack_i);
             cover_retry:    cover(f_gap2_q && m_req && m_ack_i);
             cover_fails2:   cover(fails_o == 16'd2 && overlap_o);
+            // an ack in an access's first clock (the pass-through path)
+            cover_first:    cover(!f_pend && m_req && m_ack_i && !r_ack_o[0]);
+            // an ack of a held access whose owner now drives another address
+            cover_held:     cover(f_pend && m_req && m_ack_i &&
+                                  m_adr_o != {r_board_i[f_own*BOARD_BITS +: BOARD_BITS], r_adr_i[f_own*ADDR_WIDTH +: ADDR_WIDTH]});
+            // a slave err passed to the owner
+            cover_err:      cover(m_req && m_err_i && r_err_o[1]);
+            // the owner dropped a pending access while another raised cyc in
+            // that clock: the other gets the bus in the next clock and is acked
+            cover_abort:    cover(f_abort_q && f_own != f_own_q && f_cyc_q[f_own] && m_req && m_ack_i);
+            // a reset with a requester holding cyc, then its access acked
+            cover_reset:    cover(f_rst_q && r_cyc_i[0]);
         end
     end
 `endif

@@ -36,6 +36,9 @@
     (* keep *) wire [1:0]    fb_owner;   // u_bus.owner_q
     (* keep *) wire          fb_gap;     // u_bus.gap_q
     (* keep *) wire [1:0]    fb_tmo;     // u_bus.tmo_q
+    (* keep *) wire          fb_pend;    // u_bus.pend_q
+    (* keep *) wire [40+AW:0] fb_held;   // u_bus.held_q
+    (* keep *) wire [40+AW:0] fb_live;   // u_bus.live (the owner's fields now)
     localparam [2:0] I_IDLE = 3'd0, I_LOAD_ACTUAL = 3'd1, I_STORE_RL = 3'd2,
                      I_LOAD_WORD = 3'd4, I_HOLD_WORD = 3'd5, I_WAIT_PULL = 3'd6;
     localparam [2:0] E_IDLE = 3'd0, E_LOAD_ACTUAL = 3'd1, E_LOAD_RL = 3'd2, E_WAIT_WORD = 3'd3,
@@ -131,6 +134,10 @@
             inv_glue_src:  assert(!chosen_q || (s_rl_v && !(p_busy && p_wb == s_rl[1:0])));
             inv_prod:  assert(p_act != 2'd0 && s_act == {6'd0, p_act} && (!p_busy || (p_wb != 2'd0 && p_wb != p_act)));
             inv_bus:   assert(fb_owner <= 2'd1 && fb_tmo <= 2'd2 && !(fb_gap && m_cyc));
+            // the bus master's held access: pending exactly when the property
+            // set has one outstanding (not in a failure's gap), and the engine
+            // still drives the fields held (the engines obey Wishbone classic)
+            inv_bus_pend: assert(fb_pend == (f_out && !fb_gap) && (!fb_pend || fb_held == fb_live));
             inv_i_state: assert(fi_state != 3'd3 && fi_state != 3'd7 &&
                                 fi_stb == (i_acc && !fi_retry) && (!fi_retry || i_acc) &&
                                 (fi_state == I_IDLE || fi_words == f_w));

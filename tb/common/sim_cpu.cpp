@@ -88,6 +88,8 @@ uint32_t SimCpu::access(uint32_t addr, uint32_t wdata, unsigned sel, bool we)
         coro_.yield();   // never resumed again
         return 0;
     }
+    if (stall_hook)
+        for (unsigned n = stall_hook(*this, word, we); n > 0; --n) idle();
     request = BusRequest{word, wdata, static_cast<uint8_t>(sel), we};
     has_request = true;
     coro_.yield();       // the clock loop completes it and resumes us

@@ -27,6 +27,10 @@ public:
     bool        has_request = false;
     BusRequest  request{};
     uint32_t    rdata = 0;
+    // Optional stall hook (a test stretching the C code between accesses):
+    // called before every access the program makes, it returns how many
+    // clocks the CPU idles before it posts that access.
+    unsigned  (*stall_hook)(SimCpu &cpu, uint32_t addr, bool we) = nullptr;
     bool        faulted = false;    // it made an illegal access: stopped
     std::string fault;
     uint64_t    accesses = 0;

@@ -29,7 +29,9 @@ int usage(const char *why)
 {
     std::fprintf(stderr, "tb_system: %s\n"
                  "usage: tb_system --plan DIR [--cycles N] [--seed S] [--fault-rate R] [--burst L]\n"
-                 "                 [--fault-clocking access|clock] [--land-actual P] [--dead-board B --dead-at C]\n"
+                 "                 [--fault-clocking access|clock] [--land-actual P] [--land-kind 3|1|13]\n"
+                 "                 [--require-landed-same 1] [--producer-interval CH:CLOCKS]\n"
+                 "                 [--stretch-import CH:BOARD:CLOCKS] [--dead-board B --dead-at C]\n"
                  "                 [--corrupt-entry K] [--rom FILE] [--report FILE] [--label NAME]\n"
                  "                 [--ages FILE]\n"
                  "                 [--latency-scale F] [--expect-caught-by CHECKER]... [--expect-failure TEXT]...\n", why);
@@ -157,6 +159,25 @@ int parse_options(int argc, char **argv, Options &o)
             o.fault_per_clock = std::string(v) == "clock";
         else if (a == "--expect-failure") o.expect_failure.push_back(v);
         else if (a == "--land-actual" && num && x >= 0 && x <= 1) o.land_actual = x;
+        else if (a == "--land-kind" && num && (x == 1 || x == 3 || x == 13)) o.land_kind = static_cast<int>(x);
+        else if (a == "--require-landed-same" && num) o.require_landed_same = x != 0;
+        else if (a == "--producer-interval") {
+            char name[64] = {};
+            unsigned long long clk = 0;
+            if (std::sscanf(v, "%63[^:]:%llu", name, &clk) != 2 || clk == 0)
+                return usage("--producer-interval needs CHANNEL:CLOCKS");
+            o.slow_channel = name;
+            o.slow_interval = clk;
+        }
+        else if (a == "--stretch-import") {
+            char name[64] = {};
+            unsigned long long bd = 0, clk = 0;
+            if (std::sscanf(v, "%63[^:]:%llu:%llu", name, &bd, &clk) != 3 || bd >= SystemSim::kBoards || clk == 0)
+                return usage("--stretch-import needs CHANNEL:BOARD:CLOCKS");
+            o.stretch_channel = name;
+            o.stretch_board = static_cast<int>(bd);
+            o.stretch_clocks = clk;
+        }
         else if (a == "--dead-board" && num && x >= 0 && x < SystemSim::kBoards) o.dead_board = static_cast<int>(x);
         else if (a == "--dead-at" && num && x >= 0) o.dead_at = static_cast<uint64_t>(x);
         else if (a == "--corrupt-entry" && num && x >= 0) o.corrupt_entry = static_cast<int>(x);

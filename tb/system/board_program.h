@@ -25,6 +25,14 @@ struct Options {
     bool fault_per_clock = false;                // negative test: the old injector, one draw per clock
     double land_actual = 0;                      // negative test: a destination Actual store is performed
                                                  // and its answer lost (kind 3) with this probability
+    int land_kind = 3;                           // the forced kind: 3 (answer lost), 1 (err after
+                                                 // performing), 13 (alternately 3 and 1)
+    bool require_landed_same = false;            // fail unless a later slot carried a landed value
+    std::string slow_channel;                    // --producer-interval CH:CLOCKS: channel CH's
+    uint64_t slow_interval = 0;                  // producer exports every CLOCKS clocks
+    std::string stretch_channel;                 // --stretch-import CH:BOARD:CLOCKS: the consumer of
+    int stretch_board = -1;                      // channel CH on BOARD idles CLOCKS before every
+    uint64_t stretch_clocks = 0;                 // buffer load of a value but its first
     std::vector<std::string> expect_caught_by;   // a negative test: these checkers must fire
     std::vector<std::string> expect_failure;     // ... or scenario failures containing these
     uint64_t trace_from = 1, trace_to = 0;       // print the controller's accesses in this window

@@ -17,7 +17,7 @@ const char *SystemChecker::kind_name(int k)
 {
     static const char *n[KINDS] = {"mutual_exclusion", "definite_results", "actuality", "duplicate_new",
                                    "latency_bound", "ownership", "in_channel", "driver_error", "global_time",
-                                   "taken_at"};
+                                   "taken_at", "new_twice"};
     return n[k];
 }
 
@@ -225,6 +225,21 @@ void SystemChecker::on_bus(const SystemSim::BusEvent &e)
     }
     if (e.we || !(e.sel & (1u << ALB_OFF_ACTUAL))) return;
     const uint8_t a = static_cast<uint8_t>(e.rdata >> (8 * ALB_OFF_ACTUAL));
+    // A later slot finds the source holding the value a destination holds
+    // from a store that landed with its answer lost: the case in which a
+    // controller that forgot the landing would publish it again (counted for
+    // the three-buffer kind, whose Actual names the value directly).
+    if (!in->four_slot && ALB_VALID_INDEX(a)) {
+        int64_t cur = -1;
+        for (size_t k = 0; k < dst_[in->chan].size(); ++k) {
+            const DestState &d = dst_[in->chan][k];
+            if (!d.unanswered || d.pubs.size() < 2 || e.start <= d.unanswered_cycle) continue;
+            if (cur < 0) cur = source_seq(in->chan, a);
+            if (cur < 0 || d.pubs.back().seq != static_cast<uint64_t>(cur)) continue;
+            ++stats[in->chan].dests[k].landed_same_later;
+            if (d.new_seq == static_cast<uint64_t>(cur)) ++stats[in->chan].dests[k].landed_same_read;
+        }
+    }
     uint8_t b = 0;
     if (s.rl_stored >= 0) {
         if (!in->four_slot && a == s.rl_stored && ALB_VALID_INDEX(a)) b = a;
@@ -454,6 +469,13 @@ void SystemChecker::imported(int chan, int dest, int rc, const uint8_t *payload,
         return;
     }
     if (rc == ALB_NEW) ++st.imports_new;
+    // Overtakes: publications here while this Import ran
+    // (counted first: a torn value returns below).
+    uint64_t over = 0;
+    for (size_t i = d.pubs.size(), k = 0; i-- > 1 && k < 64; ++k)
+        if (d.pubs[i].pub_cycle != ~0ull && d.pubs[i].pub_cycle > begin && d.pubs[i].pub_cycle <= end) ++over;
+    st.max_overtakes = std::max(st.max_overtakes, over);
+    if (over >= 4) ++st.imports_overtaken4;
     const uint32_t n = c.dest_size();
     int64_t found = -1, at_begin = 0;
     // Two publications can hold equal bytes (a time value published before
@@ -476,6 +498,18 @@ void SystemChecker::imported(int chan, int dest, int rc, const uint8_t *payload,
                       c.name.c_str(), c.dests[dest].board, static_cast<unsigned long long>(begin),
                       static_cast<long long>(found), static_cast<long long>(std::max(at_begin, d.last_read)));
         violation(ACTUALITY, m);
+    }
+    // Consumer side: a source value is New at most once.
+    if (c.copy() && rc == ALB_NEW && found > 0) {
+        const uint64_t sq = d.pubs[found].seq;
+        if (d.new_seq != ~0ull && sq <= d.new_seq) {
+            std::snprintf(m, sizeof m, "%s on board %d: Import ending at cycle %llu returned value %llu as New, "
+                          "after this consumer had already read value %llu as New: expected Old (a value New twice)",
+                          c.name.c_str(), c.dests[dest].board, static_cast<unsigned long long>(end),
+                          static_cast<unsigned long long>(sq), static_cast<unsigned long long>(d.new_seq));
+            violation(NEW_TWICE, m);
+        }
+        d.new_seq = sq;
     }
     bool newer = found > d.last_read;
     if (newer != (rc == ALB_NEW)) {

@@ -35,6 +35,9 @@
 //                     even when its answer was lost (fault kinds 1 and 3):
 //                     the same value published there again is reported
 //                     as such (duplicate_new);
+//   new twice         at the consumer: an Import never returns New for a
+//                     source value this consumer already got as New (or an
+//                     older one) -- what a republished landed store would do;
 //   actuality         a destination never gets an older or the same value
 //                     again (so redundancy never makes one value New twice);
 //                     a consumer never goes back, and New exactly when newer;
@@ -66,7 +69,8 @@ void channel_value(int channel_id, uint64_t seq, uint8_t *out, uint32_t size);
 
 class SystemChecker : public SystemObserver {
 public:
-    enum Kind { MUTEX, DEFINITE, ACTUALITY, DUPLICATE, LATENCY, OWNERSHIP, IN_CHANNEL, DRIVER_ERROR, TIME, TAKEN_AT, KINDS };
+    enum Kind { MUTEX, DEFINITE, ACTUALITY, DUPLICATE, LATENCY, OWNERSHIP, IN_CHANNEL, DRIVER_ERROR, TIME, TAKEN_AT,
+                NEW_TWICE, KINDS };
     static const char *kind_name(int k);
 
     SystemChecker(const Plan &plan, SystemSim &sim, uint64_t time_offset);
@@ -103,6 +107,12 @@ public:
         uint64_t max_taken_minus_publish = 0;               // time/position correlation
         uint64_t landed_unanswered = 0;                     // Actual stores performed, answer lost (err or
                                                             // none), seen at the next store
+        uint64_t landed_same_later = 0;                     // a take of the value this destination holds
+                                                            // from a landed, unanswered store (a later slot
+                                                            // carrying the same source value)
+        uint64_t landed_same_read = 0;                      // ... whose consumer had already read it New
+        uint64_t max_overtakes = 0;                         // most publications here during one Import
+        uint64_t imports_overtaken4 = 0;                    // Imports overtaken by 4 or more publications
     };
     struct ChannelStats {
         uint64_t exports = 0;
@@ -137,6 +147,8 @@ private:
         int64_t last_read = 0;             // consumer: index of the last pub read
         uint8_t actual = 0;                // the destination's Actual, as last stored
                                            // (four-slot: the buffer last completed)
+        uint64_t new_seq = ~0ull;          // consumer: the source value of its last New read (copy
+                                           // channels, publications after the image; ~0: none)
         bool unanswered = false;           // the last Actual store was performed, its ack not seen
         uint64_t unanswered_cycle = 0;     // ... performed at this cycle
     };

@@ -14,6 +14,19 @@
 //             [--land-actual P]                   negative test: each store of a destination's
 //                                                 Actual is performed and its answer lost
 //                                                 (kind 3) with probability P, outside the rate
+//             [--land-kind 3|1|13]                the forced kind: 3 answer lost, 1 err after
+//                                                 performing, 13 alternately 3 and 1
+//             [--require-landed-same 1]           fail unless a later slot carried the value a
+//                                                 destination holds from a landed store whose
+//                                                 answer was lost, after its consumer read it
+//             [--producer-interval CH:CLOCKS]     channel CH's producer exports every CLOCKS
+//                                                 clocks (slower than its slots: later slots
+//                                                 carry the same source value)
+//             [--stretch-import CH:BOARD:CLOCKS]  the consumer of channel CH on BOARD idles
+//                                                 CLOCKS before each buffer load of a value but
+//                                                 the first (a slow CPU); fail unless at least
+//                                                 three of its Imports were overtaken by four or
+//                                                 more publications
 //             [--dead-board B --dead-at C]        board B's link fails for good at cycle C
 //             [--corrupt-entry K]                 a run-time upset: flip a bit of schedule ROM
 //                                                 entry K's reserved word E6 at time 20000
@@ -55,6 +68,18 @@ bool is_dest_control(const Plan &plan, int board, uint32_t addr)
         for (const PlanDest &d : c.dests)
             if (d.board == board && d.base == addr) return true;
     return false;
+}
+
+// --stretch-import: the one destination instance whose Imports are stretched.
+struct Stretch {
+    int board = -1, chan = -1, dest = -1;
+    uint32_t first = 0, end = 0, stride = 1;   // its buffers' bytes [first, end), one buffer per stride
+    unsigned clocks = 0;
+} g_stretch;
+unsigned stretch_hook(SimCpu &cpu, uint32_t addr, bool we)
+{
+    if (we || cpu.id != g_stretch.board || addr < g_stretch.first || addr >= g_stretch.end) return 0;
+    return (addr - g_stretch.first) % g_stretch.stride ? g_stretch.clocks : 0;
 }
 }  // namespace
 
@@ -129,6 +154,7 @@ int main(int argc, char **argv)
             r.chan = static_cast<int>(i);
             r.interval_lo = c.sync ? p / 2 : 1;     // positions come about once a cycle
             r.interval_hi = c.sync ? p : p / 2;     // others many times, at random phases
+            if (c.name == o.slow_channel) r.interval_lo = r.interval_hi = o.slow_interval;
             boards[c.src_board].roles.push_back(r);
         }
         for (size_t d = 0; d < c.dests.size(); ++d) {
@@ -147,6 +173,28 @@ int main(int argc, char **argv)
         sim.cpu[b].window_hi = SystemSim::kRamBytes;
         sim.cpu[b].context = &boards[b];
         if (!boards[b].roles.empty()) sim.cpu[b].start(board_program);
+    }
+    if (o.stretch_board >= 0) {
+        for (size_t i = 0; i < plan.channels.size(); ++i)
+            for (size_t d = 0; d < plan.channels[i].dests.size(); ++d)
+                if (plan.channels[i].name == o.stretch_channel && plan.channels[i].dests[d].board == o.stretch_board) {
+                    const PlanChannel &c = plan.channels[i];
+                    g_stretch.board = o.stretch_board;
+                    g_stretch.chan = static_cast<int>(i);
+                    g_stretch.dest = static_cast<int>(d);
+                    g_stretch.first = c.dests[d].base + ALB_OFF_BUFFER(1u, c.dest_size());
+                    g_stretch.end = c.dests[d].base + instance_bytes(c, c.dest_size());
+                    g_stretch.stride = ALB_OFF_BUFFER(2u, c.dest_size()) - ALB_OFF_BUFFER(1u, c.dest_size());
+                    g_stretch.clocks = static_cast<unsigned>(o.stretch_clocks);
+                }
+        if (g_stretch.chan < 0) {
+            std::fprintf(stderr, "tb_system: --stretch-import: board %d has no destination of channel %s\n",
+                         o.stretch_board, o.stretch_channel.c_str());
+            return 2;
+        }
+        sim.cpu[o.stretch_board].stall_hook = stretch_hook;
+        std::printf("  stretched: %s's consumer on board %d idles %u clocks before each buffer load but a value's first\n",
+                    o.stretch_channel.c_str(), o.stretch_board, g_stretch.clocks);
     }
 
     std::vector<TransferMeter> meters;
@@ -180,7 +228,7 @@ int main(int argc, char **argv)
             uint8_t rsel = 0;
             if (sim.next_request(rb, ra, rwe, rsel) && rwe && (rsel & (1u << ALB_OFF_ACTUAL)) && is_dest_control(plan, rb, ra) &&
                 std::uniform_real_distribution<double>(0, 1)(land_rng) < o.land_actual)
-                sim.force_fault(3);
+                sim.force_fault(o.land_kind == 13 ? (sim.forced_faults % 2 ? 1u : 3u) : static_cast<unsigned>(o.land_kind));
         }
         unsigned done = sim.tick();
         // One draw per access begun (per clock: the old injector's driving).
@@ -243,6 +291,32 @@ int main(int argc, char **argv)
         failures.push_back(m);
     }
     if (sim.error()) failures.push_back("the controller flagged its ROM header as invalid");
+    // The scenario a test asked for happened (and how often).
+    uint64_t same_later = 0, same_read = 0;
+    for (const SystemChecker::ChannelStats &cs : chk.stats)
+        for (const SystemChecker::DestStats &ds : cs.dests) { same_later += ds.landed_same_later; same_read += ds.landed_same_read; }
+    if (o.land_actual > 0)
+        std::printf("  landed stores: %llu later slots carried the value a destination held from a store whose answer "
+                    "was lost, %llu of them after its consumer had read it New\n",
+                    static_cast<unsigned long long>(same_later), static_cast<unsigned long long>(same_read));
+    if (o.require_landed_same && (same_later == 0 || same_read == 0)) {
+        std::snprintf(m, sizeof m, "landed stores: expected a later slot carrying the value of a landed, unanswered "
+                      "store after its consumer read it New, got %llu such slots (%llu after a New read)",
+                      static_cast<unsigned long long>(same_later), static_cast<unsigned long long>(same_read));
+        failures.push_back(m);
+    }
+    if (g_stretch.chan >= 0) {
+        const SystemChecker::DestStats &ds = chk.stats[g_stretch.chan].dests[g_stretch.dest];
+        std::printf("  stretched Imports: %llu of %llu Imports overtaken by 4 or more publications, at most %llu\n",
+                    static_cast<unsigned long long>(ds.imports_overtaken4), static_cast<unsigned long long>(ds.imports),
+                    static_cast<unsigned long long>(ds.max_overtakes));
+        if (ds.imports_overtaken4 < 3) {
+            std::snprintf(m, sizeof m, "stretched Imports: expected at least 3 Imports overtaken by 4 or more "
+                          "publications, got %llu (at most %llu publications during one Import)",
+                          static_cast<unsigned long long>(ds.imports_overtaken4), static_cast<unsigned long long>(ds.max_overtakes));
+            failures.push_back(m);
+        }
+    }
     // The counters, as a CPU read them from the STATUS channel.
     bool has_status = false;
     for (const PlanChannel &c : plan.channels) has_status = has_status || c.kind == "status";
@@ -292,13 +366,15 @@ int main(int argc, char **argv)
                         static_cast<unsigned long long>(ds.publications), static_cast<unsigned long long>(ds.imports),
                         static_cast<unsigned long long>(ds.latency_max), static_cast<unsigned long long>(c.latency), ratio,
                         static_cast<unsigned long long>(ds.latency_over), static_cast<unsigned long long>(ds.last_age_seen));
-            char b[600];
+            char b[900];
             std::snprintf(b, sizeof b,
                           "%s{\"channel\": \"%s\", \"kind\": \"%s\", \"to_board\": %d, \"exports\": %llu, \"publications\": %llu, "
                           "\"imports\": %llu, \"imports_new\": %llu, \"latency_max\": %llu, \"latency_mean\": %.1f, "
                           "\"latency_bound\": %llu, \"max_over_bound\": %.4f, \"latency_samples\": %llu, \"over_bound\": %llu, "
                           "\"delivered_within_bound\": %.5f, \"last_age_seen\": %llu, \"max_age_seen\": %llu, "
-                          "\"max_taken_minus_published\": %llu, \"period_bound\": %llu, \"landed_unanswered\": %llu}",
+                          "\"max_taken_minus_published\": %llu, \"period_bound\": %llu, \"landed_unanswered\": %llu, "
+                          "\"landed_same_later\": %llu, \"landed_same_read\": %llu, \"max_overtakes\": %llu, "
+                          "\"imports_overtaken4\": %llu}",
                           chans.size() > 1 ? ", " : "", c.name.c_str(), c.kind.c_str(), c.dests[d].board,
                           static_cast<unsigned long long>(cs.exports), static_cast<unsigned long long>(ds.publications),
                           static_cast<unsigned long long>(ds.imports), static_cast<unsigned long long>(ds.imports_new),
@@ -309,7 +385,11 @@ int main(int argc, char **argv)
                           ds.latency_n ? 1.0 - static_cast<double>(ds.latency_over) / ds.latency_n : 0.0,
                           static_cast<unsigned long long>(ds.last_age_seen), static_cast<unsigned long long>(ds.max_age_seen),
                           static_cast<unsigned long long>(ds.max_taken_minus_publish), static_cast<unsigned long long>(c.period),
-                          static_cast<unsigned long long>(ds.landed_unanswered));
+                          static_cast<unsigned long long>(ds.landed_unanswered),
+                          static_cast<unsigned long long>(ds.landed_same_later),
+                          static_cast<unsigned long long>(ds.landed_same_read),
+                          static_cast<unsigned long long>(ds.max_overtakes),
+                          static_cast<unsigned long long>(ds.imports_overtaken4));
             chans += b;
             // A dead board: consumers of its channels must see the age grow;
             // channels that do not involve it keep their fault-free bound, live

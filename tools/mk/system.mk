@@ -213,3 +213,38 @@ test-system-negative-watchdog: $(SYS_DIR)/mutant-zero_readlocked/tb_system $(SYS
 	    if [ $$rc = 3 ] && grep -q "tb: watchdog: simulated CPU" $(SYS_DIR)/watchdog.log; then \
 	    echo "the hand-off watchdog ended the run, as expected"; \
 	    else echo "expected the hand-off watchdog to end the run (exit 3), got exit $$rc"; exit 1; fi'
+
+# A destination's Actual store lands but its answer is lost, and a later slot
+# carries the same source value: the consumer must not see it New twice.  The
+# fault plan is deterministic: every store of a destination's Actual is
+# performed with its answer lost, alternately without any answer (kind 3) and
+# with err (kind 1); MotorCmd's producer exports only every 7500 clocks (three
+# cycles), so the slots between carry the value already delivered.  The run
+# counts those slots (landed_same_later, and the ones after the consumer read
+# the value New) and fails on none; the consumer-side checker new_twice guards
+# the outcome.  Negative: the controller that forgets a landed store
+# (mutant forget_landed) republishes it and its consumer reads it New twice.
+SYS_LANDED_SAME := --land-actual 1 --land-kind 13 --producer-interval MotorCmd:7500 --require-landed-same 1
+TESTS += system-landed-same-value system-negative-landed-same-value
+test-system-landed-same-value: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,landed-same-value) --plan $(SYS_RIGID) $(SYS_LANDED_SAME)
+test-system-negative-landed-same-value: $(SYS_DIR)/mutant-forget_landed/tb_system $(SYS_RIGID)/tb_plan.txt
+	@tools/run_test.sh system-negative-landed-same-value $< --plan $(SYS_RIGID) --seed $(SEED) --cycles $(SYS_CYCLES) \
+	    --label system-negative-landed-same-value $(SYS_LANDED_SAME) --expect-caught-by new_twice
+
+# A four-slot consumer overtaken by four or more Exports while it reads one
+# value: the motor board's CPU idles 3000 clocks before every GlobalTime
+# buffer load but a value's first (a slow consumer), while the controller
+# publishes GlobalTime about every 300 clocks.  The run counts the Imports
+# overtaken by four or more publications and fails on fewer than three; the
+# consumer-side checkers require the value read to be whole (definite_results)
+# and current during the Import (actuality).  Negative: a four-slot Export
+# that ignores ReadLocked (mutant fs_ignore_readlocked) writes the buffer the
+# consumer reads by the fourth overtake: a torn value.
+SYS_OVERTAKE := --stretch-import GlobalTime:3:3000
+TESTS += system-four-slot-overtaken system-negative-four-slot-overtaken
+test-system-four-slot-overtaken: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,four-slot-overtaken) --plan $(SYS_RIGID) $(SYS_OVERTAKE)
+test-system-negative-four-slot-overtaken: $(SYS_DIR)/mutant-fs_ignore_readlocked/tb_system $(SYS_RIGID)/tb_plan.txt
+	@tools/run_test.sh system-negative-four-slot-overtaken $< --plan $(SYS_RIGID) --seed $(SEED) --cycles $(SYS_CYCLES) \
+	    --label system-negative-four-slot-overtaken $(SYS_OVERTAKE) --expect-caught-by definite_results
