@@ -39,6 +39,7 @@ EXPECT = {
     "EP_ENGINES": [("export_endpoint", None), ("import_endpoint", None), ("dpram", None)],
     "CDC_SRC": [("wb_cdc", None), ("dpram", None)],
     "AXIL_SRC": [("dpram_axil", None)],
+    "CTRL_SRC": [("soc:system", None)],
 }
 OWNED_DIRS = ("rtl", "soc", "fpga")
 

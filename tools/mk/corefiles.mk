@@ -12,7 +12,7 @@
 #   make corefiles-print  the lists, one "NAME: files" line each
 
 COREFILES_DIR  := $(BUILD)/corefiles
-COREFILES_VARS := CTRL_RTL FPGA_RTL PB_RTL PICO_RTL PBN_RTL VEX_RTL EP_CORE EP_ENGINES CDC_SRC AXIL_SRC
+COREFILES_VARS := CTRL_RTL FPGA_RTL PB_RTL PICO_RTL PBN_RTL VEX_RTL EP_CORE EP_ENGINES CDC_SRC AXIL_SRC CTRL_SRC
 COREFILES_CHECK := python3 tools/corefiles_check.py
 # A copy of the cores with their sources, for the negatives: $(1) = name.
 corefiles_copy = rm -rf $(COREFILES_DIR)/$(1) && mkdir -p $(COREFILES_DIR)/$(1) && \

@@ -44,7 +44,7 @@ FPGA_OWN    := fpga/duo_system.v $(FPGA_TOPS)
 # (the duo core's files with its dependencies: tools/corefiles.py).
 FPGA_RTL    := $(FPGA_TOPS) $(CORE_board_duo)
 # Files fpga-lint checks each as a top: the demonstration and the FPGA-only soc/ parts.
-FPGA_LINT   := $(FPGA_OWN) soc/albatross_system.v soc/picorv32_ooc.v
+FPGA_LINT   := $(FPGA_OWN) soc/albatross_system.v $(CORE_FS_soc_system_picorv32_ooc)
 # PicoRV32 and SERV come from PyPI (tools/mk/pico.mk, tools/mk/serv.mk); Verilator flags.
 FPGA_VFLAGS  = -Wall --timescale 1ns/1ps $(VLIB) -y fpga -y $(SERV_CPU_RTL) tb/pico/picorv32.vlt tb/pico/serv.vlt
 # (tools/mk/pico.mk, read after this file, defines PICO_RV32_V and FW_*: every use

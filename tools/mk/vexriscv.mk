@@ -174,7 +174,7 @@ bench-vex: $(VEX_BENCH_BIN) $(VEX_DIR)/fw/bench.hex $(PBN_BIN) $(PBN_DIR)/bench.
 #   make test-vex-boards   fault-free, cores stalled in random bursts;
 #                          build/reports/vex_boards.json
 VB_BIN := $(PB_DIR)/obj-vex-motor/Vpico_boards
-$(VB_BIN): $(PB_RTL) $(RTL_INC) soc/vexriscv_core.v soc/vexriscv_bridge.v $(PICO_RV32_V) $(PB_SRC) $(PB_HDR) \
+$(VB_BIN): $(PB_RTL) $(RTL_INC) $(CORE_FS_soc_system_vexriscv) $(PICO_RV32_V) $(PB_SRC) $(PB_HDR) \
         tb/pico/picorv32.vlt tb/pico/vexriscv.vlt tools/mk/pico_boards.mk tools/mk/vexriscv.mk
 	$(VEX_NEED)
 	$(PICO_NEED)
