@@ -177,11 +177,18 @@ def main():
     canon = {}                                   # frozen params -> slug (a growth row may equal "full")
     for s, p in psets.items():
         canon.setdefault(tuple(sorted(p.items())), s)
-    unsupported = {}
+    unsupported, known = {}, {}                  # known: parameter -> the controller has it
     for s, p in psets.items():
         if canon[tuple(sorted(p.items()))] != s:
             continue
         why = elaborates(p, os.path.join(a.out, s))
+        if why and why.startswith("no parameter"):
+            # Name every parameter of the set the controller does not have, not only Yosys's first.
+            for k in p:
+                if k not in BASE and k not in known:
+                    known[k] = elaborates(dict(BASE, **{k: p[k]}), os.path.join(a.out, f"param_{k}")) is None
+            lack = [k for k in p if k not in BASE and not known[k]]
+            why = f"no parameter{'s' if len(lack) > 1 else ''} {', '.join(lack)}" if lack else why
         if why:
             unsupported[s] = why
             say(f"{s}: not supported by this controller: {why}")
@@ -264,10 +271,13 @@ def main():
         f"{cell(res[('PicoRV32', f)], 'brams'):>5}{'':>7}" for f in fams))
     for name, _, _ in CONFIGS:
         line = f"{name:<20}"
+        if all("not_supported" in x for x in rows if x["config"] == name):
+            print(line + "  not supported by this controller")
+            continue
         for fam in fams:
             r = next(x for x in rows if x["config"] == name and x["family"] == fam)
             if "not_supported" in r:
-                line += f"{'not supported by this controller':>32}"
+                line += f"{'n/s':>32}"
                 continue
             line += f"{'':>8}{cell(r, 'luts'):>6}{cell(r, 'ffs'):>6}{cell(r, 'brams'):>5}" + \
                 (f"{r['over_picorv32']:>7.2f}" if "over_picorv32" in r else f"{'-':>7}")
