@@ -37,9 +37,10 @@ VLIB          := -Irtl -y rtl -y soc -y tb/common
 RTL_INC       := $(sort $(wildcard rtl/*.vh))
 # Every RTL file list is read from the FuseSoC cores (rtl/*.core, soc/*.core,
 # fpga/*.core): tools/corefiles.py writes them as CORE_<name> (a core's default
-# target with its project dependencies) and CORE_OWN_<name> (its own files)
-# into $(BUILD)/corefiles.mk, remade when a core changes.  It needs only the
-# Python standard library (python3), so it works before make deps.
+# target with its project dependencies), CORE_OWN_<name> (its own files) and
+# CORE_FS_<name>_<fileset> (one fileset's files) into $(BUILD)/corefiles.mk,
+# remade when a core changes (make test-corefiles checks the lists).  It needs
+# only the Python standard library (python3), so it works before make deps.
 include $(BUILD)/corefiles.mk
 $(BUILD)/corefiles.mk: tools/corefiles.py $(wildcard rtl/*.core soc/*.core fpga/*.core constraints/*.core)
 	@mkdir -p $(@D)
