@@ -122,16 +122,8 @@ module pico_boards #(
     genvar t;
     generate
         for (t = 0; t < NB; t = t + 1) begin : g_timer
-            if (((VEX_MASK >> t) & 1) != 0) begin : g_vex
-                assign timer_rd_o[t]         = u_sys.g_board[t].g_core.u_core.g_vex.u_core.u_map.timer_read;
-                assign timer_o[t*32 +: 32]   = u_sys.g_board[t].g_core.u_core.g_vex.u_core.u_map.timer_q;
-            end else if (((SERV_MASK >> t) & 1) != 0) begin : g_serv
-                assign timer_rd_o[t]         = u_sys.g_board[t].g_core.u_core.g_serv.u_core.u_map.timer_read;
-                assign timer_o[t*32 +: 32]   = u_sys.g_board[t].g_core.u_core.g_serv.u_core.u_map.timer_q;
-            end else begin : g_pico
-                assign timer_rd_o[t]         = u_sys.g_board[t].g_core.u_core.g_pico.u_core.u_map.timer_read;
-                assign timer_o[t*32 +: 32]   = u_sys.g_board[t].g_core.u_core.g_pico.u_core.u_map.timer_q;
-            end
+            assign timer_rd_o[t]         = u_sys.g_board[t].g_core.u_core.u_map.timer_read;
+            assign timer_o[t*32 +: 32]   = u_sys.g_board[t].g_core.u_core.u_map.timer_q;
         end
     endgenerate
 `else

@@ -1,9 +1,13 @@
 // board_core -- the soft core of one board: a PicoRV32 (pico_core), a
 // SERV (serv_core, SERV = 1) or a VexRiscv with caches (vexriscv_core,
-// VEX = 1; it wins over SERV), with the ports all share (the board's
-// memory map, board_memmap, is inside each; VexRiscv sees it through
-// vexriscv_bridge, with the DPRAM window and registers uncached at
-// 0x9000_0000 / 0xA000_0000).  albatross_system (the
+// VEX = 1; it wins over SERV), each with the same native memory port, and
+// the board's memory map behind it (board_memmap, one instance for every
+// kind of core: local program RAM, board registers, the Wishbone master to
+// the DPRAM port; VexRiscv sees it through vexriscv_bridge, with the DPRAM
+// window and registers uncached at 0x9000_0000 / 0xA000_0000).  stall_i
+// holds the core's local-RAM accesses (instruction fetches and refills
+// included); DPRAM accesses are never held.  Reset (synchronous, active
+// high) clears control state, never the RAM.  albatross_system (the
 // system of the FPGA tops, the robot simulation and the system test) and
 // tb/pico/pico_pair instantiate this once per board; the timing and rules
 // are those of the chosen core.
@@ -45,35 +49,59 @@ module board_core #(
     output wire                  bus_err_o  // an access to an unmapped address
 );
 
+    // The chosen core's native memory port, to the memory map.
+    wire        mem_valid, mem_ready;
+    wire [31:0] mem_addr, mem_wdata, mem_rdata;
+    wire [3:0]  mem_wstrb;
+
     generate
         if (VEX != 0) begin : g_vex
-            vexriscv_core #(.CORE(CORE), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE),
-                            .CACHED_ALIAS(CACHED_ALIAS)) u_core (
-                .clk_i(clk_i), .rst_i(rst_i), .stall_i(stall_i),
-                .wb_cyc_o(wb_cyc_o), .wb_stb_o(wb_stb_o), .wb_we_o(wb_we_o), .wb_adr_o(wb_adr_o),
-                .wb_sel_o(wb_sel_o), .wb_dat_o(wb_dat_o), .wb_dat_i(wb_dat_i), .wb_ack_i(wb_ack_i),
-                .done_o(done_o), .code_o(code_o), .stat_o(stat_o), .ev_valid_o(ev_valid_o),
-                .ev_data_o(ev_data_o), .ev_arg_o(ev_arg_o), .trap_o(trap_o), .bus_err_o(bus_err_o)
+            vexriscv_core #(.CACHED_ALIAS(CACHED_ALIAS)) u_core (
+                .clk_i(clk_i), .rst_i(rst_i),
+                .mem_valid_o(mem_valid), .mem_addr_o(mem_addr), .mem_wdata_o(mem_wdata), .mem_wstrb_o(mem_wstrb),
+                .mem_ready_i(mem_ready), .mem_rdata_i(mem_rdata), .trap_o(trap_o)
             );
         end else if (SERV == 0) begin : g_pico
-            pico_core #(.CORE(CORE), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE),
-                        .SMALL(SMALL)) u_core (
-                .clk_i(clk_i), .rst_i(rst_i), .stall_i(stall_i),
-                .wb_cyc_o(wb_cyc_o), .wb_stb_o(wb_stb_o), .wb_we_o(wb_we_o), .wb_adr_o(wb_adr_o),
-                .wb_sel_o(wb_sel_o), .wb_dat_o(wb_dat_o), .wb_dat_i(wb_dat_i), .wb_ack_i(wb_ack_i),
-                .done_o(done_o), .code_o(code_o), .stat_o(stat_o), .ev_valid_o(ev_valid_o),
-                .ev_data_o(ev_data_o), .ev_arg_o(ev_arg_o), .trap_o(trap_o), .bus_err_o(bus_err_o)
+            pico_core #(.SMALL(SMALL)) u_core (
+                .clk_i(clk_i), .rst_i(rst_i),
+                .mem_valid_o(mem_valid), .mem_addr_o(mem_addr), .mem_wdata_o(mem_wdata), .mem_wstrb_o(mem_wstrb),
+                .mem_ready_i(mem_ready), .mem_rdata_i(mem_rdata), .trap_o(trap_o)
             );
         end else begin : g_serv
-            serv_core #(.CORE(CORE), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE)) u_core (
-                .clk_i(clk_i), .rst_i(rst_i), .stall_i(stall_i),
-                .wb_cyc_o(wb_cyc_o), .wb_stb_o(wb_stb_o), .wb_we_o(wb_we_o), .wb_adr_o(wb_adr_o),
-                .wb_sel_o(wb_sel_o), .wb_dat_o(wb_dat_o), .wb_dat_i(wb_dat_i), .wb_ack_i(wb_ack_i),
-                .done_o(done_o), .code_o(code_o), .stat_o(stat_o), .ev_valid_o(ev_valid_o),
-                .ev_data_o(ev_data_o), .ev_arg_o(ev_arg_o), .trap_o(trap_o), .bus_err_o(bus_err_o)
+            serv_core u_core (
+                .clk_i(clk_i), .rst_i(rst_i),
+                .mem_valid_o(mem_valid), .mem_addr_o(mem_addr), .mem_wdata_o(mem_wdata), .mem_wstrb_o(mem_wstrb),
+                .mem_ready_i(mem_ready), .mem_rdata_i(mem_rdata), .trap_o(trap_o)
             );
         end
     endgenerate
+
+    board_memmap #(.CORE(CORE), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE)) u_map (
+        .clk_i     (clk_i),
+        .rst_i     (rst_i),
+        .stall_i   (stall_i),
+        .valid_i   (mem_valid),
+        .addr_i    (mem_addr),
+        .wdata_i   (mem_wdata),
+        .wstrb_i   (mem_wstrb),
+        .ready_o   (mem_ready),
+        .rdata_o   (mem_rdata),
+        .wb_cyc_o  (wb_cyc_o),
+        .wb_stb_o  (wb_stb_o),
+        .wb_we_o   (wb_we_o),
+        .wb_adr_o  (wb_adr_o),
+        .wb_sel_o  (wb_sel_o),
+        .wb_dat_o  (wb_dat_o),
+        .wb_dat_i  (wb_dat_i),
+        .wb_ack_i  (wb_ack_i),
+        .done_o    (done_o),
+        .code_o    (code_o),
+        .stat_o    (stat_o),
+        .ev_valid_o(ev_valid_o),
+        .ev_data_o (ev_data_o),
+        .ev_arg_o  (ev_arg_o),
+        .bus_err_o (bus_err_o)
+    );
 
 endmodule
 

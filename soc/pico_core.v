@@ -1,9 +1,10 @@
-// pico_core -- board part: one PicoRV32 core on the memory map of a
-// board (board_memmap: local program RAM, board registers and a
+// pico_core -- board part: one PicoRV32 core with its native memory port
+// (PicoRV32's own mem_* interface) on the ports; board_core puts the board's
+// memory map (board_memmap: local program RAM, board registers and a
 // Wishbone master to one port of an albatross_dpram; the map is described
-// there and in soc/firmware/board.h).  stall_i holds the core's local-RAM
-// accesses (instruction fetches included); DPRAM accesses are never held.
-// Reset (synchronous, active high) clears control state, never the RAM.
+// there and in soc/firmware/board.h) behind it.  Timing: PicoRV32's; a
+// request waits for mem_ready_i.  Reset (synchronous, active high) clears
+// control state.
 // PicoRV32 comes from PyPI (pythondata-cpu-picorv32): rv32i, counters on,
 // no IRQ, no PCPI; SMALL = 1 drops the counters (the firmware must not read
 // them) and the misalign/illegal-instruction traps, for FPGA tops whose
@@ -11,38 +12,23 @@
 `default_nettype none
 
 module pico_core #(
-    parameter CORE       = 0,     // index: the firmware plusarg is +fw<CORE>=FILE (0..3)
-    parameter ADDR_WIDTH = 10,    // word-address bits of the DPRAM port
-    parameter RAM_WORDS  = 4096,  // words of the local RAM (16 KiB)
-    parameter FW_FILE    = "",    // program image at configuration (board_memmap)
     parameter SMALL      = 0      // 1: a smaller PicoRV32 (no counters, no misalign/illegal-instruction traps)
 ) (
-    input  wire                  clk_i,
-    input  wire                  rst_i,     // synchronous, active high
-    input  wire                  stall_i,   // hold the local-RAM access this cycle
-    // Wishbone B4 classic master to a DPRAM port
-    output wire                  wb_cyc_o,
-    output wire                  wb_stb_o,
-    output wire                  wb_we_o,
-    output wire [ADDR_WIDTH-1:0] wb_adr_o,
-    output wire [3:0]            wb_sel_o,
-    output wire [31:0]           wb_dat_o,
-    input  wire [31:0]           wb_dat_i,
-    input  wire                  wb_ack_i,
-    // board status
-    output wire                  done_o,    // the core stored to TOHOST
-    output wire [31:0]           code_o,    // the last value it stored (exit code)
-    output wire [127:0]          stat_o,    // STAT k at [k*32 +: 32]
-    output wire                  ev_valid_o,// a store to EVENT, this clock
-    output wire [31:0]           ev_data_o, // its value
-    output wire [31:0]           ev_arg_o,  // ARG at that time
-    output wire                  trap_o,    // PicoRV32 trapped
-    output wire                  bus_err_o  // an access to an unmapped address
+    input  wire        clk_i,
+    input  wire        rst_i,        // synchronous, active high
+    // Native memory port to the board's memory map (board_core puts
+    // board_memmap here): a request holds mem_valid_o and its address, data
+    // and byte strobes (0: a read) until mem_ready_i, with mem_rdata_i valid then.
+    output wire        mem_valid_o,
+    output wire [31:0] mem_addr_o,
+    output wire [31:0] mem_wdata_o,
+    output wire [3:0]  mem_wstrb_o,
+    input  wire        mem_ready_i,
+    input  wire [31:0] mem_rdata_i,
+    output wire        trap_o        // PicoRV32 trapped
 );
 
-    wire        mem_valid, mem_instr, mem_ready, trap;
-    wire [31:0] mem_addr, mem_wdata, mem_rdata;
-    wire [3:0]  mem_wstrb;
+    wire        mem_instr, trap;
     // PicoRV32 outputs this core wrapper does not use.
     wire        la_read, la_write, pcpi_valid;
     wire [31:0] la_addr, la_wdata, pcpi_insn, pcpi_rs1, pcpi_rs2, eoi;
@@ -66,13 +52,13 @@ module pico_core #(
         .clk         (clk_i),
         .resetn      (~rst_i),
         .trap        (trap),
-        .mem_valid   (mem_valid),
+        .mem_valid   (mem_valid_o),
         .mem_instr   (mem_instr),
-        .mem_ready   (mem_ready),
-        .mem_addr    (mem_addr),
-        .mem_wdata   (mem_wdata),
-        .mem_wstrb   (mem_wstrb),
-        .mem_rdata   (mem_rdata),
+        .mem_ready   (mem_ready_i),
+        .mem_addr    (mem_addr_o),
+        .mem_wdata   (mem_wdata_o),
+        .mem_wstrb   (mem_wstrb_o),
+        .mem_rdata   (mem_rdata_i),
         .mem_la_read (la_read),
         .mem_la_write(la_write),
         .mem_la_addr (la_addr),
@@ -95,32 +81,6 @@ module pico_core #(
                          la_wstrb, pcpi_valid, pcpi_insn, pcpi_rs1, pcpi_rs2, eoi,
                          trace_valid, trace_data};
 
-    board_memmap #(.CORE(CORE), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE)) u_map (
-        .clk_i     (clk_i),
-        .rst_i     (rst_i),
-        .stall_i   (stall_i),
-        .valid_i   (mem_valid),
-        .addr_i    (mem_addr),
-        .wdata_i   (mem_wdata),
-        .wstrb_i   (mem_wstrb),
-        .ready_o   (mem_ready),
-        .rdata_o   (mem_rdata),
-        .wb_cyc_o  (wb_cyc_o),
-        .wb_stb_o  (wb_stb_o),
-        .wb_we_o   (wb_we_o),
-        .wb_adr_o  (wb_adr_o),
-        .wb_sel_o  (wb_sel_o),
-        .wb_dat_o  (wb_dat_o),
-        .wb_dat_i  (wb_dat_i),
-        .wb_ack_i  (wb_ack_i),
-        .done_o    (done_o),
-        .code_o    (code_o),
-        .stat_o    (stat_o),
-        .ev_valid_o(ev_valid_o),
-        .ev_data_o (ev_data_o),
-        .ev_arg_o  (ev_arg_o),
-        .bus_err_o (bus_err_o)
-    );
     assign trap_o = trap;
 
 endmodule

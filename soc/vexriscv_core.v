@@ -1,10 +1,10 @@
 // vexriscv_core -- board part: one VexRiscv core (the LiteX standard
 // variant VexRiscv.v of pythondata-cpu-vexriscv: rv32im, 5-stage pipeline,
 // 4 KiB instruction cache and 4 KiB write-through data cache, 32-byte lines,
-// Wishbone iBus and dBus) on the memory map of a board (board_memmap: local
-// program RAM, board registers and a Wishbone master to one port of an
-// albatross_dpram).  The same parameters and ports as pico_core, so a top
-// picks it per board with a generate-if (board_core, VEX = 1).
+// Wishbone iBus and dBus) with a native memory port, the same ports as
+// pico_core: board_core picks it per board with a generate-if (VEX = 1) and
+// puts the board's memory map (board_memmap: local program RAM, board
+// registers and a Wishbone master to one port of an albatross_dpram) behind it.
 //
 // What a cached core needs.  The data cache would hand the driver stale
 // copies of the channel's control bytes and buffers (the other side writes
@@ -25,42 +25,28 @@
 // Timing.  A cache hit costs no bus access; a miss refills a 32-byte line in
 // 8 beats of 2 clocks each from the local RAM.  An uncached access (the
 // DPRAM window, a register) is one bus request; the pipeline waits for it.
-// stall_i holds the core's local-RAM accesses (refills included); DPRAM
-// accesses are never held.  Reset (synchronous, active high) clears control
-// state, never the RAM; the caches invalidate themselves after reset.
+// Reset (synchronous, active high) clears control state; the caches
+// invalidate themselves after reset.
 // VexRiscv brings out no trap signal: a trap jumps to mtvec inside the core
 // (the variant's mtvec is write-only and not initialised), so trap_o is 0;
 // a run that traps ends on its harness's watchdog.
 `default_nettype none
 
 module vexriscv_core #(
-    parameter CORE       = 0,     // index: the firmware plusarg is +fw<CORE>=FILE (0..3)
-    parameter ADDR_WIDTH = 10,    // word-address bits of the DPRAM port
-    parameter RAM_WORDS  = 4096,  // words of the local RAM (16 KiB)
-    parameter FW_FILE    = "",    // program image at configuration (board_memmap)
     parameter CACHED_ALIAS = 0    // 1: the DPRAM and registers also reachable cached (vexriscv_bridge)
 ) (
-    input  wire                  clk_i,
-    input  wire                  rst_i,     // synchronous, active high
-    input  wire                  stall_i,   // hold the local-RAM access this cycle
-    // Wishbone B4 classic master to a DPRAM port
-    output wire                  wb_cyc_o,
-    output wire                  wb_stb_o,
-    output wire                  wb_we_o,
-    output wire [ADDR_WIDTH-1:0] wb_adr_o,
-    output wire [3:0]            wb_sel_o,
-    output wire [31:0]           wb_dat_o,
-    input  wire [31:0]           wb_dat_i,
-    input  wire                  wb_ack_i,
-    // board status
-    output wire                  done_o,    // the core stored to TOHOST
-    output wire [31:0]           code_o,    // the last value it stored (exit code)
-    output wire [127:0]          stat_o,    // STAT k at [k*32 +: 32]
-    output wire                  ev_valid_o,// a store to EVENT, this clock
-    output wire [31:0]           ev_data_o, // its value
-    output wire [31:0]           ev_arg_o,  // ARG at that time
-    output wire                  trap_o,    // always 0: VexRiscv has no trap output
-    output wire                  bus_err_o  // an access to an unmapped address
+    input  wire        clk_i,
+    input  wire        rst_i,        // synchronous, active high
+    // Native memory port to the board's memory map (board_core puts
+    // board_memmap here): a request holds mem_valid_o and its address, data
+    // and byte strobes (0: a read) until mem_ready_i, with mem_rdata_i valid then.
+    output wire        mem_valid_o,
+    output wire [31:0] mem_addr_o,
+    output wire [31:0] mem_wdata_o,
+    output wire [3:0]  mem_wstrb_o,
+    input  wire        mem_ready_i,
+    input  wire [31:0] mem_rdata_i,
+    output wire        trap_o        // always 0: VexRiscv has no trap output
 );
 
     // VexRiscv's buses.
@@ -71,10 +57,6 @@ module vexriscv_core #(
     wire [3:0]  dbus_sel, ibus_sel;
     wire [2:0]  ibus_cti, dbus_cti;
     wire [1:0]  ibus_bte, dbus_bte;
-    // The native port to the memory map.
-    wire        mem_valid, mem_ready;
-    wire [31:0] mem_addr, mem_wdata, mem_rdata;
-    wire [3:0]  mem_wstrb;
     // Outputs this wrapper does not use: the iBus's write side, the burst
     // tags (each beat is its own request here: vexriscv_bridge).
     wire unused_core = &{1'b0, ibus_wdat, ibus_we, ibus_sel, ibus_cti, ibus_bte, dbus_cti, dbus_bte};
@@ -126,40 +108,14 @@ module vexriscv_core #(
         .dbus_stb_i(dbus_stb),
         .dbus_dat_o(dbus_rdt),
         .dbus_ack_o(dbus_ack),
-        .valid_o   (mem_valid),
-        .addr_o    (mem_addr),
-        .wdata_o   (mem_wdata),
-        .wstrb_o   (mem_wstrb),
-        .ready_i   (mem_ready),
-        .rdata_i   (mem_rdata)
+        .valid_o   (mem_valid_o),
+        .addr_o    (mem_addr_o),
+        .wdata_o   (mem_wdata_o),
+        .wstrb_o   (mem_wstrb_o),
+        .ready_i   (mem_ready_i),
+        .rdata_i   (mem_rdata_i)
     );
 
-    board_memmap #(.CORE(CORE), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS), .FW_FILE(FW_FILE)) u_map (
-        .clk_i     (clk_i),
-        .rst_i     (rst_i),
-        .stall_i   (stall_i),
-        .valid_i   (mem_valid),
-        .addr_i    (mem_addr),
-        .wdata_i   (mem_wdata),
-        .wstrb_i   (mem_wstrb),
-        .ready_o   (mem_ready),
-        .rdata_o   (mem_rdata),
-        .wb_cyc_o  (wb_cyc_o),
-        .wb_stb_o  (wb_stb_o),
-        .wb_we_o   (wb_we_o),
-        .wb_adr_o  (wb_adr_o),
-        .wb_sel_o  (wb_sel_o),
-        .wb_dat_o  (wb_dat_o),
-        .wb_dat_i  (wb_dat_i),
-        .wb_ack_i  (wb_ack_i),
-        .done_o    (done_o),
-        .code_o    (code_o),
-        .stat_o    (stat_o),
-        .ev_valid_o(ev_valid_o),
-        .ev_data_o (ev_data_o),
-        .ev_arg_o  (ev_arg_o),
-        .bus_err_o (bus_err_o)
-    );
     assign trap_o = 1'b0;
 
 endmodule

@@ -11,11 +11,14 @@ set -euo pipefail
 rev=${1:-main}
 clocks=${2:-2000000}
 out=build/equiv
-# Every controller part of either tree (a part the reference does not have yet is skipped).
-parts="controller sequencer schedule_rom rom_check entry_check import export export_dest bus_master counters"
 rm -rf "$out/ref" "$out/obj"
 mkdir -p "$out/ref"
 git archive "$rev" rtl | tar -x -C "$out/ref"
+# Every controller part of either tree, from each tree's controller core
+# (tools/corefiles.py; a part the reference does not have is skipped).
+part_names() { python3 tools/corefiles.py --root "$1" controller | sed -n 's|^rtl/albatross_\(.*\)\.v$|\1|p'; }
+parts=$( { part_names . && part_names "$out/ref"; } | sort -u | tr '\n' ' ')
+[ -n "$parts" ] || { echo "ctrl_equiv: no controller parts in the cores of this tree and $rev"; exit 1; }
 alt=$(echo $parts | tr ' ' '|')
 for p in $parts; do
     [ -f "$out/ref/rtl/albatross_$p.v" ] || continue

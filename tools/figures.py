@@ -19,6 +19,7 @@ import glob
 import re
 import sys
 
+import figures_area
 import figures_common
 import figures_core
 import figures_integration
@@ -26,7 +27,7 @@ from figures_common import REPORTS, Absent
 
 # Every table by its block name; a name made twice is an error.
 SECTIONS = dict(figures_core.SECTIONS)
-for _name, _make in figures_integration.SECTIONS.items():
+for _name, _make in list(figures_integration.SECTIONS.items()) + list(figures_area.SECTIONS.items()):
     assert _name not in SECTIONS, f"table '{_name}' is made twice"
     SECTIONS[_name] = _make
 

@@ -1,7 +1,7 @@
 """figures_core.py -- the figure tables of the core design (tools/figures.py):
 the test summary, the checkers' negatives, termination, driver size and
-overhead, the co-simulation, CDC, synthesis and FPGA fits, the controller's
-area, the system's latency, delivery and bus, the robot, the proofs.  SECTIONS
+overhead, the co-simulation, CDC, synthesis and FPGA fits (the controller's
+area: figures_area.py), the system's latency, delivery and bus, the robot, the proofs.  SECTIONS
 maps each block name to the function that makes its table."""
 import glob
 import os
@@ -302,32 +302,6 @@ def fpga():
     return out
 
 
-def controller_area():
-    r = load("controller_area.json")
-    if not r:
-        missing("controller_area.json", "make area")
-    fams = list(r["picorv32_luts"])
-    head = ["controller variant", "what is tied off"] + [f"{fam} LUTs (/ PicoRV32)" for fam in fams]
-    rows = [["one PicoRV32 (as pico_core)", "-"] + [n(r["picorv32_luts"][f]) if r["picorv32_luts"][f] else "error"
-                                                   for f in fams]]
-    for name in dict.fromkeys(e["variant"] for e in r["rows"]):
-        cells = []
-        for fam in fams:
-            e = next(x for x in r["rows"] if x["variant"] == name and x["family"] == fam)
-            cells.append(f"{n(e['luts'])} ({e['over_picorv32']:.2f})" if "over_picorv32" in e else "error")
-        desc = next(x["description"] for x in r["rows"] if x["variant"] == name)
-        rows.append([name, desc] + cells)
-    out = table(head, rows) + (f"\n\nThe goal (issue 12): at most {r['goal_over_picorv32']:.2f} of one PicoRV32, aim "
-        f"{r.get('aim_over_picorv32', r['goal_over_picorv32']):.2f} (`{REPORTS}/controller_area.json`).")
-    parts = r.get("parts_ice40")
-    if parts:
-        out += ("\n\nWhere the full controller's LUTs go on iCE40 (synthesised without flattening, so a part's "
-                "LUTs are its own; the sum is above the flattened figure):\n\n"
-                + table(["part", "ice40 LUTs"], [[f"`{k}`", n(v)] for k, v in sorted(parts.items(), key=lambda kv: -kv[1])]
-                        + [["sum", n(sum(parts.values()))]]))
-    return out
-
-
 def sim_speed():
     r = load("sim_speed.json")
     if not r:
@@ -379,7 +353,7 @@ def formal_rtl():
     return table(["check", "engine", "properties", "result", "depth (clocks)", "seconds"], rows)
 
 
-SECTIONS = {"fpga": fpga, "controller-area": controller_area, "robot": robot, "robot-scenarios": robot_scenarios, "sim-speed": sim_speed, "system-latency": system_latency, "system-delivery": system_delivery, "system-bus": system_bus, "system-fault-rates": system_fault_rates,"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
+SECTIONS = {"fpga": fpga, "robot": robot, "robot-scenarios": robot_scenarios, "sim-speed": sim_speed, "system-latency": system_latency, "system-delivery": system_delivery, "system-bus": system_bus, "system-fault-rates": system_fault_rates,"tests": tests, "termination": termination, "overhead": overhead, "negative": negative,
             "driver-size": driver_size, "bench": bench, "cdc": cdc, "synth": synth,
             "pico-cost": pico_cost, "formal-spin": formal_spin}
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """fpga_report.py -- synthesis (and iCE40, ECP5 place-and-route) figures of the designs on three families.
 
-    tools/fpga_report.py --picorv32 FILE --serv DIR [--designs dpram,controller,picorv32,top]
+    tools/fpga_report.py --picorv32 FILE --serv DIR [--designs dpram,controller,picorv32,top[,top_pico2]]
                          [--families ice40,ecp5,xc7] [--pnr] [--out DIR] [--report JSON]
     tools/fpga_report.py --self-test     (the negative test of the top checks)
 
@@ -16,6 +16,9 @@ Designs (files are read with -DSYNTHESIS; parameters as the systems use them):
               SERV and a PicoRV32 board), fpga/ulx3s_top.v (ecp5) and
               fpga/arty_top.v (xc7): two PicoRV32 boards; with their DPRAMs,
               the bus and the controller
+  top_pico2   (ice40 only, not in the default list) the iCEBreaker top with
+              two PicoRV32 boards (SERV_MASK 0): the configuration the
+              controller must become small enough for
 For each design and family: Yosys synth_ice40 / synth_ecp5 / synth_xilinx
 -family xc7 -flatten, counted from `stat -json` (LUTs, flip-flops, carries,
 block RAMs, distributed RAMs).  With --pnr, the iCE40 and ECP5 netlists are
@@ -51,15 +54,22 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from synth_report import FAMILIES, cell_types, count, write_json  # noqa: E402
 
-# The controller: its thin top and the parts it composes.
-CTRL_FILES = ["rtl/albatross_controller.v", "rtl/albatross_sequencer.v", "rtl/albatross_schedule_rom.v",
-             "rtl/albatross_rom_check.v", "rtl/albatross_entry_check.v", "rtl/albatross_import.v",
-             "rtl/albatross_export.v", "rtl/albatross_export_dest.v", "rtl/albatross_bus_master.v",
-             "rtl/albatross_counters.v"]
-SOC_FILES = ["rtl/albatross_dpram.v", "rtl/albatross_dpram_core.v", "rtl/albatross_wb_cdc.v", "rtl/albatross_bus.v"] + CTRL_FILES + [
-             "soc/board_core.v", "soc/pico_core.v", "soc/serv_core.v", "soc/serv_bridge.v", "soc/board_memmap.v",
-             "soc/pico_wb_adapter.v", "soc/albatross_system.v", "soc/board_reset.v", "soc/beat_divider.v",
-             "fpga/duo_system.v"]
+
+def core_files(name, fileset=None):
+    """The Verilog files of a project core with its dependencies, or of one of its filesets
+    alone (tools/corefiles.py)."""
+    import corefiles  # noqa: PLC0415
+    cores = corefiles.Cores()
+    return cores.files(cores.find(name), fileset=fileset, own=fileset is not None)
+
+
+
+# The file lists come from the FuseSoC cores (tools/corefiles.py): the
+# controller's core with its dependencies, and the FPGA demonstration's core
+# (duo_system with the system, the board parts, the IP and the controller).
+CTRL_FILES = core_files("controller")
+SOC_FILES = core_files("board:duo")
+PICO_OOC = core_files("soc:system", "picorv32_ooc")
 TOPS = {"ice40": "icebreaker_top", "ecp5": "ulx3s_top", "xc7": "arty_top"}
 # The ROM image of the controller measured alone (the robot, sim/mobot3.toml).
 ROBOT_ROM = "build/schedule/mobot3/rom.hex"
@@ -84,9 +94,12 @@ def design(name, fam, picorv32, serv):
                 "chparam -set NB 4 -set ADDR_WIDTH 10 -set N_CHAN 16 -set ROM_WORDS 1024 "
                 f"-set ROM_FILE \"{ROBOT_ROM}\" albatross_controller")
     if name == "picorv32":
-        return [picorv32, "soc/picorv32_ooc.v"], "picorv32_ooc", ""
+        return [picorv32] + PICO_OOC, "picorv32_ooc", ""
     top = TOPS[fam]
-    return [picorv32] + serv + SOC_FILES + [f"fpga/{top}.v"], top, ""
+    files = [picorv32] + serv + SOC_FILES + [f"fpga/{top}.v"]
+    if name == "top_pico2":
+        return files, top, f"chparam -set SERV_MASK 0 {top}"
+    return files, top, ""
 
 
 def run(cmd, log, timeout=1800):
@@ -200,7 +213,7 @@ def pnr(r, out):
     if stem.startswith(".."):
         r["error"] = f"{spec['tool']} works under the current directory only: --out must be inside it"
         return
-    if name == "top":
+    if name.startswith("top"):
         args, r["pnr_part"] = spec["top_args"](stem), spec["top_part"]
     else:
         args, r["pnr_part"] = spec["ooc_args"], spec["ooc_part"]
@@ -219,7 +232,7 @@ def pnr(r, out):
     r["logic_cells_available"] = util.get(spec["lc"], {}).get("available")
     r["brams_used"] = util.get(spec["ram"], {}).get("used")
     r["brams_available"] = util.get(spec["ram"], {}).get("available")
-    if name != "top":
+    if not name.startswith("top"):
         return
     r["clocks"], r["clock_crossings"] = domains(rep)
     cap = spec["top_capacity"]
@@ -310,10 +323,12 @@ def main():
     a = ap.parse_args()
     designs = [d for d in a.designs.split(",") if d]
     fams = [f for f in a.families.split(",") if f]
-    bad = [d for d in designs if d not in ("dpram", "controller", "picorv32", "top")] + \
+    bad = [d for d in designs if d not in ("dpram", "controller", "picorv32", "top", "top_pico2")] + \
           [f for f in fams if f not in FAMILIES]
     if bad:
         ap.error(f"unknown design or family: {', '.join(bad)}")
+    if "top_pico2" in designs and fams != ["ice40"]:
+        ap.error("top_pico2 is the iCEBreaker's top: give --families ice40")
     if not os.path.isfile(a.picorv32):
         ap.error(f"--picorv32 {a.picorv32}: no such file (run make deps)")
     serv = sorted(os.path.join(a.serv, f) for f in os.listdir(a.serv)

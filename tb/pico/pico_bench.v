@@ -1,7 +1,7 @@
-// pico_bench -- bench top: one PicoRV32 core (pico_core; SERV = 1: a SERV core,
-// serv_core; VEX = 1: a VexRiscv with caches, vexriscv_core, its window and
-// registers uncached at 0x9/0xA000_0000; all with the same ports) (the board memory map
-// of soc/firmware/board.h) on port A of one albatross_dpram; port B is idle, so
+// pico_bench -- bench top: one board core (board_core: a PicoRV32; SERV = 1: a
+// SERV core; VEX = 1: a VexRiscv with caches, its window and registers uncached
+// at 0x9/0xA000_0000; with the board memory map of soc/firmware/board.h) on
+// port A of one albatross_dpram; port B is idle, so
 // every DPRAM access takes its undisturbed time.  The firmware
 // (tb/pico/firmware/bench.c, loaded from +fw0=FILE) measures cycles with rdcycle and
 // reports each figure as a board EVENT (ARG = value, EVENT = key), which the
@@ -43,75 +43,27 @@ module pico_bench #(
         .b_sel_i(4'h0), .b_dat_i(32'd0), .b_dat_o(b_rdat), .b_ack_o(b_ack)
     );
 
-    generate
-        if (VEX != 0) begin : g_vex
-            vexriscv_core #(.CORE(0), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_core (
-                .clk_i     (clk_i),
-                .rst_i     (rst_i),
-                .stall_i   (1'b0),
-                .wb_cyc_o  (wb_cyc),
-                .wb_stb_o  (wb_stb),
-                .wb_we_o   (wb_we),
-                .wb_adr_o  (wb_adr),
-                .wb_sel_o  (wb_sel),
-                .wb_dat_o  (wb_wdat),
-                .wb_dat_i  (wb_rdat),
-                .wb_ack_i  (wb_ack),
-                .done_o    (done_o),
-                .code_o    (code_o),
-                .stat_o    (stat),
-                .ev_valid_o(ev_valid_o),
-                .ev_data_o (ev_data_o),
-                .ev_arg_o  (ev_arg_o),
-                .trap_o    (trap_o),
-                .bus_err_o (bus_err_o)
-            );
-        end else if (SERV != 0) begin : g_serv
-            serv_core #(.CORE(0), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_core (
-                .clk_i     (clk_i),
-                .rst_i     (rst_i),
-                .stall_i   (1'b0),
-                .wb_cyc_o  (wb_cyc),
-                .wb_stb_o  (wb_stb),
-                .wb_we_o   (wb_we),
-                .wb_adr_o  (wb_adr),
-                .wb_sel_o  (wb_sel),
-                .wb_dat_o  (wb_wdat),
-                .wb_dat_i  (wb_rdat),
-                .wb_ack_i  (wb_ack),
-                .done_o    (done_o),
-                .code_o    (code_o),
-                .stat_o    (stat),
-                .ev_valid_o(ev_valid_o),
-                .ev_data_o (ev_data_o),
-                .ev_arg_o  (ev_arg_o),
-                .trap_o    (trap_o),
-                .bus_err_o (bus_err_o)
-            );
-        end else begin : g_pico
-            pico_core #(.CORE(0), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_core (
-                .clk_i     (clk_i),
-                .rst_i     (rst_i),
-                .stall_i   (1'b0),
-                .wb_cyc_o  (wb_cyc),
-                .wb_stb_o  (wb_stb),
-                .wb_we_o   (wb_we),
-                .wb_adr_o  (wb_adr),
-                .wb_sel_o  (wb_sel),
-                .wb_dat_o  (wb_wdat),
-                .wb_dat_i  (wb_rdat),
-                .wb_ack_i  (wb_ack),
-                .done_o    (done_o),
-                .code_o    (code_o),
-                .stat_o    (stat),
-                .ev_valid_o(ev_valid_o),
-                .ev_data_o (ev_data_o),
-                .ev_arg_o  (ev_arg_o),
-                .trap_o    (trap_o),
-                .bus_err_o (bus_err_o)
-            );
-        end
-    endgenerate
+    board_core #(.SERV(SERV), .VEX(VEX), .CORE(0), .ADDR_WIDTH(ADDR_WIDTH), .RAM_WORDS(RAM_WORDS)) u_core (
+        .clk_i     (clk_i),
+        .rst_i     (rst_i),
+        .stall_i   (1'b0),
+        .wb_cyc_o  (wb_cyc),
+        .wb_stb_o  (wb_stb),
+        .wb_we_o   (wb_we),
+        .wb_adr_o  (wb_adr),
+        .wb_sel_o  (wb_sel),
+        .wb_dat_o  (wb_wdat),
+        .wb_dat_i  (wb_rdat),
+        .wb_ack_i  (wb_ack),
+        .done_o    (done_o),
+        .code_o    (code_o),
+        .stat_o    (stat),
+        .ev_valid_o(ev_valid_o),
+        .ev_data_o (ev_data_o),
+        .ev_arg_o  (ev_arg_o),
+        .trap_o    (trap_o),
+        .bus_err_o (bus_err_o)
+    );
 
 endmodule
 

@@ -27,7 +27,7 @@
 
 AXIL_RUN       := $(PYTHON) tb/axil/run_axil.py
 AXIL_SRC       := tb/axil/tb_axil.v tb/axil/test_axil.py tb/axil/run_axil.py \
-                  rtl/albatross_dpram_axil.v rtl/albatross_axil2native.v rtl/albatross_dpram_core.v
+                  $(CORE_dpram_axil)
 AXIL_OPS       ?= 1500
 AXIL_SOAK_OPS  ?= 40000
 AXIL_SEED      ?= $(SEED)
@@ -69,7 +69,7 @@ $(foreach n,$(AXIL_COCOTB_NEG),$(eval $(call axil_cocotb_neg,$(n))))
 # rejects a RAM that does not map.
 TESTS += axil-bram
 .PHONY: test-axil-bram
-test-axil-bram: rtl/albatross_dpram_axil.v rtl/albatross_axil2native.v rtl/albatross_dpram_core.v
+test-axil-bram: $(CORE_dpram_axil)
 	@tools/run_test.sh axil-bram $(SYNTH_REPORT) albatross_dpram_axil \
-	    --file rtl/albatross_dpram_axil.v,rtl/albatross_axil2native.v,rtl/albatross_dpram_core.v --require-bram \
+	    --file $(subst $(space),$(comma),$(strip $(CORE_dpram_axil))) --require-bram \
 	    --report $(REPORTS)/synth_albatross_dpram_axil.json

@@ -13,8 +13,7 @@
 # and linted (Verilator -Wall, Icarus, Yosys) at the end of bench-pico.
 
 PBN_DIR     := $(BUILD)/pico_bench
-PBN_RTL     := tb/pico/pico_bench.v soc/pico_core.v soc/board_memmap.v soc/pico_wb_adapter.v \
-               rtl/albatross_dpram.v rtl/albatross_dpram_core.v
+PBN_RTL     := tb/pico/pico_bench.v $(CORE_FS_soc_system_board) $(CORE_dpram)
 PBN_VFLAGS  := -Wall --timescale 1ns/1ps $(VLIB) --top-module pico_bench tb/pico/picorv32.vlt
 PBN_BIN     := $(PBN_DIR)/obj/Vpico_bench
 PBN_MAX_CYCLES ?= 5000000
@@ -53,7 +52,7 @@ bench-pico: $(PBN_BIN) $(PBN_DIR)/bench.hex $(PBN_DIR)/bench.dis driver-size ## 
 #   make bench-kinds   all four runs and channel_ram.json
 PBN_SERV_BIN := $(PBN_DIR)/serv/Vpico_bench
 PBN_SERV_MAX_CYCLES ?= 200000000
-$(PBN_SERV_BIN): $(PBN_RTL) soc/serv_core.v soc/serv_bridge.v tb/pico/bench_pico.cpp tb/pico/picorv32.vlt \
+$(PBN_SERV_BIN): $(PBN_RTL) tb/pico/bench_pico.cpp tb/pico/picorv32.vlt \
         tb/pico/serv.vlt tb/common/report.h tools/mk/bench_pico.mk
 	$(PICO_NEED)
 	$(SERV_NEED)

@@ -14,7 +14,7 @@ CDC_NEG_ACCESSES:= 50000
 CDC_SYNC_STAGES := 2
 CDC_ADDR_WIDTH  := 8
 CDC_CPP         := tb/cdc/test_cdc.cpp tb/cdc/cdc_model.cpp tb/cdc/cdc_cpu.cpp tb/cdc/cdc_ram.cpp
-CDC_SRC         := tb/cdc/tb_dpram_async.v rtl/albatross_wb_cdc.v rtl/albatross_dpram.v rtl/albatross_dpram_core.v \
+CDC_SRC         := tb/cdc/tb_dpram_async.v $(CORE_wb_cdc) $(CORE_dpram) \
                    $(CDC_CPP) tb/cdc/cdc_tb.h
 
 $(CDC_BIN): $(CDC_SRC) tools/mk/cdc.mk

@@ -21,8 +21,7 @@ CTRL_DIR := $(BUILD)/ctrl
 CTRL_BIN := $(CTRL_DIR)/obj/Vtb_system
 CTRL_CPP := tb/controller/test_controller.cpp tb/controller/ctrl_bench.cpp \
             tb/controller/ctrl_scenarios_data.cpp tb/controller/ctrl_scenarios_faults.cpp
-CTRL_SRC := tb/system/tb_system.v soc/albatross_system.v tb/common/bus_fault_injector.v $(CTRL_RTL) \
-            rtl/albatross_bus.v rtl/albatross_dpram.v rtl/albatross_dpram_core.v $(CTRL_CPP) tb/controller/ctrl_bench.h \
+CTRL_SRC := tb/system/tb_system.v tb/common/bus_fault_injector.v $(CORE_soc_system) $(CTRL_CPP) tb/controller/ctrl_bench.h \
             $(RTL_INC) tb/common/albatross_contract.h
 
 $(CTRL_BIN): $(CTRL_SRC) tools/mk/controller.mk

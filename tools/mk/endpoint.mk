@@ -26,9 +26,8 @@ EP_VALUES     ?= 20000
 EP_MAX_CYCLES ?= 20000000
 EP_VFLAGS     := -Wall --timescale 1ns/1ps $(VLIB) -y tb/endpoint/export -y tb/endpoint/import tb/pico/picorv32.vlt
 EP_CXXFLAGS   := -O2 -std=c++17 -U_FORTIFY_SOURCE $(TB_COMMON_INC) -I$(abspath c-driver)
-EP_ENGINES    := rtl/albatross_export.v rtl/albatross_export_dest.v rtl/albatross_import.v rtl/albatross_export_endpoint.v \
-                 rtl/albatross_import_endpoint.v rtl/albatross_dpram.v rtl/albatross_dpram_core.v $(RTL_INC)
-EP_CORE       := soc/board_core.v soc/pico_core.v soc/board_memmap.v soc/pico_wb_adapter.v
+EP_ENGINES    := $(CORE_export_endpoint) $(CORE_OWN_import_endpoint) $(CORE_dpram) $(RTL_INC)
+EP_CORE       := $(CORE_FS_soc_system_board)
 EP_CHECK      := tb/common/protocol_checker.cpp tb/common/protocol_checker.h tb/endpoint/channel_watch.h tb/endpoint/bench_options.h \
                  tb/common/report.h
 TB_RTL        += tb/endpoint/export/pair_source.v

@@ -13,14 +13,18 @@
 #                    clock domain and fit -> build/reports/fpga_pnr.json
 #   make bitstream   make pnr, then icepack and ecppack ->
 #                    build/fpga/icebreaker_top.bin, build/fpga/ulx3s_top.bit
-#   make area        the controller with each optional feature tied off, and
-#                    one PicoRV32, per family -> build/reports/controller_area.json
+#   make area        the controller by its configuration parameters (full,
+#                    each feature off, core), its growth with NB and N_CHAN
+#                    and its Fmax, against one PicoRV32 in the same run ->
+#                    build/reports/controller_area.json, controller_growth.json
 #   make test-fpga-soc    the iCEBreaker top simulated (Verilator): both
 #                    cores' heartbeats blink, no error LED (-ulx3s, -arty:
 #                    those tops; -negative, -ulx3s-negative, -arty-negative:
 #                    a corrupted ROM image must light the top's error LED)
 #   make test-fpga-icebreaker, test-fpga-ulx3s  a board's flow to its
 #                    bitstream as a test: fits, meets its clock
+#   make test-fpga-icebreaker-pico2  the iCEBreaker top with two PicoRV32
+#                    boards (SERV_MASK 0) placed and routed: fits, 12 MHz
 #   make test-fpga-arty   the Arty top synthesises (Yosys; no open place and
 #                    route for 7-series)
 #   make test-fpga-lint   Verilator -Wall, Icarus and Yosys on FPGA_LINT (fpga/ and soc/ tops)
@@ -37,12 +41,10 @@ FPGA_RAM    := 2048   # bytes of each core's program RAM (RAM_WORDS 512 in the t
 # PLL model fpga/EHXPLLL.v is for simulation only) and what it instantiates.
 FPGA_TOPS   := $(wildcard fpga/*_top.v)
 FPGA_OWN    := fpga/duo_system.v $(FPGA_TOPS)
-FPGA_RTL    := $(FPGA_OWN) soc/albatross_system.v soc/board_reset.v soc/beat_divider.v \
-               rtl/albatross_dpram.v rtl/albatross_dpram_core.v rtl/albatross_wb_cdc.v rtl/albatross_bus.v $(CTRL_RTL) \
-               soc/board_core.v soc/pico_core.v soc/serv_core.v soc/serv_bridge.v soc/board_memmap.v \
-               soc/pico_wb_adapter.v
+# (the duo core's files with its dependencies: tools/corefiles.py).
+FPGA_RTL    := $(FPGA_TOPS) $(CORE_board_duo)
 # Files fpga-lint checks each as a top: the demonstration and the FPGA-only soc/ parts.
-FPGA_LINT   := $(FPGA_OWN) soc/albatross_system.v soc/picorv32_ooc.v
+FPGA_LINT   := $(FPGA_OWN) soc/albatross_system.v $(CORE_FS_soc_system_picorv32_ooc)
 # PicoRV32 and SERV come from PyPI (tools/mk/pico.mk, tools/mk/serv.mk); Verilator flags.
 FPGA_VFLAGS  = -Wall --timescale 1ns/1ps $(VLIB) -y fpga -y $(SERV_CPU_RTL) tb/pico/picorv32.vlt tb/pico/serv.vlt
 # (tools/mk/pico.mk, read after this file, defines PICO_RV32_V and FW_*: every use
@@ -138,12 +140,16 @@ pnr: $(FPGA_IMAGES) ## place and route the iCEBreaker and ULX3S tops, timing aga
 	$(FPGA_REPORT) --designs top --families ice40,ecp5 --pnr --report $(REPORTS)/fpga_pnr.json
 	@for f in ice40 ecp5; do grep "Max frequency" $(FPGA_DIR)/synth/top_$${f}_pnr.log | tail -n 1; done
 
-# Where the controller's logic goes: each optional feature tied off, against
-# one PicoRV32 in the same run (tools/controller_area.py).
-area: $(BUILD)/schedule/mobot3/rom.hex ## the controller's LUTs without each optional feature, per family -> build/reports/controller_area.json
+# The controller's size and speed by its configuration parameters (full
+# function, each optional feature off, the core configuration; growth with
+# NB and N_CHAN; Fmax placed out of context), against one PicoRV32 in the
+# same run (tools/controller_area.py).  AREA_JOBS syntheses at a time (at
+# most 2: each takes a minute or more).
+AREA_JOBS ?= 2
+area: $(BUILD)/schedule/mobot3/rom.hex ## the controller's LUTs, FFs, BRAMs, Fmax by configuration and growth, against PicoRV32 -> build/reports/controller_area.json, controller_growth.json
 	$(PICO_NEED)
-	$(PYTHON) tools/controller_area.py --picorv32 $(PICO_RV32_V) --out $(FPGA_DIR)/area \
-	    --report $(REPORTS)/controller_area.json
+	$(PYTHON) tools/controller_area.py --picorv32 $(PICO_RV32_V) --out $(FPGA_DIR)/area --jobs $(AREA_JOBS) \
+	    --report $(REPORTS)/controller_area.json --growth-report $(REPORTS)/controller_growth.json
 
 bitstream: pnr ## pack the iCEBreaker and ULX3S tops -> build/fpga/icebreaker_top.bin, ulx3s_top.bit
 	icepack $(FPGA_DIR)/synth/top_ice40.asc $(FPGA_DIR)/icebreaker_top.bin
@@ -214,9 +220,9 @@ $(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
 BENCHES += synth area
 
 TESTS += fpga-soc fpga-soc-threebuffer-negative fpga-soc-bound-negative fpga-soc-ulx3s fpga-soc-ulx3s-drift fpga-soc-ulx3s-drift-negative fpga-soc-arty fpga-soc-negative fpga-soc-ulx3s-negative fpga-soc-arty-negative \
-         fpga-soc-pins-negative fpga-icebreaker fpga-ulx3s fpga-report-negative fpga-arty fpga-lint
+         fpga-soc-pins-negative fpga-icebreaker fpga-icebreaker-pico2 fpga-ulx3s fpga-report-negative fpga-arty fpga-lint
 .PHONY: test-fpga-soc test-fpga-soc-threebuffer-negative test-fpga-soc-bound-negative test-fpga-soc-ulx3s test-fpga-soc-ulx3s-drift test-fpga-soc-ulx3s-drift-negative test-fpga-soc-arty test-fpga-soc-negative test-fpga-soc-ulx3s-negative \
-        test-fpga-soc-arty-negative test-fpga-soc-pins-negative test-fpga-icebreaker test-fpga-ulx3s \
+        test-fpga-soc-arty-negative test-fpga-soc-pins-negative test-fpga-icebreaker test-fpga-icebreaker-pico2 test-fpga-ulx3s \
         test-fpga-report-negative test-fpga-arty test-fpga-lint
 # Per top: test-fpga-soc$(1) runs it for $(3) clocks (the iCEBreaker, whose
 # sensor is on SERV and slow to start, gets more than the PicoRV32-only
@@ -300,6 +306,15 @@ endef
 $(eval $(call fpga_board_flow,icebreaker,ice40,icepack $(FPGA_DIR)/synth/top_ice40.asc,icebreaker_top.bin))
 $(eval $(call fpga_board_flow,ulx3s,ecp5,$$(ECPPACK) $(FPGA_DIR)/synth/top_ecp5.config,ulx3s_top.bit))
 
+# The iCEBreaker top with two PicoRV32 boards (SERV_MASK 0) instead of a
+# SERV and a PicoRV32: the target configuration, placed and routed at 12 MHz
+# on the UP5K, checked for fit and clock like test-fpga-icebreaker.  It fails
+# until the controller is small enough (the failure says by how much).
+test-fpga-icebreaker-pico2: $(FPGA_IMAGES)
+	$(PICO_NEED)
+	@tools/run_test.sh fpga-icebreaker-pico2 $(FPGA_REPORT) --designs top_pico2 --families ice40 --pnr \
+	    --report $(REPORTS)/fpga_pnr_icebreaker_pico2.json
+
 # The fit and clock checks of those tests fail a slow or oversized top.
 test-fpga-report-negative:
 	@tools/run_test.sh fpga-report-negative $(PYTHON) tools/fpga_report.py --self-test
@@ -318,5 +333,5 @@ test-fpga-lint: $(FPGA_IMAGES)
 	@tools/run_test.sh fpga-lint bash -c 'set -e; for f in $(FPGA_LINT); do t=$$(basename $$f .v); \
 	    verilator --lint-only $(FPGA_VFLAGS) --top-module $$t $(PICO_RV32_V) $$f; \
 	    iverilog -g2005 $(VLIB) -y fpga -y $(SERV_CPU_RTL) -s $$t -o /dev/null $(PICO_RV32_V) $$f; \
-	    yosys -q -p "read_verilog -lib +/ecp5/cells_bb.v; read_verilog -DSYNTHESIS $(PICO_RV32_V) $(SERV_CPU_V) $(FPGA_RTL) soc/picorv32_ooc.v; hierarchy -check -top $$t; proc"; \
+	    yosys -q -p "read_verilog -lib +/ecp5/cells_bb.v; read_verilog -DSYNTHESIS $(PICO_RV32_V) $(SERV_CPU_V) $(FPGA_RTL) $(CORE_FS_soc_system_picorv32_ooc); hierarchy -check -top $$t; proc"; \
 	    echo "lint ok  $$f"; done'

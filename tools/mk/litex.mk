@@ -37,7 +37,7 @@ pythondata_software_compiler_rt' 2>/dev/null || { echo "LiteX or a pythondata pa
 LX_GEN   := $(LX_DIR)/software/include/generated
 LX_CXX   := -O2 -std=c++17 $(TB_COMMON_INC) -I$(abspath c-driver) -I$(LX_ABS)/software/include
 
-$(LX_DIR)/gateware/sim.v: $(LX_PY) rtl/albatross_dpram.v rtl/albatross_dpram_core.v tools/mk/litex.mk
+$(LX_DIR)/gateware/sim.v: $(LX_PY) $(CORE_dpram) tools/mk/litex.mk
 	$(LX_NEED)
 	@mkdir -p $(LX_DIR)
 	$(PYTHON) tools/litex/albatross_soc.py --output-dir $(LX_ABS) > $(LX_DIR)/generate.log 2>&1 \

@@ -22,7 +22,7 @@ PICO_RV32_V   := $(if $(PICO_RV32_DIR),$(firstword $(shell find $(PICO_RV32_DIR)
 PICO_NEED      = @test -n "$(PICO_RV32_V)" || { echo "picorv32.v not found: the PyPI package \
 pythondata-cpu-picorv32 is missing; run make deps"; exit 1; }
 PICO_MAX_CYCLES ?= 20000000
-PICO_RTL      := tb/pico/pico_pair.v soc/board_core.v soc/pico_core.v soc/board_memmap.v soc/pico_wb_adapter.v rtl/albatross_dpram.v rtl/albatross_dpram_core.v
+PICO_RTL      := tb/pico/pico_pair.v $(CORE_FS_soc_system_board) $(CORE_dpram)
 PICO_VFLAGS   := -Wall --timescale 1ns/1ps $(VLIB) --top-module pico_pair tb/pico/picorv32.vlt
 
 # Firmware: rv32i, the real driver with the mmio port (TOOLCHAIN.md flags).

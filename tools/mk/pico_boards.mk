@@ -26,9 +26,7 @@ PB_DIR      := $(BUILD)/pico_boards
 PB_SCHED    := $(BUILD)/schedule/mobot3
 PB_BOARDS   := radar odometry navigation motor
 PB_CYCLES   ?= 1500000
-PB_RTL      := sim/pico_boards.v soc/albatross_system.v soc/board_core.v soc/pico_core.v soc/board_memmap.v \
-               tb/common/bus_fault_injector.v soc/pico_wb_adapter.v rtl/albatross_dpram.v rtl/albatross_dpram_core.v rtl/albatross_wb_cdc.v \
-               rtl/albatross_bus.v $(CTRL_RTL)
+PB_RTL      := sim/pico_boards.v tb/common/bus_fault_injector.v $(CORE_soc_system)
 PB_VFLAGS   := -Wall --timescale 1ns/1ps $(VLIB) --top-module pico_boards tb/pico/picorv32.vlt
 PB_SRC      := sim/mobot_sim.cpp sim/mobot_sim_options.cpp sim/mobot_sim_ages.cpp sim/mobot_sim_clock.cpp \
                sim/mobot_sim_report.cpp tb/common/plan.cpp

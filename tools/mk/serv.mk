@@ -38,7 +38,7 @@ SERV_CPU_RTL   := $(if $(SERV_CPU_DIR),$(wildcard $(SERV_CPU_DIR)/rtl))
 SERV_CPU_V     := $(if $(SERV_CPU_RTL),$(filter-out %/serv_synth_wrapper.v,$(wildcard $(SERV_CPU_RTL)/serv_*.v)))
 SERV_NEED       = @test -n "$(SERV_CPU_V)" || { echo "SERV not found: the PyPI package \
 pythondata-cpu-serv is missing; run make deps"; exit 1; }
-SERV_RTL       := $(PICO_RTL) soc/serv_core.v soc/serv_bridge.v
+SERV_RTL       := $(PICO_RTL)
 SERV_VFLAGS    := $(PICO_VFLAGS) -y $(SERV_CPU_RTL) tb/pico/serv.vlt
 SERV_MAX_CYCLES ?= 20000000
 # Values per run: 2000 (as the PicoRV32 pair) where PicoRV32 produces; fewer

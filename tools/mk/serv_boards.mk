@@ -9,7 +9,7 @@
 # file (tools/mk/*.mk are included in sorted order).
 
 SB_BIN := $(PB_DIR)/obj-serv-motor/Vpico_boards
-$(SB_BIN): $(PB_RTL) $(RTL_INC) soc/serv_core.v soc/serv_bridge.v $(PICO_RV32_V) $(PB_SRC) $(PB_HDR) \
+$(SB_BIN): $(PB_RTL) $(RTL_INC) $(PICO_RV32_V) $(PB_SRC) $(PB_HDR) \
         tb/pico/picorv32.vlt tb/pico/serv.vlt tools/mk/pico_boards.mk tools/mk/serv_boards.mk
 	$(SERV_NEED)
 	$(PICO_NEED)

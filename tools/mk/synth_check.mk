@@ -12,7 +12,7 @@ TESTS += dpram-bram dpram-bram-negative
 
 test-dpram-bram:
 	@tools/run_test.sh dpram-bram $(SYNTH_REPORT) albatross_dpram \
-	    --file rtl/albatross_dpram.v,rtl/albatross_dpram_core.v --require-bram
+	    --file $(subst $(space),$(comma),$(strip $(CORE_dpram))) --require-bram
 
 test-dpram-bram-negative:
 	@tools/run_test.sh dpram-bram-negative $(SYNTH_REPORT) dpram_no_arbitration \
@@ -20,5 +20,5 @@ test-dpram-bram-negative:
 
 BENCHES += synth-dpram
 synth-dpram: ## LUT/FF/BRAM figures of the RAM on iCE40, ECP5, xc7 (Yosys)
-	$(SYNTH_REPORT) albatross_dpram --file rtl/albatross_dpram.v,rtl/albatross_dpram_core.v \
+	$(SYNTH_REPORT) albatross_dpram --file $(subst $(space),$(comma),$(strip $(CORE_dpram))) \
 	    --report $(REPORTS)/synth_albatross_dpram.json

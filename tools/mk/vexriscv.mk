@@ -55,7 +55,7 @@ VEX_CPU_DIR  := $(shell $(PYTHON) -c 'import pythondata_cpu_vexriscv as p; print
 VEX_CPU_V    := $(if $(VEX_CPU_DIR),$(wildcard $(VEX_CPU_DIR)/VexRiscv.v))
 VEX_NEED      = @test -n "$(VEX_CPU_V)" || { echo "VexRiscv.v not found: the PyPI package \
 pythondata-cpu-vexriscv is missing; run make deps"; exit 1; }
-VEX_RTL      := $(PICO_RTL) soc/vexriscv_core.v soc/vexriscv_bridge.v
+VEX_RTL      := $(PICO_RTL) $(CORE_FS_soc_system_vexriscv)
 VEX_VFLAGS   := $(PICO_VFLAGS) tb/pico/vexriscv.vlt
 VEX_MAX_CYCLES ?= 20000000
 VEX_FW_VEX   := -DBOARD_DPRAM_BASE=0x90000000 -DBOARD_REGS_BASE=0xA0000000 -DBOARD_NO_COUNTERS
@@ -174,7 +174,7 @@ bench-vex: $(VEX_BENCH_BIN) $(VEX_DIR)/fw/bench.hex $(PBN_BIN) $(PBN_DIR)/bench.
 #   make test-vex-boards   fault-free, cores stalled in random bursts;
 #                          build/reports/vex_boards.json
 VB_BIN := $(PB_DIR)/obj-vex-motor/Vpico_boards
-$(VB_BIN): $(PB_RTL) $(RTL_INC) soc/vexriscv_core.v soc/vexriscv_bridge.v $(PICO_RV32_V) $(PB_SRC) $(PB_HDR) \
+$(VB_BIN): $(PB_RTL) $(RTL_INC) $(CORE_FS_soc_system_vexriscv) $(PICO_RV32_V) $(PB_SRC) $(PB_HDR) \
         tb/pico/picorv32.vlt tb/pico/vexriscv.vlt tools/mk/pico_boards.mk tools/mk/vexriscv.mk
 	$(VEX_NEED)
 	$(PICO_NEED)
