@@ -7,9 +7,12 @@ channel) or, with --model four_slot, of formal/spin/four_slot.pml (four-slot).
       properties writer_wait_free and lock_free hold, and reader_wait_free
       FAILS with an acceptance cycle in which the writer keeps exporting and
       the reader keeps retrying its While (the reader is not wait-free).
+      Each safety check runs twice: from the RAM image, and as cold_<name>
+      from a zeroed RAM (-DCOLD_START).
   check.py --variant WHILE_AS_IF --out ... --json ...
-      a broken variant (-DWHILE_AS_IF, -DIGNORE_READLOCKED): the checks named
-      by --must-fail must each find a violation.
+      a broken variant (-DWHILE_AS_IF, -DIGNORE_READLOCKED; -DCOLD_READ_ZERO
+      with --must-fail cold_mutex,cold_definite): the checks named by
+      --must-fail must each find a violation.
 
   check.py --model four_slot --out build/formal/spin/four_slot \
            --json build/reports/formal_spin_four_slot.json
@@ -50,6 +53,10 @@ SAFETY = {
               "completed since the reader's previous load of Actual",
               "CHECK_RETRY"),
 }
+# the same properties from a zeroed RAM (-DCOLD_START): each side runs its
+# init at any point of the other's run, Actual = 0 reads nothing
+SAFETY.update({"cold_" + k: ("cold start on a zeroed RAM: " + p, [d, "COLD_START"])
+               for k, (p, d) in list(SAFETY.items())})
 # name: (property text, pan fairness flag, expected outcome)
 LTL = {
     "reader_wait_free": ("[]<> !importing: the reader's Import always finishes "
@@ -211,7 +218,8 @@ def main():
     if a.model == "four_slot":
         safety, ltl, cflags = SAFETY_FS, LTL_FS, ["-O2"]
     else:
-        safety = {k: (p, [d], 1000000) for k, (p, d) in SAFETY.items()}
+        safety = {k: (p, [d] if isinstance(d, str) else d, 1000000)
+                  for k, (p, d) in SAFETY.items()}
         ltl, cflags = LTL, []
     os.makedirs(a.out, exist_ok=True)
     os.makedirs(os.path.dirname(a.json) or ".", exist_ok=True)
