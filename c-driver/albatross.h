@@ -1,6 +1,6 @@
 /*
  * albatross.h -- the ALBATROSS channel: the paper's three-buffer kind (seed
- * 3.1, figures 2-4) and the wait-free four-slot kind (issue 13; Simpson's
+ * 3.1, figures 2-4) and the wait-free four-slot kind (Simpson's
  * four-slot mechanism on single-writer bytes, docs/four_slot.md).
  *
  * A channel carries one variable from one producer to one consumer through a
@@ -156,7 +156,7 @@ int alb_import(alb_channel_t *ch, void *dst);
 int alb_export(alb_channel_t *ch, const void *src);
 
 /*
- * Sampling read (issue 13 section 3), beside the paper's New/Old: the status
+ * Sampling read, beside the paper's New/Old: the status
  * an ARINC 653 sampling port or an AUTOSAR last-is-best receiver gives.  For
  * a destination channel of the controller, whose payload ends with the word
  * taken_at (the controller's global time when it took the value).

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """fault_rates.py -- measured ages against the compiler's probabilistic
-bounds (issue 15 section 3, docs/verification.md "Faults at their true rate").
+bounds (docs/verification.md "Faults at their true rate").
 
   fault_rates.py check --plan DIR --samples FILE.csv [--skip-clocks N]
                  [--optimistic F] [--expect-caught TEXT] [--label NAME] [--json FILE]

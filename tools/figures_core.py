@@ -317,7 +317,7 @@ def controller_area():
             cells.append(f"{n(e['luts'])} ({e['over_picorv32']:.2f})" if "over_picorv32" in e else "error")
         desc = next(x["description"] for x in r["rows"] if x["variant"] == name)
         rows.append([name, desc] + cells)
-    out = table(head, rows) + (f"\n\nThe goal (issue 12): at most {r['goal_over_picorv32']:.2f} of one PicoRV32, aim "
+    out = table(head, rows) + (f"\n\nThe goal: at most {r['goal_over_picorv32']:.2f} of one PicoRV32, aim "
         f"{r.get('aim_over_picorv32', r['goal_over_picorv32']):.2f} (`{REPORTS}/controller_area.json`).")
     parts = r.get("parts_ice40")
     if parts:

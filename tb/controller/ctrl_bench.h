@@ -82,7 +82,7 @@ size_t rom_addr(size_t k, unsigned j);
 void reseal(std::vector<uint32_t> &r, size_t ne);
 
 // hflags: the H0 flags field (C::HFLAG_SYNC_MODE: position-synchronised).
-// drop_run: H2's drop run K (issue 15; 0 = an image from before, read as 2).
+// drop_run: H2's drop run K (0 = an image from before, read as 2).
 std::vector<uint32_t> build_rom(uint32_t h1, unsigned hflags, const std::vector<Entry> &es, unsigned drop_run = 0);
 
 void write_rom(const std::vector<uint32_t> &r);

@@ -44,7 +44,7 @@ test-formal-spin-negative-cold-read-zero:
 	    --variant COLD_READ_ZERO --must-fail cold_mutex,cold_definite \
 	    --out $(SPIN_DIR)/negative --json $(REPORTS)/formal_spin_negative_cold_read_zero.json
 
-# --- the four-slot channel (issue 13): formal/spin/four_slot.pml -----------
+# --- the four-slot channel: formal/spin/four_slot.pml -----------
 #   make test-formal-spin-four-slot
 #                               every property of the four-slot channel: mutual
 #                               exclusion, definite results, actuality, New/Old,

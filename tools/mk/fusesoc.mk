@@ -1,4 +1,4 @@
-# tools/mk/fusesoc.mk -- the packaged IP (issue 14): FuseSoC (PyPI fusesoc, CAPI2)
+# tools/mk/fusesoc.mk -- the packaged IP: FuseSoC (PyPI fusesoc, CAPI2)
 # core files beside their sources (rtl/*.core, c-driver/albatross_driver.core,
 # soc/albatross_soc.core, fpga/albatross_duo.core, constraints/albatross_constraints.core,
 # tb/endpoint/tb_endpoint_loop.core; docs/integration.md), checked the way a

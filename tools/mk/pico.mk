@@ -40,7 +40,7 @@ $(PICO_DIR)/fw/$(1).elf: tb/pico/firmware/$(2).c $(3) $(FW_DEPS)
 endef
 $(eval $(call pico_fw,producer,producer,c-driver/albatross.c))
 $(eval $(call pico_fw,consumer,consumer,c-driver/albatross.c))
-# The four-slot kind (issue 13): the same programs and checks on a four-slot channel.
+# The four-slot kind: the same programs and checks on a four-slot channel.
 PAIR_FOUR_SLOT := -DPAIR_KIND=ALB_FOUR_SLOT
 $(eval $(call pico_fw,producer-four_slot,producer,c-driver/albatross.c,$(PAIR_FOUR_SLOT)))
 $(eval $(call pico_fw,consumer-four_slot,consumer,c-driver/albatross.c,$(PAIR_FOUR_SLOT)))

@@ -36,7 +36,7 @@ PB_HDR      := sim/mobot_sim.h tb/common/fault_model.h tb/common/report.h tb/com
 
 # $(1) = board: sim/firmware/mobot_<board>.c + the generated <board>.c of the
 # schedule build/schedule/<sched>/ + the driver -> $(PB_DIR)/<sched>/fw/.
-# Local time (issue 13 section 4): fw-clock/ also links c-driver/alb_clock.c
+# Local time: fw-clock/ also links c-driver/alb_clock.c
 # and reads TIMER (soc/board_memmap.v) as alb_local_time(), so every board
 # syncs its clock and reports its estimates (tools/mk/sim.mk, test-sim-clock*);
 # fw-clock-norate/ is the same without rate correction (-DALB_CLOCK_NO_RATE,

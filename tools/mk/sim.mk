@@ -64,7 +64,7 @@ bench-sim-speed: $(PB_BIN) $(SIM_ICARUS) $(PB_FW) $(PB_SCHED)/tb_plan.txt
 	    --verilator-cycles 2000000 --verilator "$(PB_BIN) $(PB_FW_ARGS) --cycles 2000000 --progress 0 --label bench" \
 	    --icarus-cycles 40000 --icarus "vvp -n $(SIM_ICARUS) $(filter +%,$(PB_FW_ARGS)) +cycles=40000"
 
-# Local time (issue 13 section 4, docs/robot.md "Local time between updates"): the robot with
+# Local time (docs/robot.md "Local time between updates"): the robot with
 # every board syncing c-driver/alb_clock.c on GlobalTime and reporting its
 # estimates ($(PB_DIR)/mobot3/fw-clock/, tools/mk/pico_boards.mk); the check
 # "clock" of sim/mobot_sim.cpp bounds each board's error against the
@@ -124,7 +124,7 @@ test-clock-unit-negative: $(CLOCK_UNIT)/test_clock-norate
 	    if [ $$rc -eq 1 ] && tail -n 1 $<.log | grep -q "failed$$" && ! tail -n 1 $<.log | grep -q " 0 failed$$"; then \
 	    echo "clock-unit-negative: caught (no rate correction fails the unit test)"; else echo "NOT CAUGHT"; exit 1; fi'
 
-# Import termination (issue 13 section 2, docs/robot.md "Import termination"):
+# Import termination (docs/robot.md "Import termination"):
 # sim/mobot3.toml and sim/mobot3_possync.toml give every board's core
 # ([board.<name>]), so the compiler bounds each three-buffer Import
 # (report.txt, ALB_<N>_IMPORT_MAX_*), and every robot run (test-pico-boards*,
