@@ -1,5 +1,5 @@
 /*
- * albatross.c -- Import and Export of the three-buffer channel (seed 3.1,
+ * albatross.c -- Import and Export of the three-buffer channel (the paper, section 3.1,
  * figures 3 and 4), written to follow the paper line by line, and of the
  * wait-free four-slot channel (docs/four_slot.md: the statement order and
  * why each other order fails).
@@ -59,7 +59,7 @@ ALB_INLINE uintptr_t buffer_addr(const alb_channel_t *ch, uint8_t buffer)
     return ch->base + off;
 }
 
-/* ReadFrom (seed figure 3): ceil(size/4) word loads from the RAM, in address
+/* ReadFrom (the paper, figure 3): ceil(size/4) word loads from the RAM, in address
  * order.  An aligned destination takes four words per loop pass. */
 ALB_INLINE void read_from(const alb_channel_t *ch, uint8_t buffer, void *dst)
 {
@@ -93,7 +93,7 @@ ALB_INLINE void read_from(const alb_channel_t *ch, uint8_t buffer, void *dst)
     }
 }
 
-/* WriteTo (seed figure 4): ceil(size/4) word stores into the RAM, in address
+/* WriteTo (the paper, figure 4): ceil(size/4) word stores into the RAM, in address
  * order.  An aligned source takes four words per loop pass. */
 ALB_INLINE void write_to(const alb_channel_t *ch, uint8_t buffer, const void *src)
 {

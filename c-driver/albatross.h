@@ -82,7 +82,7 @@
 #define ALB_FOUR_SLOT_IMPORT 1
 #endif
 
-/* Results.  alb_import: ALB_OLD or ALB_NEW (seed figure 3: Old, New). */
+/* Results.  alb_import: ALB_OLD or ALB_NEW (the paper, figure 3: Old, New). */
 enum {
     ALB_OK          = 0,   /* alb_export and set-up: done                      */
     ALB_OLD         = 0,   /* alb_import: value already read before            */
@@ -204,7 +204,7 @@ typedef struct alb_sample {
 int alb_read(alb_channel_t *ch, void *dst, uint32_t max_age_clocks, uint32_t now, alb_sample_t *st);
 
 /*
- * The typed task interface (seed 3.1):
+ * The typed task interface (the paper, section 3.1):
  *
  *   ALB_CHANNEL(RadarMap, RadarShot)
  *

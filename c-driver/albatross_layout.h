@@ -1,6 +1,6 @@
 /*
  * albatross_layout.h -- memory layout of one ALBATROSS channel in a
- * dual-ported RAM (seed 3.1, figure 2).  Shared by the C driver, the
+ * dual-ported RAM (the paper, section 3.1, figure 2).  Shared by the C driver, the
  * testbenches and the hardware controller; byte offsets from the channel base.
  * Generated from rtl/albatross_contract.toml by make contract
  * (compiler/albatross_schedule/contract_gen.py); do not edit.

@@ -161,7 +161,7 @@ def render_c_layout(c: Contract) -> str:
     names = ", ".join(f"{i} = Buffer{i - c.buffer1 + 1}" for i in range(c.buffer1, c.buffer_last + 1))
     L = ["/*",
          " * albatross_layout.h -- memory layout of one ALBATROSS channel in a",
-         " * dual-ported RAM (seed 3.1, figure 2).  Shared by the C driver, the",
+         " * dual-ported RAM (the paper, section 3.1, figure 2).  Shared by the C driver, the",
          " * testbenches and the hardware controller; byte offsets from the channel base.",
          f" * Generated from {DEFINITION} by make contract",
          " * (compiler/albatross_schedule/contract_gen.py); do not edit.",

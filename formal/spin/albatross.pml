@@ -1,6 +1,6 @@
 /*
  * albatross.pml -- SPIN model of one ALBATROSS three-buffer channel
- * (seed section 3.1, figures 2-4; c-driver/albatross.c alb_import/alb_export).
+ * (the paper, section 3.1, figures 2-4; c-driver/albatross.c alb_import/alb_export).
  *
  * One writer process does Exports forever, one reader process does Imports
  * forever, over all interleavings.  The abstraction:
@@ -23,15 +23,15 @@
  *     unbounded counters.
  *
  * The properties (each a separate run of pan; see tools/mk/formal_spin.mk):
- *   CHECK_MUTEX      mutual exclusion (seed proof point "Mutual exclusion")
- *   CHECK_DEFINITE   definite results (seed proof point "Definite results")
- *   CHECK_ACTUALITY  actuality (seed proof point "Actuality", demand b)
+ *   CHECK_MUTEX      mutual exclusion (the paper's proof point "Mutual exclusion")
+ *   CHECK_DEFINITE   definite results (the paper's proof point "Definite results")
+ *   CHECK_ACTUALITY  actuality (the paper's proof point "Actuality", demand b)
  *   CHECK_NEWOLD     the Import's New/Old result (LookForNew: "is this
  *                    information ever being read before?")
  *   CHECK_RETRY      every extra pass of the reader's While is paid for by
  *                    an Export completed in between (lock-freedom, step form)
  *   ltl reader_wait_free  must FAIL under weak fairness: a fast writer
- *                    starves the reader (seed proof point "Termination" holds
+ *                    starves the reader (the paper's proof point "Termination" holds
  *                    only for a writer that stops)
  *   ltl writer_wait_free, ltl lock_free  hold
  *

@@ -243,7 +243,7 @@ struct Sim {
 // ------------------------------------------------------------------ the CPUs' three-buffer protocol
 unsigned pick(unsigned a, unsigned r);
 
-struct Producer {                       // Export (seed figure 4) on one board
+struct Producer {                       // Export (the paper, figure 4) on one board
     int board;
     unsigned base, w, actual = 1;
     void init(Sim &s) { s.wr(board, base, 0x1, 1); actual = 1; }
@@ -257,7 +257,7 @@ struct Producer {                       // Export (seed figure 4) on one board
     }
 };
 
-struct Consumer {                       // Import (seed figure 3) on one board
+struct Consumer {                       // Import (the paper, figure 3) on one board
     int board;
     unsigned base, words, rl = 1;       // words: value + taken_at
     void init(Sim &s) { s.wr(board, base, 0x2, 1u << 8); rl = 1; }
