@@ -1,6 +1,6 @@
 /*
- * four_slot.pml -- SPIN model of one ALBATROSS four-slot channel (issue 13
- * part 1: Simpson's four-slot mechanism, IEE Proc. E 1990, on the byte-wide
+ * four_slot.pml -- SPIN model of one ALBATROSS four-slot channel
+ * (Simpson's four-slot mechanism, IEE Proc. E 1990, on the byte-wide
  * channel layout of rtl/albatross_contract.toml [layout.four_slot]).
  *
  * Channel: byte 0 Actual (producer), byte 1 ReadLocked (consumer), byte 2
@@ -52,7 +52,7 @@
  *   3. else ReadLocked := A                     (one store)
  *   4. b = buf(pair(A), Slot[pair(A)])          (one load)
  *   5. read the W words of b; New if b != L, else Old; L := b   (3 + W)
- * The test "b != L" in step 5 is NOT in the lead's mapping of issue 13: the
+ * The test "b != L" in step 5 is NOT in the mapping as first proposed: that
  * mapping returns New whenever A != L.  Built with -DNEW_IF_A_NE_L the model
  * is the mapping exactly, and CHECK_NEWOLD fails on it (the same value New
  * twice; see check.py and docs/verification.md).  Step 5 costs no access.

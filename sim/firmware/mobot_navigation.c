@@ -6,7 +6,7 @@
  * exports, then keeps going.  STAT: 0 RadarMap New, 1 Position New,
  * 2 GlobalTime New, 3 exports.  Checks and events: sim/firmware/mobot_check.h.
  *
- * Actuality, by the sampling read (issue 13 section 3; alb_read,
+ * Actuality, by the sampling read (alb_read,
  * docs/protocol.md "Sampling read"): ReadRadarMap ages the map as now -
  * taken_at, where now is the global time read BEFORE the Import (the clock's
  * estimate when the board runs one, else the GlobalTime value of the loop

@@ -58,3 +58,15 @@ test-docs-pictures-negative:
 	    tools/docs_pictures.sh docs/img/timeline.svg docs/img/timeline.svg > /dev/null || \
 	        { echo "an identical copy failed the check"; exit 1; }; \
 	    echo "a stale, a missing committed and a missing fresh picture are each caught"'
+
+# The docs speak to a stranger (tools/doc_words.py): no internal issue numbers
+# and no "seed" for the paper in README.md, docs/*.md, compiler/README.md, the
+# contract's doc strings, the C driver and tools/mk.
+#   make test-docs-words            the check
+#   make test-docs-words-negative   each kind of bad phrase must be caught
+TESTS += docs-words docs-words-negative
+.PHONY: test-docs-words test-docs-words-negative
+test-docs-words:
+	@tools/run_test.sh docs-words $(PYTHON) tools/doc_words.py
+test-docs-words-negative:
+	@tools/run_test.sh docs-words-negative $(PYTHON) tools/doc_words.py --self-test
