@@ -42,7 +42,7 @@ docs-pictures: docs-pictures-build docs-pictures-fault-rates ## refresh the comm
 TESTS += docs-pictures docs-pictures-negative
 test-docs-pictures:
 	@tools/run_test.sh docs-pictures bash -c '$(MAKE) -s --no-print-directory docs-pictures-build && \
-	    tools/docs_pictures.sh $(DOCS_PICTURES)'
+	    tools/docs_pictures.sh $(DOCS_PICTURES) && $(PYTHON) tools/doc_facts.py --sim-log $(DOCS_DIR)/sim.log'
 # A stale picture (one figure changed), a missing committed copy and a missing
 # fresh one must each fail the check; the current picture must pass it.
 test-docs-pictures-negative:
@@ -70,3 +70,16 @@ test-docs-words:
 	@tools/run_test.sh docs-words $(PYTHON) tools/doc_words.py
 test-docs-words-negative:
 	@tools/run_test.sh docs-words-negative $(PYTHON) tools/doc_words.py --self-test
+
+# Figures typed in the prose, checked against the thing (tools/doc_facts.py):
+# the timeline caption's ROM entries and cycle (the compiler's report), the
+# FuseSoC lint-target count (the core files); test-docs-pictures also checks
+# that make sim's last line is `sim: pass`, as the README says.
+#   make test-docs-facts            the check
+#   make test-docs-facts-negative   each figure changed by one must be caught
+TESTS += docs-facts docs-facts-negative
+.PHONY: test-docs-facts test-docs-facts-negative
+test-docs-facts: $(BUILD)/schedule/mobot3/rom.hex
+	@tools/run_test.sh docs-facts $(PYTHON) tools/doc_facts.py
+test-docs-facts-negative: $(BUILD)/schedule/mobot3/rom.hex
+	@tools/run_test.sh docs-facts-negative $(PYTHON) tools/doc_facts.py --self-test

@@ -44,12 +44,12 @@ endif
 sim: $(SIM_BIN) $(foreach b,$(PB_BOARDS),$(SIM_FWDIR)/$(b).hex) $(SIM_SCHED)/tb_plan.txt ## main demonstration: the robot (SIM_CYCLES=, FAULT_RATE=, BURST=, CRASH=board@cycle, DRIFT=, TRACE=0|1, SIM_DESC=)
 	@test -f $(SIM_DESC) || { echo "sim: no description $(SIM_DESC)"; exit 2; }
 	@mkdir -p $(SIM_DIR) $(REPORTS)
+	@echo "sim: writes report $(REPORTS)/sim.json, picture $(SIM_DIR)/ages.svg$(if $(filter 1,$(TRACE)), wave $(SIM_DIR)/mobot.vcd); the last line is the verdict"
 	$(SIM_BIN) $(call pb_args,$(SIM_SCHED),$(SIM_FWDIR),$(SIM_FWDIR)/radar.hex,$(SIM_FWDIR)/navigation.hex) \
 	    --cycles $(SIM_CYCLES) --seed $(SEED) --stall $(STALL) --fault-rate $(FAULT_RATE) $(if $(BURST),--burst $(BURST)) \
 	    $(if $(CRASH),--crash $(CRASH)) $(if $(DRIFT),--drift-ppm $(DRIFT)) --label sim --report $(REPORTS)/sim.json --ages $(SIM_DIR)/ages.csv \
 	    $(if $(filter 1,$(TRACE)),--trace $(SIM_DIR)/mobot.vcd --trace-from $(TRACE_FROM) --trace-cycles $(TRACE_CYCLES))
 	@$(PYTHON) sim/plot_ages.py $(SIM_DIR)/ages.csv $(REPORTS)/sim.json $(SIM_DIR)/ages.svg
-	@echo "sim: report $(REPORTS)/sim.json, picture $(SIM_DIR)/ages.svg$(if $(filter 1,$(TRACE)), wave $(SIM_DIR)/mobot.vcd)"
 
 # Whole-system simulation speed, Verilator against Icarus Verilog (one run each).
 SIM_ICARUS  := $(PB_DIR)/icarus/pico_boards_tb.vvp
