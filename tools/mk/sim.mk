@@ -115,8 +115,20 @@ $(CLOCK_UNIT)/test_clock-%: tb/clock/test_clock.c tb/clock/port/alb_port_impl.h 
 	@mkdir -p $(@D)
 	$(DRV_HOST_CC) $(DRV_CFLAGS) -O2 $(if $(filter norate,$*),-DALB_CLOCK_NO_RATE) -Itb/clock/port -Ic-driver -o $@ \
 	    tb/clock/test_clock.c c-driver/alb_clock.c
-TESTS += clock-unit clock-unit-negative
-.PHONY: test-clock-unit test-clock-unit-negative
+# alb_clock.c built with the memory-mapped port but without ALB_LOCAL_TIMER_ADDR
+# must stop with the #error that names the macro (not an implicit declaration).
+TESTS += clock-unit clock-unit-negative clock-no-timer
+.PHONY: test-clock-unit test-clock-unit-negative test-clock-no-timer
+test-clock-no-timer: c-driver/alb_clock.c c-driver/alb_clock.h $(DRV_HDRS)
+	@mkdir -p $(CLOCK_UNIT)
+	@tools/run_test.sh clock-no-timer bash -c 'if $(DRV_HOST_CC) $(DRV_CFLAGS) -Ic-driver -Ic-driver/port/mmio -c \
+	    -o $(CLOCK_UNIT)/no-timer.o c-driver/alb_clock.c > $(CLOCK_UNIT)/no-timer.log 2>&1; then \
+	    echo "expected alb_clock.c without ALB_LOCAL_TIMER_ADDR to fail to compile, it compiled"; exit 1; fi; \
+	    if grep -q "#error.*ALB_LOCAL_TIMER_ADDR" $(CLOCK_UNIT)/no-timer.log && \
+	       ! grep -q "implicit" $(CLOCK_UNIT)/no-timer.log; then \
+	    echo "clock-no-timer: stops with: $$(grep -o "#error.*ALB_LOCAL_TIMER_ADDR[^,]*" $(CLOCK_UNIT)/no-timer.log | head -n 1)"; \
+	    else echo "expected an #error naming ALB_LOCAL_TIMER_ADDR and no implicit declaration, got:"; \
+	    head -n 5 $(CLOCK_UNIT)/no-timer.log; exit 1; fi'
 test-clock-unit: $(CLOCK_UNIT)/test_clock-rate $(CLOCK_OBJS)
 	@tools/run_test.sh clock-unit $<
 test-clock-unit-negative: $(CLOCK_UNIT)/test_clock-norate
