@@ -16,7 +16,7 @@ SCHEDULE_DIR  := $(BUILD)/schedule/$(basename $(notdir $(SCHEDULE_DESC)))
 TESTS += compiler
 .PHONY: test-compiler schedule
 
-test-compiler:
+test-compiler: ## [test] the schedule compiler's tests (examples, bad descriptions, gcc, end to end)
 	@tools/run_test.sh compiler $(PYTHON) -m unittest discover -s compiler/tests -v
 
 schedule: $(SCHEDULE_DIR)/rom.hex ## compile SCHEDULE_DESC (default: the MOBOT-III example) -> build/schedule/<name>/

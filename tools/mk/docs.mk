@@ -83,3 +83,29 @@ test-docs-facts: $(BUILD)/schedule/mobot3/rom.hex
 	@tools/run_test.sh docs-facts $(PYTHON) tools/doc_facts.py
 test-docs-facts-negative: $(BUILD)/schedule/mobot3/rom.hex
 	@tools/run_test.sh docs-facts-negative $(PYTHON) tools/doc_facts.py --self-test
+
+# make help lists every target the docs name (tools/make_help.py --check-docs):
+# each `make X` in a code span or block of README.md, docs/*.md and
+# compiler/README.md is in make help, or, for make test-NAME, is a rule.
+#   make test-help-docs            the check
+#   make test-help-docs-negative   a scratch doc naming a target that does not
+#                                  exist and a test that does not exist: both caught
+HELP_DOCS     := README.md $(wildcard docs/*.md) compiler/README.md
+HELP_TARGETS  := $(BUILD)/help/targets.txt
+TESTS += help-docs help-docs-negative
+.PHONY: test-help-docs test-help-docs-negative $(HELP_TARGETS)
+$(HELP_TARGETS):
+	@mkdir -p $(@D)
+	@$(MAKE) -pRrq -f $(firstword $(MAKEFILE_LIST)) : 2>/dev/null | grep -oE '^[a-zA-Z0-9_.-]+:' | tr -d : | sort -u > $@
+test-help-docs: $(HELP_TARGETS)
+	@tools/run_test.sh help-docs python3 tools/make_help.py --check-docs $(MAKEFILE_LIST) --targets $< $(HELP_DOCS)
+test-help-docs-negative: $(HELP_TARGETS)
+	@tools/run_test.sh help-docs-negative bash -c 'd=$(BUILD)/help; \
+	    printf "Run \`make no-such-target\`, then:\n\n\`\`\`sh\nmake test-no-such-test\nmake help\n\`\`\`\n" > $$d/neg.md; \
+	    if python3 tools/make_help.py --check-docs $(MAKEFILE_LIST) --targets $< $$d/neg.md > $$d/neg.out; then \
+	        echo "expected the check to fail on $$d/neg.md, it passed"; exit 1; fi; \
+	    cat $$d/neg.out; \
+	    grep -q "make no-such-target: expected it in make help" $$d/neg.out && \
+	    grep -q "make test-no-such-test: expected it in make help" $$d/neg.out && \
+	    ! grep -q "make help:" $$d/neg.out || { echo "expected exactly the two missing targets named"; exit 1; }; \
+	    echo "help-docs-negative: a target and a test that do not exist are both caught"'

@@ -44,7 +44,7 @@ fusesoc-ignore:
 # The CPUs' libraries (tools/mk/pico.mk, serv.mk): deferred, those files are read after this one.
 FUSESOC_LIBS   = --library $(SERV_CPU_DIR) --picorv32 $(PICO_RV32_V)
 
-test-fusesoc: $(FUSESOC_DEPS) | fusesoc-ignore
+test-fusesoc: $(FUSESOC_DEPS) | fusesoc-ignore ## [test] the FuseSoC cores as a user meets them: load, lint, driver build, a simulation
 	$(PICO_NEED)
 	$(SERV_NEED)
 	@tools/run_test.sh fusesoc $(PYTHON) tools/fusesoc_check.py --root . --work $(FUSESOC_DIR)/main \

@@ -81,7 +81,7 @@ test-pico-pair-negative: $(PICO_BIN) $(PICO_DIR)/fw/producer-ignore_readlocked.h
 
 BENCHES += bench-pico-pair
 .PHONY: bench-pico-pair
-bench-pico-pair: $(PICO_BIN) $(PICO_DIR)/fw/producer.hex $(PICO_DIR)/fw/consumer.hex
+bench-pico-pair: $(PICO_BIN) $(PICO_DIR)/fw/producer.hex $(PICO_DIR)/fw/consumer.hex ## [bench] two PicoRV32 boards, one channel: cycles per Import/Export
 	$(PICO_BIN) +fw0=$(PICO_DIR)/fw/producer.hex +fw1=$(PICO_DIR)/fw/consumer.hex \
 	    --max-cycles $(PICO_MAX_CYCLES) --stall-core -1 --label pico-pair-bench \
 	    --report $(REPORTS)/pico_pair_bench.json

@@ -59,7 +59,7 @@ $(SIM_ICARUS): $(PB_RTL) $(RTL_INC) sim/pico_boards_tb.v $(PICO_RV32_V)
 	iverilog -g2005 $(VLIB) -y sim -s pico_boards_tb -o $@ $(PICO_RV32_V) sim/pico_boards_tb.v
 BENCHES += bench-sim-speed
 .PHONY: bench-sim-speed
-bench-sim-speed: $(PB_BIN) $(SIM_ICARUS) $(PB_FW) $(PB_SCHED)/tb_plan.txt
+bench-sim-speed: $(PB_BIN) $(SIM_ICARUS) $(PB_FW) $(PB_SCHED)/tb_plan.txt ## [bench] whole-system simulation speed, Verilator against Icarus
 	$(PYTHON) sim/bench_speed.py --report $(REPORTS)/sim_speed.json \
 	    --verilator-cycles 2000000 --verilator "$(PB_BIN) $(PB_FW_ARGS) --cycles 2000000 --progress 0 --label bench" \
 	    --icarus-cycles 40000 --icarus "vvp -n $(SIM_ICARUS) $(filter +%,$(PB_FW_ARGS)) +cycles=40000"
