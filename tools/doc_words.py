@@ -21,7 +21,7 @@ import argparse, glob, os, re, sys, tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT = (["README.md"] + sorted(glob.glob(os.path.join(ROOT, "docs", "*.md")))
-           + ["compiler/README.md", "rtl/albatross_contract.toml", "c-driver", "tools/mk"])
+           + ["compiler/README.md", "compiler/examples", "rtl/albatross_contract.toml", "c-driver", "tools/mk"])
 EXTS = (".md", ".toml", ".c", ".h", ".mk", ".py", ".sh", ".v", ".cpp", ".sed", ".pml")
 
 RULES = [
