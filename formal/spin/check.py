@@ -101,6 +101,19 @@ SAFETY_FS = {
     "crash_newold": ("New/Old with consumer crashes at every access (the first "
                      "Import after a restart returns New)",
                      ["CHECK_NEWOLD", "CRASH"], 10000000),
+    # a zeroed RAM: each side's init at any point of the other's run
+    # (-DCOLD_START, consumer_init with L = 1 as the driver's)
+    "cold_mutex": ("cold start on a zeroed RAM: mutual exclusion",
+                   ["CHECK_MUTEX", "COLD_START", "L_INIT=1"], 3000000),
+    "cold_definite": ("cold start on a zeroed RAM: definite results (nothing read "
+                      "while Actual is 0)", ["CHECK_DEFINITE", "COLD_START", "L_INIT=1"], 3000000),
+    "cold_actuality": ("cold start on a zeroed RAM: actuality",
+                       ["CHECK_ACTUALITY", "COLD_START", "L_INIT=1"], 3000000),
+    "cold_newold": ("cold start on a zeroed RAM: New/Old (the producer keeps out of "
+                    "pair 0 until the consumer starts, so Buffer1 read as Old is "
+                    "the initial value)", ["CHECK_NEWOLD", "COLD_START", "L_INIT=1"], 3000000),
+    "cold_bound": ("cold start on a zeroed RAM: the access bound",
+                   ["CHECK_BOUND", "COLD_START", "L_INIT=1"], 3000000),
     # the controller's Import rule (rtl/albatross_import.v): Old when
     # buf(pair(A), Slot[pair(A)]) of the first word load is L, that word load
     # being three byte loads in any order

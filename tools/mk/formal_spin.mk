@@ -49,7 +49,8 @@ test-formal-spin-negative-cold-read-zero:
 #                               every property of the four-slot channel: mutual
 #                               exclusion, definite results, actuality, New/Old,
 #                               the access bound (1 + W / 3 + W per Import), also
-#                               with W = 1, L = 1 at init and consumer crashes;
+#                               with W = 1, L = 1 at init, consumer crashes and
+#                               from a zeroed RAM (cold_*);
 #                               reader_wait_free, writer_wait_free and lock_free
 #                               all HOLD.  Report: build/reports/formal_spin_four_slot.json
 #   make test-formal-spin-four-slot-negative-<variant>
@@ -64,7 +65,8 @@ SPIN_FS_NEGATIVE := wrong-order:WRONG_ORDER:mutex,definite \
                     rl-as-last:RL_AS_LAST:actuality \
                     slot-after-actual:SLOT_AFTER_ACTUAL:definite,actuality,newold \
                     new-if-a-ne-l:NEW_IF_A_NE_L:newold \
-                    reread:REREAD:bound,reader_wait_free
+                    reread:REREAD:bound,reader_wait_free \
+                    cold-pair-of-actual:COLD_PAIR_OF_ACTUAL:cold_newold
 
 SPIN_FS_TESTS    := formal-spin-four-slot \
                     $(foreach v,$(SPIN_FS_NEGATIVE),formal-spin-four-slot-negative-$(call neg_field,$(v),1))
