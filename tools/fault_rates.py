@@ -409,7 +409,7 @@ def svg(data, path):
     ncol = max(1, len(names))
     L, R, T, PW, PH, HG, VG = 64, 16, 92, 150, 190, 26, 74
     W = L + ncol * PW + (ncol - 1) * HG + R
-    H = T + 2 * PH + VG + 112
+    H = T + 2 * PH + VG + 128
     x_of = lambda x0, r: x0 + PW * r / 0.5
     miss = lambda p: 1.0 - p
     # the log axis: from the smallest value to show, to 1
@@ -430,7 +430,7 @@ def svg(data, path):
          '<text x="%d" y="38" fill="#444">tb_system, seed %d, a plan made for each rate; per channel its worst '
          'consumer. Top: a cycle that delivers nothing, 1 - p (log axis).</text>' % (L, data["seed"]),
          '<text x="%d" y="54" fill="#444">Bottom: the worst age seen, and the age bound that holds with the '
-         'plan\'s target probability (under each rate: 1 - 10⁻⁹ ... 0.99).</text>' % L]
+         'plan\'s target probability (the targets: below).</text>' % L]
     for col, name in enumerate(names):
         x0 = L + col * (PW + HG)
         colour = COLOURS.get(name, "#333")
@@ -456,7 +456,7 @@ def svg(data, path):
                             o.append('<text x="%d" y="%.1f" text-anchor="end" font-size="10">%s</text>'
                                      % (x0 - 4, yy + 4, "1" if e == 0 else _sup(e)))
                 get_p = lambda c: ylog(y0, miss(c["predicted_cycle_delivery"]))
-                has_p = lambda c: miss(c["predicted_cycle_delivery"]) > 0
+                has_p = lambda c: miss(c["predicted_cycle_delivery"]) >= 10.0 ** e_lo * 0.999
                 get_m = lambda c, p: ylog(y0, miss(c["measured_cycle_delivery"]) if
                                           miss(c["measured_cycle_delivery"]) > 0 else 1.0 / max(1, p["cycles_measured"]))
                 zero_m = lambda c: miss(c["measured_cycle_delivery"]) <= 0
@@ -503,6 +503,9 @@ def svg(data, path):
                                  else "%g" % tp))
     o.append('<text x="%d" y="%d" fill="#444">plan target per rate (independent faults): %s</text>'
              % (L, ky, ",  ".join(tg)))
+    ky += 16
+    o.append('<text x="%d" y="%d" fill="#444">Top: a predicted line starts where 1 - p reaches the axis\' foot, '
+             '%s; below it the prediction is smaller still.</text>' % (L, ky, _sup(e_lo)))
     ky += 22
     o.append('<line x1="%d" y1="%d" x2="%d" y2="%d" stroke="#555" stroke-width="2"/>' % (L, ky - 4, L + 22, ky - 4))
     o.append('<text x="%d" y="%d">predicted (independent faults)</text>' % (L + 28, ky))
