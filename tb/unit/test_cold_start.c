@@ -182,6 +182,32 @@ static void cs_random(unsigned kind, uint8_t values[][CS_SIZE])
     }
 }
 
+/* The sampling read before anything was published: alb_import's ALB_OLD,
+ * status NEVER, *dst unchanged. */
+static void cs_sample(unsigned kind)
+{
+    alb_channel_t p, c;
+    alb_sample_t st;
+    uint8_t d[8], keep[8];
+
+    CTX("cold start, %s, alb_read before the producer's init",
+        kind == ALB_FOUR_SLOT ? "four-slot" : "three-buffer");
+    memset(unit_port.ram, 0, sizeof unit_port.ram);
+    ch_size = 8u;
+    port_reset(ch_base, ch_base + ALB_FS_CHANNEL_BYTES(8u));
+    check_int("setup", ALB_OK, alb_channel_setup_kind(&p, ch_base, 8u, kind));
+    check_int("setup", ALB_OK, alb_channel_setup_kind(&c, ch_base, 8u, kind));
+    check_int("consumer init", ALB_OK, alb_consumer_init(&c));
+    memset(d, 0x3c, sizeof d);
+    memcpy(keep, d, sizeof d);
+    memset(&st, 0xff, sizeof st);
+    check_int("alb_read: Old", ALB_OLD, alb_read(&c, d, 100u, 50u, &st));
+    check_int("alb_read: status NEVER", ALB_SAMPLE_NEVER, st.status);
+    check_int("alb_read: not new", 0, st.is_new);
+    check_bytes("alb_read: *dst unchanged", keep, d, sizeof d);
+    check_no_trap();
+}
+
 void test_cold_start(void)
 {
     uint8_t values[4][CS_SIZE];
@@ -192,5 +218,6 @@ void test_cold_start(void)
     for (kind = ALB_THREE_BUFFER; kind <= ALB_FOUR_SLOT; ++kind) {
         cs_orders(kind, values);
         cs_random(kind, values);
+        cs_sample(kind);
     }
 }
