@@ -181,12 +181,9 @@ static int fs_producer_attach(alb_channel_t *ch)
 #endif
 
 #if ALB_FOUR_SLOT_IMPORT
-static int fs_consumer_attach(alb_channel_t *ch)
+/* read_locked: the RAM's ReadLocked, not 0 (alb_consumer_attach loaded it). */
+static int fs_consumer_attach(alb_channel_t *ch, uint8_t read_locked)
 {
-    uint8_t read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
-
-    if (read_locked == ALB_NOT_STARTED)
-        return ALB_ERR_ARG;            /* never started: alb_consumer_init */
     if (!ALB_FS_VALID_INDEX(read_locked))
         return ALB_ERR_CORRUPT;
     ch->fs_read_locked = read_locked;
@@ -240,9 +237,10 @@ static void fs_complete(alb_channel_t *ch, uint8_t buffer)
 
 #if ALB_FOUR_SLOT_IMPORT
 /* Import steps 1 to 4: the buffer to read, *buffer, and the result:
- * ALB_NEW, ALB_OLD, ALB_ERR_CORRUPT (nothing to read) or ALB_ERR_ARG.
- * Actual = 0 (nothing published yet): ALB_OLD and *buffer unset; the caller
- * reads nothing (fs_import checks *buffer). */
+ * ALB_NEW, ALB_OLD, ALB_ERR_CORRUPT (nothing to read) or ALB_ERR_ARG;
+ * FS_NOTHING (negative, private) for Actual = 0, nothing published yet:
+ * fs_import reads nothing and returns ALB_OLD. */
+#define FS_NOTHING (-3)
 static int fs_select_read(alb_channel_t *ch, uint8_t *buffer)
 {
     uint32_t word;
@@ -256,7 +254,7 @@ static int fs_select_read(alb_channel_t *ch, uint8_t *buffer)
     word = alb_rd32(ch->base);
     latest = ctl_byte(word, ALB_OFF_ACTUAL);
     if (!ALB_FS_VALID_INDEX(latest))   /* 0: nothing published yet (cold start) */
-        return latest == ALB_NOT_STARTED ? ALB_OLD : ALB_ERR_CORRUPT;
+        return latest == ALB_NOT_STARTED ? FS_NOTHING : ALB_ERR_CORRUPT;
     /* 2. nothing new: the buffer read last, still protected by ReadLocked */
     if (latest == ch->last) {
         *buffer = latest;
@@ -297,11 +295,11 @@ ALB_NOINLINE void fs_copy_in(const alb_channel_t *ch, uint8_t buffer, void *dst)
 
 ALB_NOINLINE int fs_import(alb_channel_t *ch, void *dst)
 {
-    uint8_t buffer = 0u;
+    uint8_t buffer;
     int result = fs_select_read(ch, &buffer);   /* steps 1-4 */
 
-    if (result < 0 || buffer == 0u)   /* an error, or nothing published yet */
-        return result;
+    if (result < 0)     /* an error, or nothing published yet: Old, no read */
+        return result == FS_NOTHING ? ALB_OLD : result;
     alb_fence();              /* acquire: the control loads before the data */
     fs_copy_in(ch, buffer, dst);                 /* step 5 */
     alb_fence();   /* release: these data loads before the next ReadLocked store */
@@ -400,13 +398,15 @@ int alb_consumer_attach(alb_channel_t *ch)
 
     if (ch == 0 || ch->size == 0u || !ALB_IMPORTS(ch->kind))
         return ALB_ERR_ARG;
+    read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
+    if (read_locked == ALB_NOT_STARTED)
+        return ALB_ERR_ARG;            /* never started: alb_consumer_init */
 #if ALB_FOUR_SLOT_IMPORT
     if (ch->kind == ALB_FOUR_SLOT)
-        return fs_consumer_attach(ch);
+        return fs_consumer_attach(ch, read_locked);
 #endif
-    read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
-    if (!ALB_VALID_INDEX(read_locked)) /* 0: never started, alb_consumer_init */
-        return read_locked == ALB_NOT_STARTED ? ALB_ERR_ARG : ALB_ERR_CORRUPT;
+    if (!ALB_VALID_INDEX(read_locked))
+        return ALB_ERR_CORRUPT;
     ch->read_locked = read_locked;
     return ALB_OK;
 }
