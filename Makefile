@@ -89,10 +89,8 @@ include $(sort $(wildcard tools/mk/*.mk))
 
 .PHONY: help deps lint test formal bench figures sim clean distclean
 
-help: ## list the targets
-	@echo "ALBATROSS -- make targets:"
-	@grep -hE '^[a-zA-Z0-9_-]+:.*## ' $(MAKEFILE_LIST) | \
-	    awk -F':.*## ' '{ printf "  %-14s %s\n", $$1, $$2 }'
+help: ## [start] list the targets, grouped (a "## [group] text" comment on a rule line)
+	@python3 tools/make_help.py $(MAKEFILE_LIST)
 
 deps: ## install every tool (apt-get, then PyPI packages into build/venv)
 	$(SUDO) apt-get update

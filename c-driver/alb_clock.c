@@ -5,6 +5,11 @@
 #include "alb_clock.h"
 #include "alb_port.h"
 
+#ifndef ALB_PORT_HAS_LOCAL_TIME
+#error "alb_clock.c needs the port's alb_local_time() (alb_port.h): with c-driver/port/mmio, define ALB_LOCAL_TIMER_ADDR, the address of the board's free-running 32-bit local timer (e.g. -DALB_LOCAL_TIMER_ADDR=0x20000040u); a port of your own defines alb_local_time() and ALB_PORT_HAS_LOCAL_TIME"
+static inline uint32_t alb_local_time(void) { return 0u; }   /* the #error is the only message */
+#endif
+
 /* a * b mod 2^32 by shift and add over the bits of b (rv32i has no multiply
  * instruction; b is the short factor, so few steps). */
 static uint32_t alb_clock_mul(uint32_t a, uint32_t b)

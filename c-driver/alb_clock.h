@@ -1,5 +1,5 @@
 /*
- * alb_clock.h -- the global time between updates (seed 3.4.1, issue 13 §4).
+ * alb_clock.h -- the global time between updates (the paper, section 3.4.1).
  *
  * The controller's global time reaches a board only as the values of its
  * time channel (a TIME entry publishes {time, taken_at = time}, the nominal

@@ -12,14 +12,22 @@
  *                                                    stores) before every later one
  *   uint32_t alb_local_time(void);                   the board's free-running local
  *                                                    timer (only alb_clock.c uses it;
- *                                                    one read, disturbs nothing)
+ *                                                    one read, disturbs nothing); a
+ *                                                    port that has it also defines
+ *                                                    ALB_PORT_HAS_LOCAL_TIME (without
+ *                                                    it alb_clock.c stops with #error)
  *
  * Each call is exactly one access of the RAM port: never merged, split,
  * elided or reordered by the compiler.  Targets:
- *   c-driver/port/mmio/   memory-mapped RAM (volatile accesses, CPU fence)
- *   tb/port/              Verilator testbench (each access is a bus
+ *   c-driver/port/mmio/   memory-mapped RAM (volatile accesses, CPU fence;
+ *                         alb_local_time when the build defines
+ *                         ALB_LOCAL_TIMER_ADDR)
+ *   tb/common/port/       Verilator testbench (each access is a bus
  *                         transaction on the RTL; the calling simulated CPU
  *                         yields to the clock loop until it completes)
+ *   tb/unit/port/         host unit tests: a byte array, every access
+ *                         counted and checked
+ *   tb/clock/port/        host unit test of alb_clock.c: the local timer only
  */
 #ifndef ALB_PORT_H
 #define ALB_PORT_H

@@ -1,5 +1,5 @@
 /*
- * albatross.c -- Import and Export of the three-buffer channel (seed 3.1,
+ * albatross.c -- Import and Export of the three-buffer channel (the paper, section 3.1,
  * figures 3 and 4), written to follow the paper line by line, and of the
  * wait-free four-slot channel (docs/four_slot.md: the statement order and
  * why each other order fails).
@@ -59,7 +59,7 @@ ALB_INLINE uintptr_t buffer_addr(const alb_channel_t *ch, uint8_t buffer)
     return ch->base + off;
 }
 
-/* ReadFrom (seed figure 3): ceil(size/4) word loads from the RAM, in address
+/* ReadFrom (the paper, figure 3): ceil(size/4) word loads from the RAM, in address
  * order.  An aligned destination takes four words per loop pass. */
 ALB_INLINE void read_from(const alb_channel_t *ch, uint8_t buffer, void *dst)
 {
@@ -93,7 +93,7 @@ ALB_INLINE void read_from(const alb_channel_t *ch, uint8_t buffer, void *dst)
     }
 }
 
-/* WriteTo (seed figure 4): ceil(size/4) word stores into the RAM, in address
+/* WriteTo (the paper, figure 4): ceil(size/4) word stores into the RAM, in address
  * order.  An aligned source takes four words per loop pass. */
 ALB_INLINE void write_to(const alb_channel_t *ch, uint8_t buffer, const void *src)
 {
@@ -169,6 +169,8 @@ static int fs_producer_attach(alb_channel_t *ch)
     uint8_t actual = ctl_byte(word, ALB_OFF_ACTUAL);
     uint8_t s0 = ctl_byte(word, ALB_OFF_SLOT0), s1 = ctl_byte(word, ALB_OFF_SLOT1);
 
+    if (actual == ALB_NOT_STARTED)
+        return ALB_ERR_ARG;            /* never started: alb_producer_init */
     if (!ALB_FS_VALID_INDEX(actual) || !ALB_FS_VALID_SLOT(s0) || !ALB_FS_VALID_SLOT(s1))
         return ALB_ERR_CORRUPT;
     ch->fs_actual = actual;
@@ -179,10 +181,9 @@ static int fs_producer_attach(alb_channel_t *ch)
 #endif
 
 #if ALB_FOUR_SLOT_IMPORT
-static int fs_consumer_attach(alb_channel_t *ch)
+/* read_locked: the RAM's ReadLocked, not 0 (alb_consumer_attach loaded it). */
+static int fs_consumer_attach(alb_channel_t *ch, uint8_t read_locked)
 {
-    uint8_t read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
-
     if (!ALB_FS_VALID_INDEX(read_locked))
         return ALB_ERR_CORRUPT;
     ch->fs_read_locked = read_locked;
@@ -192,9 +193,11 @@ static int fs_consumer_attach(alb_channel_t *ch)
 #endif
 
 #if ALB_FOUR_SLOT_EXPORT
-/* Export steps 1 and 2: the buffer to write, *buffer.  ALB_OK, or
- * ALB_ERR_CORRUPT for an invalid ReadLocked (the value is published all the
- * same, in the pair other than Actual's). */
+/* Export steps 1 and 2: the buffer to write, *buffer.  ALB_OK (also for
+ * ReadLocked = 0, a consumer not started yet: read as Buffer1, the value its
+ * init stores, so the producer keeps out of pair 0 as with the RAM image),
+ * or ALB_ERR_CORRUPT for a ReadLocked of 5..255 (the value is published all
+ * the same, in the pair other than Actual's). */
 static int fs_select_write(alb_channel_t *ch, uint8_t *buffer)
 {
     uint32_t word;
@@ -206,6 +209,8 @@ static int fs_select_write(alb_channel_t *ch, uint8_t *buffer)
     alb_fence();       /* the last store of Actual before loading ReadLocked */
     word = alb_rd32(ch->base);
     read_locked = ctl_byte(word, ALB_OFF_READLOCKED);
+    if (read_locked == ALB_NOT_STARTED)
+        read_locked = ALB_BUFFER1;     /* consumer not started: as its init will */
     if (ALB_FS_VALID_INDEX(read_locked)) {
         pair = 1u - ALB_FS_PAIR(read_locked);
     } else {
@@ -232,7 +237,10 @@ static void fs_complete(alb_channel_t *ch, uint8_t buffer)
 
 #if ALB_FOUR_SLOT_IMPORT
 /* Import steps 1 to 4: the buffer to read, *buffer, and the result:
- * ALB_NEW, ALB_OLD, ALB_ERR_CORRUPT (nothing to read) or ALB_ERR_ARG. */
+ * ALB_NEW, ALB_OLD, ALB_ERR_CORRUPT (nothing to read) or ALB_ERR_ARG;
+ * FS_NOTHING (negative, private) for Actual = 0, nothing published yet:
+ * fs_import reads nothing and returns ALB_OLD. */
+#define FS_NOTHING (-3)
 static int fs_select_read(alb_channel_t *ch, uint8_t *buffer)
 {
     uint32_t word;
@@ -245,8 +253,8 @@ static int fs_select_read(alb_channel_t *ch, uint8_t *buffer)
     /* 1. the latest buffer */
     word = alb_rd32(ch->base);
     latest = ctl_byte(word, ALB_OFF_ACTUAL);
-    if (!ALB_FS_VALID_INDEX(latest))
-        return ALB_ERR_CORRUPT;
+    if (!ALB_FS_VALID_INDEX(latest))   /* 0: nothing published yet (cold start) */
+        return latest == ALB_NOT_STARTED ? FS_NOTHING : ALB_ERR_CORRUPT;
     /* 2. nothing new: the buffer read last, still protected by ReadLocked */
     if (latest == ch->last) {
         *buffer = latest;
@@ -290,8 +298,8 @@ ALB_NOINLINE int fs_import(alb_channel_t *ch, void *dst)
     uint8_t buffer;
     int result = fs_select_read(ch, &buffer);   /* steps 1-4 */
 
-    if (result < 0)
-        return result;
+    if (result < 0)     /* an error, or nothing published yet: Old, no read */
+        return result == FS_NOTHING ? ALB_OLD : result;
     alb_fence();              /* acquire: the control loads before the data */
     fs_copy_in(ch, buffer, dst);                 /* step 5 */
     alb_fence();   /* release: these data loads before the next ReadLocked store */
@@ -363,8 +371,8 @@ int alb_producer_attach(alb_channel_t *ch)
         return fs_producer_attach(ch);
 #endif
     actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
-    if (!ALB_VALID_INDEX(actual))
-        return ALB_ERR_CORRUPT;
+    if (!ALB_VALID_INDEX(actual))      /* 0: never started, alb_producer_init */
+        return actual == ALB_NOT_STARTED ? ALB_ERR_ARG : ALB_ERR_CORRUPT;
     ch->actual = actual;
     return ALB_OK;
 }
@@ -390,11 +398,13 @@ int alb_consumer_attach(alb_channel_t *ch)
 
     if (ch == 0 || ch->size == 0u || !ALB_IMPORTS(ch->kind))
         return ALB_ERR_ARG;
+    read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
+    if (read_locked == ALB_NOT_STARTED)
+        return ALB_ERR_ARG;            /* never started: alb_consumer_init */
 #if ALB_FOUR_SLOT_IMPORT
     if (ch->kind == ALB_FOUR_SLOT)
-        return fs_consumer_attach(ch);
+        return fs_consumer_attach(ch, read_locked);
 #endif
-    read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
     if (!ALB_VALID_INDEX(read_locked))
         return ALB_ERR_CORRUPT;
     ch->read_locked = read_locked;
@@ -415,8 +425,8 @@ int alb_import(alb_channel_t *ch, void *dst)
     /* --- Phase 1: select a buffer for read-access */
     actual = alb_rd8(ch->base + ALB_OFF_ACTUAL);
     while (actual != ch->read_locked) {
-        if (!ALB_VALID_INDEX(actual))
-            return ALB_ERR_CORRUPT;
+        if (!ALB_VALID_INDEX(actual))  /* 0: nothing published yet (cold start) */
+            return actual == ALB_NOT_STARTED ? ALB_OLD : ALB_ERR_CORRUPT;
         ch->read_locked = actual;                           /* ReadLocked:= Actual */
         alb_wr8(ch->base + ALB_OFF_READLOCKED, actual);
         alb_fence();                  /* store ReadLocked before loading Actual */
@@ -447,8 +457,13 @@ int alb_export(alb_channel_t *ch, const void *src)
     /* --- Phase 1: select a buffer for write-access */
     alb_fence();         /* the last store of Actual before loading ReadLocked */
     copy_of_read_locked = alb_rd8(ch->base + ALB_OFF_READLOCKED);
-    if (!ALB_VALID_INDEX(copy_of_read_locked))
-        result = ALB_ERR_CORRUPT;   /* it excludes no buffer: one stays free */
+    /* Out of range, it excludes no buffer (one stays free).  0: the consumer
+     * has not started (cold start), not an error; the loop below then picks
+     * the buffer ReadLocked = Buffer1 would give (Buffer1 is picked only when
+     * both others are excluded), as with the RAM image.  4..255: a faulty
+     * consumer. */
+    if (!ALB_VALID_INDEX(copy_of_read_locked) && copy_of_read_locked != ALB_NOT_STARTED)
+        result = ALB_ERR_CORRUPT;
     for (buffer = ALB_BUFFER1; buffer <= ALB_BUFFER3; ++buffer)
         if (buffer != ch->actual && buffer != copy_of_read_locked)
             write_buffer = buffer;

@@ -1,6 +1,6 @@
 /*
  * albatross.h -- the ALBATROSS channel: the paper's three-buffer kind (seed
- * 3.1, figures 2-4) and the wait-free four-slot kind (issue 13; Simpson's
+ * 3.1, figures 2-4) and the wait-free four-slot kind (Simpson's
  * four-slot mechanism on single-writer bytes, docs/four_slot.md).
  *
  * A channel carries one variable from one producer to one consumer through a
@@ -9,11 +9,25 @@
  * memory layout is in albatross_layout.h; all RAM accesses go through the
  * port layer (alb_port.h).  C99, freestanding, no heap.
  *
- * Start-up: the control bytes start as Buffer1 (seed figure 2).  A RAM image
- * can hold them (the schedule compiler emits one), or the producer calls
- * alb_producer_init() (also writes the initial value into Buffer1) and the
- * consumer alb_consumer_init().  A side that restarts while its partner runs
- * calls alb_*_attach() instead, which recovers its private copy from the RAM.
+ * Start-up.  Each side owns the control bytes it writes: the producer Actual
+ * (and, four-slot, Slot0 and Slot1), the consumer ReadLocked.  A RAM image can
+ * set them all to Buffer1 (the paper, figure 2; the schedule compiler emits
+ * one); then each side calls alb_*_attach().  Without the image (a zeroed
+ * RAM, a cold start) each side calls its own init, in either order, while the
+ * other may already run: alb_producer_init() writes the initial value into
+ * Buffer1 and then Actual (and the slot bytes), alb_consumer_init() writes
+ * ReadLocked.  A byte its writer has not set yet holds ALB_NOT_STARTED (0),
+ * which is no error: an Import that finds Actual = 0 returns ALB_OLD and
+ * reads nothing (*dst unchanged: nothing has been published yet); an Export
+ * that finds ReadLocked = 0 returns ALB_OK and picks the buffer that
+ * ReadLocked = Buffer1 (the value the consumer's init stores) gives, so the
+ * channel runs exactly as from the RAM image, except that the consumer reads
+ * nothing before the producer's init.  A consumer that starts later is safe:
+ * it reads a buffer only after its own ReadLocked store and a load of Actual
+ * that confirms it.  A side that restarts while its partner runs calls
+ * alb_*_attach() instead, which recovers its private copy from the RAM (it
+ * needs its own bytes set: ALB_ERR_ARG for 0, call the init).  docs/protocol.md, "Cold
+ * start", states the whole contract, the controller's part included.
  *
  * Each side keeps a private copy (shadow) of the control byte it owns, so in
  * the uncontended case the RAM accesses beyond the payload are:
@@ -68,13 +82,17 @@
 #define ALB_FOUR_SLOT_IMPORT 1
 #endif
 
-/* Results.  alb_import: ALB_OLD or ALB_NEW (seed figure 3: Old, New). */
+/* Results.  alb_import: ALB_OLD or ALB_NEW (the paper, figure 3: Old, New). */
 enum {
     ALB_OK          = 0,   /* alb_export and set-up: done                      */
     ALB_OLD         = 0,   /* alb_import: value already read before            */
     ALB_NEW         = 1,   /* alb_import: value never read before              */
-    ALB_ERR_CORRUPT = -1,  /* the partner's control byte is out of range (a
-                              crashed or faulty partner); see the functions   */
+    ALB_ERR_CORRUPT = -1,  /* the partner's control byte holds a value that
+                              names no buffer and is not ALB_NOT_STARTED (0):
+                              4..255 (four-slot 5..255, a slot byte 2..255),
+                              written by a faulty partner or a RAM fault.  A
+                              partner that has not started yet leaves 0,
+                              which is not an error; see the functions        */
     ALB_ERR_ARG     = -2   /* bad argument: misaligned base, size 0, or the
                               side was never initialised or attached           */
 };
@@ -110,31 +128,35 @@ int alb_channel_setup_kind(alb_channel_t *ch, uintptr_t base, uint32_t size, uns
 int alb_producer_init(alb_channel_t *ch, const void *initial);
 /* Producer, restart while the consumer runs: private copies := Actual (and
  * four-slot: Slot0, Slot1, from one load of the control word).
- * ALB_ERR_CORRUPT if the RAM holds no valid index (or slot). */
+ * ALB_ERR_ARG if Actual is 0 (never started: call alb_producer_init),
+ * ALB_ERR_CORRUPT if it holds no valid index (or a slot byte no slot). */
 int alb_producer_attach(alb_channel_t *ch);
 /* Consumer, cold start: ReadLocked := Buffer1 (Buffer1's value counts as
  * read). */
 int alb_consumer_init(alb_channel_t *ch);
-/* Consumer, restart: private copy := ReadLocked (ALB_ERR_CORRUPT if invalid).
+/* Consumer, restart: private copy := ReadLocked (ALB_ERR_ARG if 0, never
+ * started: call alb_consumer_init; ALB_ERR_CORRUPT if out of range).
  * Four-slot: the last value read is forgotten, the next Import returns New. */
 int alb_consumer_attach(alb_channel_t *ch);
 
-/* Import (seed figure 3): copy the newest published value into *dst.
- * Returns ALB_NEW or ALB_OLD.  ALB_ERR_CORRUPT if Actual is out of range:
- * then no buffer is read and *dst is unchanged.  Three-buffer: lock-free, not
+/* Import (the paper, figure 3): copy the newest published value into *dst.
+ * Returns ALB_NEW or ALB_OLD.  ALB_OLD with *dst unchanged and no buffer read
+ * if Actual is 0 (nothing published yet).  ALB_ERR_CORRUPT if Actual is out
+ * of range (4..255): then no buffer is read and *dst is unchanged.  Three-buffer: lock-free, not
  * wait-free: the selection loop repeats only while the producer publishes
  * again between two loads of Actual.  Four-slot: wait-free, 1 + W or 3 + W
  * accesses; ALB_ERR_CORRUPT also for a slot byte that is not 0 or 1. */
 int alb_import(alb_channel_t *ch, void *dst);
 
-/* Export (seed figure 4): publish *src.  Never blocks; a fixed number of
- * accesses.  Returns ALB_OK, or ALB_ERR_CORRUPT if ReadLocked was out of
- * range: the value is published all the same (a faulty consumer must not stop
- * the producer), into a buffer other than Actual. */
+/* Export (the paper, figure 4): publish *src.  Never blocks; a fixed number
+ * of accesses.  Returns ALB_OK (also when ReadLocked is 0: the consumer has
+ * not started), or ALB_ERR_CORRUPT if ReadLocked was out of range (4..255,
+ * four-slot 5..255): the value is published all the same (a faulty consumer
+ * must not stop the producer), into a buffer other than Actual. */
 int alb_export(alb_channel_t *ch, const void *src);
 
 /*
- * Sampling read (issue 13 section 3), beside the paper's New/Old: the status
+ * Sampling read, beside the paper's New/Old: the status
  * an ARINC 653 sampling port or an AUTOSAR last-is-best receiver gives.  For
  * a destination channel of the controller, whose payload ends with the word
  * taken_at (the controller's global time when it took the value).
@@ -182,7 +204,7 @@ typedef struct alb_sample {
 int alb_read(alb_channel_t *ch, void *dst, uint32_t max_age_clocks, uint32_t now, alb_sample_t *st);
 
 /*
- * The typed task interface (seed 3.1):
+ * The typed task interface (the paper, section 3.1):
  *
  *   ALB_CHANNEL(RadarMap, RadarShot)
  *

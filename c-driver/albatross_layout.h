@@ -1,6 +1,6 @@
 /*
  * albatross_layout.h -- memory layout of one ALBATROSS channel in a
- * dual-ported RAM (seed 3.1, figure 2).  Shared by the C driver, the
+ * dual-ported RAM (the paper, section 3.1, figure 2).  Shared by the C driver, the
  * testbenches and the hardware controller; byte offsets from the channel base.
  * Generated from rtl/albatross_contract.toml by make contract
  * (compiler/albatross_schedule/contract_gen.py); do not edit.
@@ -15,8 +15,9 @@
  *
  * S = payload size rounded up to a multiple of 4, so every buffer is
  * word-aligned when the channel base is.  Buffer indices are stored as
- * 1 = Buffer1, 2 = Buffer2, 3 = Buffer3; any other value (0 = never
- * initialised) is invalid and reported by the driver.  Channel bases must be
+ * 1 = Buffer1, 2 = Buffer2, 3 = Buffer3; 0 means that the byte's writer has not set it yet
+ * (a zeroed RAM: Actual = nothing published yet, ReadLocked = no buffer
+ * locked); any other value is invalid and reported by the driver.  Channel bases must be
  * 4-byte aligned.  Multi-byte payload words are little-endian (byte lane 0 is
  * the lowest address).
  */
@@ -28,6 +29,8 @@
 #define ALB_OFF_BUFFERS     4u
 #define ALB_BUFFER1         1u
 #define ALB_BUFFER3         3u
+/* A control byte its writer has not set yet (cold start on a zeroed RAM). */
+#define ALB_NOT_STARTED     0u
 
 /* Payload size rounded up to whole words: the stride between buffers. */
 #define ALB_STRIDE(size)          (((size) + 3u) & ~3u)

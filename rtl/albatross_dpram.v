@@ -1,5 +1,5 @@
 // albatross_dpram -- byte-arbitrated dual-ported RAM, Wishbone B4 classic on
-// both ports (ALBATROSS, seed 3.1; docs/rtl.md "albatross_dpram").
+// both ports (ALBATROSS, the paper, section 3.1; docs/rtl.md "albatross_dpram").
 //
 // A thin wrapper: the RAM, its arbitration and its timing are those of the
 // native core albatross_dpram_core (whose header states the rules); this file

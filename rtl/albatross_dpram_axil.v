@@ -1,5 +1,5 @@
 // albatross_dpram_axil -- byte-arbitrated dual-ported RAM, AXI4-Lite slave on
-// port A, Wishbone B4 classic slave on port B (ALBATROSS, seed 3.1; docs/rtl.md
+// port A, Wishbone B4 classic slave on port B (ALBATROSS, the paper, section 3.1; docs/rtl.md
 // "albatross_dpram_axil", "Vivado / AXI users").
 //
 // A thin wrapper, the PicoRV32 way: albatross_dpram_core (the RAM, its fixed

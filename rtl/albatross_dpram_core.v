@@ -1,5 +1,5 @@
 // albatross_dpram_core -- byte-arbitrated dual-ported RAM, native ports
-// (ALBATROSS, seed 3.1; docs/rtl.md "albatross_dpram_core").
+// (ALBATROSS, the paper, section 3.1; docs/rtl.md "albatross_dpram_core").
 //
 // The bus-independent heart of the DPRAM, the PicoRV32 way: this core has a
 // simple request/acknowledge port per side; the bus front-ends are thin

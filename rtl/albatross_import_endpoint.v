@@ -1,7 +1,7 @@
 // albatross_import_endpoint -- a hardware consumer of one channel: the
 // Import engine (albatross_import) with the channel fixed by parameters and
 // its ReadLocked copy kept in the engine's own registers, for a user's RTL
-// block that reads a channel through a DPRAM port without a CPU (seed 3.1,
+// block that reads a channel through a DPRAM port without a CPU (the paper, section 3.1,
 // figure 3).  Connect the Wishbone port straight to an albatross_dpram port
 // (or any Wishbone B4 classic slave; tie wb_err_i 0 if it has none).
 // Rules:

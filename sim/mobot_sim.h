@@ -47,7 +47,7 @@ struct Stat {  // min / mean / max of a series of integers
     }
 };
 
-struct Termination {  // one series' Imports against the compiler's termination bound (issue 13 section 2)
+struct Termination {  // one series' Imports against the compiler's termination bound
     bool known = false;                                 // the compiler bounded it (report.txt)
     uint64_t D = 0, T = 0, V = 0, max_passes = 0, max_accesses = 0;  // compiler's figures (controller clocks)
     // the Import in progress: accesses of the core to the instance since its last event

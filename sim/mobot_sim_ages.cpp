@@ -1,7 +1,7 @@
 // mobot_sim_ages.cpp -- per-series figures of sim/mobot_sim.cpp beside the
 // main loop: the --ages CSV (the data of the ages picture: the worst age per
-// time bucket and series), and Import termination (issue 13 section 2,
-// docs/robot.md "Import termination"), the check "termination".
+// time bucket and series), and Import termination
+// (docs/robot.md "Import termination"), the check "termination".
 // Termination rules: an Import's window is every acked DPRAM access of the
 // consumer's core to the channel's instance (control word and three buffers)
 // since the core's previous board event (the firmware reports every Import

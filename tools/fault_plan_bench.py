@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """fault_plan_bench.py DESC.toml OUT.json -- the compiler's predictions for one
-description planned for several fault hypotheses (issue 15 section 2):
+description planned for several fault hypotheses:
 per hypothesis (independent accesses at 5, 20, 30, 50 %, with the first
 target of 1 - 1e-9, 1 - 1e-6, 1 - 1e-3, 0.99 that plans; bursts of mean 2
 and 5 at 1 - 1e-9), per channel and consumer, the slots per cycle, the retry

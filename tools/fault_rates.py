@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """fault_rates.py -- measured ages against the compiler's probabilistic
-bounds (issue 15 section 3, docs/verification.md "Faults at their true rate").
+bounds (docs/verification.md "Faults at their true rate").
 
   fault_rates.py check --plan DIR --samples FILE.csv [--skip-clocks N]
                  [--optimistic F] [--expect-caught TEXT] [--label NAME] [--json FILE]
@@ -384,85 +384,140 @@ COLOURS = {"RadarMap": "#1f77b4", "Status": "#9467bd", "Position": "#2ca02c", "M
            "GlobalTime": "#d62728"}
 
 
+def _sup(e):
+    """10 to the power e as text, e.g. 10⁻⁶."""
+    return "10" + str(e).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
+
+
 def svg(data, path):
-    W, H, L, R, T, B, GAP = 900, 300, 70, 170, 56, 40, 76
-    pw = W - L - R
-    panels = [("delivery per cycle, worst consumer (log scale of 1 - p; a run with no miss at the top)", "miss"),
-              ("worst age (us); dashed: the age bound at the plan's target, which a fraction 1 - target "
-               "of the ages may exceed", "age")]
+    """Small multiples, one column per channel (its worst consumer):
+    top row, the probability that a cycle does not deliver, 1 - p, on a log
+    axis (no zero: a run without a miss in N cycles is drawn as a triangle
+    pointing down at 1/N, "below this"); bottom row, the worst age against
+    the age bound at the plan's target.  Predicted: a line; measured:
+    markers; independent faults in the channel's colour, bursts of mean
+    BURST in grey."""
     clk_us = 1e6 / 50e6
     pts = [p for p in data["points"] if p["independent"] and p.get("planned")]
     bpts = [p for p in data["points"] if not p["independent"] and p.get("planned")]
-    total_h = T + 2 * H + GAP + B + 30
-    o = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" font-size="11">'
-         % (W, total_h), '<rect width="100%" height="100%" fill="white"/>',
-         '<text x="%d" y="18" font-size="13">Delivery and worst age against the true per-access fault rate:</text>'
-         % L,
-         '<text x="%d" y="34" font-size="13">measured (solid, dots) beside the compiler\'s prediction (dashed), '
-         'tb_system, seed %d</text>' % (L, data["seed"])]
-    x_of = lambda r: L + pw * r / 0.5
     names = []
     for p in pts:
         for c in p["channels"]:
             if c["channel"] not in names:
                 names.append(c["channel"])
-    for k, (title, kind) in enumerate(panels):
-        y0 = T + k * (H + GAP)
-        o.append('<rect x="%d" y="%d" width="%d" height="%d" fill="none" stroke="#888"/>' % (L, y0, pw, H))
-        o.append('<text x="%d" y="%d">%s</text>' % (L, y0 - 6, title))
-        for r in (0, 0.1, 0.2, 0.3, 0.4, 0.5):
-            o.append('<line x1="%.1f" y1="%d" x2="%.1f" y2="%d" stroke="#eee"/>' % (x_of(r), y0, x_of(r), y0 + H))
-            o.append('<text x="%.1f" y="%d" text-anchor="middle">%d %%</text>' % (x_of(r), y0 + H + 14, r * 100))
-            tp = next((p["probability"] for p in pts if abs(p["rate"] - r) < 1e-9), None)
-            if tp is not None:
-                tgt = "1-1e-%d" % round(-math.log10(1 - tp)) if tp > 0.999 else "%g" % tp
-                o.append('<text x="%.1f" y="%d" text-anchor="middle" fill="#666">(%s)</text>'
-                         % (x_of(r), y0 + H + 27, tgt))
-        if kind == "miss":
-            # y: -log10(1 - p) from 0 (p = 0) to 10 (p = 1 - 1e-10); 1 - p below 1e-10 drawn at the top
-            ymap = lambda p: y0 + H - H * min(10.0, -math.log10(max(1e-10, 1 - p))) / 10.0
-            for e in range(0, 11, 2):
-                yy = y0 + H - H * e / 10.0
-                o.append('<line x1="%d" y1="%.1f" x2="%d" y2="%.1f" stroke="#eee"/>' % (L, yy, L + pw, yy))
-                o.append('<text x="%d" y="%.1f" text-anchor="end">%s</text>' % (L - 4, yy + 4,
-                                                                             "0" if e == 0 else "1-1e-%d" % e))
-            get_m = lambda c: ymap(c["measured_cycle_delivery"])
-            get_p = lambda c: ymap(c["predicted_cycle_delivery"])
-        else:
-            top = max([c["worst_age"] for p in pts + bpts for c in p["channels"]] +
-                      [c["age_bound_at_target"] for p in pts + bpts for c in p["channels"]]) * clk_us
-            top = math.ceil(top / 50.0) * 50
-            ymap = lambda us: y0 + H - H * us / top
-            for v in range(0, int(top) + 1, 50):
-                o.append('<line x1="%d" y1="%.1f" x2="%d" y2="%.1f" stroke="#eee"/>' % (L, ymap(v), L + pw, ymap(v)))
-                o.append('<text x="%d" y="%.1f" text-anchor="end">%d</text>' % (L - 4, ymap(v) + 4, v))
-            get_m = lambda c: ymap(c["worst_age"] * clk_us)
-            get_p = lambda c: ymap(c["age_bound_at_target"] * clk_us)
-        for name in names:
-            col = COLOURS.get(name, "#333")
-            for get, dash in ((get_m, ""), (get_p, ' stroke-dasharray="5,3"')):
-                xy = [(x_of(p["rate"]), get(c)) for p in pts for c in p["channels"] if c["channel"] == name]
-                o.append('<polyline fill="none" stroke="%s" stroke-width="1.5"%s points="%s"/>'
-                         % (col, dash, " ".join("%.1f,%.1f" % q for q in xy)))
-                if not dash:
-                    o += ['<circle cx="%.1f" cy="%.1f" r="2.5" fill="%s"/>' % (x, y, col) for x, y in xy]
-            xy = [(x_of(p["rate"]), get_m(c)) for p in bpts for c in p["channels"] if c["channel"] == name]
-            o += ['<rect x="%.1f" y="%.1f" width="5" height="5" fill="none" stroke="%s"/>' % (x - 2.5, y - 2.5, col)
-                  for x, y in xy]
-    ly = T
-    for name in names:
+    ncol = max(1, len(names))
+    L, R, T, PW, PH, HG, VG = 64, 16, 92, 150, 190, 26, 74
+    W = L + ncol * PW + (ncol - 1) * HG + R
+    H = T + 2 * PH + VG + 128
+    x_of = lambda x0, r: x0 + PW * r / 0.5
+    miss = lambda p: 1.0 - p
+    # the log axis: from the smallest value to show, to 1
+    vals = [miss(c["predicted_cycle_delivery"]) for p in pts + bpts for c in p["channels"]]
+    vals += [miss(c["measured_cycle_delivery"]) for p in pts + bpts for c in p["channels"]]
+    vals += [1.0 / max(1, p.get("cycles_measured", 1)) for p in pts + bpts]
+    lo = min([v for v in vals if v > 0] + [1e-3])
+    e_lo = max(-12, math.floor(math.log10(lo)))
+    ylog = lambda y0, v: y0 + PH * (-math.log10(max(v, 10.0 ** e_lo))) / (-e_lo)
+    age_top = max([c["worst_age"] for p in pts + bpts for c in p["channels"]] +
+                  [c["age_bound_at_target"] for p in pts + bpts for c in p["channels"]]) * clk_us
+    age_top = math.ceil(age_top / 50.0) * 50
+    ylin = lambda y0, us: y0 + PH - PH * us / age_top
+    o = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" font-size="11">'
+         % (W, H), '<rect width="100%" height="100%" fill="white"/>',
+         '<text x="%d" y="20" font-size="14">The compiler\'s prediction (line) against the measurement (markers), '
+         'per channel, as the true fault rate grows</text>' % L,
+         '<text x="%d" y="38" fill="#444">tb_system, seed %d, a plan made for each rate; per channel its worst '
+         'consumer. Top: a cycle that delivers nothing, 1 - p (log axis).</text>' % (L, data["seed"]),
+         '<text x="%d" y="54" fill="#444">Bottom: the worst age seen, and the age bound that holds with the '
+         'plan\'s target probability (the targets: below).</text>' % L]
+    for col, name in enumerate(names):
+        x0 = L + col * (PW + HG)
+        colour = COLOURS.get(name, "#333")
         size = next(c["size"] for p in pts for c in p["channels"] if c["channel"] == name)
-        o.append('<line x1="%d" y1="%d" x2="%d" y2="%d" stroke="%s" stroke-width="2"/>'
-                 % (W - R + 10, ly, W - R + 30, ly, COLOURS.get(name, "#333")))
-        o.append('<text x="%d" y="%d">%s (%d B)</text>' % (W - R + 34, ly + 4, name, size))
-        ly += 16
-    o.append('<text x="%d" y="%d">solid, dots: measured</text>' % (W - R + 10, ly + 8))
-    o.append('<text x="%d" y="%d">dashed: predicted</text>' % (W - R + 10, ly + 24))
-    o.append('<text x="%d" y="%d">squares: measured,</text>' % (W - R + 10, ly + 40))
-    o.append('<text x="%d" y="%d">mean burst %d</text>' % (W - R + 10, ly + 54, data["burst"]))
-    o.append('<text x="%d" y="%d">true fault rate per access (independent; a plan made for each rate, '
-             'its target probability in brackets)</text>'
-             % (L, total_h - 8))
+        o.append('<text x="%.1f" y="%d" text-anchor="middle" font-size="12" font-weight="bold" fill="%s">'
+                 '%s (%d B)</text>' % (x0 + PW / 2, T - 14, colour, name, size))
+        for row in (0, 1):
+            y0 = T + row * (PH + VG)
+            o.append('<rect x="%d" y="%d" width="%d" height="%d" fill="none" stroke="#999"/>' % (x0, y0, PW, PH))
+            for r in (0, 0.1, 0.2, 0.3, 0.4, 0.5):
+                o.append('<line x1="%.1f" y1="%d" x2="%.1f" y2="%d" stroke="#eee"/>'
+                         % (x_of(x0, r), y0, x_of(x0, r), y0 + PH))
+                o.append('<text x="%.1f" y="%d" text-anchor="middle" font-size="10">%d</text>'
+                         % (x_of(x0, r), y0 + PH + 12, round(r * 100)))
+            o.append('<text x="%.1f" y="%d" text-anchor="middle" font-size="10" fill="#444">true fault rate, %%</text>'
+                     % (x0 + PW / 2, y0 + PH + 25))
+            if row == 0:
+                for e in range(e_lo, 1):
+                    yy = ylog(y0, 10.0 ** e)
+                    if (e - e_lo) % (1 if -e_lo <= 6 else 3) == 0 or e == 0:
+                        o.append('<line x1="%d" y1="%.1f" x2="%d" y2="%.1f" stroke="#eee"/>' % (x0, yy, x0 + PW, yy))
+                        if col == 0:
+                            o.append('<text x="%d" y="%.1f" text-anchor="end" font-size="10">%s</text>'
+                                     % (x0 - 4, yy + 4, "1" if e == 0 else _sup(e)))
+                get_p = lambda c: ylog(y0, miss(c["predicted_cycle_delivery"]))
+                has_p = lambda c: miss(c["predicted_cycle_delivery"]) >= 10.0 ** e_lo * 0.999
+                get_m = lambda c, p: ylog(y0, miss(c["measured_cycle_delivery"]) if
+                                          miss(c["measured_cycle_delivery"]) > 0 else 1.0 / max(1, p["cycles_measured"]))
+                zero_m = lambda c: miss(c["measured_cycle_delivery"]) <= 0
+            else:
+                for v in range(0, int(age_top) + 1, 50):
+                    o.append('<line x1="%d" y1="%.1f" x2="%d" y2="%.1f" stroke="#eee"/>'
+                             % (x0, ylin(y0, v), x0 + PW, ylin(y0, v)))
+                    if col == 0:
+                        o.append('<text x="%d" y="%.1f" text-anchor="end" font-size="10">%d</text>'
+                                 % (x0 - 4, ylin(y0, v) + 4, v))
+                get_p = lambda c: ylin(y0, c["age_bound_at_target"] * clk_us)
+                has_p = lambda c: True
+                get_m = lambda c, p: ylin(y0, c["worst_age"] * clk_us)
+                zero_m = lambda c: False
+            for series, col_s, width in ((bpts, "#999", 1.2), (pts, colour, 2.0)):
+                xy = [(x_of(x0, p["rate"]), get_p(c)) for p in series for c in p["channels"]
+                      if c["channel"] == name and has_p(c)]
+                if len(xy) > 1:
+                    o.append('<polyline fill="none" stroke="%s" stroke-width="%.1f" points="%s"/>'
+                             % (col_s, width, " ".join("%.1f,%.1f" % q for q in xy)))
+                for p in series:
+                    for c in p["channels"]:
+                        if c["channel"] != name:
+                            continue
+                        x, y = x_of(x0, p["rate"]), get_m(c, p)
+                        if zero_m(c):      # no miss seen: below 1/N, a triangle pointing down
+                            o.append('<path d="M%.1f,%.1f l-4,-6 h8 z" fill="white" stroke="%s" stroke-width="1.3"/>'
+                                     % (x, y + 3, col_s))
+                        elif series is pts:
+                            o.append('<circle cx="%.1f" cy="%.1f" r="3.2" fill="%s"/>' % (x, y, col_s))
+                        else:
+                            o.append('<rect x="%.1f" y="%.1f" width="6" height="6" fill="white" stroke="%s" '
+                                     'stroke-width="1.3"/>' % (x - 3, y - 3, col_s))
+    o.append('<text x="8" y="%d" font-size="11" transform="rotate(-90 8 %d)" text-anchor="middle">'
+             'a cycle delivers nothing (1 - p)</text>' % (T + PH / 2 + 40, T + PH / 2 + 40))
+    o.append('<text x="8" y="%d" font-size="11" transform="rotate(-90 8 %d)" text-anchor="middle">'
+             'worst age, µs</text>' % (T + PH + VG + PH / 2, T + PH + VG + PH / 2))
+    # the plan's target per rate, and the key
+    ky = T + 2 * PH + VG + 44
+    tg = []
+    for p in pts:
+        tp = p["probability"]
+        tg.append("%d %%: %s" % (round(p["rate"] * 100), "1 - 10⁻%d" % round(-math.log10(1 - tp)) if tp > 0.999
+                                 else "%g" % tp))
+    o.append('<text x="%d" y="%d" fill="#444">plan target per rate (independent faults): %s</text>'
+             % (L, ky, ",  ".join(tg)))
+    ky += 16
+    o.append('<text x="%d" y="%d" fill="#444">Top: a predicted line starts where 1 - p reaches the axis\' foot, '
+             '%s; below it the prediction is smaller still.</text>' % (L, ky, _sup(e_lo)))
+    ky += 22
+    o.append('<line x1="%d" y1="%d" x2="%d" y2="%d" stroke="#555" stroke-width="2"/>' % (L, ky - 4, L + 22, ky - 4))
+    o.append('<text x="%d" y="%d">predicted (independent faults)</text>' % (L + 28, ky))
+    o.append('<circle cx="%d" cy="%d" r="3.2" fill="#555"/>' % (L + 230, ky - 4))
+    o.append('<text x="%d" y="%d">measured</text>' % (L + 240, ky))
+    o.append('<path d="M%d,%d l-4,-6 h8 z" fill="white" stroke="#555" stroke-width="1.3"/>' % (L + 320, ky - 1))
+    o.append('<text x="%d" y="%d">no miss in N cycles: drawn at 1/N, the truth is below</text>' % (L + 330, ky))
+    ky += 18
+    o.append('<line x1="%d" y1="%d" x2="%d" y2="%d" stroke="#999" stroke-width="1.2"/>' % (L, ky - 4, L + 22, ky - 4))
+    o.append('<rect x="%d" y="%d" width="6" height="6" fill="white" stroke="#999" stroke-width="1.3"/>'
+             % (L + 8, ky - 7))
+    o.append('<text x="%d" y="%d">bursts of mean %d: predicted (grey line), measured (squares)</text>'
+             % (L + 28, ky, data["burst"]))
     o.append("</svg>")
     with open(path, "w") as fh:
         fh.write("\n".join(o) + "\n")

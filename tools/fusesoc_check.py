@@ -170,7 +170,7 @@ def main():
                     fail('%s: fileset %s names %s, expected the file %s, it does not exist'
                          % (p, fs_name, name, os.path.join(os.path.dirname(p), name)))
     rc, out = run(fsoc + ['core', 'list'], os.path.join(log, 'core_list.log'), env)
-    listed = set(re.findall(r'^(\S+)\s*:', out, re.M))
+    listed = set(re.findall(r'^(\S+)[ \t]*:', out, re.M))   # [ \t]: a name may start with ':'
     if rc:
         fail('fusesoc core list: expected exit 0, got %d:\n%s' % (rc, tail(out)))
     for name, (p, _) in sorted(cores.items()):

@@ -138,6 +138,7 @@ class Contract:
         self.buffers = int(lay["buffers"])
         self.buffer1 = int(lay["buffer1"])
         self.initial_index = int(lay["initial_index"])
+        self.not_started = int(lay["not_started"])
         self.buffers_offset = int(lay["buffers_offset"])
         self.taken_at_words = int(lay["taken_at_words"])
         self.control = {c["name"]: ControlByte(c["name"], int(c["offset"]), int(c["size"]), c["contents"],

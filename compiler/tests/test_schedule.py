@@ -340,11 +340,26 @@ class GeneratedCTests(unittest.TestCase):
                     self.assertGreaterEqual(taken_at, rep["cycle"]["clocks"])   # second cycle
                 else:
                     self.assertEqual(int.from_bytes(value[:4], "little") & 0xFFFF, 1)   # cycles
-        # cold start on an all-zero RAM: init_all sets the CPU's own bytes
+        # cold start on an all-zero RAM: init_all sets the CPU's own bytes;
+        # before the controller's first transfer every Make<Name>Available
+        # returns ALB_OK (ReadLocked 0: the controller has not started) and
+        # every Import ALB_OLD, reading nothing (Actual 0: nothing published)
         zero = os.path.join(state, "zero.hex")
         for bi, b in enumerate(boards):
             with open(zero, "w") as f:
                 f.write("00000000\n" * (rep["boards"][bi]["ram_bytes"] // 4))
+            insts = rep["boards"][bi]["instances"]
+            ops = [f"export:{i['channel']}:7" for i in insts if i["role"] == "source"]
+            imps = [f"import:{i['channel']}" for i in insts if i["role"] == "destination"]
+            lines = self.run_harness(exe[b], zero, zero + ".out", "init", *ops, *imps)
+            self.assertEqual(lines[0], "setup 0")
+            self.assertEqual(lines[1:1 + len(ops)], ["export 0"] * len(ops),
+                             f"{b}: Make<Name>Available on a zeroed RAM after init_all")
+            for k, op in enumerate(imps):
+                head, r, data = lines[1 + len(ops) + 3 * k].rsplit(" ", 2)
+                self.assertEqual((head, r), (f"import {op.split(':')[1]}", "0"),
+                                 f"{b}: Import before anything was published")
+                self.assertEqual(set(data), {"e"}, f"{b}: *dst changed though nothing was published")
             lines = self.run_harness(exe[b], zero, zero + ".out", "init")
             self.assertEqual(lines[0], "setup 0")
             words = read_hex(zero + ".out")

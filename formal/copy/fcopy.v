@@ -168,7 +168,7 @@ module fcopy #(
         .wb_cyc_o(r_cyc[0]), .wb_stb_o(imp_stb), .wb_we_o(r_we[0]), .wb_adr_o(r_adr[0 +: AW]), .wb_sel_o(r_sel[0 +: 4]),
         .wb_dat_o(r_wdat[0 +: 32]), .wb_dat_i(bus_rdat), .wb_ack_i(r_ack[0]), .wb_err_i(r_err[0]));
 
-    // The drop run K (ROM H2, issue 15): any constant 0..3 (0 and 1 read as 2).
+    // The drop run K (ROM H2): any constant 0..3 (0 and 1 read as 2).
     (* anyconst *) reg [7:0] f_drop_run;
     always @* small_k: assume(f_drop_run <= 8'd3);
     albatross_export #(.ADDR_WIDTH(AW), .WORDS_WIDTH(WW), .COUNT_WIDTH(1), .TAKEN_AT(1), .DESTS(4), .DROP(1)) u_export (

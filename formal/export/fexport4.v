@@ -1,5 +1,5 @@
 // fexport4 -- proof harness of albatross_export as the producer of the
-// four-slot kind (four_i = 1; issue 13 section 1; formal/export/export.sby
+// four-slot kind (four_i = 1; formal/export/export.sby
 // tasks four*, docs/verification.md "Four-slot engines").
 //
 // The engine (TAKEN_AT = 1, DROP = 1, the controller's; DESTS = 2, in
@@ -84,7 +84,7 @@ module fexport4 #(
     wire [31:0]   wdat;
     reg  [31:0]   rdat;
 
-    // The drop run K (ROM H2, issue 15): any constant 0..3 (0 and 1 read as 2).
+    // The drop run K (ROM H2): any constant 0..3 (0 and 1 read as 2).
     (* anyconst *) reg [7:0] f_drop_run;
     always @* small_k: assume(f_drop_run <= 8'd3);
     albatross_export #(.ADDR_WIDTH(AW), .WORDS_WIDTH(2), .COUNT_WIDTH(1), .TAKEN_AT(1),

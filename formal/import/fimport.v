@@ -1,5 +1,5 @@
 // fimport -- proof harness of albatross_import, the Import engine (the
-// consumer's side of the three-buffer protocol, seed 3.1 figure 3;
+// consumer's side of the three-buffer protocol, the paper, section 3.1 figure 3;
 // formal/import/import.sby, docs/verification.md "Import engine (unbounded)").
 //
 // The engine's Wishbone master port is checked against formal/wb/fwb_master.v

@@ -1,5 +1,5 @@
 // fimport4 -- proof harness of albatross_import as the consumer of the
-// four-slot kind (four_i = 1; issue 13 section 1, Simpson's four-slot
+// four-slot kind (four_i = 1; Simpson's four-slot
 // mechanism on single-writer bytes; formal/import/import.sby tasks four*,
 // docs/verification.md "Four-slot engines").
 //

@@ -10,7 +10,7 @@
 // W + 1 = 2 words (value, taken_at).  The bus is free: ack and err may come in
 // any clock of a request (or never: a timeout), and a store answered with err
 // may or may not have landed (free choice), as with the fault injector.  The
-// consumer is free too, within the protocol (seed figure 3): in any clock it
+// consumer is free too, within the protocol (the paper, figure 3): in any clock it
 // may load Actual, or store ReadLocked := the Actual it last loaded; its lock
 // on buffer r is *confirmed* when a load of Actual returns r == ReadLocked,
 // and lasts until its next ReadLocked store (it reads buffer r meanwhile).

@@ -1,6 +1,6 @@
 /*
  * albatross.pml -- SPIN model of one ALBATROSS three-buffer channel
- * (seed section 3.1, figures 2-4; c-driver/albatross.c alb_import/alb_export).
+ * (the paper, section 3.1, figures 2-4; c-driver/albatross.c alb_import/alb_export).
  *
  * One writer process does Exports forever, one reader process does Imports
  * forever, over all interleavings.  The abstraction:
@@ -23,22 +23,33 @@
  *     unbounded counters.
  *
  * The properties (each a separate run of pan; see tools/mk/formal_spin.mk):
- *   CHECK_MUTEX      mutual exclusion (seed proof point "Mutual exclusion")
- *   CHECK_DEFINITE   definite results (seed proof point "Definite results")
- *   CHECK_ACTUALITY  actuality (seed proof point "Actuality", demand b)
+ *   CHECK_MUTEX      mutual exclusion (the paper's proof point "Mutual exclusion")
+ *   CHECK_DEFINITE   definite results (the paper's proof point "Definite results")
+ *   CHECK_ACTUALITY  actuality (the paper's proof point "Actuality", demand b)
  *   CHECK_NEWOLD     the Import's New/Old result (LookForNew: "is this
  *                    information ever being read before?")
  *   CHECK_RETRY      every extra pass of the reader's While is paid for by
  *                    an Export completed in between (lock-freedom, step form)
  *   ltl reader_wait_free  must FAIL under weak fairness: a fast writer
- *                    starves the reader (seed proof point "Termination" holds
+ *                    starves the reader (the paper's proof point "Termination" holds
  *                    only for a writer that stops)
  *   ltl writer_wait_free, ltl lock_free  hold
+ *
+ * -DCOLD_START: the cold start on a zeroed RAM (docs/protocol.md, "Cold
+ * start"): Actual, ReadLocked and every buffer start as 0 / garbage; the
+ * writer first runs alb_producer_init (Buffer1 := stamp 0, then Actual := 1),
+ * the reader first alb_consumer_init (ReadLocked := 1), each at any point of
+ * the other's run; an Import that loads Actual = 0 reads nothing (ALB_OLD,
+ * *dst unchanged) and an Export that loads ReadLocked = 0 excludes no buffer
+ * for it.  Every property above is checked this way too (cold_*).
  *
  * Broken variants (the driver mutants of tb/mutants/):
  *   -DWHILE_AS_IF        while_as_if.sed: the reader's While becomes an If
  *   -DIGNORE_READLOCKED  ignore_readlocked.sed: the writer does not exclude
  *                        the buffer named by ReadLocked
+ *   -DCOLD_READ_ZERO     with COLD_START: an Import that loads Actual = 0
+ *                        reads Buffer1 as if the RAM image had set Actual
+ *                        (it may meet alb_producer_init writing it)
  */
 
 #define NSTAMP 8          /* at most 4 stamps in the buffers + r1 + last + base */
@@ -48,9 +59,15 @@
 #define OLD    0
 #define NEW    1
 
-/* shared: the two control bytes (figure 2), initial value Buffer1 */
+/* shared: the two control bytes (figure 2), initial value Buffer1 (the RAM
+ * image), or 0 on a zeroed RAM (COLD_START) */
+#ifdef COLD_START
+byte Actual = 0;
+byte ReadLocked = 0;
+#else
 byte Actual = 1;
 byte ReadLocked = 1;
+#endif
 /* shared: the three buffers (index 0 unused), two halves each */
 byte h1[4];
 byte h2[4];
@@ -119,6 +136,26 @@ proctype writer()
     byte copy, buffer, w, s, t, i;
     bool u;
 
+#ifdef COLD_START
+    /* alb_producer_init: Buffer1 := the initial value (stamp 0), two half
+     * stores, then Actual := Buffer1 */
+    d_step {
+        exporting = 1;
+#ifdef CHECK_MUTEX
+        assert(!(reading && ReadLocked == 1));
+#endif
+        writing = 1; wbuf = 1;
+        h1[1] = 0
+    };
+    d_step {
+#ifdef CHECK_MUTEX
+        assert(!(reading && ReadLocked == 1));
+#endif
+        h2[1] = 0;
+        writing = 0; wbuf = 0
+    };
+    d_step { Actual = 1; exporting = 0 };
+#endif
     do
     :: /* --- Phase 1: select a buffer for write-access (one shared load) */
        d_step {
@@ -199,13 +236,18 @@ proctype reader()
     byte rl = 1;                     /* the reader's shadow of ReadLocked */
     byte actual, v1, v2, t, i;
     bool result, expect, u;
+    bool nothing = 0;                /* COLD_START: Actual was 0, nothing read */
 
+#ifdef COLD_START
+    d_step { ReadLocked = 1; rl = 1 };   /* alb_consumer_init */
+#endif
     do
     :: /* ghost: the Import begins; remember the newest completed value */
        d_step {
            importing = 1;
 #ifdef CHECK_ACTUALITY
-           base = h1[Actual];
+           /* nothing published yet (Actual = 0): any value is new enough */
+           if :: Actual != 0 -> base = h1[Actual] :: else -> base = NONE fi;
 #endif
            result = OLD                  /* Import:= Old */
        };
@@ -213,6 +255,9 @@ proctype reader()
         * While compares with the reader's own copy of ReadLocked) */
        d_step {
            actual = Actual;
+#ifdef COLD_READ_ZERO
+           if :: actual == 0 -> actual = 1 :: else -> skip fi;
+#endif
 #ifdef CHECK_RETRY
            exp_done = 0;
 #endif
@@ -223,7 +268,8 @@ proctype reader()
        :: actual != rl ->
 #else
        do
-       :: actual != rl ->
+       :: actual == 0 -> nothing = 1; break   /* nothing published: ALB_OLD */
+       :: actual != 0 && actual != rl ->
 #endif
 #ifdef WHILE_AS_IF
           /* ReadLocked:= Actual; Import:= New; and no re-check */
@@ -234,6 +280,9 @@ proctype reader()
 #ifndef WHILE_AS_IF
           d_step {
               actual = Actual;
+#ifdef COLD_READ_ZERO
+              if :: actual == 0 -> actual = 1 :: else -> skip fi;
+#endif
 #ifdef CHECK_RETRY
               /* a further pass happens only if an Export completed */
               assert(actual == rl || exp_done);
@@ -250,6 +299,10 @@ proctype reader()
        :: else -> break
        od;
 #endif
+       if
+       :: nothing ->
+          d_step { nothing = 0; actual = 0; result = 0; base = NONE; importing = 0 }
+       :: else ->
        /* --- Phase 2: ReadFrom(ReadLocked), two half loads (atomic, not
         * d_step: the While's break jumps here) */
        atomic {
@@ -280,7 +333,7 @@ proctype reader()
 #endif
 #ifdef CHECK_ACTUALITY
            /* at least as new as the last Export completed before the start */
-           assert(v1 == base || (after[base] & (1 << v1)) != 0);
+           assert(base == NONE || v1 == base || (after[base] & (1 << v1)) != 0);
 #endif
 #ifdef CHECK_NEWOLD
            /* New exactly when newer than the previous Import's value, and
@@ -297,13 +350,19 @@ proctype reader()
            gc(t, i, u);
            importing = 0
        }
+       fi
     od
 }
 
 init {
-    /* producer_init: Buffer1 holds stamp 0; buffers 2, 3 garbage */
+    /* producer_init: Buffer1 holds stamp 0; buffers 2, 3 garbage (a cold
+     * start: every buffer garbage, the writer's init writes Buffer1) */
     d_step {
+#ifdef COLD_START
+        h1[1] = GARB1; h2[1] = GARB2;
+#else
         h1[1] = 0; h2[1] = 0;
+#endif
         h1[2] = GARB1; h2[2] = GARB2;
         h1[3] = GARB1; h2[3] = GARB2
     };

@@ -7,9 +7,12 @@ channel) or, with --model four_slot, of formal/spin/four_slot.pml (four-slot).
       properties writer_wait_free and lock_free hold, and reader_wait_free
       FAILS with an acceptance cycle in which the writer keeps exporting and
       the reader keeps retrying its While (the reader is not wait-free).
+      Each safety check runs twice: from the RAM image, and as cold_<name>
+      from a zeroed RAM (-DCOLD_START).
   check.py --variant WHILE_AS_IF --out ... --json ...
-      a broken variant (-DWHILE_AS_IF, -DIGNORE_READLOCKED): the checks named
-      by --must-fail must each find a violation.
+      a broken variant (-DWHILE_AS_IF, -DIGNORE_READLOCKED; -DCOLD_READ_ZERO
+      with --must-fail cold_mutex,cold_definite): the checks named by
+      --must-fail must each find a violation.
 
   check.py --model four_slot --out build/formal/spin/four_slot \
            --json build/reports/formal_spin_four_slot.json
@@ -50,6 +53,10 @@ SAFETY = {
               "completed since the reader's previous load of Actual",
               "CHECK_RETRY"),
 }
+# the same properties from a zeroed RAM (-DCOLD_START): each side runs its
+# init at any point of the other's run, Actual = 0 reads nothing
+SAFETY.update({"cold_" + k: ("cold start on a zeroed RAM: " + p, [d, "COLD_START"])
+               for k, (p, d) in list(SAFETY.items())})
 # name: (property text, pan fairness flag, expected outcome)
 LTL = {
     "reader_wait_free": ("[]<> !importing: the reader's Import always finishes "
@@ -94,6 +101,19 @@ SAFETY_FS = {
     "crash_newold": ("New/Old with consumer crashes at every access (the first "
                      "Import after a restart returns New)",
                      ["CHECK_NEWOLD", "CRASH"], 10000000),
+    # a zeroed RAM: each side's init at any point of the other's run
+    # (-DCOLD_START, consumer_init with L = 1 as the driver's)
+    "cold_mutex": ("cold start on a zeroed RAM: mutual exclusion",
+                   ["CHECK_MUTEX", "COLD_START", "L_INIT=1"], 3000000),
+    "cold_definite": ("cold start on a zeroed RAM: definite results (nothing read "
+                      "while Actual is 0)", ["CHECK_DEFINITE", "COLD_START", "L_INIT=1"], 3000000),
+    "cold_actuality": ("cold start on a zeroed RAM: actuality",
+                       ["CHECK_ACTUALITY", "COLD_START", "L_INIT=1"], 3000000),
+    "cold_newold": ("cold start on a zeroed RAM: New/Old (the producer keeps out of "
+                    "pair 0 until the consumer starts, so Buffer1 read as Old is "
+                    "the initial value)", ["CHECK_NEWOLD", "COLD_START", "L_INIT=1"], 3000000),
+    "cold_bound": ("cold start on a zeroed RAM: the access bound",
+                   ["CHECK_BOUND", "COLD_START", "L_INIT=1"], 3000000),
     # the controller's Import rule (rtl/albatross_import.v): Old when
     # buf(pair(A), Slot[pair(A)]) of the first word load is L, that word load
     # being three byte loads in any order
@@ -211,7 +231,8 @@ def main():
     if a.model == "four_slot":
         safety, ltl, cflags = SAFETY_FS, LTL_FS, ["-O2"]
     else:
-        safety = {k: (p, [d], 1000000) for k, (p, d) in SAFETY.items()}
+        safety = {k: (p, [d] if isinstance(d, str) else d, 1000000)
+                  for k, (p, d) in SAFETY.items()}
         ltl, cflags = LTL, []
     os.makedirs(a.out, exist_ok=True)
     os.makedirs(os.path.dirname(a.json) or ".", exist_ok=True)

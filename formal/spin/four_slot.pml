@@ -1,6 +1,6 @@
 /*
- * four_slot.pml -- SPIN model of one ALBATROSS four-slot channel (issue 13
- * part 1: Simpson's four-slot mechanism, IEE Proc. E 1990, on the byte-wide
+ * four_slot.pml -- SPIN model of one ALBATROSS four-slot channel
+ * (Simpson's four-slot mechanism, IEE Proc. E 1990, on the byte-wide
  * channel layout of rtl/albatross_contract.toml [layout.four_slot]).
  *
  * Channel: byte 0 Actual (producer), byte 1 ReadLocked (consumer), byte 2
@@ -52,7 +52,7 @@
  *   3. else ReadLocked := A                     (one store)
  *   4. b = buf(pair(A), Slot[pair(A)])          (one load)
  *   5. read the W words of b; New if b != L, else Old; L := b   (3 + W)
- * The test "b != L" in step 5 is NOT in the lead's mapping of issue 13: the
+ * The test "b != L" in step 5 is NOT in the mapping as first proposed: that
  * mapping returns New whenever A != L.  Built with -DNEW_IF_A_NE_L the model
  * is the mapping exactly, and CHECK_NEWOLD fails on it (the same value New
  * twice; see check.py and docs/verification.md).  Step 5 costs no access.
@@ -87,6 +87,18 @@
  *                    loads (Actual, Slot0, Slot1) in any order with the
  *                    producer free to run between them (the word is not
  *                    indivisible, each byte is).
+ *   -DCOLD_START     a zeroed RAM (docs/protocol.md "Cold start"): Actual,
+ *                    ReadLocked and the slot bytes start as 0, every buffer as
+ *                    garbage; the producer first runs alb_producer_init
+ *                    (Buffer1 := v0, Slot0 := Slot1 := 0, Actual := 1), the
+ *                    consumer first alb_consumer_init (ReadLocked := 1), each
+ *                    at any point of the other's run.  An Import that loads
+ *                    Actual = 0 reads nothing; an Export that loads
+ *                    ReadLocked = 0 takes it as Buffer1 (writes pair 1).
+ *                    Run with -DL_INIT=1, as the driver's consumer_init.
+ *   -DCOLD_PAIR_OF_ACTUAL  with COLD_START, broken: ReadLocked = 0 makes the
+ *                    producer write the pair other than its own Actual's
+ *                    (the driver's rule before the cold-start contract)
  *   -DCRASH          the consumer may crash instead of any of its accesses
  *                    (any number of times) and restart with L = 0;
  *                    -DCRASH_ONCE: at most one crash (smaller state space)
@@ -132,8 +144,13 @@
 #define BUF(p, s) (1 + 2 * (p) + (s))
 
 /* shared: the four control bytes and the four buffers (index 0 unused) */
+#ifdef COLD_START
+byte Actual = 0;
+byte ReadLocked = 0;
+#else
 byte Actual = 1;
 byte ReadLocked = 1;
+#endif
 byte Slot[2];
 byte h1[5];
 byte h2[5];
@@ -223,12 +240,39 @@ proctype producer()
     byte r, p, sl, w, s, t, i, acc;
     bool u;
 
+#ifdef COLD_START
+    /* alb_producer_init: Buffer1 := v0 (two stores), the slot bytes := 0
+     * (already 0 on a zeroed RAM), Actual := Buffer1 */
+    d_step {
+        exporting = 1;
+#ifdef CHECK_MUTEX
+        assert(!(reading && rbuf == 1));
+#endif
+        writing = 1; wbuf = 1; h1[1] = 0;
+        printf("P: init: store Buffer1 word1 := v0\n")
+    };
+    d_step {
+#ifdef CHECK_MUTEX
+        assert(!(reading && rbuf == 1));
+#endif
+        h2[1] = 0; writing = 0; wbuf = 0;
+        printf("P: init: store Buffer1 word2 := v0\n")
+    };
+    d_step { Actual = 1; exporting = 0; printf("P: init: store Actual := 1\n") };
+#endif
     do
     :: /* 1. load the control word, use ReadLocked; 2. choose the slot */
        d_step {
            exporting = 1;
            r = ReadLocked;
            acc = 1;
+#ifdef COLD_START
+#ifdef COLD_PAIR_OF_ACTUAL
+           if :: r == 0 -> r = 1 + 2 * (1 - PAIR(wa)) :: else -> skip fi;  /* broken */
+#else
+           if :: r == 0 -> r = 1 :: else -> skip fi;   /* not started: Buffer1 */
+#endif
+#endif
 #ifdef CHECK_DEFINITE
            assert(r >= 1 && r <= 4);
 #endif
@@ -317,6 +361,10 @@ proctype consumer()
     byte got, c0, c1, c;
 #endif
 
+#ifdef COLD_START
+    d_step { ReadLocked = 1; rl = 1; printf("C: init: store ReadLocked := 1\n") };
+#endif
+
     /* CRASHES: with -DCRASH every access below may instead be a crash (the
      * access does not happen; the consumer restarts).  Crashing before each
      * access also covers crashing after the last one (no shared effect). */
@@ -326,7 +374,7 @@ again:
        d_step {
            importing = 1;
 #ifdef CHECK_ACTUALITY
-           base = h1[Actual];
+           if :: Actual != 0 -> base = h1[Actual] :: else -> base = NONE fi;
 #endif
            result = OLD; acc = 0
        };
@@ -376,6 +424,14 @@ again:
            fi
           }
        CRASHES
+       fi;
+#endif
+#ifdef COLD_START
+       if       /* Actual = 0: nothing published yet, the Import reads nothing */
+       :: a == 0 -> d_step { reading = 0; rbuf = 0; b = 0; newpath = 0; acc = 0;
+                             base = NONE; importing = 0; printf("C: Actual=0: Old, nothing read\n") };
+                    goto again
+       :: else -> skip
        fi;
 #endif
        if
@@ -468,7 +524,7 @@ retry:
            assert(v1 == v2 && v1 < NSTAMP);
 #endif
 #ifdef CHECK_ACTUALITY
-           assert(v1 == base || (after[base] & (1 << v1)) != 0);
+           assert(base == NONE || v1 == base || (after[base] & (1 << v1)) != 0);
 #endif
 #ifdef CHECK_NEWOLD
            if
@@ -510,7 +566,11 @@ restart:
 init {
     /* producer_init: Buffer1 holds stamp 0 (the initial value); 2..4 garbage */
     d_step {
+#ifdef COLD_START
+        h1[1] = GARB1; h2[1] = GARB2;  /* the producer's init writes Buffer1 */
+#else
         h1[1] = 0; h2[1] = 0;
+#endif
         h1[2] = GARB1; h2[2] = GARB2;
         h1[3] = GARB1; h2[3] = GARB2;
         h1[4] = GARB1; h2[4] = GARB2;

@@ -2,7 +2,7 @@
  * duo_sensor.c -- board 'sensor' of the FPGA demonstration (fpga/duo.toml,
  * fpga/duo_system.v): exports Sample, a sequence number with check words
  * (board.h pair_value_t), as fast as it can, and after every Export imports
- * GlobalTime (a four-slot channel: a wait-free Import, issue 13).  The
+ * GlobalTime (a four-slot channel: a wait-free Import).  The
  * accesses of each Import are counted outside the core, at its DPRAM port,
  * by the simulation harness (fpga/test_fpga_soc.cpp), against the bound the
  * compiler generated (sensor.h ALB_GLOBALTIME_IMPORT_MAX_ACCESSES); the

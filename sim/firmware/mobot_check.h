@@ -15,14 +15,14 @@
  * (board_event, soc/firmware/board.h): EVENT = kind | channel id << 4 |
  * cycles << 8, where cycles (24 bits, saturating) is the rdcycle count of the
  * call, and ARG as listed at MOBOT_EV_*.
- * Local time (issue 13 §4, built with -DALB_LOCAL_TIMER_ADDR=... and
+ * Local time (built with -DALB_LOCAL_TIMER_ADDR=... and
  * c-driver/alb_clock.c; without it mobot_clock_* do nothing): each board
  * syncs its alb_clock_t on every New GlobalTime (taken_at, TIMER read right
  * after the Import) and, once per loop, reports alb_clock_now() as
  * MOBOT_EV_CLOCK with the clock's state (alb_clock_state) in the channel-id
  * field; the harness compares it with the controller's time at that
  * estimate's TIMER read (the board's last one before the event).
- * Sampling read (issue 13 section 3): mobot_read is alb_read with the Import
+ * Sampling read: mobot_read is alb_read with the Import
  * event; mobot_now gives the global time it needs (the clock's estimate, or
  * the last GlobalTime value) and MOBOT_NOW_LEAD_CLOCKS how far that can lead
  * the controller's time.

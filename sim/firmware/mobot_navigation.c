@@ -6,7 +6,7 @@
  * exports, then keeps going.  STAT: 0 RadarMap New, 1 Position New,
  * 2 GlobalTime New, 3 exports.  Checks and events: sim/firmware/mobot_check.h.
  *
- * Actuality, by the sampling read (issue 13 section 3; alb_read,
+ * Actuality, by the sampling read (alb_read,
  * docs/protocol.md "Sampling read"): ReadRadarMap ages the map as now -
  * taken_at, where now is the global time read BEFORE the Import (the clock's
  * estimate when the board runs one, else the GlobalTime value of the loop
@@ -50,7 +50,11 @@ int main(void)
     uint32_t seq = 0u, code, reported = 0u, stale = 0u, now;
     int r;
 
+#ifdef MOBOT_COLD_START
+    r = alb_navigation_init_all(BOARD_DPRAM_BASE);     /* a zeroed RAM, no image */
+#else
     r = alb_navigation_attach_all(BOARD_DPRAM_BASE);
+#endif
     if (r != ALB_OK)
         return (int)MOBOT_CODE(2, 0xfu, (uint32_t)-r);
     mobot_clock_init(&clk);

@@ -21,7 +21,11 @@ int main(void)
     uint32_t seq = 0u, code, reported = 0u;
     int r;
 
+#ifdef MOBOT_COLD_START
+    r = alb_radar_init_all(BOARD_DPRAM_BASE);     /* a zeroed RAM, no image */
+#else
     r = alb_radar_attach_all(BOARD_DPRAM_BASE);
+#endif
     if (r != ALB_OK)
         return (int)MOBOT_CODE(2, 0xfu, (uint32_t)-r);
     mobot_clock_init(&clk);

@@ -1,4 +1,4 @@
-// protocol_checker.h -- the paper's four proof points (seed 3.1), checked on
+// protocol_checker.h -- the paper's four proof points (its section 3.1), checked on
 // every Import of one channel from what happens at the RAM ports:
 //   mutual exclusion  the producer never writes a byte of the buffer the
 //                     consumer is reading (between its first and last

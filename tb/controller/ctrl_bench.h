@@ -82,7 +82,7 @@ size_t rom_addr(size_t k, unsigned j);
 void reseal(std::vector<uint32_t> &r, size_t ne);
 
 // hflags: the H0 flags field (C::HFLAG_SYNC_MODE: position-synchronised).
-// drop_run: H2's drop run K (issue 15; 0 = an image from before, read as 2).
+// drop_run: H2's drop run K (0 = an image from before, read as 2).
 std::vector<uint32_t> build_rom(uint32_t h1, unsigned hflags, const std::vector<Entry> &es, unsigned drop_run = 0);
 
 void write_rom(const std::vector<uint32_t> &r);
@@ -243,7 +243,7 @@ struct Sim {
 // ------------------------------------------------------------------ the CPUs' three-buffer protocol
 unsigned pick(unsigned a, unsigned r);
 
-struct Producer {                       // Export (seed figure 4) on one board
+struct Producer {                       // Export (the paper, figure 4) on one board
     int board;
     unsigned base, w, actual = 1;
     void init(Sim &s) { s.wr(board, base, 0x1, 1); actual = 1; }
@@ -257,7 +257,7 @@ struct Producer {                       // Export (seed figure 4) on one board
     }
 };
 
-struct Consumer {                       // Import (seed figure 3) on one board
+struct Consumer {                       // Import (the paper, figure 3) on one board
     int board;
     unsigned base, words, rl = 1;       // words: value + taken_at
     void init(Sim &s) { s.wr(board, base, 0x2, 1u << 8); rl = 1; }

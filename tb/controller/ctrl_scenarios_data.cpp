@@ -157,7 +157,7 @@ void scenario_corrupt() {
     }
 }
 
-// ------------------------------------------------------------------ four-slot (issue 13)
+// ------------------------------------------------------------------ four-slot
 // The four-slot layout (rtl/albatross_contract.toml [layout.four_slot]):
 // Actual, ReadLocked, Slot0, Slot1 in byte lanes 0..3 of the control word,
 // Buffer1..4 from word 1; buffer b is pair (b-1)>>1, slot (b-1)&1.

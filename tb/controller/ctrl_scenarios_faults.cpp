@@ -194,7 +194,7 @@ void scenario_dead() {
     }
 }
 
-// The drop run from the ROM (issue 15): H2 = 3, board 1's link down for a
+// The drop run from the ROM: H2 = 3, board 1's link down for a
 // cycle: COPY's only destination is tried 3 times (not 2) and dropped; TIME
 // still reaches board 0 (tried first) and drops board 1 after 3 failures.
 void scenario_droprun() {

@@ -24,9 +24,9 @@
 //   dead     a board's link is down for a whole cycle: the slots still start on
 //            time, no access starts after its deadline, a dead destination is
 //            dropped after two failed accesses and the others are still served
-//   droprun  the same with the ROM's drop run H2 = 3 (issue 15): the dead
+//   droprun  the same with the ROM's drop run H2 = 3: the dead
 //            destination is tried 3 times in a row, then dropped
-//   four     the COPY and TIME entries with E0 flag FOUR_SLOT (issue 13), a C++
+//   four     the COPY and TIME entries with E0 flag FOUR_SLOT, a C++
 //            four-slot producer and consumer: exact timing and access sequence
 //            (Import 3 + W / 1 access, Export W + 4 per destination), the
 //            control bytes after each Export, New / Old, the consumer's fixed

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """plot_import_accesses.py THREE.json FOUR.json OUT.json OUT.svg -- the figure
-of issue 13: RAM accesses per Import beyond the payload against the
+of the termination bound: RAM accesses per Import beyond the payload against the
 writer:reader speed ratio, both channel kinds in one plot.
 
 Reads the reports of `tb_dpram ratio --kind three_buffer` and `--kind

@@ -217,7 +217,7 @@ int mode_random(const Options &o)
 
 // -------------------------------------------------------------------- ratio
 //
-// The figure of issue 13: RAM accesses per Import beyond the payload against
+// The figure of the termination bound: RAM accesses per Import beyond the payload against
 // the writer:reader speed ratio, held fixed at each point of --ratios (log10,
 // default -2..2 in steps of 0.5) for --imports Imports each, with the
 // checkers on.  Four-slot: flat at its bound 3 (1 with nothing new); the

@@ -1,6 +1,6 @@
 /*
  * host_threads.c -- the real driver (c-driver/albatross.c) on two host
- * threads over ordinary shared memory (issue 14 section 3).
+ * threads over ordinary shared memory.
  *
  * A producer thread exports a continuous stream of values, a consumer thread
  * imports continuously, each pinned to its own core, on one or more channels

@@ -74,7 +74,7 @@ struct BoardCtx {
     std::vector<Role> roles;
     uint32_t global_time = 0;   // the newest GlobalTime this CPU has imported ...
     uint64_t global_at = 0;     // ... and its local clock then: a local timer
-                                // synchronised to the global time (seed 3.4.1)
+                                // synchronised to the global time (the paper, section 3.4.1)
     std::mt19937_64 rng;
     int attach_errors = 0;
 };

@@ -210,6 +210,7 @@ int main(void)
     test_typed();
     test_four_slot();
     test_sample();
+    test_cold_start();
     printf("driver-unit: %lu checks, %lu failed\n", g_checks, g_fails);
     return g_fails == 0u ? EXIT_SUCCESS : EXIT_FAILURE;
 }

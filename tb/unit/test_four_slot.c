@@ -122,13 +122,15 @@ static void fs_init_attach(void)
         fs_channel(&p, &c, 8u);
         *ram(ch_base + ALB_OFF_ACTUAL) = (uint8_t)bad;
         port_reset(ch_base, ch_base + ALB_FS_CHANNEL_BYTES(8u));
-        check_int("producer attach, Actual", actual_ok ? ALB_OK : ALB_ERR_CORRUPT, alb_producer_attach(&p));
+        check_int("producer attach, Actual", actual_ok ? ALB_OK : bad == ALB_NOT_STARTED ? ALB_ERR_ARG
+                  : ALB_ERR_CORRUPT, alb_producer_attach(&p));
         fs_channel(&p, &c, 8u);
         *ram(a_slot(bad & 1u)) = (uint8_t)bad;
         check_int("producer attach, a slot byte", slot_ok ? ALB_OK : ALB_ERR_CORRUPT, alb_producer_attach(&p));
         fs_channel(&p, &c, 8u);
         *ram(ch_base + ALB_OFF_READLOCKED) = (uint8_t)bad;
-        check_int("consumer attach, ReadLocked", actual_ok ? ALB_OK : ALB_ERR_CORRUPT, alb_consumer_attach(&c));
+        check_int("consumer attach, ReadLocked", actual_ok ? ALB_OK : bad == ALB_NOT_STARTED ? ALB_ERR_ARG
+                  : ALB_ERR_CORRUPT, alb_consumer_attach(&c));
         check_no_trap();
     }
 }
@@ -255,7 +257,8 @@ static void fs_errors(void)
         if (bad >= 1u && bad <= 4u) {
             check_true("valid Actual: a value", alb_import(&c, d) >= 0, "an error");
         } else {
-            check_int("invalid Actual", ALB_ERR_CORRUPT, alb_import(&c, d));
+            check_int("invalid Actual (0: nothing published, Old)",
+                      bad == ALB_NOT_STARTED ? ALB_OLD : ALB_ERR_CORRUPT, alb_import(&c, d));
             check_counts("invalid Actual: one load", 0, 0, 1, 0);
             check_bytes("*dst unchanged", keep, d, sizeof d);
         }
@@ -283,7 +286,8 @@ static void fs_errors(void)
         *ram(ch_base + ALB_OFF_READLOCKED) = (uint8_t)bad;
         pattern(v, sizeof v, bad);
         port_reset(ch_base, ch_base + ALB_FS_CHANNEL_BYTES(8u));
-        check_int("Export", bad >= 1u && bad <= 4u ? ALB_OK : ALB_ERR_CORRUPT, alb_export(&p, v));
+        check_int("Export", (bad >= 1u && bad <= 4u) || bad == ALB_NOT_STARTED ? ALB_OK : ALB_ERR_CORRUPT,
+                  alb_export(&p, v));
         check_counts("Export: fixed accesses", 0, 2, 1, 2);
         if (bad < 1u || bad > 4u)   /* the pair other than Actual's (Buffer1): pair 1, slot 1 */
             check_bytes("published all the same, into Buffer4", v, ram(fs_buf(4u)), sizeof v);

@@ -1,6 +1,6 @@
 /*
  * test_sample.c -- host unit tests of the sampling read (alb_read and the
- * typed Read<Name> of ALB_SAMPLING; issue 13 section 3) on both channel
+ * typed Read<Name> of ALB_SAMPLING) on both channel
  * kinds: never received before the first New, the age from the payload's
  * last word (taken_at), the stale boundary (age == bound is fresh, bound + 1
  * stale), a stale New, a value taken after now (age 0), wrap-around of the

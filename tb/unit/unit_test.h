@@ -64,5 +64,6 @@ void test_sequence(void);
 void test_typed(void);
 void test_four_slot(void);   /* test_four_slot.c */
 void test_sample(void);      /* test_sample.c */
+void test_cold_start(void);  /* test_cold_start.c */
 
 #endif

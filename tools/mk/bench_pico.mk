@@ -43,7 +43,7 @@ bench-pico: $(PBN_BIN) $(PBN_DIR)/bench.hex $(PBN_DIR)/bench.dis driver-size ## 
 	yosys -q -p "read_verilog $(PICO_RV32_V) $(PBN_RTL); hierarchy -check -top pico_bench; proc"
 	@echo "lint ok  tb/pico/pico_bench.v"
 
-# Both channel kinds on both cores (issue 13 section 5): bench.c built with
+# Both channel kinds on both cores: bench.c built with
 # -DBENCH_KIND=ALB_FOUR_SLOT for the four-slot kind; pico_bench.v with
 # SERV = 1 for SERV (its firmware -DBOARD_NO_COUNTERS: serv_bridge's cycle
 # register).  Reports build/reports/bench_{pico,serv}{,_four_slot}.json

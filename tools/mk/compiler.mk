@@ -28,7 +28,7 @@ SCHEDULE_DIR  := $(BUILD)/schedule/$(basename $(notdir $(SCHEDULE_DESC)))
 TESTS += compiler schedule-caller-dir
 .PHONY: test-compiler schedule test-schedule-caller-dir
 
-test-compiler:
+test-compiler: ## [test] the schedule compiler's tests (examples, bad descriptions, gcc, end to end)
 	@tools/run_test.sh compiler $(PYTHON) -m unittest discover -s compiler/tests -v
 
 # make schedule always runs the compiler (about a second), so the report it
@@ -74,7 +74,7 @@ $(BUILD)/schedule/%/rom.hex: compiler/examples/%.toml $(SCHEDULE_SRC)
 .PRECIOUS: $(BUILD)/schedule/%/rom.hex
 
 # The compiler's predictions for the robot under several fault hypotheses
-# (issue 15 section 2; 5, 20, 30, 50 % with and without bursts of mean 2):
+# (5, 20, 30, 50 % with and without bursts of mean 2):
 # build/reports/fault_plan.json, the table of docs/compiler.md "Fault hypothesis".
 BENCHES += bench-fault-plan
 bench-fault-plan: $(SCHEDULE_SRC) tools/fault_plan_bench.py ## the robot's planned delivery and age bounds at 5/20/30/50 % faults
@@ -84,7 +84,7 @@ bench-fault-plan: $(SCHEDULE_SRC) tools/fault_plan_bench.py ## the robot's plann
 #   build/schedule/mobot3-f<percent>/       rate <percent> %, independent accesses
 #   build/schedule/mobot3-f<percent>b<L>/   rate <percent> %, bursts of mean L accesses
 #   build/schedule/mobot3-f<percent>p<N>/   independent, target probability 1 - 10^-N
-# for the percentages, bursts and N below (issue 15: tests at true fault rates;
+# for the percentages, bursts and N below (tests at true fault rates;
 # at 50 % the robot plans only from a target of 0.99 down, make bench-fault-plan).
 FAULT_PLAN_PCTS   := 5 20 30 50
 FAULT_PLAN_BURSTS := 2 5

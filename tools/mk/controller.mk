@@ -12,7 +12,7 @@
 #                                         check (group 32) and name it
 #   make test-controller-smoke-negative-droprun
 #                                         a controller that ignores the ROM's drop
-#                                         run (H2, issue 15) fails scenario droprun
+#                                         run (H2) fails scenario droprun
 #                                         (exit 80: dead group only)
 # The model reads its ROM from "ctrl_rom.hex" in the working directory that
 # each run selects with --dir, so the two runs never share a ROM file.

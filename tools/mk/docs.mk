@@ -42,7 +42,7 @@ docs-pictures: docs-pictures-build docs-pictures-fault-rates ## refresh the comm
 TESTS += docs-pictures docs-pictures-negative
 test-docs-pictures:
 	@tools/run_test.sh docs-pictures bash -c '$(MAKE) -s --no-print-directory docs-pictures-build && \
-	    tools/docs_pictures.sh $(DOCS_PICTURES)'
+	    tools/docs_pictures.sh $(DOCS_PICTURES) && $(PYTHON) tools/doc_facts.py --sim-log $(DOCS_DIR)/sim.log'
 # A stale picture (one figure changed), a missing committed copy and a missing
 # fresh one must each fail the check; the current picture must pass it.
 test-docs-pictures-negative:
@@ -58,3 +58,54 @@ test-docs-pictures-negative:
 	    tools/docs_pictures.sh docs/img/timeline.svg docs/img/timeline.svg > /dev/null || \
 	        { echo "an identical copy failed the check"; exit 1; }; \
 	    echo "a stale, a missing committed and a missing fresh picture are each caught"'
+
+# The docs speak to a stranger (tools/doc_words.py): no internal issue numbers
+# and no "seed" for the paper in README.md, docs/*.md, compiler/README.md, the
+# contract's doc strings, the C driver and tools/mk.
+#   make test-docs-words            the check
+#   make test-docs-words-negative   each kind of bad phrase must be caught
+TESTS += docs-words docs-words-negative
+.PHONY: test-docs-words test-docs-words-negative
+test-docs-words:
+	@tools/run_test.sh docs-words $(PYTHON) tools/doc_words.py
+test-docs-words-negative:
+	@tools/run_test.sh docs-words-negative $(PYTHON) tools/doc_words.py --self-test
+
+# Figures typed in the prose, checked against the thing (tools/doc_facts.py):
+# the timeline caption's ROM entries and cycle (the compiler's report), the
+# FuseSoC lint-target count (the core files); test-docs-pictures also checks
+# that make sim's last line is `sim: pass`, as the README says.
+#   make test-docs-facts            the check
+#   make test-docs-facts-negative   each figure changed by one must be caught
+TESTS += docs-facts docs-facts-negative
+.PHONY: test-docs-facts test-docs-facts-negative
+test-docs-facts: $(BUILD)/schedule/mobot3/rom.hex
+	@tools/run_test.sh docs-facts $(PYTHON) tools/doc_facts.py
+test-docs-facts-negative: $(BUILD)/schedule/mobot3/rom.hex
+	@tools/run_test.sh docs-facts-negative $(PYTHON) tools/doc_facts.py --self-test
+
+# make help lists every target the docs name (tools/make_help.py --check-docs):
+# each `make X` in a code span or block of README.md, docs/*.md and
+# compiler/README.md is in make help, or, for make test-NAME, is a rule.
+#   make test-help-docs            the check
+#   make test-help-docs-negative   a scratch doc naming a target that does not
+#                                  exist and a test that does not exist: both caught
+HELP_DOCS     := README.md $(wildcard docs/*.md) compiler/README.md
+HELP_TARGETS  := $(BUILD)/help/targets.txt
+TESTS += help-docs help-docs-negative
+.PHONY: test-help-docs test-help-docs-negative $(HELP_TARGETS)
+$(HELP_TARGETS):
+	@mkdir -p $(@D)
+	@$(MAKE) -pRrq -f $(firstword $(MAKEFILE_LIST)) : 2>/dev/null | grep -oE '^[a-zA-Z0-9_.-]+:' | tr -d : | sort -u > $@
+test-help-docs: $(HELP_TARGETS)
+	@tools/run_test.sh help-docs python3 tools/make_help.py --check-docs $(MAKEFILE_LIST) --targets $< $(HELP_DOCS)
+test-help-docs-negative: $(HELP_TARGETS)
+	@tools/run_test.sh help-docs-negative bash -c 'd=$(BUILD)/help; \
+	    printf "Run \`make no-such-target\`, then:\n\n\`\`\`sh\nmake test-no-such-test\nmake help\n\`\`\`\n" > $$d/neg.md; \
+	    if python3 tools/make_help.py --check-docs $(MAKEFILE_LIST) --targets $< $$d/neg.md > $$d/neg.out; then \
+	        echo "expected the check to fail on $$d/neg.md, it passed"; exit 1; fi; \
+	    cat $$d/neg.out; \
+	    grep -q "make no-such-target: expected it in make help" $$d/neg.out && \
+	    grep -q "make test-no-such-test: expected it in make help" $$d/neg.out && \
+	    ! grep -q "make help:" $$d/neg.out || { echo "expected exactly the two missing targets named"; exit 1; }; \
+	    echo "help-docs-negative: a target and a test that do not exist are both caught"'

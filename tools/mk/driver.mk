@@ -16,7 +16,8 @@ DRV_RV_OBJS   := $(foreach O,$(DRV_RV_LEVELS),$(BUILD)/rv32i/albatross-$(O).o)
 DRV_HOST_OBJ  := $(BUILD)/host/albatross.o
 DRV_UNIT      := $(BUILD)/unit
 DRV_UNIT_SRC  := tb/unit/test_driver.c tb/unit/test_transfer.c tb/unit/test_errors.c \
-                 tb/unit/test_four_slot.c tb/unit/test_sample.c tb/unit/unit_helpers.c
+                 tb/unit/test_four_slot.c tb/unit/test_sample.c tb/unit/test_cold_start.c \
+                 tb/unit/unit_helpers.c
 DRV_UNIT_DEPS := $(DRV_UNIT_SRC) tb/unit/unit_test.h tb/unit/port/alb_port_impl.h \
                  $(DRV_SRC) $(wildcard c-driver/*.h)
 DRV_BROKEN    := 1 2
@@ -28,10 +29,11 @@ $(BUILD)/%.hex: $(BUILD)/%.elf
 DRV_RV_NEED    = command -v $(DRV_RV_CC) >/dev/null 2>&1 || { echo "driver-rv32i: \
 $(DRV_RV_CC) not found: run make deps (installs gcc-riscv64-unknown-elf)"; exit 1; }
 
-TESTS   += driver-unit driver-unit-negative driver-rv32i
+TESTS   += driver-unit driver-unit-negative driver-cold-start-negative driver-rv32i
 BENCHES += driver-size
 
-.PHONY: test-driver-unit test-driver-unit-negative test-driver-rv32i driver-size
+.PHONY: test-driver-unit test-driver-unit-negative test-driver-cold-start-negative \
+        test-driver-rv32i driver-size
 
 # Host unit tests: the driver with tb/unit/port/alb_port_impl.h (all kinds).
 $(DRV_UNIT)/test_driver: $(DRV_UNIT_DEPS)
@@ -61,6 +63,22 @@ test-driver-unit: $(DRV_UNIT)/test_driver $(DRV_UNIT)/test_kinds_1 $(DRV_UNIT)/t
 
 test-driver-unit-negative: $(foreach N,$(DRV_BROKEN),$(DRV_UNIT)/test_driver_broken$(N))
 	@tools/run_test.sh driver-unit-negative tb/unit/expect_fail.sh $^
+
+# The cold start's negative: the driver as it was before the cold-start
+# contract (tb/unit/mutants/cold_zero_corrupt.sed: a control byte of 0 is
+# ALB_ERR_CORRUPT) must fail the unit tests (test_cold_start.c above all).
+# The sed must change the source, or the test fails on its own.
+$(DRV_UNIT)/cold_zero_corrupt/albatross.c: tb/unit/mutants/cold_zero_corrupt.sed $(DRV_SRC)
+	@mkdir -p $(@D)
+	sed -f $< $(DRV_SRC) > $@
+	@test $$(diff $(DRV_SRC) $@ | grep -c '^>') -eq 4 || \
+	    { echo "$@: expected 4 lines changed by $<"; rm -f $@; exit 1; }
+$(DRV_UNIT)/test_driver_cold_zero_corrupt: $(DRV_UNIT_DEPS) $(DRV_UNIT)/cold_zero_corrupt/albatross.c
+	$(DRV_HOST_CC) $(DRV_CFLAGS) -O2 -Itb/unit/port -Ic-driver -o $@ \
+	    $(DRV_UNIT_SRC) $(DRV_UNIT)/cold_zero_corrupt/albatross.c
+
+test-driver-cold-start-negative: $(DRV_UNIT)/test_driver_cold_zero_corrupt
+	@tools/run_test.sh driver-cold-start-negative tb/unit/expect_fail.sh $^
 
 # Cross build for rv32i (one object per optimisation level) and host build,
 # both with the memory-mapped port and warnings as errors.

@@ -118,7 +118,7 @@ test-endpoint-lint:
 # Figures of both runs (values, clocks and accesses per transfer) in one file.
 BENCHES += endpoint-report
 .PHONY: endpoint-report
-endpoint-report: test-endpoint-export test-endpoint-import
+endpoint-report: test-endpoint-export test-endpoint-import ## [bench] the hardware endpoints' figures (values, clocks, accesses per transfer) -> build/reports/endpoint.json
 	@$(PYTHON) -c 'import json,sys; e=json.load(open(sys.argv[1])); i=json.load(open(sys.argv[2])); \
 	    json.dump({"export": e, "import": i}, open(sys.argv[3], "w"), indent=2); \
 	    print("endpoint: export %d values, %d accesses and %.2f clocks per undisturbed Export (W=%d); " \

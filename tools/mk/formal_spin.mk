@@ -2,7 +2,8 @@
 # (formal/spin/albatross.pml) and of the four-slot channel (formal/spin/four_slot.pml),
 # both run by formal/spin/check.py.
 #   make test-formal-spin       every property: mutual exclusion, definite results,
-#                               actuality, New/Old, retries; writer wait-free and
+#                               actuality, New/Old, retries, each also from a zeroed
+#                               RAM (cold_*: each side's init at any point); writer wait-free and
 #                               lock-free hold; the reader's Import is NOT wait-free
 #                               (Spin must find the starvation cycle).
 #                               Report: build/reports/formal_spin.json
@@ -16,7 +17,8 @@ SPIN_CHECK    := formal/spin/check.py
 # variant:-D switch of the model
 SPIN_NEGATIVE := while-as-if:WHILE_AS_IF ignore-readlocked:IGNORE_READLOCKED
 
-SPIN_TESTS    := formal-spin $(foreach v,$(SPIN_NEGATIVE),formal-spin-negative-$(call neg_field,$(v),1))
+SPIN_TESTS    := formal-spin $(foreach v,$(SPIN_NEGATIVE),formal-spin-negative-$(call neg_field,$(v),1)) \
+                 formal-spin-negative-cold-read-zero
 TESTS         += $(SPIN_TESTS)
 FORMAL_TESTS  += $(SPIN_TESTS)
 
@@ -34,12 +36,21 @@ test-formal-spin-negative-$(call neg_field,$(1),1):
 endef
 $(foreach v,$(SPIN_NEGATIVE),$(eval $(call SPIN_NEG_RULE,$(v))))
 
-# --- the four-slot channel (issue 13): formal/spin/four_slot.pml -----------
+# The cold start (-DCOLD_START, checked as cold_* by test-formal-spin): an
+# Import that reads Buffer1 while Actual is still 0, as if the RAM image had
+# set it, meets alb_producer_init writing Buffer1.
+test-formal-spin-negative-cold-read-zero:
+	@tools/run_test.sh formal-spin-negative-cold-read-zero $(PYTHON) $(SPIN_CHECK) \
+	    --variant COLD_READ_ZERO --must-fail cold_mutex,cold_definite \
+	    --out $(SPIN_DIR)/negative --json $(REPORTS)/formal_spin_negative_cold_read_zero.json
+
+# --- the four-slot channel: formal/spin/four_slot.pml -----------
 #   make test-formal-spin-four-slot
 #                               every property of the four-slot channel: mutual
 #                               exclusion, definite results, actuality, New/Old,
 #                               the access bound (1 + W / 3 + W per Import), also
-#                               with W = 1, L = 1 at init and consumer crashes;
+#                               with W = 1, L = 1 at init, consumer crashes and
+#                               from a zeroed RAM (cold_*);
 #                               reader_wait_free, writer_wait_free and lock_free
 #                               all HOLD.  Report: build/reports/formal_spin_four_slot.json
 #   make test-formal-spin-four-slot-negative-<variant>
@@ -54,7 +65,8 @@ SPIN_FS_NEGATIVE := wrong-order:WRONG_ORDER:mutex,definite \
                     rl-as-last:RL_AS_LAST:actuality \
                     slot-after-actual:SLOT_AFTER_ACTUAL:definite,actuality,newold \
                     new-if-a-ne-l:NEW_IF_A_NE_L:newold \
-                    reread:REREAD:bound,reader_wait_free
+                    reread:REREAD:bound,reader_wait_free \
+                    cold-pair-of-actual:COLD_PAIR_OF_ACTUAL:cold_newold
 
 SPIN_FS_TESTS    := formal-spin-four-slot \
                     $(foreach v,$(SPIN_FS_NEGATIVE),formal-spin-four-slot-negative-$(call neg_field,$(v),1))

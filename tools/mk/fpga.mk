@@ -245,7 +245,7 @@ $(eval $(call fpga_soc_tests,,icebreaker_top,16000000))
 $(eval $(call fpga_soc_tests,-ulx3s,ulx3s_top,4000000))
 $(eval $(call fpga_soc_tests,-arty,arty_top,4000000))
 
-# The negative of the four-slot GlobalTime (issue 13): the iCEBreaker model
+# The negative of the four-slot GlobalTime: the iCEBreaker model
 # with the ROM and programs of duo3b.toml (GlobalTime three-buffer, not spaced
 # for the SERV sensor).  The controller overtakes the sensor's Import loop:
 # the Import exceeds its (wrongly computed) bound, or never finishes, and the

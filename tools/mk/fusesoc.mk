@@ -1,4 +1,4 @@
-# tools/mk/fusesoc.mk -- the packaged IP (issue 14): FuseSoC (PyPI fusesoc, CAPI2)
+# tools/mk/fusesoc.mk -- the packaged IP: FuseSoC (PyPI fusesoc, CAPI2)
 # core files beside their sources (rtl/*.core, c-driver/albatross_driver.core,
 # soc/albatross_soc.core, fpga/albatross_duo.core, constraints/albatross_constraints.core,
 # tb/endpoint/tb_endpoint_loop.core; docs/integration.md), checked the way a
@@ -11,7 +11,7 @@
 #                       files, every lint target passes (Verilator -Wall, the
 #                       board tops included), the driver compiles from its core,
 #                       and the simulation albatross:tb:endpoint_loop (Icarus)
-#                       prints PASS.  About 15 s of CPU (14 Verilator lints,
+#                       prints PASS.  About 15 s of CPU (17 Verilator lints,
 #                       1 Icarus run of about 105,000 clocks).
 #   make test-fusesoc-negative-<kind>   a copy of the library under
 #                       build/fusesoc/neg-<kind>/ with one fault the check must
@@ -44,7 +44,7 @@ fusesoc-ignore:
 # The CPUs' libraries (tools/mk/pico.mk, serv.mk): deferred, those files are read after this one.
 FUSESOC_LIBS   = --library $(SERV_CPU_DIR) --picorv32 $(PICO_RV32_V)
 
-test-fusesoc: $(FUSESOC_DEPS) | fusesoc-ignore
+test-fusesoc: $(FUSESOC_DEPS) | fusesoc-ignore ## [test] the FuseSoC cores as a user meets them: load, lint, driver build, a simulation
 	$(PICO_NEED)
 	$(SERV_NEED)
 	@tools/run_test.sh fusesoc $(PYTHON) tools/fusesoc_check.py --root . --work $(FUSESOC_DIR)/main \
@@ -52,6 +52,16 @@ test-fusesoc: $(FUSESOC_DEPS) | fusesoc-ignore
 
 $(addprefix test-fusesoc-negative-,$(FUSESOC_NEGS)): test-fusesoc-negative-%: $(FUSESOC_DEPS) tools/fusesoc_negative.sh | fusesoc-ignore
 	@tools/run_test.sh fusesoc-negative-$* tools/fusesoc_negative.sh $*
+
+# The core file a user writes (docs/integration.md, "In your own core"), taken
+# from the page: it must load and lint with its dependencies; without its
+# targets: section it must be rejected (tools/fusesoc_user_core.sh).
+TESTS += fusesoc-user-core fusesoc-user-core-negative
+.PHONY: test-fusesoc-user-core test-fusesoc-user-core-negative
+test-fusesoc-user-core: $(FUSESOC_DEPS) docs/integration.md tools/fusesoc_user_core.sh | fusesoc-ignore
+	@tools/run_test.sh fusesoc-user-core tools/fusesoc_user_core.sh
+test-fusesoc-user-core-negative: $(FUSESOC_DEPS) docs/integration.md tools/fusesoc_user_core.sh | fusesoc-ignore
+	@tools/run_test.sh fusesoc-user-core-negative tools/fusesoc_user_core.sh --negative
 
 # The board targets through FuseSoC, on the config test-fusesoc wrote (run it
 # first: the library and the PicoRV32 core are set up there).

@@ -1,5 +1,5 @@
 # tools/mk/host_threads.mk -- the real driver on two host threads over ordinary
-# shared memory (issue 14 section 3; tb/host_threads/host_threads.c, judged by
+# shared memory (tb/host_threads/host_threads.c, judged by
 # tools/host_threads.py).  x86-64 has store buffers: the store-buffering
 # pattern the driver's fences guard against really happens here.
 #   make test-host-threads          the unchanged mmio port, both kinds, payloads

@@ -1,4 +1,4 @@
-# tools/mk/parts.mk -- the controller's parts (issue 12): albatross_sequencer
+# tools/mk/parts.mk -- the controller's parts: albatross_sequencer
 # (with its albatross_schedule_rom, albatross_rom_check and albatross_entry_check),
 # albatross_bus_master, albatross_counters, each on its own (the engines have
 # tools/mk/endpoint.mk; rtl/albatross_controller.v composes them all).

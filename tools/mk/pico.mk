@@ -40,7 +40,7 @@ $(PICO_DIR)/fw/$(1).elf: tb/pico/firmware/$(2).c $(3) $(FW_DEPS)
 endef
 $(eval $(call pico_fw,producer,producer,c-driver/albatross.c))
 $(eval $(call pico_fw,consumer,consumer,c-driver/albatross.c))
-# The four-slot kind (issue 13): the same programs and checks on a four-slot channel.
+# The four-slot kind: the same programs and checks on a four-slot channel.
 PAIR_FOUR_SLOT := -DPAIR_KIND=ALB_FOUR_SLOT
 $(eval $(call pico_fw,producer-four_slot,producer,c-driver/albatross.c,$(PAIR_FOUR_SLOT)))
 $(eval $(call pico_fw,consumer-four_slot,consumer,c-driver/albatross.c,$(PAIR_FOUR_SLOT)))
@@ -81,7 +81,7 @@ test-pico-pair-negative: $(PICO_BIN) $(PICO_DIR)/fw/producer-ignore_readlocked.h
 
 BENCHES += bench-pico-pair
 .PHONY: bench-pico-pair
-bench-pico-pair: $(PICO_BIN) $(PICO_DIR)/fw/producer.hex $(PICO_DIR)/fw/consumer.hex
+bench-pico-pair: $(PICO_BIN) $(PICO_DIR)/fw/producer.hex $(PICO_DIR)/fw/consumer.hex ## [bench] two PicoRV32 boards, one channel: cycles per Import/Export
 	$(PICO_BIN) +fw0=$(PICO_DIR)/fw/producer.hex +fw1=$(PICO_DIR)/fw/consumer.hex \
 	    --max-cycles $(PICO_MAX_CYCLES) --stall-core -1 --label pico-pair-bench \
 	    --report $(REPORTS)/pico_pair_bench.json

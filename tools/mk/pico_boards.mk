@@ -34,7 +34,7 @@ PB_HDR      := sim/mobot_sim.h tb/common/fault_model.h tb/common/report.h tb/com
 
 # $(1) = board: sim/firmware/mobot_<board>.c + the generated <board>.c of the
 # schedule build/schedule/<sched>/ + the driver -> $(PB_DIR)/<sched>/fw/.
-# Local time (issue 13 section 4): fw-clock/ also links c-driver/alb_clock.c
+# Local time: fw-clock/ also links c-driver/alb_clock.c
 # and reads TIMER (soc/board_memmap.v) as alb_local_time(), so every board
 # syncs its clock and reports its estimates (tools/mk/sim.mk, test-sim-clock*);
 # fw-clock-norate/ is the same without rate correction (-DALB_CLOCK_NO_RATE,
@@ -84,6 +84,46 @@ PB_FWDIR  := $(PB_DIR)/mobot3/fw
 PB_FW     := $(foreach b,$(PB_BOARDS),$(PB_FWDIR)/$(b).hex)
 pb_fw_args = $(call pb_args,$(PB_SCHED),$(PB_FWDIR),$(1),$(2))
 PB_FW_ARGS = $(call pb_fw_args,$(PB_FWDIR)/radar.hex,$(PB_FWDIR)/navigation.hex)
+
+# Cold start on zeroed RAMs: every board's RAM image is all zero (no image
+# from the compiler) and its firmware, built with -DMOBOT_COLD_START, calls
+# alb_<board>_init_all instead of _attach_all (docs/protocol.md "Cold
+# start").  Every check of the harness must pass, as from the image.
+PB_COLD_DIR := $(PB_DIR)/mobot3/cold
+define pb_fw_cold
+$(PB_COLD_DIR)/fw/$(1).elf: sim/firmware/mobot_$(1).c sim/firmware/mobot_check.h $(PB_SCHED)/rom.hex $(FW_DEPS)
+	@$$(DRV_RV_NEED)
+	@mkdir -p $$(@D)
+	$(DRV_RV_CC) $(FW_CFLAGS) -DMOBOT_COLD_START -I$(PB_SCHED) -Isim -o $$@ soc/firmware/crt0.S \
+	    sim/firmware/mobot_$(1).c $(PB_SCHED)/$(1).c c-driver/albatross.c $(FW_LDFLAGS)
+$(PB_COLD_DIR)/fw-old/$(1).elf: sim/firmware/mobot_$(1).c sim/firmware/mobot_check.h $(PB_SCHED)/rom.hex $(FW_DEPS) \
+                                  $(DRV_UNIT)/cold_zero_corrupt/albatross.c
+	@$$(DRV_RV_NEED)
+	@mkdir -p $$(@D)
+	$(DRV_RV_CC) $(FW_CFLAGS) -DMOBOT_COLD_START -I$(PB_SCHED) -Isim -o $$@ soc/firmware/crt0.S \
+	    sim/firmware/mobot_$(1).c $(PB_SCHED)/$(1).c $(DRV_UNIT)/cold_zero_corrupt/albatross.c $(FW_LDFLAGS)
+$(PB_COLD_DIR)/$(1)_ram.hex: $(PB_SCHED)/$(1)_ram.hex
+	@mkdir -p $$(@D)
+	sed 's/./0/g' $$< > $$@
+endef
+$(foreach b,$(PB_BOARDS),$(eval $(call pb_fw_cold,$(b))))
+PB_COLD_FILES := $(foreach b,$(PB_BOARDS),$(PB_COLD_DIR)/fw/$(b).hex $(PB_COLD_DIR)/$(b)_ram.hex)
+# Its negative: the same with the driver as it was before the cold-start
+# contract (tb/unit/mutants/cold_zero_corrupt.sed, a 0 is ALB_ERR_CORRUPT):
+# the motor's first Import, before the controller's first Export, fails.
+PB_COLD_OLD := $(foreach b,$(PB_BOARDS),$(PB_COLD_DIR)/fw-old/$(b).hex $(PB_COLD_DIR)/$(b)_ram.hex)
+pb_cold_args = $(subst $(PB_SCHED)/,$(PB_COLD_DIR)/,$(filter +ram%,$(call pb_args,$(PB_SCHED),$(1),$(1)/radar.hex,$(1)/navigation.hex))) \
+    $(filter-out +ram%,$(call pb_args,$(PB_SCHED),$(1),$(1)/radar.hex,$(1)/navigation.hex))
+TESTS += pico-boards-cold-start pico-boards-cold-start-negative
+.PHONY: test-pico-boards-cold-start test-pico-boards-cold-start-negative
+test-pico-boards-cold-start-negative: $(PB_BIN) $(PB_COLD_OLD) $(PB_SCHED)/tb_plan.txt
+	@tools/run_test.sh pico-boards-cold-start-negative $(PB_BIN) $(call pb_cold_args,$(PB_COLD_DIR)/fw-old) \
+	    --cycles $(PB_CYCLES) --seed $(SEED) --stall 2048 --label pico-boards-cold-start-negative \
+	    --expect-caught-by cpu
+test-pico-boards-cold-start: $(PB_BIN) $(PB_COLD_FILES) $(PB_SCHED)/tb_plan.txt
+	@tools/run_test.sh pico-boards-cold-start $(PB_BIN) $(call pb_cold_args,$(PB_COLD_DIR)/fw) \
+	    --cycles $(PB_CYCLES) --seed $(SEED) --stall 2048 --require-done --label pico-boards-cold-start \
+	    --report $(REPORTS)/pico_boards_cold_start.json
 
 # Scenario tests: NAME:OPTIONS (commas for spaces).
 PB_SCENARIOS := \

@@ -126,14 +126,14 @@ test-serv-pair-negative: $(SERV_BIN2) $(SERV_DIR)/fw/producer-pico-ignore_readlo
 # cores stalled (--stall-core 2), which lengthens the reader's window and the
 # writer's Export at once.
 .PHONY: serv-while-as-if
-serv-while-as-if: $(SERV_BIN2) $(SERV_DIR)/fw/producer-pico.hex $(SERV_DIR)/fw/consumer-serv-while_as_if.hex
+serv-while-as-if: $(SERV_BIN2) $(SERV_DIR)/fw/producer-pico.hex $(SERV_DIR)/fw/consumer-serv-while_as_if.hex ## [sim] the While-as-If mutant on a SERV consumer, seeds 1..8 (an observation)
 	@for s in 1 2 3 4 5 6 7 8; do $(SERV_BIN2) +fw0=$(SERV_DIR)/fw/producer-pico.hex \
 	    +fw1=$(SERV_DIR)/fw/consumer-serv-while_as_if.hex --max-cycles $(SERV_MAX_CYCLES) --seed $$s \
 	    --stall-core 2 --label serv-while-as-if-seed$$s --expect-consumer-failure | tail -n 1; done; true
 
 BENCHES += bench-serv-pair
 .PHONY: bench-serv-pair
-bench-serv-pair: $(SERV_BIN2) $(SERV_DIR)/fw/producer-pico.hex $(SERV_DIR)/fw/consumer-serv.hex
+bench-serv-pair: $(SERV_BIN2) $(SERV_DIR)/fw/producer-pico.hex $(SERV_DIR)/fw/consumer-serv.hex ## [bench] a PicoRV32 producer and a SERV consumer: cycles per Import/Export
 	$(SERV_BIN2) +fw0=$(SERV_DIR)/fw/producer-pico.hex +fw1=$(SERV_DIR)/fw/consumer-serv.hex \
 	    --max-cycles $(SERV_MAX_CYCLES) --stall-core -1 --label serv-pair-bench \
 	    --report $(REPORTS)/serv_pair_bench.json

@@ -48,12 +48,12 @@ endif
 sim: $(SIM_BIN) $(foreach b,$(PB_BOARDS),$(SIM_FWDIR)/$(b).hex) $(SIM_SCHED)/tb_plan.txt ## main demonstration: the robot (SIM_CYCLES=, FAULT_RATE=, BURST=, CRASH=board@cycle, DRIFT=, TRACE=0|1, SIM_DESC=)
 	@test -f $(SIM_DESC) || { echo "sim: no description $(SIM_DESC)"; exit 2; }
 	@mkdir -p $(SIM_DIR) $(REPORTS)
+	@echo "sim: writes report $(REPORTS)/sim.json, picture $(SIM_DIR)/ages.svg$(if $(filter 1,$(TRACE)), wave $(SIM_DIR)/mobot.vcd); the last line is the verdict"
 	$(SIM_BIN) $(call pb_args,$(SIM_SCHED),$(SIM_FWDIR),$(SIM_FWDIR)/radar.hex,$(SIM_FWDIR)/navigation.hex) \
 	    --cycles $(SIM_CYCLES) --seed $(SEED) --stall $(STALL) --fault-rate $(FAULT_RATE) $(if $(BURST),--burst $(BURST)) \
 	    $(if $(CRASH),--crash $(CRASH)) $(if $(DRIFT),--drift-ppm $(DRIFT)) --label sim --report $(REPORTS)/sim.json --ages $(SIM_DIR)/ages.csv \
 	    $(if $(filter 1,$(TRACE)),--trace $(SIM_DIR)/mobot.vcd --trace-from $(TRACE_FROM) --trace-cycles $(TRACE_CYCLES))
 	@$(PYTHON) sim/plot_ages.py $(SIM_DIR)/ages.csv $(REPORTS)/sim.json $(SIM_DIR)/ages.svg
-	@echo "sim: report $(REPORTS)/sim.json, picture $(SIM_DIR)/ages.svg$(if $(filter 1,$(TRACE)), wave $(SIM_DIR)/mobot.vcd)"
 
 # Whole-system simulation speed, Verilator against Icarus Verilog (one run each).
 SIM_ICARUS  := $(PB_DIR)/icarus/pico_boards_tb.vvp
@@ -63,12 +63,12 @@ $(SIM_ICARUS): $(PB_RTL) $(RTL_INC) sim/pico_boards_tb.v $(PICO_RV32_V)
 	iverilog -g2005 $(VLIB) -y sim -s pico_boards_tb -o $@ $(PICO_RV32_V) sim/pico_boards_tb.v
 BENCHES += bench-sim-speed
 .PHONY: bench-sim-speed
-bench-sim-speed: $(PB_BIN) $(SIM_ICARUS) $(PB_FW) $(PB_SCHED)/tb_plan.txt
+bench-sim-speed: $(PB_BIN) $(SIM_ICARUS) $(PB_FW) $(PB_SCHED)/tb_plan.txt ## [bench] whole-system simulation speed, Verilator against Icarus
 	$(PYTHON) sim/bench_speed.py --report $(REPORTS)/sim_speed.json \
 	    --verilator-cycles 2000000 --verilator "$(PB_BIN) $(PB_FW_ARGS) --cycles 2000000 --progress 0 --label bench" \
 	    --icarus-cycles 40000 --icarus "vvp -n $(SIM_ICARUS) $(filter +%,$(PB_FW_ARGS)) +cycles=40000"
 
-# Local time (issue 13 section 4, docs/robot.md "Local time between updates"): the robot with
+# Local time (docs/robot.md "Local time between updates"): the robot with
 # every board syncing c-driver/alb_clock.c on GlobalTime and reporting its
 # estimates ($(PB_DIR)/mobot3/fw-clock/, tools/mk/pico_boards.mk); the check
 # "clock" of sim/mobot_sim.cpp bounds each board's error against the
@@ -119,8 +119,20 @@ $(CLOCK_UNIT)/test_clock-%: tb/clock/test_clock.c tb/clock/port/alb_port_impl.h 
 	@mkdir -p $(@D)
 	$(DRV_HOST_CC) $(DRV_CFLAGS) -O2 $(if $(filter norate,$*),-DALB_CLOCK_NO_RATE) -Itb/clock/port -Ic-driver -o $@ \
 	    tb/clock/test_clock.c c-driver/alb_clock.c
-TESTS += clock-unit clock-unit-negative
-.PHONY: test-clock-unit test-clock-unit-negative
+# alb_clock.c built with the memory-mapped port but without ALB_LOCAL_TIMER_ADDR
+# must stop with the #error that names the macro (not an implicit declaration).
+TESTS += clock-unit clock-unit-negative clock-no-timer
+.PHONY: test-clock-unit test-clock-unit-negative test-clock-no-timer
+test-clock-no-timer: c-driver/alb_clock.c c-driver/alb_clock.h $(DRV_HDRS)
+	@mkdir -p $(CLOCK_UNIT)
+	@tools/run_test.sh clock-no-timer bash -c 'if $(DRV_HOST_CC) $(DRV_CFLAGS) -Ic-driver -Ic-driver/port/mmio -c \
+	    -o $(CLOCK_UNIT)/no-timer.o c-driver/alb_clock.c > $(CLOCK_UNIT)/no-timer.log 2>&1; then \
+	    echo "expected alb_clock.c without ALB_LOCAL_TIMER_ADDR to fail to compile, it compiled"; exit 1; fi; \
+	    if grep -q "#error.*ALB_LOCAL_TIMER_ADDR" $(CLOCK_UNIT)/no-timer.log && \
+	       ! grep -q "implicit" $(CLOCK_UNIT)/no-timer.log; then \
+	    echo "clock-no-timer: stops with: $$(grep -o "#error.*ALB_LOCAL_TIMER_ADDR[^,]*" $(CLOCK_UNIT)/no-timer.log | head -n 1)"; \
+	    else echo "expected an #error naming ALB_LOCAL_TIMER_ADDR and no implicit declaration, got:"; \
+	    head -n 5 $(CLOCK_UNIT)/no-timer.log; exit 1; fi'
 test-clock-unit: $(CLOCK_UNIT)/test_clock-rate $(CLOCK_OBJS)
 	@tools/run_test.sh clock-unit $<
 test-clock-unit-negative: $(CLOCK_UNIT)/test_clock-norate
@@ -128,7 +140,7 @@ test-clock-unit-negative: $(CLOCK_UNIT)/test_clock-norate
 	    if [ $$rc -eq 1 ] && tail -n 1 $<.log | grep -q "failed$$" && ! tail -n 1 $<.log | grep -q " 0 failed$$"; then \
 	    echo "clock-unit-negative: caught (no rate correction fails the unit test)"; else echo "NOT CAUGHT"; exit 1; fi'
 
-# Import termination (issue 13 section 2, docs/robot.md "Import termination"):
+# Import termination (docs/robot.md "Import termination"):
 # sim/mobot3.toml and sim/mobot3_possync.toml give every board's core
 # ([board.<name>]), so the compiler bounds each three-buffer Import
 # (report.txt, ALB_<N>_IMPORT_MAX_*), and every robot run (test-pico-boards*,

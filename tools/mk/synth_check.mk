@@ -19,6 +19,6 @@ test-dpram-bram-negative:
 	    --file tb/dpram/dpram_no_arbitration.v --require-bram --expect-fail ice40
 
 BENCHES += synth-dpram
-synth-dpram: ## LUT/FF/BRAM figures of the RAM on iCE40, ECP5, xc7 (Yosys)
+synth-dpram: ## [fpga] LUT/FF/BRAM figures of the RAM on iCE40, ECP5, xc7 (Yosys)
 	$(SYNTH_REPORT) albatross_dpram --file $(subst $(space),$(comma),$(strip $(CORE_dpram))) \
 	    --report $(REPORTS)/synth_albatross_dpram.json

@@ -95,7 +95,7 @@ test-system-faults-20-burst-60: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,faults-20-burst-60) --plan $(SYS_RIGID) --fault-rate 0.2 --burst 60
 test-system-faults-20-burst-60-noredundancy: $(SYS_BIN) $(SYS_NORED)/tb_plan.txt
 	@$(call sys_run,faults-20-burst-60-noredundancy) --plan $(SYS_NORED) --fault-rate 0.2 --burst 60
-# A known limit, kept visible (issue 15): at 30 % and 50 % independent faults
+# A known limit, kept visible: at 30 % and 50 % independent faults
 # per access the unchanged controller never delivers RadarMap and/or Status to
 # board 2 (a destination is dropped for the rest of its slot after two failed
 # accesses).  These pass while exactly that happens -- no checker violation,
@@ -106,7 +106,7 @@ test-system-faults-30-expect-fail: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,faults-30-expect-fail) --plan $(SYS_RIGID) --fault-rate 0.3 $(SYS_XFAIL)
 test-system-faults-50-expect-fail: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,faults-50-expect-fail) --plan $(SYS_RIGID) --fault-rate 0.5 $(SYS_XFAIL)
-# Issue 15 §2: the robot planned for the rate it meets (--faults; retry
+# The robot planned for the rate it meets (--faults; retry
 # budgets and the drop run K in ROM H2 from the hypothesis, docs/compiler.md
 # "Fault hypothesis"): 20 and 30 % independent faults planned for probability
 # 1 - 1e-9 (K = 16, 21), 50 % for 0.99 (the robot's 50 us channels cannot

@@ -1,5 +1,5 @@
 # tools/mk/system_fault_rates.mk -- faults at their true rate, measured against
-# the plan the compiler made for them (issue 15 section 3; docs/verification.md
+# the plan the compiler made for them (docs/verification.md
 # "Faults at their true rate").  Named to sort after system.mk and
 # pico_boards.mk (tools/mk/*.mk are read in sorted order): it uses SYS_BIN,
 # PB_BIN and pb_args.

@@ -166,7 +166,7 @@ BENCHES += bench-tb
 bench-tb: $(TB)
 	$(TB) bench --imports 300000 --seed $(SEED) --report $(REPORTS)/bench_tb.json
 
-# The figure of issue 13: accesses per Import beyond the payload against the
+# The figure of the termination bound: accesses per Import beyond the payload against the
 # writer:reader speed ratio (held fixed, 1:100 .. 100:1), both kinds, checkers
 # on: build/reports/import_accesses_by_ratio.{json,svg}.  About 5 s of CPU.
 BENCHES += bench-import-accesses

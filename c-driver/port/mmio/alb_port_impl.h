@@ -44,6 +44,7 @@ static inline void alb_fence(void)
  * register at ALB_LOCAL_TIMER_ADDR, which the target's build defines (the
  * soft-core boards: soc/firmware/board.h BOARD_TIMER, 0x2000_0040). */
 #ifdef ALB_LOCAL_TIMER_ADDR
+#define ALB_PORT_HAS_LOCAL_TIME 1
 static inline uint32_t alb_local_time(void)
 {
     return *(volatile const uint32_t *)(uintptr_t)(ALB_LOCAL_TIMER_ADDR);

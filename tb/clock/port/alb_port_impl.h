@@ -9,6 +9,7 @@
 
 extern uint32_t unit_local_now;
 
+#define ALB_PORT_HAS_LOCAL_TIME 1
 static inline uint32_t alb_local_time(void)
 {
     return unit_local_now;

@@ -54,6 +54,7 @@ uint32_t tb_local_time(void);
 #ifdef __cplusplus
 }
 #endif
+#define ALB_PORT_HAS_LOCAL_TIME 1
 static inline uint32_t alb_local_time(void)
 {
     return tb_local_time();

@@ -1,2 +1,2 @@
-# Mutant: Import never reports New (seed figure 3: Import:= New dropped).
+# Mutant: Import never reports New (the paper, figure 3: Import:= New dropped).
 s/result = ALB_NEW;/result = ALB_OLD;/
