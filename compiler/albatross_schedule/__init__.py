@@ -1,4 +1,4 @@
-"""albatross_schedule -- the ALBATROSS schedule compiler (seed 3.3, 4.a, 4.d).
+"""albatross_schedule -- the ALBATROSS schedule compiler (the paper, sections 3.3, 4.a, 4.d).
 
     albatross-schedule DESCRIPTION.toml -o DIR     (pip install ./compiler; make deps)
 

@@ -1,4 +1,4 @@
-"""The fault hypothesis (issue 15 section 2) and what the plan derives from it.
+"""The fault hypothesis and what the plan derives from it.
 
 The description's [faults] table states the faults the plan must tolerate:
 a per-access fault probability `rate` (p) and a mean burst length
@@ -43,7 +43,7 @@ from .model import ScheduleError, one_minus
 
 FAULT_KEYS = {"rate", "mean_burst", "probability"}
 DROP_RUN_MAX = 255           # H2[7:0]: the drop run K
-DROP_RUN_DEFAULT = 2         # the rule before issue 15 (and without a hypothesis)
+DROP_RUN_DEFAULT = 2         # the rule without a fault hypothesis (and without a hypothesis)
 RETRIES_MAX = 4095           # a sanity cap on a slot's retry budget
 MAX_SPLIT = 6                # per-slot miss targets eps^(1/j), j = 1..MAX_SPLIT
 

@@ -1,5 +1,5 @@
 """The channel kinds (layouts) of a COPY channel: the paper's three-buffer
-channel and the wait-free four-slot channel (issue 13; Simpson 1990, mapped
+channel and the wait-free four-slot channel (Simpson 1990, mapped
 onto single-writer bytes).  Both are defined in rtl/albatross_contract.toml:
 [layout] (three buffers) and [layout.four_slot] (a fourth buffer, the
 producer's slot bytes Slot0/Slot1 at offsets 2 and 3, both initially 0),

@@ -140,7 +140,7 @@ class Channel:
 
 @dataclasses.dataclass
 class BoardTiming:
-    """A board's three-buffer Import loop (issue 13 section 2), in controller clocks:
+    """A board's three-buffer Import loop, in controller clocks:
     t = the longest time between two loads of Actual in the loop, v = from the load
     whose value is stored into ReadLocked to the next load.  source says where
     the figures come from (a core type of the table, or the description)."""

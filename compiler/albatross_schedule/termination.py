@@ -1,5 +1,4 @@
-"""Compile-time termination bounds of the consumers' Imports (issue 13, section 2;
-the derivation is in docs/compiler.md "Termination bounds").
+"""Compile-time termination bounds of the consumers' Imports (the derivation is in docs/compiler.md "Termination bounds").
 
 Every consumer imports from a destination instance whose producer is the
 controller.  Three-buffer kind: the consumer's loop (load Actual; while it

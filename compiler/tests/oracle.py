@@ -43,7 +43,7 @@ EXAMPLE_FILES = ["mobot3.toml", "mobot3_possync.toml"]
 # channel base; buffer index values; words after a destination value).
 ORACLE_LAYOUT = {"off_actual": 0, "off_readlocked": 1, "off_buffers": 4, "buffer1": 1, "buffers": 3,
                  "taken_at_words": 1}
-# The four-slot kind (issue 13): E0 flag bit 1, a fourth buffer, the producer's
+# The four-slot kind: E0 flag bit 1, a fourth buffer, the producer's
 # slot bytes Slot0/Slot1 at offsets 2 and 3 (both 0 at the start).  Buffer b is
 # pair (b-1)>>1, slot (b-1)&1; buf(p, s) = 1 + 2p + s.
 ORACLE_FOUR_SLOT = {"flag": 2, "buffers": 4, "off_slot": (2, 3), "initial_slot": 0}
@@ -257,7 +257,7 @@ class ControllerModel:
         return 1 + 2 * pair + slot
 
     def import_four_slot(self, st, ram, base, w):
-        """The four-slot consumer's Import (the mapping of issue 13, with the rule
+        """The four-slot consumer's Import (the mapping, with the rule
         test_four_slot_mapping.py shows it needs: reading the buffer read last is
         Old): 1 + W accesses when Actual is the buffer read last, else 3 + W."""
         lay, fs = ORACLE_LAYOUT, ORACLE_FOUR_SLOT

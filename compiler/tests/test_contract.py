@@ -164,7 +164,7 @@ class LayoutOracle(unittest.TestCase):
         self.assertEqual(lay["taken_at_words"], C.taken_at_words)
 
     def test_four_slot_layout(self):
-        """The four-slot mapping of issue 13 (docs/four_slot.md), written out
+        """The four-slot mapping (docs/four_slot.md), written out
         independently: slot bytes at offsets 2 and 3 of the control word, four
         buffers after it, both slot bytes 0 at the start."""
         self.assertEqual(C.fs_control["slot0"].offset, 2)

@@ -1,4 +1,4 @@
-"""The fault hypothesis (issue 15 section 2, docs/compiler.md "Fault hypothesis"):
+"""The fault hypothesis (docs/compiler.md "Fault hypothesis"):
 the compiler's probabilities against a Monte-Carlo simulation of the same
 model, written here independently of compiler/albatross_schedule/faults.py:
 a two-state Markov chain over the controller's bus accesses (after a good

@@ -1,4 +1,4 @@
-"""The four-slot channel kind in the compiler (issue 13, part 1):
+"""The four-slot channel kind in the compiler:
 compiler/examples/four_slot.toml compiled, then its ROM (E0 flag four_slot on
 every entry of the channel, and only there), RAM layout (four buffers),
 RAM images (Actual = ReadLocked = 1, Slot0 = Slot1 = 0), generated C
@@ -25,7 +25,7 @@ import albatross_schedule as S  # noqa: E402
 
 EXAMPLE = os.path.join(REPO, "compiler", "examples", "four_slot.toml")
 DRIVER_H = os.path.join(REPO, "c-driver", "albatross.h")
-# The driver API the generated code calls (issue 13); used only while the
+# The driver API the generated code calls; used only while the
 # driver does not have it yet, so that the generated code is compiled anyway.
 STUB = """/* stub of the issue-13 driver API for compiling generated code only */
 #include "albatross.h"

@@ -1,4 +1,4 @@
-"""An exhaustive check of the four-slot mapping (issue 13) that the compiler's
+"""An exhaustive check of the four-slot mapping that the compiler's
 controller model (oracle.ControllerModel) and RAM images use: every
 interleaving, at the granularity of single RAM accesses, of a producer doing
 N Exports and a consumer doing M Imports on one channel, from the initial

@@ -1,4 +1,4 @@
-"""The channel key four_slot = true (issue 13): a TIME or STATUS channel of the
+"""The channel key four_slot = true: a TIME or STATUS channel of the
 four-slot kind (and a COPY one, the same as kind = "four_slot").  A
 description like the FPGA demo (a SERV sensor importing GlobalTime, whose
 three-buffer Import the controller would overtake) is compiled with

@@ -1,5 +1,4 @@
-"""Compile-time termination bounds of the consumers' Imports (issue 13, section 2;
-docs/compiler.md "Termination bounds"):
+"""Compile-time termination bounds of the consumers' Imports (docs/compiler.md "Termination bounds"):
 
 - the bound itself, 1 + ceil(V / (D - T)) ReadLocked stores when D > T, none
   when D <= T, checked against an exhaustive adversary (the controller
