@@ -37,8 +37,8 @@ VLIB          := -Irtl -y rtl -y soc -y tb/common
 RTL_INC       := $(sort $(wildcard rtl/*.vh))
 # The controller's files: its thin top and the parts it composes.
 CTRL_RTL      := rtl/albatross_controller.v rtl/albatross_sequencer.v rtl/albatross_schedule_rom.v \
-                 rtl/albatross_rom_check.v rtl/albatross_entry_check.v rtl/albatross_import.v \
-                 rtl/albatross_export.v rtl/albatross_export_dest.v rtl/albatross_bus_master.v \
+                 rtl/albatross_rom_check.v rtl/albatross_entry_check.v rtl/albatross_transfer.v \
+                 rtl/albatross_bus_master.v \
                  rtl/albatross_counters.v
 # The shared harness headers (tb/common/: report.h, plan.h, ...) for Verilator-built benches.
 TB_COMMON_INC := -I$(abspath tb/common)

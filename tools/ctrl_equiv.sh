@@ -12,7 +12,7 @@ rev=${1:-main}
 clocks=${2:-2000000}
 out=build/equiv
 # Every controller part of either tree (a part the reference does not have yet is skipped).
-parts="controller sequencer schedule_rom rom_check entry_check import export export_dest bus_master counters"
+parts="controller sequencer schedule_rom rom_check entry_check transfer import export export_dest bus_master counters"
 rm -rf "$out/ref" "$out/obj"
 mkdir -p "$out/ref"
 git archive "$rev" rtl | tar -x -C "$out/ref"

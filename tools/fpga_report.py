@@ -53,9 +53,8 @@ from synth_report import FAMILIES, cell_types, count, write_json  # noqa: E402
 
 # The controller: its thin top and the parts it composes.
 CTRL_FILES = ["rtl/albatross_controller.v", "rtl/albatross_sequencer.v", "rtl/albatross_schedule_rom.v",
-             "rtl/albatross_rom_check.v", "rtl/albatross_entry_check.v", "rtl/albatross_import.v",
-             "rtl/albatross_export.v", "rtl/albatross_export_dest.v", "rtl/albatross_bus_master.v",
-             "rtl/albatross_counters.v"]
+             "rtl/albatross_rom_check.v", "rtl/albatross_entry_check.v", "rtl/albatross_transfer.v",
+             "rtl/albatross_bus_master.v", "rtl/albatross_counters.v"]
 SOC_FILES = ["rtl/albatross_dpram.v", "rtl/albatross_dpram_core.v", "rtl/albatross_wb_cdc.v", "rtl/albatross_bus.v"] + CTRL_FILES + [
              "soc/board_core.v", "soc/pico_core.v", "soc/serv_core.v", "soc/serv_bridge.v", "soc/board_memmap.v",
              "soc/pico_wb_adapter.v", "soc/albatross_system.v", "soc/board_reset.v", "soc/beat_divider.v",
