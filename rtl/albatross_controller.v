@@ -46,12 +46,16 @@
 module albatross_controller #(
     parameter NB         = 4,     // boards on the system bus, 1..16
     parameter ADDR_WIDTH = 10,    // word-address bits of a board RAM, 3..12
-    parameter N_CHAN     = 32,    // channel ids with state and counters, 1..32
+    parameter N_CHAN     = 32,    // channel ids with state and counters, 1..128
     parameter ROM_WORDS  = 1024,  // schedule ROM depth in 32-bit words, at least 12
     parameter ROM_FILE   = "",    // $readmemh image of the ROM; "" leaves it zero (invalid header); simulation: +rom=FILE overrides
     parameter TIMEOUT    = 8,     // clocks of cyc without ack/err before an access fails, 3..60
     parameter POLL       = 16,    // sync mode: clocks from the start of one poll to the next, >= 2
-    parameter TIME_BITS  = 16     // bits of time within a cycle (the compiler's [bus] time_bits), 4..16
+    parameter TIME_BITS  = 16,    // bits of time within a cycle (the compiler's [bus] time_bits), 4..16
+    parameter HAS_STATUS = 1,     // 1: per-channel counters and STATUS words; 0: STATUS entries send zeros
+    parameter HAS_SYNC   = 1,     // 1: position-synchronised mode polls; 0: every cycle is H1 long
+    parameter HAS_ROM_RECHECK = 1, // 1: the background re-check of the ROM; 0: the start-up CRC only
+    parameter HAS_ENTRY_CHECK = 1  // 1: the entry field checks at fetch ("Validation"); 0: none
 ) (
     input  wire                  clk_i,
     input  wire                  rst_i,          // synchronous, active high
@@ -76,10 +80,10 @@ module albatross_controller #(
     localparam AW      = ADDR_WIDTH;
     localparam CH_BITS = (N_CHAN > 1) ? $clog2(N_CHAN) : 1;
     localparam ST_W    = 12 + 8 + 4 + 3 + 32;           // {tried, act, need, rl, taken}
-    // The state RAM has 32 words from N_CHAN = 4 up (Yosys maps a RAM of only
-    // a few words to flip-flops; 32 x 59 bits is block RAM); fewer channels
-    // (the formal harness) keep N_CHAN words.
-    localparam ST_DEPTH = (N_CHAN >= 4) ? 32 : N_CHAN;
+    // The state RAM has at least 32 words from N_CHAN = 4 up (Yosys maps a RAM
+    // of only a few words to flip-flops; 32 x 59 bits is block RAM), a power
+    // of two above 32; fewer channels (the formal harness) keep N_CHAN words.
+    localparam ST_DEPTH = (N_CHAN > 32) ? (1 << CH_BITS) : (N_CHAN >= 4) ? 32 : N_CHAN;
     localparam ST_AW    = (ST_DEPTH > 1) ? $clog2(ST_DEPTH) : 1;
     localparam integer       LAST_CH_I = N_CHAN - 1;
     localparam [CH_BITS-1:0] LAST_CH   = LAST_CH_I[CH_BITS-1:0];
@@ -98,7 +102,7 @@ module albatross_controller #(
     // ------------------------------------------------------------ sequencer
     wire          go, may_access, sync_entry, poll_cyc, cycle_start, four;
     wire [1:0]    kind;
-    wire [4:0]    chan5;
+    wire [6:0]    chan7;
     wire [2:0]    nd;
     wire [11:0]   words;
     wire [3:0]    src_board, poll_board;
@@ -115,9 +119,10 @@ module albatross_controller #(
     wire          cnt_ready;
 
     albatross_sequencer #(.NB(NB), .ADDR_WIDTH(AW), .N_CHAN(N_CHAN), .ROM_WORDS(ROM_WORDS), .ROM_FILE(ROM_FILE),
-                          .TIME_BITS(TIME_BITS), .TIMEOUT(TIMEOUT), .POLL(POLL)) u_seq (
+                          .TIME_BITS(TIME_BITS), .TIMEOUT(TIMEOUT), .POLL(POLL), .HAS_SYNC(HAS_SYNC),
+                          .HAS_ROM_RECHECK(HAS_ROM_RECHECK), .HAS_ENTRY_CHECK(HAS_ENTRY_CHECK)) u_seq (
         .clk_i(clk_i), .rst_i(rst_i), .enable_i(ready_q && cnt_ready),
-        .go_o(go), .kind_o(kind), .chan_o(chan5), .nd_o(nd), .words_o(words),
+        .go_o(go), .kind_o(kind), .chan_o(chan7), .nd_o(nd), .words_o(words),
         .src_board_o(src_board), .src_base_o(src_base), .dst_board_o(dst_board), .dst_base_o(dst_base),
         .slot_time_o(slot_time), .sync_entry_o(sync_entry), .four_o(four), .may_access_o(may_access), .slot_done_i(slot_end),
         .poll_cyc_o(poll_cyc), .poll_board_o(poll_board), .poll_adr_o(poll_adr), .poll_dat_i(bus_rdat),
@@ -125,7 +130,7 @@ module albatross_controller #(
         .time_o(time_o), .cycle_o(cycle_start), .error_o(error_o), .rom_errors_o(rom_errors_o), .cycles_o(cycles),
         .drop_run_o(drop_run));
 
-    wire [CH_BITS-1:0] chan   = chan5[CH_BITS-1:0];
+    wire [CH_BITS-1:0] chan   = chan7[CH_BITS-1:0];
     wire [3:0]         active = (nd == 3'd1) ? 4'b0001 : (nd == 3'd2) ? 4'b0011 : (nd == 3'd3) ? 4'b0111 : 4'b1111;
     wire               k_copy = kind == ALB_KIND_COPY[1:0];
     wire               k_time = kind == ALB_KIND_TIME[1:0];
@@ -243,12 +248,23 @@ module albatross_controller #(
     wire [3:0] need_end = tr_exp ? tr_need : st_need;
     wire [2:0] abandons = popcount4(need_end & active);
     wire [2:0] corrupts = slot_end ? tr_corrupt : 3'd0;
-    albatross_counters #(.N_CHAN(N_CHAN), .INDEX_WIDTH(12)) u_counters (
-        .clk_i(clk_i), .rst_i(rst_i), .ready_o(cnt_ready),
-        .retry_i(fail), .transfers_i(tr_xfers), .abandoned_i(abandons), .corrupt_i(corrupts),
-        .commit_i(slot_end), .chan_i(chan5), .busy_o(cnt_busy),
-        .rom_errors_i(rom_errors_o), .cycles_i(cycles),
-        .status_index_i(tr_index), .status_o(status_word), .status_valid_o(status_valid));
+    generate
+        if (HAS_STATUS != 0) begin : g_counters
+            albatross_counters #(.N_CHAN(N_CHAN), .INDEX_WIDTH(12)) u_counters (
+                .clk_i(clk_i), .rst_i(rst_i), .ready_o(cnt_ready),
+                .retry_i(fail), .transfers_i(tr_xfers), .abandoned_i(abandons), .corrupt_i(corrupts),
+                .commit_i(slot_end), .chan_i(chan7), .busy_o(cnt_busy),
+                .rom_errors_i(rom_errors_o), .cycles_i(cycles),
+                .status_index_i(tr_index), .status_o(status_word), .status_valid_o(status_valid));
+        end else begin : g_no_counters
+            // No counters: a STATUS entry publishes zeros.
+            assign cnt_ready    = 1'b1;
+            assign cnt_busy     = 1'b0;
+            assign status_word  = 32'd0;
+            assign status_valid = 1'b1;
+            wire unused_cnt = &{1'b0, fail, tr_xfers, abandons, corrupts, cycles, tr_index};
+        end
+    endgenerate
 
     // Signals kept for waveforms and proofs only.
     wire unused = &{1'b0, fails_total, overlap, cycle_start, cnt_busy, r_ack[1], r_err[1]};

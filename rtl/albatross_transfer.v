@@ -137,6 +137,7 @@ module albatross_transfer #(
     (* fsm_encoding = "none" *)
     reg [3:0]  state_q;
     reg        stb_q, retry_q, drop_q, done_q;
+    reg        early_q;               // the slot ended while a source load was on the bus
     reg [7:0]  run_q;
     reg [1:0]  d_q;
     reg [11:0] k_q;
@@ -369,6 +370,15 @@ module albatross_transfer #(
                 else if (state_q == S_DST_FIN) finish;
             end
         end
+        // A source word load on the bus when the deadline check fails ends
+        // the slot there (done_o), as the Export engine waiting for that word
+        // did; the load itself finishes (ack, or err and no retry) silently.
+        if (early_q) done_q <= 1'b0;
+        if (!rst_i && !go_i && state_q == S_SRC_WORD && !may_access_i && !early_q) begin
+            done_q  <= 1'b1;
+            early_q <= 1'b1;
+        end
+        if (rst_i || go_i) early_q <= 1'b0;
     end
 
     // ------------------------------------------------------------ per-destination fields

@@ -31,31 +31,22 @@ from synth_report import FAMILIES, write_json  # noqa: E402
 
 # name: (what is tied off, [(file, exact text, replacement), ...])
 EDITS = {
-    # The counters are read only through STATUS words, so Yosys drops them too.
-    "status": ("STATUS entries send zeros: no per-channel counters, no STATUS word 0", [
-        ("rtl/albatross_counters.v", "assign status_o       = zero_q ? {rom_errors_i, cycles_i} : rd_q;",
-         "assign status_o       = 32'd0;"),
+    # Each optional feature is a parameter of albatross_controller (default 1);
+    # a variant sets its default to 0.
+    "status": ("STATUS entries send zeros: no per-channel counters, no STATUS word 0 (HAS_STATUS = 0)", [
+        ("rtl/albatross_controller.v", "parameter HAS_STATUS = 1,", "parameter HAS_STATUS = 0,"),
     ]),
-    "sync": ("position-synchronised mode never polls", [
-        ("rtl/albatross_sequencer.v", "if (smode_q && sync_ok_q && pc_q == POLL_LAST) poll_q <= 1'b1;", ""),
+    "sync": ("position-synchronised mode never polls (HAS_SYNC = 0)", [
+        ("rtl/albatross_controller.v", "parameter HAS_SYNC   = 1,", "parameter HAS_SYNC   = 0,"),
     ]),
-    "background": ("no background re-check of the ROM (the start-up CRC kept)", [
-        ("rtl/albatross_sequencer.v", "wire               bg_on     = state_q == ST_CHECK || state_q == ST_WAIT ||\n"
-         "                                   state_q == ST_TRANSFER || state_q == ST_CYCLE_END;",
-         "wire               bg_on     = state_q == ST_CHECK;"),
+    "background": ("no background re-check of the ROM, the start-up CRC kept (HAS_ROM_RECHECK = 0)", [
+        ("rtl/albatross_controller.v", "parameter HAS_ROM_RECHECK = 1,", "parameter HAS_ROM_RECHECK = 0,"),
     ]),
-    "rom_checks": ("no field checks of the entries at fetch (the CRC kept)", [
-        ("rtl/albatross_entry_check.v", "3'd1:    bad_o = e0_bad || bad_mark_i;", "3'd1:    bad_o = bad_mark_i;"),
-        ("rtl/albatross_entry_check.v", "3'd2:    bad_o = e2_bad;", "3'd2:    bad_o = 1'b0;"),
-        ("rtl/albatross_entry_check.v", "3'd3:    bad_o = kind_i == ALB_KIND_COPY[1:0] && !place_ok(rom_i[15:0], e3_i);",
-         "3'd3:    bad_o = 1'b0;"),
-        ("rtl/albatross_entry_check.v", "3'd4:    bad_o = !lo_ok || (nd_i >= 3'd2 && !hi_ok);", "3'd4:    bad_o = 1'b0;"),
-        ("rtl/albatross_entry_check.v", "3'd5:    bad_o = (nd_i >= 3'd3 && !lo_ok) || (nd_i == 3'd4 && !hi_ok);",
-         "3'd5:    bad_o = 1'b0;"),
+    "rom_checks": ("no field checks of the entries at fetch, the CRC kept (HAS_ENTRY_CHECK = 0)", [
+        ("rtl/albatross_controller.v", "parameter HAS_ENTRY_CHECK = 1 ", "parameter HAS_ENTRY_CHECK = 0 "),
     ]),
-    "destinations": ("one destination per entry instead of up to four", [
+    "destinations": ("one destination per entry instead of up to four (a measurement: ND read as 1)", [
         ("rtl/albatross_sequencer.v", "nd_q    <= e0_nd;", "nd_q    <= 3'd1;"),
-        ("rtl/albatross_controller.v", ".TAKEN_AT(1), .DESTS(4), .DROP(1)", ".TAKEN_AT(1), .DESTS(1), .DROP(1)"),
     ]),
 }
 
