@@ -1,4 +1,5 @@
-// albatross_controller -- the ALBATROSS communication controller (seed 3.2-3.4).
+// albatross_controller -- the ALBATROSS communication controller (paper
+// sections 3.2-3.4).
 //
 // The only master of the system bus (Wishbone B4 classic, address {board[3:0],
 // word}).  It runs the cyclic schedule of a ROM ($readmemh ROM_FILE; in
@@ -9,38 +10,34 @@
 //                         holds albatross_rom_check (start-up and background
 //                         CRC check) and albatross_entry_check (field checks
 //                         at fetch)
-//   albatross_import      the source's Import (seed figure 3)
-//   albatross_export      the destinations' Export (figure 4), to up to 4
-//                         destinations in lockstep
-//   albatross_bus_master  the one bus port: board field, timeout, arbitration
+//   albatross_transfer    the one transfer datapath: the source's Import
+//                         (figure 3), the Export (figure 4) to up to 4
+//                         destinations, TIME and STATUS, on one requester
+//   albatross_bus_master  the one bus port: board field, timeout; its
+//                         requesters are the datapath (0) and the poll (2)
 //   albatross_counters    per-channel counters and the STATUS words
+//                         (HAS_STATUS)
 // Rules:
 //   * Per-channel state (one RAM word per channel id, read while the entry is
-//     fetched, written back when its slot ends; cleared after reset, never
-//     reset): the source ReadLocked copy (0 unknown; four-slot: L, the buffer
-//     read last), the destinations that still need the current value, each
-//     destination's Actual copy (0 unknown; four-slot: not used) and the
-//     buffer of its failed Actual store (0 none), and the current value's
-//     taken_at.
-//   * Four-slot (E0 flag FOUR_SLOT, any kind but SYNC): both engines run the
-//     four-slot side for the entry (the source's Import, every destination's
-//     Export); the glue is the same.
-//   * COPY: the Import runs; when it has chosen (the ack clock of its last
-//     Actual load) the destinations that need the value are those in need,
-//     or all of them if the value is New (taken_at := time_o of that clock).
-//     If none does, the Import ends; else the Export starts in that clock and
-//     the Import streams the value to it word by word (one source load, then
-//     one store per destination).  TIME and STATUS start the Export at go
-//     with every destination and a fresh value: TIME's is the slot's nominal
-//     start (value and taken_at), STATUS's the counters' words.
-//   * A destination published by the Export leaves need; at the slot's end
-//     each destination still in need counts as abandoned, and a later slot of
-//     the channel delivers it.  A value is published to a destination at most
-//     once, so redundant slots never show one value as New twice.
+//     fetched; cleared after reset, never reset): the source ReadLocked copy
+//     (0 unknown; four-slot: L, the buffer read last), the destinations that
+//     still need the current value, each destination's Actual copy (0
+//     unknown; four-slot: not used) and the buffer of its failed Actual
+//     store (0 none), all written back when the slot ends; and the current
+//     value's taken_at, written with time_o in the clock a New value is
+//     chosen (the datapath's taken_at stores read it back from the RAM).
+//   * The datapath's rules (order, retries, drop, cut-off) are in
+//     rtl/albatross_transfer.v.  A destination it published leaves need; at
+//     the slot's end each destination still in need counts as abandoned, and
+//     a later slot of the channel delivers it.  A value is published to a
+//     destination at most once, so redundant slots never show one value as
+//     New twice.
+//   * Optional parts (parameters HAS_*, default 1): the counters and STATUS
+//     words, the sync-mode poll, the background ROM re-check, the entry field
+//     checks.  With all four 0 this is the core configuration.
 //   * No bus access is ever made while the ROM is invalid (error_o): the
 //     sequencer then never starts a slot or a poll.
-// Adding a channel kind touches the engines and the sequencer's decode, and
-// the word-source multiplexer below.
+// Adding a channel kind touches the datapath and the sequencer's decode.
 `default_nettype none
 
 module albatross_controller #(

@@ -246,15 +246,12 @@ module albatross_transfer #(
             serve_q  <= start_need;
             need_q   <= start_need;
             run_q    <= 8'd0;
-            k_q      <= 12'd0;
             begin_access((st_known[first_in] || four_i) ? S_DST_RL : S_DST_ACT, first_in);
         end
     endtask
     // Take word k_q from the stream: store it to the first destination.
     task take_word;
         begin
-            word_q <= copy_i ? dat_i : status_i;      // (TIME: slot_time_i at the output)
-            k_q    <= k_q + 12'd1;
             begin_access(S_DST_WORD, first_d);
         end
     endtask
@@ -418,6 +415,20 @@ module albatross_transfer #(
             end
         end
     endgenerate
+
+    // ------------------------------------------------------------ the word stored
+    // word_q takes the word the destinations' stores write (take_word's
+    // clock): the source word in its load's ack clock, a STATUS word when
+    // it is taken (TIME's value is slot_time_i itself).  One enable, one
+    // two-way multiplexer.
+    wire take_en = (nrm && ack && state_q == S_SRC_WORD) ||
+                   (nrm && word_ok && (state_q == S_WAIT || (adv && dst && want)));
+    always @(posedge clk_i) if (take_en) word_q <= copy_i ? dat_i : status_i;
+    // k_q: the index of the next word to take; 0 when an Export starts.
+    always @(posedge clk_i) begin
+        if (e_start) k_q <= 12'd0;
+        else if (take_en) k_q <= k_q + 12'd1;
+    end
 
     // ------------------------------------------------------------ the access
     wire          src    = !dst;
