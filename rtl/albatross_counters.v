@@ -25,7 +25,7 @@
 `default_nettype none
 
 module albatross_counters #(
-    parameter N_CHAN      = 32, // channels with counters, 1..32
+    parameter N_CHAN      = 32, // channels with counters, 1..128
     parameter INDEX_WIDTH = 12  // bits of status_index_i
 ) (
     input  wire                   clk_i,
@@ -37,7 +37,7 @@ module albatross_counters #(
     input  wire [2:0]             abandoned_i,    // destinations abandoned (0..4), with commit_i
     input  wire [2:0]             corrupt_i,      // corrupt control bytes now (0..5)
     input  wire                   commit_i,       // the slot is over: add its deltas to chan_i
-    input  wire [4:0]             chan_i,         // channel of the slot (sampled with commit_i)
+    input  wire [6:0]             chan_i,         // channel of the slot (sampled with commit_i)
     output wire                   busy_o,         // a commit is running
     // STATUS words
     input  wire [15:0]            rom_errors_i,
@@ -52,7 +52,7 @@ module albatross_counters #(
     localparam [CB-1:0]   LAST   = LAST_I[CB-1:0];
 
     generate
-        if (N_CHAN < 1 || N_CHAN > 32 || INDEX_WIDTH < CB + 1) begin : g_param_check
+        if (N_CHAN < 1 || N_CHAN > 128 || INDEX_WIDTH < CB + 1) begin : g_param_check
             albatross_counters_parameter_out_of_range u_error ();
         end
     endgenerate
@@ -72,7 +72,7 @@ module albatross_counters #(
     reg [2:0]    xfer_q, aband_q;   // the committed slot's totals
     reg [3:0]    d_corrupt_q;
     reg          zero_q;        // status index 0 was presented
-    reg [4:0]    chan_q;        // the channel being committed
+    reg [6:0]    chan_q;        // the channel being committed
 
     function [15:0] sat_add;
         input [15:0] a;
@@ -90,7 +90,7 @@ module albatross_counters #(
 
     // Channel words; the commit uses the read port in phases 1 and 2.
     /* verilator lint_off UNUSEDSIGNAL */
-    wire [5:0]    w_wide = {chan_q, 1'b0};
+    wire [7:0]    w_wide = {chan_q, 1'b0};
     wire [CB-1:0] w0 = w_wide[CB-1:0];
     wire [CB-1:0] w1 = w0 | {{(CB-1){1'b0}}, 1'b1};
     wire [INDEX_WIDTH-1:0] idx_m1 = status_index_i - 1'b1;   // RAM word of STATUS word k

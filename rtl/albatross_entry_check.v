@@ -18,9 +18,10 @@
 module albatross_entry_check #(
     parameter NB         = 4,    // boards on the system bus, 1..16
     parameter ADDR_WIDTH = 10,   // word-address bits of a board RAM, 3..12
-    parameter N_CHAN     = 32,   // channel ids, 1..32
+    parameter N_CHAN     = 32,   // channel ids, 1..128
     parameter TIME_BITS  = 16,   // bits of time within a cycle, 4..31
-    parameter MIN_LEN    = 17    // shortest valid slot in clocks (fetch and deadline margin)
+    parameter MIN_LEN    = 17,   // shortest valid slot in clocks (fetch and deadline margin)
+    parameter HAS_ENTRY_CHECK = 1 // 1: the field checks; 0: only the background check's bad marks
 ) (
     input  wire [2:0]           step_i,       // FETCH clock 1..5 (others: no check)
     input  wire [31:0]          rom_i,        // the ROM word of this clock
@@ -40,6 +41,8 @@ module albatross_entry_check #(
 );
 
 `include "albatross_contract.vh"
+
+    localparam CHK = HAS_ENTRY_CHECK != 0;
 
     localparam TB = TIME_BITS;
     localparam integer W_STATUS_I = 2 * N_CHAN + 1;
@@ -93,11 +96,11 @@ module albatross_entry_check #(
     wire        hi_ok  = place_ok(rom_i[31:16], e3d);
     always @* begin
         case (step_i)
-            3'd1:    bad_o = e0_bad || bad_mark_i;
-            3'd2:    bad_o = e2_bad;
-            3'd3:    bad_o = kind_i == ALB_KIND_COPY[1:0] && !place_ok(rom_i[15:0], e3_i);
-            3'd4:    bad_o = !lo_ok || (nd_i >= 3'd2 && !hi_ok);
-            3'd5:    bad_o = (nd_i >= 3'd3 && !lo_ok) || (nd_i == 3'd4 && !hi_ok);
+            3'd1:    bad_o = (CHK && e0_bad) || bad_mark_i;
+            3'd2:    bad_o = CHK && e2_bad;
+            3'd3:    bad_o = CHK && kind_i == ALB_KIND_COPY[1:0] && !place_ok(rom_i[15:0], e3_i);
+            3'd4:    bad_o = CHK && (!lo_ok || (nd_i >= 3'd2 && !hi_ok));
+            3'd5:    bad_o = CHK && ((nd_i >= 3'd3 && !lo_ok) || (nd_i == 3'd4 && !hi_ok));
             default: bad_o = 1'b0;
         endcase
     end

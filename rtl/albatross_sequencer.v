@@ -48,12 +48,15 @@
 module albatross_sequencer #(
     parameter NB         = 4,    // boards on the system bus, 1..16
     parameter ADDR_WIDTH = 10,   // word-address bits of a board RAM, 3..12
-    parameter N_CHAN     = 32,   // channel ids, 1..32
+    parameter N_CHAN     = 32,   // channel ids, 1..128
     parameter ROM_WORDS  = 1024, // schedule ROM depth in 32-bit words, >= 12
     parameter ROM_FILE   = "",   // $readmemh image; simulation: +rom=FILE overrides
     parameter TIME_BITS  = 16,   // bits of time within a cycle, 4..31
     parameter TIMEOUT    = 8,    // clocks before a silent access fails (the deadline margin)
-    parameter POLL       = 16    // sync mode: clocks from one poll's start to the next, >= 2
+    parameter POLL       = 16,   // sync mode: clocks from one poll's start to the next, >= 2
+    parameter HAS_SYNC   = 1,    // 1: position-synchronised mode polls; 0: every cycle is H1 long
+    parameter HAS_ROM_RECHECK = 1, // 1: the background re-check of the ROM; 0: the start-up CRC only
+    parameter HAS_ENTRY_CHECK = 1  // 1: the entry field checks at fetch; 0: none
 ) (
     input  wire                    clk_i,
     input  wire                    rst_i,          // synchronous, active high
@@ -61,7 +64,7 @@ module albatross_sequencer #(
     // slot command
     output wire                    go_o,           // one clock: start the entry's transfer
     output wire [1:0]              kind_o,         // ALB_KIND_* (low bits)
-    output wire [4:0]              chan_o,         // channel id (valid from FETCH clock 2 on)
+    output wire [6:0]              chan_o,         // channel id (valid from FETCH clock 2 on)
     output wire [2:0]              nd_o,           // destinations 1..4
     output wire [11:0]             words_o,        // W
     output wire [3:0]              src_board_o,
@@ -112,7 +115,7 @@ module albatross_sequencer #(
 
     generate
         if (NB < 1 || NB > 16 || ADDR_WIDTH < 3 || ADDR_WIDTH > ALB_ROM_PLACE_BASE_W || N_CHAN < 1 ||
-            N_CHAN > 32 || ROM_WORDS < 12 || TIME_BITS < 4 || TIME_BITS > 31 || TIMEOUT < 2 || POLL < 2 ||
+            N_CHAN > 128 || ROM_WORDS < 12 || TIME_BITS < 4 || TIME_BITS > 31 || TIMEOUT < 2 || POLL < 2 ||
             ALB_ROM_HEADER_WORDS != 4 || ALB_ROM_ENTRY_WORDS != 8) begin : g_param_check
             albatross_sequencer_parameter_out_of_range u_error ();
         end
@@ -162,7 +165,7 @@ module albatross_sequencer #(
     reg [1:0]          kind_q;
     reg                sflag_q;
     reg                four_q;        // E0 flag FOUR_SLOT
-    reg [4:0]          chan_q;
+    reg [6:0]          chan_q;
     reg [2:0]          nd_q;
     reg [11:0]         w_q;
     reg [13:0]         e3_q;          // 3 * W (four-slot: 4 * W)
@@ -184,8 +187,8 @@ module albatross_sequencer #(
     wire               start_now = state_q == ST_WAIT && rel_q >= start_q;   // clock S (late only after an overrun)
     wire               main_rom;      // a main read: the background check waits
     wire [31:0]        rom_q;         // the word read in the previous clock
-    wire               bg_on     = state_q == ST_CHECK || state_q == ST_WAIT ||
-                                   state_q == ST_TRANSFER || state_q == ST_CYCLE_END;
+    wire               bg_on     = state_q == ST_CHECK || (HAS_ROM_RECHECK != 0 && (state_q == ST_WAIT ||
+                                   state_q == ST_TRANSFER || state_q == ST_CYCLE_END));
     /* verilator lint_off UNUSEDSIGNAL */
     wire [ROM_AW+11:0] last_wide = {{ROM_AW{1'b0}}, 1'b0, ne_q, 3'b011}; // 4 + 8*NE - 1
     /* verilator lint_on UNUSEDSIGNAL */
@@ -210,12 +213,12 @@ module albatross_sequencer #(
     // ------------------------------------------------------------ field checks at fetch
     wire [1:0]  e0_kind = rom_q[ALB_ROM_E0_KIND_LSB +: 2];   // (rules: rtl/albatross_entry_check.v)
     wire [2:0]  e0_nd   = rom_q[ALB_ROM_E0_ND_LSB +: 3];
-    wire [4:0]  e0_id   = rom_q[ALB_ROM_E0_ID_LSB +: 5];
+    wire [6:0]  e0_id   = rom_q[ALB_ROM_E0_ID_LSB +: 7];
     wire [11:0] e0_w    = rom_q[ALB_ROM_E0_W_LSB +: 12];
     wire [TB:0] e2_end  = {1'b0, start_q} + {1'b0, rom_q[TB-1:0]};
     wire        bad_now;
     albatross_entry_check #(.NB(NB), .ADDR_WIDTH(ADDR_WIDTH), .N_CHAN(N_CHAN), .TIME_BITS(TB),
-                            .MIN_LEN(MIN_LEN_I)) u_entry_check (
+                            .MIN_LEN(MIN_LEN_I), .HAS_ENTRY_CHECK(HAS_ENTRY_CHECK)) u_entry_check (
         .step_i(step_q), .rom_i(rom_q), .ent0_i(ent_q == 8'd0), .smode_i(smode_q), .bad_mark_i(bad_mark),
         .kind_i(kind_q), .four_i(four_q), .nd_i(nd_q), .e3_i(e3_q), .start_i(start_q), .start_bad_i(start_bad_q),
         .cycle_i(cycle_q), .prev_end_i(prev_end_q), .e2_end_i(e2_end), .bad_o(bad_now));
@@ -332,7 +335,7 @@ module albatross_sequencer #(
                 end
                 ST_CYCLE_END: begin
                     pc_q <= (pc_q == POLL_LAST) ? {PC_BITS{1'b0}} : pc_q + 1'b1;
-                    if (smode_q && sync_ok_q && pc_q == POLL_LAST) poll_q <= 1'b1;
+                    if (HAS_SYNC != 0 && smode_q && sync_ok_q && pc_q == POLL_LAST) poll_q <= 1'b1;
                     if (poll_q && (poll_ack_i || poll_err_i)) poll_q <= 1'b0;
                 end
                 default: ;

@@ -4,8 +4,8 @@
 # build/fusesoc/neg-KIND/lib with one fault, which the check must reject with
 # the message that names it.  Passes only if the check fails for that reason.
 #   file    albatross_dpram.core names a file that does not exist (a typo)
-#   dep     albatross_controller.core without its albatross:ip:engines dependency:
-#           the controller's lint cannot find albatross_import
+#   dep     albatross_controller.core without its albatross:ip:contract dependency:
+#           the controller's lint cannot find albatross_contract.vh
 #   schema  albatross_bus.core with a misspelt key (filesets -> fileset): valid
 #           YAML that FuseSoC refuses and skips with a mere warning
 #   sim     the Export engine mutant export_early_publish (tb/mutants/engines/):
@@ -30,8 +30,8 @@ mutate() {  # FILE SED-ARGS...: apply, and insist that it changed the file
 case $kind in
     file)   mutate "$lib/rtl/albatross_dpram.core" 's/- albatross_dpram\.v/- albatross_dpram_typo.v/'
             expect='names albatross_dpram_typo.v, expected the file' ;;
-    dep)    mutate "$lib/rtl/albatross_controller.core" '/- albatross:ip:engines:/d'
-            expect="Cannot find file containing module: 'albatross_import'" ;;
+    dep)    mutate "$lib/rtl/albatross_controller.core" '/- albatross:ip:contract:/d'
+            expect="Cannot find include file: .?albatross_contract\.vh" ;;
     schema) mutate "$lib/rtl/albatross_bus.core" 's/^filesets:/fileset:/'
             expect='expected FuseSoC to load core albatross:ip:bus' ;;
     sim)    mutate "$lib/rtl/albatross_export.v" -f tb/mutants/engines/export_early_publish.sed

@@ -75,7 +75,7 @@ module fseq (
 
     wire                  go_o, sync_entry_o, may_access_o, poll_cyc_o, cycle_o, error_o;
     wire [1:0]            kind_o;
-    wire [4:0]            chan_o;
+    wire [6:0]            chan_o;
     wire [2:0]            nd_o;
     wire [11:0]           words_o;
     wire [3:0]            src_board_o, poll_board_o;
@@ -231,7 +231,7 @@ module fseq (
     (* keep *) wire                f_smode, f_sync_ok, f_start_bad, f_bad, f_sflag, f_poll, f_bg_data;
     (* keep *) wire [31:0]         f_h3, f_slot_time, f_crc;
     (* keep *) wire [1:0]          f_kind;
-    (* keep *) wire [4:0]          f_chan;
+    (* keep *) wire [6:0]          f_chan;
     (* keep *) wire [2:0]          f_nd;
     (* keep *) wire [11:0]         f_w;
     (* keep *) wire [13:0]         f_e3;

@@ -12,7 +12,7 @@ module tb_sequencer;
     reg clk = 0, rst = 1;
     always #5 clk = !clk;
     wire go, may, perr, cyc_s, error;
-    wire [1:0] kind; wire [4:0] chan; wire [2:0] nd; wire [11:0] words;
+    wire [1:0] kind; wire [6:0] chan; wire [2:0] nd; wire [11:0] words;
     wire [3:0] sb; wire [9:0] sbase; wire [15:0] db; wire [39:0] dbase;
     wire [31:0] slot_time, t; wire [15:0] rerr, cycles;
     wire poll_cyc; wire [3:0] pb; wire [9:0] pa;

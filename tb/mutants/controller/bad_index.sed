@@ -1,3 +1,3 @@
-# target: rtl/albatross_export_dest.v
+# target: rtl/albatross_transfer.v
 # Controller mutant: the Export's buffer choice can yield index 0, an invalid Actual.
-s/(copy_d != BUFFER2 \&\& rl_lock != BUFFER2) ? BUFFER2 : BUFFER1;/(copy_d != BUFFER2 \&\& rl_lock != BUFFER2) ? BUFFER2 : 2'd0;/
+s/(copy_d != 2'd2 \&\& r_lock != 2'd2) ? 2'd2 : 2'd1;/(copy_d != 2'd2 \&\& r_lock != 2'd2) ? 2'd2 : 2'd0;/

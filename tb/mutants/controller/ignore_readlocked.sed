@@ -1,4 +1,4 @@
-# target: rtl/albatross_export_dest.v
+# target: rtl/albatross_transfer.v
 # Controller mutant: the Export ignores the destination's ReadLocked and may
 # write the buffer the consumer is reading (the paper, figure 4).
-s/wire \[1:0\] rl_lock   = rl_valid ? rl_byte\[1:0\] : 2'd0;/wire [1:0] rl_lock   = 2'd0;/
+s/wire \[1:0\] r_lock   = r_valid ? r_byte\[1:0\] : 2'd0;/wire [1:0] r_lock   = 2'd0;/

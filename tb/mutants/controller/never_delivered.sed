@@ -1,4 +1,4 @@
-# target: rtl/albatross_controller.v
+# target: rtl/albatross_transfer.v
 # Controller mutant: a published destination is never marked delivered, so
 # every redundant slot publishes the same value again.
-s/st_d\[38:35\] = need_q \& ~exp_published;/st_d[38:35] = need_q;/
+s/assign need_o      = serve_q \& ~pub_q;/assign need_o      = serve_q;/

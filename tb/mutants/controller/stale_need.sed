@@ -1,8 +1,8 @@
 # target: rtl/albatross_controller.v
 # Controller mutant: the state-RAM write-back regression that 7e46d73 fixed.  At
-# a slot's end the abandoned count takes the Export's need (need_q without the
-# destinations it published) even when no Export ran, so a COPY whose Import
-# ended without choosing counts the stale need of the last Export of any
-# channel instead of its own stored need.  Caught by test_controller's abandon
-# scenario (make test-controller-negative-stale_need).
-s/wire \[3:0\] need_end = exp_run_q ? st_d\[38:35\] : st_need;/wire [3:0] need_end = st_d[38:35];/
+# a slot's end the abandoned count takes the Export's need (the destinations
+# it served without those it published) even when no Export ran, so a COPY
+# whose Import ended without choosing counts the stale need of the last Export
+# of any channel instead of its own stored need.  Caught by test_controller's
+# abandon scenario (make test-controller-negative-stale_need).
+s/wire \[3:0\] need_end = tr_exp ? tr_need : st_need;/wire [3:0] need_end = tr_need;/

@@ -1,8 +1,7 @@
-# target: rtl/albatross_export.v
-# Controller mutant: the taken_at word a destination gets is the controller's
-# input at the time of that store, near the end of the transfer (for a New
-# copy time_o then, tb/mutants/controller/taken_at_end.sed keeps the right
-# first delivery), not the time sampled when the Export started, at the final
-# source Actual load.  Every New delivery carries a time a few accesses late,
-# still between the producer's and the destination's publication.
-s/                          state_q == S_STORE_TAKEN ? taken_q :/                          state_q == S_STORE_TAKEN ? taken_at_i :/
+# target: rtl/albatross_controller.v
+# Controller mutant: the taken_at word a destination gets is the global time
+# of that store, near the end of the transfer, not the time recorded when
+# the value was chosen, at the final source Actual load.  Every delivery
+# carries a time a few accesses late, still between the producer's and the
+# destination's publication.
+s/\.st_taken_i(st_taken)/.st_taken_i(time_o)/

@@ -1,0 +1,491 @@
+// albatross_transfer -- the controller's one transfer datapath: a single
+// state machine that runs, on one Wishbone B4 classic requester port, the
+// consumer's Import of the source (seed figure 3; four-slot kind: Simpson's
+// mechanism on single-writer bytes) and the producer's Export (figure 4) to
+// up to 4 destinations, streaming the value word by word (one source load,
+// then one store per destination).  It replaces separate Import and Export
+// engines: one state register, one address adder, one write-data OR.
+// Rules:
+//   * Fields come from the sequencer's entry registers (held for the slot):
+//     kind, four, W, places.  Per-channel state comes in from the state RAM
+//     (st_*_i) at go_i and goes out on the *_o write-back ports, valid in
+//     the done_o clock.  No per-channel state is kept here between slots.
+//   * COPY, Import (source, the controller is the consumer).  Three-buffer:
+//     load Actual; if it differs from the ReadLocked copy (0 unknown), store
+//     ReadLocked := Actual and load Actual again, until a load equals the
+//     copy (New if a store was made).  Four-slot: load the control word, c =
+//     1 + 2 pair(A) + Slot[pair(A)]; c = L: Old; else store ReadLocked := A,
+//     load the control word again, L := 1 + 2 pair(A) + Slot[pair(A)]: New.
+//     Actual naming no buffer ends the slot (corrupt).  In the ack clock of
+//     the final control load the value is chosen: the destinations that need
+//     it are all active ones if New (new_o: taken_at := the time now), else those still
+//     in need (st_need_i); none: the slot ends.  A cut-off after a
+//     ReadLocked store and before its confirming load forgets the copy.
+//   * Export, to the destinations d in need in index order: per d, load its
+//     Actual if the copy is unknown (three-buffer read-back: an Actual equal
+//     to the buffer of a failed Actual store shows it landed: published, d
+//     leaves), then load ReadLocked (four-slot: the whole control word, with
+//     the landed check) and pick the buffer (three-buffer: the last of 1..3
+//     that is neither Actual nor ReadLocked; four-slot: p = 1 - pair(R), s =
+//     1 - Slot_p); then per word k: one source load (COPY; TIME: the slot
+//     time; STATUS: status_i at index_o) and one store per d; then per d
+//     taken_at (word W, stride W + 1), four-slot the Slot byte, then Actual
+//     (published).  TIME and STATUS run the Export alone from go_i.
+//   * Failures (err_i, which includes the bus master's timeout): cyc drops
+//     for one clock; then the same access again if may_access_i, else the
+//     cut-off (the slot ends).  A destination access failing K = drop_run_i
+//     (below 2: 2) times in a row drops that destination for the slot (the
+//     next access follows in the clock after the K-th failure).  Source
+//     accesses are retried until the deadline.  A failed Actual store makes
+//     the copy unknown and remembers the buffer it tried.
+//   * Timing: every access begins in the clock after an edge where
+//     may_access_i is 1, in the clock after the previous ack (no idle bus
+//     clock inside a transfer); go_i's first access is on the bus in the
+//     next clock.  done_o is high for one clock after the last ack, the
+//     cut-off or the decision that nothing is to be done.  The access order
+//     and timing are those of the former Import and Export engines.
+//   * Reset clears control state only.
+`default_nettype none
+
+module albatross_transfer #(
+    parameter ADDR_WIDTH = 10  // word-address bits of a board RAM
+) (
+    input  wire                    clk_i,
+    input  wire                    rst_i,          // synchronous, active high
+    // the entry (sequencer registers, held for the slot)
+    input  wire                    go_i,           // one clock: start the slot's transfer
+    input  wire                    copy_i,         // kind COPY
+    input  wire                    time_kind_i,    // kind TIME (else STATUS, when not COPY)
+    input  wire                    four_i,         // the four-slot kind
+    input  wire [3:0]              active_i,       // the destinations of the entry
+    input  wire [11:0]             words_i,        // W
+    input  wire [3:0]              src_board_i,
+    input  wire [ADDR_WIDTH-1:0]   src_base_i,
+    input  wire [15:0]             dst_board_i,    // d at [4d +: 4]
+    input  wire [4*ADDR_WIDTH-1:0] dst_base_i,     // d at [d*ADDR_WIDTH +: ADDR_WIDTH]
+    input  wire [31:0]             slot_time_i,    // TIME's value, TIME's and STATUS's taken_at
+    input  wire                    may_access_i,   // an access begun next clock ends before the deadline
+    input  wire [7:0]              drop_run_i,     // K (ROM H2)
+    // the channel's state (state RAM, valid at go_i and through the slot)
+    input  wire [2:0]              st_rl_i,        // ReadLocked copy / four-slot L (0 unknown)
+    input  wire [3:0]              st_need_i,      // destinations that still need the current value
+    input  wire [7:0]              st_act_i,       // Actual copies (0 unknown), d at [2d +: 2]
+    input  wire [11:0]             st_tried_i,     // buffers of failed Actual stores (0 none), d at [3d +: 3]
+    input  wire [31:0]             st_taken_i,     // taken_at of the current value
+    // STATUS words
+    input  wire [31:0]             status_i,
+    input  wire                    status_valid_i,
+    output wire [11:0]             index_o,        // the word taken next
+    // results, valid with done_o
+    output wire                    done_o,         // one clock: the slot's transfer is over
+    output wire                    imp_run_o,      // the Import ran in this slot (COPY)
+    output wire                    exp_run_o,      // the Export ran
+    output wire                    new_o,          // one clock: a New value is chosen now: store the global time as its taken_at
+    output wire [2:0]              rl_o,           // the copy after the slot
+    output wire [3:0]              need_o,         // destinations still in need after the Export
+    output wire [7:0]              act_o,          // Actual copies after the Export
+    output wire [11:0]             tried_o,
+    output wire [2:0]              transfers_o,    // destinations published
+    output wire [2:0]              corrupt_o,      // control bytes that named no buffer
+    // requester port (cyc = stb)
+    output wire                    cyc_o,
+    output wire                    we_o,
+    output wire [ADDR_WIDTH-1:0]   adr_o,
+    output wire [3:0]              board_o,
+    output wire [3:0]              sel_o,
+    output wire [31:0]             dat_o,
+    input  wire [31:0]             dat_i,
+    input  wire                    ack_i,
+    input  wire                    err_i
+);
+
+`include "albatross_contract.vh"
+
+    localparam AW      = ADDR_WIDTH;
+    localparam ACT_BIT = 8 * (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
+    localparam RL_BIT  = 8 * (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
+    localparam S0_BIT  = 8 * (ALB_CH_OFF_SLOT0 % ALB_CH_WORD_BYTES);
+    localparam S1_BIT  = 8 * (ALB_CH_OFF_SLOT1 % ALB_CH_WORD_BYTES);
+    localparam [3:0] SEL_ACT = 4'b0001 << (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
+    localparam [3:0] SEL_RL  = 4'b0001 << (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
+    localparam [3:0] SEL_S0  = 4'b0001 << (ALB_CH_OFF_SLOT0 % ALB_CH_WORD_BYTES);
+    localparam [3:0] SEL_S1  = 4'b0001 << (ALB_CH_OFF_SLOT1 % ALB_CH_WORD_BYTES);
+
+    generate
+        if (ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES != 0 || ALB_CH_OFF_READLOCKED / ALB_CH_WORD_BYTES != 0 ||
+            ALB_CH_OFF_SLOT0 / ALB_CH_WORD_BYTES != 0 || ALB_CH_OFF_SLOT1 / ALB_CH_WORD_BYTES != 0 ||
+            ALB_CH_OFF_BUFFERS != ALB_CH_WORD_BYTES || ALB_CH_WORD_BYTES != 4 || ALB_CH_BUFFER1 != 1 ||
+            ALB_CH_BUFFER_LAST != 3 || ALB_CH_TAKEN_AT_WORDS != 1 || AW < 3) begin : g_contract_check
+            albatross_transfer_contract_mismatch u_error ();
+        end
+    endgenerate
+
+    // States: bit 3 = a destination access.
+    localparam [3:0] S_IDLE     = 4'd0,
+                     S_SRC_ACT  = 4'd1,   // load the source's Actual (four-slot: control word)
+                     S_SRC_RL   = 4'd2,   // store the source's ReadLocked
+                     S_SRC_SLOT = 4'd3,   // four-slot: load the control word again, pick L
+                     S_SRC_WORD = 4'd4,   // load source word k
+                     S_WAIT     = 4'd5,   // a word is wanted and not there (bus idle)
+                     S_DST_ACT  = 4'd8,   // read back d's Actual
+                     S_DST_RL   = 4'd9,   // load d's ReadLocked (four-slot: control word), pick
+                     S_DST_WORD = 4'd10,  // store word k - 1 to d
+                     S_DST_TKN  = 4'd11,  // store taken_at to d
+                     S_DST_SLOT = 4'd12,  // four-slot: store d's Slot byte
+                     S_DST_FIN  = 4'd13;  // store d's Actual
+
+    (* fsm_encoding = "none" *)
+    reg [3:0]  state_q;
+    reg        stb_q, retry_q, drop_q, done_q;
+    reg        early_q;               // the slot ended while a source load was on the bus
+    reg [7:0]  run_q;
+    reg [1:0]  d_q;
+    reg [11:0] k_q;
+    reg [31:0] word_q;
+    reg [2:0]  ald_q;                 // the source Actual last loaded
+    reg [2:0]  rl_q;
+    reg        new_q, icor_q, imp_q, exp_q;
+    reg [3:0]  serve_q, need_q, known_q, pub_q, cor_q;
+    reg [7:0]  act_q;
+    reg [11:0] buf_q, tried_q;
+    genvar     g;
+
+    wire dst   = state_q[3];
+    wire ack   = ack_i && stb_q;
+    wire drop_now = retry_q && drop_q;
+
+    // ------------------------------------------------------------ current destination
+    wire [3:0]    d_bit = 4'b0001 << d_q;
+    wire [AW-1:0] base_d  = d_q[1] ? (d_q[0] ? dst_base_i[3*AW +: AW] : dst_base_i[2*AW +: AW])
+                                   : (d_q[0] ? dst_base_i[AW +: AW] : dst_base_i[0 +: AW]);
+    wire [2:0]    buf_d   = d_q[1] ? (d_q[0] ? buf_q[9 +: 3] : buf_q[6 +: 3]) : (d_q[0] ? buf_q[3 +: 3] : buf_q[0 +: 3]);
+    wire [2:0]    tried_d = d_q[1] ? (d_q[0] ? tried_q[9 +: 3] : tried_q[6 +: 3])
+                                   : (d_q[0] ? tried_q[3 +: 3] : tried_q[0 +: 3]);
+    wire [1:0]    act_d   = d_q[1] ? (d_q[0] ? act_q[6 +: 2] : act_q[4 +: 2]) : (d_q[0] ? act_q[2 +: 2] : act_q[0 +: 2]);
+    wire [1:0]    copy_d  = |(known_q & d_bit) ? act_d : 2'd0;
+
+    // The control word just loaded.
+    wire [7:0] a_byte   = dat_i[ACT_BIT +: 8];
+    wire [7:0] r_byte   = dat_i[RL_BIT +: 8];
+    wire       a_valid  = a_byte[7:3] == 5'd0 && a_byte[2:0] != 3'd0 && (four_i ? a_byte[2:0] <= 3'd4 : !a_byte[2]);
+    wire       r_valid  = r_byte[7:3] == 5'd0 && r_byte[2:0] != 3'd0 && (four_i ? r_byte[2:0] <= 3'd4 : !r_byte[2]);
+    wire       a_pair   = a_byte[2] | (a_byte[1] & a_byte[0]);      // (x - 1) >> 1 for x = 1..4
+    wire       r_pair   = r_byte[2] | (r_byte[1] & r_byte[0]);
+    // Source: c of this word (first load), b from the Actual stored (second).
+    wire [2:0] cur_b    = {1'b0, a_pair, a_pair ? dat_i[S1_BIT] : dat_i[S0_BIT]} + 3'd1;
+    wire       p_ald    = ald_q[2] | (ald_q[1] & ald_q[0]);
+    wire [2:0] pick_l   = {1'b0, p_ald, p_ald ? dat_i[S1_BIT] : dat_i[S0_BIT]} + 3'd1;
+    wire       a_match  = four_i ? cur_b == rl_q : a_byte[2:0] == rl_q;
+    // Destination pick.
+    wire [1:0] r_lock   = r_valid ? r_byte[1:0] : 2'd0;
+    wire [1:0] pick3    = (copy_d != 2'd3 && r_lock != 2'd3) ? 2'd3 : (copy_d != 2'd2 && r_lock != 2'd2) ? 2'd2 : 2'd1;
+    wire       pk_p     = r_valid ? !r_pair : a_valid ? !a_pair : 1'b1;
+    wire       pk_s     = !(pk_p ? dat_i[S1_BIT] : dat_i[S0_BIT]);
+    wire [2:0] pick     = four_i ? {1'b0, pk_p, pk_s} + 3'd1 : {1'b0, pick3};
+    wire       read_act = ack && (state_q == S_DST_ACT || (four_i && state_q == S_DST_RL));
+    wire       landed   = read_act && a_valid && a_byte[2:0] == tried_d && tried_d != 3'd0;
+    wire       leave    = dst && (drop_now || landed);
+    wire [3:0] need_m   = need_q & ~(leave ? d_bit : 4'd0);
+
+    // Order: next_d the lowest destination above d_q in need_q; first_d the
+    // lowest in need_m; first_in the lowest in a starting need.
+    wire [3:0] start_need = go_i ? active_i : need_now;
+    wire [3:0] st_known   = {st_act_i[7:6] != 2'd0, st_act_i[5:4] != 2'd0, st_act_i[3:2] != 2'd0, st_act_i[1:0] != 2'd0};
+    wire [3:0] above    = need_q & ~((d_bit << 1) - 4'd1);
+    wire       has_next = above != 4'd0;
+    wire [1:0] next_d   = above[0] ? 2'd0 : above[1] ? 2'd1 : above[2] ? 2'd2 : 2'd3;
+    wire [1:0] first_d  = need_m[0] ? 2'd0 : need_m[1] ? 2'd1 : need_m[2] ? 2'd2 : 2'd3;
+    wire [1:0] first_in = start_need[0] ? 2'd0 : start_need[1] ? 2'd1 : start_need[2] ? 2'd2 : 2'd3;
+
+    // ------------------------------------------------------------ steps
+    wire       adv      = ack || drop_now;
+    wire       ctrl_ld  = state_q == S_DST_ACT || state_q == S_DST_RL;
+    wire       ctrl_end = adv && (state_q == S_DST_RL || (state_q == S_DST_ACT && leave));
+    wire       last_wd  = k_q == words_i;
+    wire       want     = state_q != S_WAIT && !has_next && need_m != 4'd0 &&
+                          (ctrl_end || (adv && state_q == S_DST_WORD && !last_wd));
+    wire       word_ok  = !copy_i && (time_kind_i || status_valid_i);
+    wire       choose   = ack && ((state_q == S_SRC_ACT && a_valid && a_match) || state_q == S_SRC_SLOT);
+    wire [3:0] need_now = (new_q ? 4'hF : st_need_i) & active_i;
+    wire [7:0] k_run    = drop_run_i[7:1] == 7'd0 ? 8'd2 : drop_run_i;
+    wire [7:0] run_inc  = run_q + 8'd1;
+    // Cut off between the ReadLocked store and its confirming load: forget.
+    wire       forget   = state_q == S_SRC_RL || ((state_q == S_SRC_SLOT || (state_q == S_SRC_ACT && new_q)) && !choose);
+
+    // Put an access on the bus in the next clock, or end the slot (cut-off).
+    task begin_access;
+        input [3:0] s;
+        input [1:0] d;
+        begin
+            d_q <= d;
+            if (may_access_i) begin
+                state_q <= s;
+                stb_q   <= 1'b1;
+            end else cut_off;
+        end
+    endtask
+    task cut_off;
+        begin
+            state_q <= S_IDLE;
+            stb_q   <= 1'b0;
+            done_q  <= 1'b1;
+            if (forget) rl_q <= 3'd0;
+        end
+    endtask
+    task finish;
+        begin
+            state_q <= S_IDLE;
+            stb_q   <= 1'b0;
+            done_q  <= 1'b1;
+        end
+    endtask
+    // Start the Export to start_need.
+    task start_export;
+        begin
+            exp_q    <= 1'b1;
+            serve_q  <= start_need;
+            need_q   <= start_need;
+            run_q    <= 8'd0;
+            begin_access((st_known[first_in] || four_i) ? S_DST_RL : S_DST_ACT, first_in);
+        end
+    endtask
+    // Take word k_q from the stream: store it to the first destination.
+    task take_word;
+        begin
+            begin_access(S_DST_WORD, first_d);
+        end
+    endtask
+
+    always @(posedge clk_i) begin
+        done_q <= 1'b0;
+        if (rst_i) begin
+            state_q  <= S_IDLE;
+            stb_q    <= 1'b0;
+            retry_q  <= 1'b0;
+            drop_q   <= 1'b0;
+            d_q      <= 2'd0;
+            imp_q    <= 1'b0;
+            exp_q    <= 1'b0;
+            new_q    <= 1'b0;
+            icor_q   <= 1'b0;
+            rl_q     <= 3'd0;
+            serve_q  <= 4'd0;
+            need_q   <= 4'd0;
+            pub_q    <= 4'd0;
+            cor_q    <= 4'd0;
+            run_q    <= 8'd0;
+        end else if (go_i) begin
+            imp_q    <= copy_i;
+            exp_q    <= 1'b0;
+            new_q    <= 1'b0;
+            icor_q   <= 1'b0;
+            pub_q    <= 4'd0;
+            cor_q    <= 4'd0;
+            retry_q  <= 1'b0;
+            drop_q   <= 1'b0;
+            rl_q     <= st_rl_i;
+            if (copy_i) begin
+                serve_q <= active_i;
+                d_q     <= 2'd0;
+                if (may_access_i) begin
+                    state_q <= S_SRC_ACT;
+                    stb_q   <= 1'b1;
+                end else finish;
+            end else start_export;
+        end else if (err_i && stb_q) begin
+            // A failed access: cyc low for a clock; count the run of a
+            // destination access; a failed Actual store: copy unknown, buffer tried.
+            stb_q   <= 1'b0;
+            retry_q <= 1'b1;
+            drop_q  <= dst && run_inc == k_run;
+            if (dst) run_q <= run_inc;
+        end else if (retry_q && !drop_q) begin
+            retry_q <= 1'b0;
+            if (may_access_i) stb_q <= 1'b1;
+            else cut_off;
+        end else begin
+            retry_q <= 1'b0;
+            drop_q  <= 1'b0;
+            if (dst) need_q <= need_m;
+            if (adv) run_q <= 8'd0;
+            case (state_q)
+                S_SRC_ACT: if (ack) begin
+                    ald_q <= a_byte[2:0];
+                    if (!a_valid) begin
+                        icor_q <= 1'b1;
+                        finish;
+                    end else if (!a_match) begin
+                        new_q <= 1'b1;
+                        begin_access(S_SRC_RL, 2'd0);
+                    end
+                end
+                S_SRC_RL: if (ack) begin
+                    if (!four_i) rl_q <= ald_q;
+                    begin_access(four_i ? S_SRC_SLOT : S_SRC_ACT, 2'd0);
+                end
+                S_SRC_SLOT: if (ack) rl_q <= pick_l;
+                S_SRC_WORD: if (ack) take_word;
+                S_WAIT: if (word_ok) take_word;
+                        else if (!may_access_i || copy_i) cut_off;      // (COPY: only entered without may_access_i)
+                S_DST_ACT: if (ack && !a_valid) cor_q <= cor_q | d_bit;
+                S_DST_RL: if (ack && (!r_valid || (four_i && !a_valid))) cor_q <= cor_q | d_bit;
+                default: ;
+            endcase
+            if (landed || (ack && state_q == S_DST_FIN)) pub_q <= pub_q | d_bit;
+            // The value is chosen: New (taken_at now) or Old.
+            if (choose) begin
+                serve_q  <= need_now;
+                if (need_now == 4'd0) finish;
+                else start_export;
+            end
+            // The next destination access (adv is 0 outside them).
+            if (adv && dst) begin
+                if (need_m == 4'd0) finish;
+                else if (state_q == S_DST_ACT && !leave) begin_access(S_DST_RL, d_q);
+                else if (has_next) begin_access(ctrl_ld ? ((known_q[next_d] || four_i) ? S_DST_RL : S_DST_ACT) : state_q,
+                                                next_d);
+                else if (want) begin
+                    if (copy_i) begin
+                        if (may_access_i) begin
+                            state_q <= S_SRC_WORD;
+                            stb_q   <= 1'b1;
+                        end else begin
+                            state_q <= S_WAIT;
+                            stb_q   <= 1'b0;
+                        end
+                    end else if (word_ok) take_word;
+                    else begin
+                        state_q <= S_WAIT;
+                        stb_q   <= 1'b0;
+                    end
+                end
+                else if (state_q == S_DST_WORD) begin
+                    if (last_wd) begin_access(S_DST_TKN, first_d);
+                end
+                else if (state_q == S_DST_TKN) begin_access(four_i ? S_DST_SLOT : S_DST_FIN, first_d);
+                else if (state_q == S_DST_SLOT) begin_access(S_DST_FIN, first_d);
+                else if (state_q == S_DST_FIN) finish;
+            end
+        end
+        // A source word load on the bus when the deadline check fails ends
+        // the slot there (done_o), as the Export engine waiting for that word
+        // did; the load itself finishes (ack, or err and no retry) silently.
+        if (early_q) done_q <= 1'b0;
+        if (!rst_i && !go_i && state_q == S_SRC_WORD && !may_access_i && !early_q) begin
+            done_q  <= 1'b1;
+            early_q <= 1'b1;
+        end
+        if (rst_i || go_i) early_q <= 1'b0;
+    end
+
+    // ------------------------------------------------------------ per-destination fields
+    // Each destination's Actual copy, its known bit, its picked buffer and
+    // the buffer of its failed Actual store, written with explicit enables
+    // (the events of the current destination d_q, in the branch of the main
+    // block they belong to).
+    wire       nrm      = !go_i && !(err_i && stb_q) && !(retry_q && !drop_q);
+    wire       e_start  = (go_i && !copy_i) || (nrm && choose && need_now != 4'd0);
+    wire       e_errfin = !go_i && err_i && stb_q && state_q == S_DST_FIN;
+    wire       e_act    = nrm && ack && state_q == S_DST_ACT;
+    wire       e_rl     = nrm && adv && state_q == S_DST_RL;
+    wire       e_fin    = nrm && ack && state_q == S_DST_FIN;
+    wire       no_tried = go_i || new_q;               // a fresh value: no failed store of it
+    generate
+        for (g = 0; g < 4; g = g + 1) begin : g_dest
+            always @(posedge clk_i) begin
+                if (rst_i) begin
+                    known_q[g]         <= 1'b0;
+                    tried_q[3*g +: 3]  <= 3'd0;
+                end else if (e_start) begin
+                    known_q[g]         <= st_known[g];
+                    act_q[2*g +: 2]    <= st_act_i[2*g +: 2];
+                    tried_q[3*g +: 3]  <= no_tried ? 3'd0 : st_tried_i[3*g +: 3];
+                end else if (d_bit[g]) begin
+                    if (e_errfin) begin
+                        known_q[g]        <= 1'b0;
+                        tried_q[3*g +: 3] <= buf_d;
+                    end
+                    if (e_act || (e_rl && ack && four_i) || e_fin) tried_q[3*g +: 3] <= 3'd0;
+                    if ((e_act && a_valid) || e_fin) begin
+                        known_q[g]      <= 1'b1;
+                        act_q[2*g +: 2] <= e_fin ? buf_d[1:0] : a_byte[1:0];
+                    end
+                    if (e_rl) buf_q[3*g +: 3] <= pick;
+                end
+            end
+        end
+    endgenerate
+
+    // ------------------------------------------------------------ the word stored
+    // word_q takes the word the destinations' stores write (take_word's
+    // clock): the source word in its load's ack clock, a STATUS word when
+    // it is taken (TIME's value is slot_time_i itself).  One enable, one
+    // two-way multiplexer.
+    wire take_en = (nrm && ack && state_q == S_SRC_WORD) ||
+                   (nrm && word_ok && (state_q == S_WAIT || (adv && dst && want)));
+    always @(posedge clk_i) if (take_en) word_q <= copy_i ? dat_i : status_i;
+    // k_q: the index of the next word to take; 0 when an Export starts.
+    always @(posedge clk_i) begin
+        if (e_start) k_q <= 12'd0;
+        else if (take_en) k_q <= k_q + 12'd1;
+    end
+
+    // ------------------------------------------------------------ the access
+    wire          src    = !dst;
+    wire          w_src  = state_q == S_SRC_WORD;
+    wire          w_dst  = state_q == S_DST_WORD;
+    wire          w_tkn  = state_q == S_DST_TKN;
+    wire          datacc = w_src || w_dst || w_tkn;
+    wire          t_val  = (w_dst && time_kind_i && !copy_i) || (w_tkn && !copy_i);   // TIME's value, TIME's and STATUS's taken_at
+    // Word k of buffer b: base + 1 + (b - 1) * S + k, S = W (source) or W + 1.
+    wire [1:0]    b      = src ? rl_q[1:0] : buf_d[1:0];   // 1..4 (4 as 0)
+    wire [1:0]    bm1    = b - 2'd1;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [AW+11:0] w_wide = {{AW{1'b0}}, words_i};
+    wire [AW+11:0] k_wide = {{AW{1'b0}}, k_q};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [AW-1:0] stride = w_wide[AW-1:0] + {{(AW-1){1'b0}}, dst};
+    wire [AW-1:0] m      = ({AW{bm1[0]}} & stride) + ({AW{bm1[1]}} & {stride[AW-2:0], 1'b0});
+    wire [AW-1:0] off    = {AW{datacc}} & (m + k_wide[AW-1:0] + {{(AW-1){1'b0}}, w_src || w_tkn});
+    wire [AW-1:0] base   = src ? src_base_i : base_d;
+    wire [1:0]    dbm1   = buf_d[1:0] - 2'd1;         // four-slot: {p, s} of d's buffer
+
+    assign cyc_o   = stb_q;
+    assign we_o    = state_q == S_SRC_RL || w_dst || w_tkn || state_q == S_DST_SLOT || state_q == S_DST_FIN;
+    assign adr_o   = base + off;
+    assign board_o = src ? src_board_i : dst_board_i[4*d_q +: 4];
+    assign sel_o   = (state_q == S_SRC_ACT) ? (four_i ? 4'hF : SEL_ACT) :
+                     (state_q == S_SRC_RL) ? SEL_RL :
+                     (state_q == S_DST_ACT || state_q == S_DST_FIN) ? SEL_ACT :
+                     (state_q == S_DST_RL) ? (four_i ? 4'hF : SEL_RL) :
+                     (state_q == S_DST_SLOT) ? (dbm1[1] ? SEL_S1 : SEL_S0) : 4'hF;
+    assign dat_o   = ({32{state_q == S_SRC_RL}} & ({29'd0, ald_q} << RL_BIT)) |
+                     ({32{w_dst && !t_val}} & word_q) | ({32{t_val}} & slot_time_i) | ({32{w_tkn && copy_i}} & st_taken_i) |
+                     ({32{state_q == S_DST_SLOT}} & ({31'd0, dbm1[0]} << (dbm1[1] ? S1_BIT : S0_BIT))) |
+                     ({32{state_q == S_DST_FIN}} & ({29'd0, buf_d} << ACT_BIT));
+
+    // ------------------------------------------------------------ results
+    function [2:0] popcount4;
+        input [3:0] v;
+        popcount4 = {2'd0, v[0]} + {2'd0, v[1]} + {2'd0, v[2]} + {2'd0, v[3]};
+    endfunction
+    generate
+        for (g = 0; g < 4; g = g + 1) begin : g_act
+            assign act_o[2*g +: 2] = known_q[g] ? act_q[2*g +: 2] : 2'd0;
+        end
+    endgenerate
+
+    assign index_o     = k_q;
+    assign done_o      = done_q;
+    assign imp_run_o   = imp_q;
+    assign exp_run_o   = exp_q;
+    assign new_o       = nrm && choose && new_q;
+    assign rl_o        = rl_q;
+    assign need_o      = serve_q & ~pub_q;
+    assign tried_o     = tried_q;
+    assign transfers_o = exp_q ? popcount4(pub_q) : 3'd0;
+    assign corrupt_o   = {2'd0, icor_q} + popcount4(cor_q);
+
+endmodule
+
+`default_nettype wire
