@@ -1,0 +1,9 @@
+# tools/mk/suite.mk -- how the suite runs (make test, make check): every
+# recipe line through tools/recipe_shell.sh, which times it (builds too) and
+# keeps a build's output off the console unless the build fails.  Set in the
+# environment by the test and check targets (Makefile), unset by
+# tools/run_test.sh for the test's own command, so that a test's inner make
+# runs as usual.
+ifneq ($(ALB_SUITE),)
+SHELL = $(CURDIR)/tools/recipe_shell.sh $@
+endif
