@@ -319,7 +319,7 @@ def observe(a):
         clean = r["exit"] in (0, 1, 4)
         ok &= clean
         tore = r["exit"] == 1 and r.get("violations", 0) > 0
-        v = mine.setdefault(name, {"kind": kind, "runs": 0, "tore": 0, "imports": 0, "violations": 0})
+        v = mine.setdefault(f"{name}, {kind}", {"kind": kind, "runs": 0, "tore": 0, "imports": 0, "violations": 0})
         v["runs"] += 1
         v["tore"] += int(tore)
         v["imports"] += r.get("imports", 0)
