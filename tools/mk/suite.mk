@@ -7,3 +7,7 @@
 ifneq ($(ALB_SUITE),)
 SHELL = $(CURDIR)/tools/recipe_shell.sh $@
 endif
+
+# Verilator's run-time library compiled once per distinct command line, not
+# once per object folder (tools/objcache.sh).
+export OBJCACHE := $(CURDIR)/tools/objcache.sh
