@@ -377,7 +377,7 @@ def main():
     p.add_argument("--words", default="2,8")
     p.add_argument("--stop-after", type=int, default=1000)
     p.add_argument("--repeat", type=int, default=10)
-    p.add_argument("--seconds", type=float, default=60)
+    p.add_argument("--seconds", type=float, default=300)
     p.add_argument("--soft-seconds", type=float, default=40)
     p.add_argument("--min-overtaken", type=int, default=50000)
     p.add_argument("--covered", default="", help="store-load sites covered by a later full fence")
