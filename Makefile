@@ -98,7 +98,7 @@ NPROC         ?= $(shell nproc 2>/dev/null || echo 2)
 # one co-simulation scenario, one controller scenario, one formal proof and
 # one model check, the compiler, one endpoint, one system run.
 CHECK_TESTS   := lint contract-current driver-unit host-threads-model tb-random controller-smoke \
-                 formal-copy formal-spin compiler endpoint-import system-rigid
+                 formal-copy formal-spin compiler-four_slot endpoint-import system-rigid
 # suite_run NAME, TESTS: run them in parallel, then the summary.
 suite_run = rm -rf $(BUILD)/results && mkdir -p $(BUILD)/results && echo $(words $(2)) > $(BUILD)/results/.total && \
 	t0=$$(date +%s%N); ALB_SUITE=1 $(MAKE) -s -k -j$(NPROC) --output-sync=target --no-print-directory \

@@ -6,6 +6,7 @@
 #   make build/schedule/<example>/rom.hex     any sim/<example>.toml or compiler/examples/<example>.toml
 #   make test-compiler                        compiler/tests (examples, bad
 #                                             descriptions, gcc, end-to-end)
+#   make test-compiler-MODULE                 compiler/tests/test_MODULE.py alone
 
 SCHEDULE_DESC ?= sim/mobot3.toml
 # SCHEDULE runs the compiler; rules that run it depend on SCHEDULE_SRC (every module).
@@ -13,11 +14,19 @@ SCHEDULE      := env PYTHONPATH=compiler $(PYTHON) -m albatross_schedule
 SCHEDULE_SRC  := $(sort $(wildcard compiler/albatross_schedule/*.py)) rtl/albatross_contract.toml
 SCHEDULE_DIR  := $(BUILD)/schedule/$(basename $(notdir $(SCHEDULE_DESC)))
 
-TESTS += compiler
-.PHONY: test-compiler schedule
+# One test per module of compiler/tests (compiler-schedule, compiler-faults,
+# ...), so that make test runs them side by side (test_schedule alone is about
+# 40 s of CPU time, all of them about 60 s); make test-compiler runs them all
+# in one go.
+COMPILER_TESTS := $(patsubst compiler/tests/test_%.py,compiler-%,$(sort $(wildcard compiler/tests/test_*.py)))
+TESTS += $(COMPILER_TESTS)
+.PHONY: test-compiler schedule $(addprefix test-,$(COMPILER_TESTS))
 
 test-compiler:
 	@tools/run_test.sh compiler $(PYTHON) -m unittest discover -s compiler/tests -v
+
+$(addprefix test-,$(COMPILER_TESTS)): test-compiler-%:
+	@tools/run_test.sh compiler-$* $(PYTHON) -m unittest discover -s compiler/tests -p 'test_$*.py' -v
 
 schedule: $(SCHEDULE_DIR)/rom.hex ## compile SCHEDULE_DESC (default: the MOBOT-III example) -> build/schedule/<name>/
 	@sed -n "1,/^(times/p" $(SCHEDULE_DIR)/report.txt
