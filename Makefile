@@ -99,10 +99,13 @@ NPROC         ?= $(shell nproc 2>/dev/null || echo 2)
 # one model check, the compiler, one endpoint, one system run.
 CHECK_TESTS   := lint contract-current driver-unit host-threads-model tb-random controller-smoke \
                  formal-copy formal-spin compiler-four_slot endpoint-import system-rigid
-# suite_run NAME, TESTS: run them in parallel, then the summary.
+# suite_run NAME, TESTS: run them in parallel, the costliest first (by the
+# last run's report: a long test started last would run alone at the end),
+# then the summary.
 suite_run = rm -rf $(BUILD)/results && mkdir -p $(BUILD)/results && echo $(words $(2)) > $(BUILD)/results/.total && \
-	t0=$$(date +%s%N); ALB_SUITE=1 $(MAKE) -s -k -j$(NPROC) --output-sync=target --no-print-directory \
-	    $(addprefix test-,$(2)) || true; \
+	t0=$$(date +%s%N); order=$$($(PYTHON) tools/suite_report.py --order $(1) $(2)); \
+	ALB_SUITE=1 $(MAKE) -s -k -j$(NPROC) --output-sync=target --no-print-directory \
+	    $$(printf 'test-%s ' $$order) || true; \
 	$(PYTHON) tools/suite_report.py $(1) $$t0 $(NPROC) $(2); tools/summary.sh $(2)
 
 test: ## build and run every test, NPROC at a time ([n/N] per verdict); ends with "N passed, N failed"

@@ -1,5 +1,8 @@
 #!/usr/bin/env python3
-"""suite_report.py NAME T0_NS JOBS TEST... -- the times of a suite run (make
+"""suite_report.py --order NAME TEST... -- the tests, the costliest first
+(by the last report), for make test to start them in that order.
+
+suite_report.py NAME T0_NS JOBS TEST... -- the times of a suite run (make
 test, make check, make formal) into build/reports/suite_NAME.json: its wall
 time, the jobs, each test's run (build/results/TEST.ms, by tools/run_test.sh)
 and builds (build/results/recipes.tsv, by tools/recipe_shell.sh: every
@@ -36,7 +39,30 @@ def prerequisites():
     return deps
 
 
+def order(name, tests):
+    """The tests, the costliest first by the last run's report (build/reports/
+    suite_NAME.json, or suite_test.json): with make -j, a long test started
+    last would run alone at the end.  Tests without a figure keep their place
+    among those of median cost; with no report at all, the order is kept."""
+    rep = None
+    for n in (name, "test"):
+        try:
+            with open(f"build/reports/suite_{n}.json") as f:
+                rep = json.load(f)
+            break
+        except (OSError, ValueError):
+            pass
+    cost = {r["test"]: (r.get("run_s") or 0) + (r.get("own_build_s") or 0) for r in (rep or {}).get("rows", [])}
+    if not cost:
+        return tests
+    mid = sorted(cost.values())[len(cost) // 2]
+    return sorted(tests, key=lambda t: -cost.get(t, mid))
+
+
 def main():
+    if sys.argv[1] == "--order":
+        print(" ".join(order(sys.argv[2], sys.argv[3:])))
+        return
     name, t0, jobs, tests = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4:]
     wall = (time.time_ns() - t0) / 1e9
     recipes, rcpu = {}, {}
