@@ -345,17 +345,17 @@ SECTIONS["host-threads-reliability"] = host_threads_reliability
 def suite_times():
     """How long make test and make check take (build/reports/suite_*.json, tools/suite_report.py)."""
     rows = []
-    for name in ("check", "test"):
+    for name in ("check", "check_hogs", "test", "test_hogs"):
         r = load(f"suite_{name}.json")
         if not r:
             continue
-        rows.append([f"`make {name}`", r["tests"], f"{r['passed']} passed", f"{r['wall_s'] / 60:.1f} min",
+        rows.append([f"`make {r['suite']}`", r["tests"], f"{r['passed']} passed", f"{r['wall_s'] / 60:.1f} min",
                      f"{r['jobs']}", f"{r['loadavg_end'][0]:.1f}" + (f" ({r['busy']})" if r.get("busy") else ""),
                      f"{r['cpu_sum_s'] / 60:.1f} min", f"{r['idle_estimate_s'] / 60:.1f} min", r["date"]])
     if not rows:
         missing("suite_test.json", "make test")
     return ("Measured on " + load(f"suite_{'test' if load('suite_test.json') else 'check'}.json")["cpu"]
-            + ", 2 cores. The load average counts the other jobs on the machine at the end of the run; "
+            + ", 2 cores, shared with other jobs. The load average counts every job on the machine at the end of the run; "
             "the CPU time is what the tests and builds used, so CPU time / cores is what the suite needs on an "
             "idle machine.\n\n"
             + table(["suite", "tests", "verdicts", "wall time", "jobs", "load average", "CPU time",

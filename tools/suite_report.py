@@ -132,13 +132,17 @@ def main():
            "rows": rows, "builds": {d: {"s": recipes[d] / 1e3, "cpu_s": rcpu[d] / 1e3}
                                     for d in sorted(recipes, key=lambda d: -rcpu[d])}}
     os.makedirs("build/reports", exist_ok=True)
-    with open(f"build/reports/suite_{name}.json", "w") as f:
+    # ALB_SUITE_TAG (e.g. hogs) keeps a run made under other conditions
+    # apart: build/reports/suite_NAME_TAG.json; ALB_SUITE_NOTE says what they were.
+    tag = os.environ.get("ALB_SUITE_TAG", "")
+    out = f"build/reports/suite_{name}{'_' + tag if tag else ''}.json"
+    with open(out, "w") as f:
         json.dump(rep, f, indent=1)
         f.write("\n")
     slow = sorted(rows, key=lambda r: -r["cpu_s"])[:12]
     print(f"make {name}: {wall / 60:.1f} min wall on {jobs} jobs (load average {load[0]:.1f} at the end); "
           f"CPU time {cpu_sum / 60:.1f} min (runs and builds), so about {rep['idle_estimate_s'] / 60:.1f} min "
-          f"on an idle machine with {min(jobs, os.cpu_count() or 1)} cores (build/reports/suite_{name}.json)")
+          f"on an idle machine with {min(jobs, os.cpu_count() or 1)} cores ({out})")
     print("the tests that cost most CPU time (run + builds of their own; builds shared with other tests not counted):")
     for r in slow:
         print(f"  {r['cpu_s']:7.1f} s CPU  {r['test']}  (run {r['run_cpu_s']:.1f} s CPU, {r['run_s'] or 0:.1f} s wall; "
