@@ -93,8 +93,8 @@ test-lint-negative:
 # line is "N passed, N failed", and the times in build/reports/suite_test.json
 # (suite_check.json for make check; tools/suite_report.py).
 NPROC         ?= $(shell nproc 2>/dev/null || echo 2)
-# make check: the quick loop, one test of each part (about 2 minutes on 2
-# cores): lint, the contract, a driver unit test, the store-buffer model,
+# make check: the quick loop, one test of each part (built once: about 1.6
+# min of CPU time, under a minute on 2 idle cores; README, suite-times): lint, the contract, a driver unit test, the store-buffer model,
 # one co-simulation scenario, one controller scenario, one formal proof and
 # one model check, the compiler, one endpoint, one system run.
 CHECK_TESTS   := lint contract-current driver-unit host-threads-model tb-random controller-smoke \
@@ -111,7 +111,7 @@ suite_run = rm -rf $(BUILD)/results && mkdir -p $(BUILD)/results && echo $(words
 test: ## build and run every test, NPROC at a time ([n/N] per verdict); ends with "N passed, N failed"
 	@$(call suite_run,test,$(TESTS))
 
-check: ## the quick loop (about 2 min): one test of each part, same output as make test
+check: ## the quick loop: one test of each part, same output as make test
 	@$(call suite_run,check,$(CHECK_TESTS))
 
 list-tests: ## every test's name, one a line (run one: make test-NAME)
