@@ -87,7 +87,7 @@ BENCHES       :=
 FORMAL_TESTS  :=
 include $(sort $(wildcard tools/mk/*.mk))
 
-.PHONY: help deps lint test formal bench figures sim clean distclean
+.PHONY: help deps lint test check list-tests formal bench figures sim clean distclean
 
 help: ## [start] list the targets, grouped (a "## [group] text" comment on a rule line)
 	@python3 tools/make_help.py $(MAKEFILE_LIST)
@@ -119,15 +119,38 @@ test-lint-negative:
 	    echo "expected tools/lint.sh to reject tb/lint/lint_width_truncation.v (WIDTH), it passed"; exit 1; \
 	    else echo "lint rejected the bad file, as expected"; fi'
 
-test: ## build and run every test; ends with "N passed, N failed"
-	@rm -rf $(BUILD)/results
-	@$(MAKE) -k --no-print-directory $(addprefix test-,$(TESTS)) || true
-	@tools/summary.sh $(TESTS)
+# The suite runs NPROC tests (and builds) at a time; each test's output goes
+# to build/results/NAME.log and the console gets one verdict line per test,
+# "[n/N] PASS name (time)", then the summary (tools/summary.sh), whose last
+# line is "N passed, N failed", and the times in build/reports/suite_test.json
+# (suite_check.json for make check; tools/suite_report.py).
+NPROC         ?= $(shell nproc 2>/dev/null || echo 2)
+# make check: the quick loop, one test of each part (built once: about 1.6
+# min of CPU time, under a minute on 2 idle cores; README, suite-times): lint, the contract, a driver unit test, the store-buffer model,
+# one co-simulation scenario, one controller scenario, one formal proof and
+# one model check, the compiler, one endpoint, one system run.
+CHECK_TESTS   := lint contract-current driver-unit host-threads-model tb-random controller-smoke \
+                 formal-copy formal-spin compiler-four_slot endpoint-import system-rigid
+# suite_run NAME, TESTS: run them in parallel, the costliest first (by the
+# last run's report: a long test started last would run alone at the end),
+# then the summary.
+suite_run = rm -rf $(BUILD)/results && mkdir -p $(BUILD)/results && echo $(words $(2)) > $(BUILD)/results/.total && \
+	t0=$$(date +%s%N); order=$$($(PYTHON) tools/suite_report.py --order $(1) $(2)); \
+	ALB_SUITE=1 $(MAKE) -s -k -j$(NPROC) --output-sync=target --no-print-directory \
+	    $$(printf 'test-%s ' $$order) || true; \
+	$(PYTHON) tools/suite_report.py $(1) $$t0 $(NPROC) $(2); tools/summary.sh $(2)
+
+test: ## build and run every test, NPROC at a time ([n/N] per verdict); ends with "N passed, N failed"
+	@$(call suite_run,test,$(TESTS))
+
+check: ## the quick loop: one test of each part, same output as make test
+	@$(call suite_run,check,$(CHECK_TESTS))
+
+list-tests: ## every test's name, one a line (run one: make test-NAME)
+	@printf '%s\n' $(TESTS)
 
 formal: ## the formal proofs and model checks alone (also part of make test)
-	@rm -rf $(BUILD)/results
-	@$(if $(FORMAL_TESTS),$(MAKE) -k --no-print-directory $(addprefix test-,$(FORMAL_TESTS)) || true)
-	@tools/summary.sh $(FORMAL_TESTS)
+	@$(call suite_run,formal,$(FORMAL_TESTS))
 
 bench: $(BENCHES) ## run the benchmarks, figures to build/reports/
 

@@ -263,23 +263,58 @@ SECTIONS["host-threads"] = host_threads
 
 
 def host_threads_sites():
-    """Each fence site of albatross.c dropped alone (make test-host-threads-sites)."""
+    """Each fence site of albatross.c dropped alone: what the store-buffer model
+    requires and shows (make test-host-threads-model), and how often the
+    fence-less builds tore on silicon, per CPU (make test-host-threads-silicon)."""
     r = load("host_threads.json")
-    if not r or "sites" not in r:
-        missing("host_threads.json", "make test-host-threads-sites")
+    if not r or "model" not in r:
+        missing("host_threads.json", "make test-host-threads-model")
+    seen = r.get("observed", {})
+    cpus = sorted(seen)
+
+    def shown(m):
+        if not m:
+            return "-"
+        return f"{'must fail' if m['must_fail'] else 'must pass'}: {m['shows']} ({n(m['run']['imports'])} Imports)"
+
+    def silicon(row):
+        out = []
+        for cpu in cpus:
+            for name, v in seen[cpu].items():
+                if name.startswith(f"line {row['line']} (") or name.startswith(f"lines {row['line']} ("):
+                    out.append(f"{v['tore']} of {v['runs']}")
+        return "; ".join(out) or "-"
     rows = []
-    for s in r["sites"]["sites"]:
-        x = s.get("run")
+    for s in r["model"]["sites"]:
+        m = s.get("model", {})
         rows.append([s["line"], f"`{s['function']}`", s["comment"] or "-", s["order"],
-                     s["kind"] if x else "-", n(x["imports"]) if x else "-",
-                     f"{x['violations']} ({x['torn']} torn, {x['wrong_old']} wrong Old, "
-                     f"{x['back_in_time'] + x['stale'] + x['wrong_new']} other)" if x else "-",
-                     s["verdict"]])
-    return table(["line", "function", "the fence orders", "order", "run on", "Imports",
-                  "violations", "without this fence alone"], rows)
+                     shown(m.get("tso")), shown(m.get("pso")), silicon(s)])
+    m = r["model"]
+    return (f"Model: seed {m['seed']}; a run that must fail stops at its {m['stop_after']}th violation; "
+            f"the latest first violation of those came at Import {n(m['latest_first_violation'])}. "
+            f"Silicon: runs that tore, of those made"
+            + (f", on {', '.join(cpus)}" if cpus else "") + ".\n\n"
+            + table(["line", "function", "the fence orders", "order", "model, tso", "model, pso",
+                     "silicon: tore"], rows))
 
 
 SECTIONS["host-threads-sites"] = host_threads_sites
+
+
+def host_threads_observed():
+    """Silicon, observed: how often each fence-less build tore, per CPU model
+    (make test-host-threads-silicon; counts add up over the runs kept in the report)."""
+    r = load("host_threads.json")
+    if not r or "observed" not in r:
+        missing("host_threads.json", "make test-host-threads-silicon")
+    rows = []
+    for cpu in sorted(r["observed"]):
+        for name, v in r["observed"][cpu].items():
+            rows.append([cpu, name.rsplit(", ", 1)[0], v["kind"], f"{v['tore']} of {v['runs']}", n(v["imports"]), n(v["violations"])])
+    return table(["CPU", "fence left out", "kind", "runs that tore", "Imports in all", "violations in all"], rows)
+
+
+SECTIONS["host-threads-observed"] = host_threads_observed
 
 
 def host_threads_reliability():
@@ -305,3 +340,26 @@ def host_threads_reliability():
 
 
 SECTIONS["host-threads-reliability"] = host_threads_reliability
+
+
+def suite_times():
+    """How long make test and make check take (build/reports/suite_*.json, tools/suite_report.py)."""
+    rows = []
+    for name in ("check", "check_hogs", "test", "test_hogs"):
+        r = load(f"suite_{name}.json")
+        if not r:
+            continue
+        rows.append([f"`make {r['suite']}`", r["tests"], f"{r['passed']} passed", f"{r['wall_s'] / 60:.1f} min",
+                     f"{r['jobs']}", f"{r['loadavg_end'][0]:.1f}" + (f" ({r['busy']})" if r.get("busy") else ""),
+                     f"{r['cpu_sum_s'] / 60:.1f} min", f"{r['idle_estimate_s'] / 60:.1f} min", r["date"]])
+    if not rows:
+        missing("suite_test.json", "make test")
+    return ("Measured on " + load(f"suite_{'test' if load('suite_test.json') else 'check'}.json")["cpu"]
+            + ", 2 cores, shared with other jobs. The load average counts every job on the machine at the end of the run; "
+            "the CPU time is what the tests and builds used, so CPU time / cores is what the suite needs on an "
+            "idle machine.\n\n"
+            + table(["suite", "tests", "verdicts", "wall time", "jobs", "load average", "CPU time",
+                     "CPU time / cores", "run"], rows))
+
+
+SECTIONS["suite-times"] = suite_times

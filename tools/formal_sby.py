@@ -15,7 +15,9 @@ cover task: every cover reached).  --expect LABEL: the task must end FAIL with a
 assertion whose hierarchical name ends in LABEL (a broken variant caught by the
 named property).  On a wrong verdict it prints which properties failed, at which
 step, and where the counterexample trace (VCD) is.  A hard timeout (the sby
-`timeout` option, and --timeout here for the whole run) ends every task.
+`timeout` option, and --timeout here for the whole run) ends every task; both
+are wall time, scaled by the load average per core when the task starts (1 to
+10 times), so that a busy machine does not make a proof time out.
 Writes build/formal/sby/results/NAME.json and merges them all into
 build/reports/formal_sby.json (proof, engine, mode, depth, result, seconds).
 """
@@ -97,10 +99,18 @@ def main():
     warm_up()
     env = dict(os.environ, **ENV)
     t0 = time.time()
-    cmd = ["yowasp-sby", "-f", "--prefix", prefix, os.path.basename(a.sby), a.task]
+    # The .sby's `timeout` and --timeout are wall time: on a busy machine
+    # (other jobs, make -j) a proof gets only part of a core, so both grow
+    # with the load measured now (load average per core, 1 to 10 times).  The
+    # script goes to sby on its standard input with its timeout scaled; its
+    # files are found from its folder as before.
+    scale = min(10.0, max(1.0, os.getloadavg()[0] / (os.cpu_count() or 1)))
+    with open(a.sby) as f:
+        script = re.sub(r"(?m)^(timeout\s+)(\d+)", lambda m: f"{m.group(1)}{round(int(m.group(2)) * scale)}", f.read())
+    cmd = ["yowasp-sby", "-f", "--prefix", prefix, "-T", a.task]
     try:
-        p = subprocess.run(cmd, cwd=os.path.dirname(a.sby) or ".", env=env, stdout=subprocess.PIPE,
-                           stderr=subprocess.STDOUT, text=True, timeout=a.timeout)
+        p = subprocess.run(cmd, cwd=os.path.dirname(a.sby) or ".", env=env, stdout=subprocess.PIPE, input=script,
+                           stderr=subprocess.STDOUT, text=True, timeout=a.timeout * scale)
         out = p.stdout
     except subprocess.TimeoutExpired as e:
         out = (e.stdout or b"").decode() if isinstance(e.stdout, bytes) else (e.stdout or "")
@@ -108,7 +118,7 @@ def main():
     secs = round(time.time() - t0, 1)
     os.makedirs(OUT, exist_ok=True)
     with open(os.path.join(OUT, f"{a.name}.log"), "w") as f:
-        f.write(" ".join(cmd) + "\n" + out)
+        f.write(" ".join(cmd) + f" < {a.sby} (timeouts x {scale:.1f}: load)\n" + out)
     m = re.findall(r"DONE \((\w+)", out)
     status = m[-1] if m else "ERROR"
     failed, seen = [], set()

@@ -41,10 +41,10 @@ public:
         coro_.start(&SimCpu::entry, this);
     }
     void resume();                  // run to its next access (or the end)
-    // The hand-off watchdog, in wall-clock time: C code that loops without a
+    // The hand-off watchdog, in CPU time: C code that loops without a
     // RAM access never hands control back, and no watchdog counting simulated
     // cycles can see that.  Once armed (by a bench's main), a timer checks
-    // every second that a resume() under way has returned within `seconds`;
+    // every second of CPU time that a resume() under way has returned within `seconds`;
     // if one has not, the process prints which CPU and exits with status 3.
     static void arm_handoff_watchdog(unsigned seconds);
     bool finished() const { return coro_.finished(); }

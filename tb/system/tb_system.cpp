@@ -201,7 +201,7 @@ int main(int argc, char **argv)
     for (const PlanChannel &c : plan.channels)
         if (c.copy() && c.dests.size() == 1) { TransferMeter t; t.c = &c; meters.push_back(t); }
     // A CPU whose C code loops without a RAM access never hands control back
-    // to this loop, so no bound in simulated cycles can stop it: the wall-clock
+    // to this loop, so no bound in simulated cycles can stop it: the CPU-time
     // hand-off watchdog ends the run with a message naming the CPU.
     SimCpu::arm_handoff_watchdog(10);
     uint64_t wait[SystemSim::kBoards] = {};

@@ -6,6 +6,7 @@
 #   make build/schedule/<example>/rom.hex     any sim/<example>.toml or compiler/examples/<example>.toml
 #   make test-compiler                        compiler/tests (examples, bad
 #                                             descriptions, gcc, end-to-end)
+#   make test-compiler-MODULE                 compiler/tests/test_MODULE.py alone
 
 # A description named on the command line (SCHEDULE_DESC=, SIM_DESC=) is a file
 # of the caller: a relative path is taken from the directory make was started in
@@ -25,11 +26,20 @@ SCHEDULE      := albatross-schedule
 SCHEDULE_SRC  := $(sort $(wildcard compiler/albatross_schedule/*.py)) rtl/albatross_contract.toml
 SCHEDULE_DIR  := $(BUILD)/schedule/$(basename $(notdir $(SCHEDULE_DESC)))
 
-TESTS += compiler schedule-caller-dir
-.PHONY: test-compiler schedule test-schedule-caller-dir
+# One test per module of compiler/tests (compiler-schedule, compiler-faults,
+# ...), so that make test runs them side by side (test_schedule alone is about
+# 40 s of CPU time, all of them about 60 s); make test-compiler runs them all
+# in one go.
+COMPILER_TESTS := $(patsubst compiler/tests/test_%.py,compiler-%,$(sort $(wildcard compiler/tests/test_*.py)))
+TESTS += $(COMPILER_TESTS) schedule-caller-dir
+.PHONY: test-compiler schedule test-schedule-caller-dir $(addprefix test-,$(COMPILER_TESTS))
 
 test-compiler: ## [test] the schedule compiler's tests (examples, bad descriptions, gcc, end to end)
 	@tools/run_test.sh compiler $(PYTHON) -m unittest discover -s compiler/tests -v
+
+$(addprefix test-,$(COMPILER_TESTS)): test-compiler-%:
+	@tools/run_test.sh compiler-$* $(PYTHON) -m unittest discover -s compiler/tests -p 'test_$*.py' -v
+
 
 # make schedule always runs the compiler (about a second), so the report it
 # prints is this description's, never an older output found in the folder; a
