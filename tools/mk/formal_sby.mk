@@ -31,14 +31,17 @@ TESTS        += $(FSBY_NAMES)
 FORMAL_TESTS += $(FSBY_NAMES)
 .PHONY: $(addprefix test-,$(FSBY_NAMES))
 
-# A mutant is CORE:VARIANT[:FILE]: FILE (default albatross_<core>.v) is an rtl/ file;
-# the mutant keeps its name, in build/formal/sby/mutant-src/<core>/<variant>/.
+# A mutant is CORE:VARIANT[:FILE[:SED]]: FILE (default albatross_<core>.v) is an rtl/
+# file; SED (default formal/<core>/mutants/<variant>.sed) the edit, so one core's
+# proof can take another proof's mutants; the mutant keeps its name, in
+# build/formal/sby/mutant-src/<core>/<variant>/.
 fsby_mut_file = $(or $(call neg_field,$(1),3),albatross_$(call neg_field,$(1),1).v)
+fsby_mut_sed  = $(or $(call neg_field,$(1),4),formal/$(call neg_field,$(1),1)/mutants/$(call neg_field,$(1),2).sed)
 define fsby_mutant
 $(FSBY_MUT)/$(call neg_field,$(1),1)/$(call neg_field,$(1),2)/$(call fsby_mut_file,$(1)): \
-        rtl/$(call fsby_mut_file,$(1)) formal/$(call neg_field,$(1),1)/mutants/$(call neg_field,$(1),2).sed
+        rtl/$(call fsby_mut_file,$(1)) $(call fsby_mut_sed,$(1))
 	@mkdir -p $$(@D)
-	sed -f formal/$(call neg_field,$(1),1)/mutants/$(call neg_field,$(1),2).sed $$< > $$@
+	sed -f $(call fsby_mut_sed,$(1)) $$< > $$@
 	@if cmp -s $$@ $$<; then echo "mutant $(call neg_field,$(1),2) did not apply: $$< no longer has the line its .sed edits"; \
 	    rm -f $$@; exit 1; fi
 endef

@@ -1,0 +1,89 @@
+# formal/ctrl/tests.mk -- the SymbiYosys tests of formal/ctrl/ctrl.sby
+# (tools/mk/formal_sby.mk says the fields: NAME:CORE:TASK:EXPECT,
+# CORE:VARIANT:FILE:SED).  The harness takes the controller's own top; its
+# mutants are the old proofs' mutants (formal/copy, formal/export,
+# formal/import, formal/rtl, tb/mutants/engines, tb/mutants/controller), each
+# applied to the rtl/ file it edits, and each must be caught by the property
+# that keeps its meaning (docs/verification.md "The controller on its own RTL").
+# The controller's files are the Makefile's CTRL_RTL without the sequencer's
+# (fseq_contract.v takes its place), copied with the contract header into
+# build/formal/sby/ctrl-rtl/base/, which ctrl.sby reads whole: the proof follows
+# the controller's file set.  Each mutant's folder is that one with its file
+# edited (a mutant of a file the controller no longer has is reported).
+FCTRL_SRC     := $(filter-out rtl/albatross_sequencer.v rtl/albatross_schedule_rom.v rtl/albatross_rom_check.v \
+                              rtl/albatross_entry_check.v,$(CTRL_RTL))
+FCTRL_DIR     := $(BUILD)/formal/sby/ctrl-rtl
+FSBY_RTL_ctrl := $(FCTRL_SRC) formal/ctrl/fseq_contract.v $(wildcard formal/alb/*.v)
+FSBY_TESTS_SPEC += \
+    formal-ctrl-cover3:ctrl:cover3:pass \
+    formal-ctrl-cover4:ctrl:cover4:pass \
+    formal-ctrl-negative-early_publish:ctrl:neg_early_publish:dst_publish_complete \
+    formal-ctrl-negative-publish_early:ctrl:neg_publish_early:dst_publish_complete \
+    formal-ctrl-negative-writes_locked:ctrl:neg_writes_locked:dst_no_held_write \
+    formal-ctrl-negative-ignore_actual:ctrl:neg_ignore_actual:dst_no_actual_write \
+    formal-ctrl-negative-extra_access:ctrl:neg_extra_access:dst_readback_needed \
+    formal-ctrl-negative-drop_total:ctrl:neg_drop_total:retry_same|drop_k \
+    formal-ctrl-negative-ignore_rl4:ctrl:neg_ignore_rl4:dst_no_held_write \
+    formal-ctrl-negative-same_slot4:ctrl:neg_same_slot4:dst_no_held_write \
+    formal-ctrl-negative-actual_first4:ctrl:neg_actual_first4:dst_slot_first \
+    formal-ctrl-negative-early_slot4:ctrl:neg_early_slot4:dst_slot_complete \
+    formal-ctrl-negative-extra_load4:ctrl:neg_extra_load4:dst_one_load \
+    formal-ctrl-negative-idx_actual:ctrl:neg_idx_actual:src_no_torn \
+    formal-ctrl-negative-loop4:ctrl:neg_loop4:src_wait_free \
+    formal-ctrl-negative-new_unstored:ctrl:neg_new_unstored:dst_new_once \
+    formal-ctrl-negative-old_by_actual:ctrl:neg_old_by_actual:dst_new_once \
+    formal-ctrl-negative-skip_confirm:ctrl:neg_skip_confirm:src_no_torn \
+    formal-ctrl-negative-store_actual:ctrl:neg_store_actual:src_store_rl \
+    formal-ctrl-negative-wrong_slot:ctrl:neg_wrong_slot:src_no_torn \
+    formal-ctrl-negative-import_no_readlocked:ctrl:neg_import_no_readlocked:src_no_torn \
+    formal-ctrl-negative-never_delivered:ctrl:neg_never_delivered:dst_new_once \
+    formal-ctrl-negative-forget_landed:ctrl:neg_forget_landed:dst_new_once \
+    formal-ctrl-negative-bad_index:ctrl:neg_bad_index:dst_ctrl_store \
+    formal-ctrl-negative-wrong_lane:ctrl:neg_wrong_lane:dst_ctrl_store
+
+FSBY_MUTANTS += \
+    ctrl:early_publish:albatross_export.v:formal/export/mutants/early_publish.sed \
+    ctrl:publish_early:albatross_export.v:formal/rtl/mutants/publish_early.sed \
+    ctrl:writes_locked:albatross_export_dest.v:formal/export/mutants/writes_locked.sed \
+    ctrl:ignore_actual:albatross_export_dest.v:formal/export/mutants/ignore_actual.sed \
+    ctrl:extra_access:albatross_export.v:formal/export/mutants/extra_access.sed \
+    ctrl:drop_total:albatross_export.v:formal/export/mutants/drop_total.sed \
+    ctrl:ignore_rl4:albatross_export_dest.v:formal/export/mutants/ignore_rl4.sed \
+    ctrl:same_slot4:albatross_export_dest.v:formal/export/mutants/same_slot4.sed \
+    ctrl:actual_first4:albatross_export.v:formal/export/mutants/actual_first4.sed \
+    ctrl:early_slot4:albatross_export.v:formal/export/mutants/early_slot4.sed \
+    ctrl:extra_load4:albatross_export.v:formal/export/mutants/extra_load4.sed \
+    ctrl:idx_actual:albatross_import.v:formal/import/mutants/idx_actual.sed \
+    ctrl:loop4:albatross_import.v:formal/import/mutants/loop4.sed \
+    ctrl:new_unstored:albatross_import.v:formal/import/mutants/new_unstored.sed \
+    ctrl:old_by_actual:albatross_import.v:formal/import/mutants/old_by_actual.sed \
+    ctrl:skip_confirm:albatross_import.v:formal/import/mutants/skip_confirm.sed \
+    ctrl:store_actual:albatross_import.v:formal/import/mutants/store_actual.sed \
+    ctrl:wrong_slot:albatross_import.v:formal/import/mutants/wrong_slot.sed \
+    ctrl:import_no_readlocked:albatross_import.v:tb/mutants/engines/import_no_readlocked.sed \
+    ctrl:never_delivered:albatross_controller.v:tb/mutants/controller/never_delivered.sed \
+    ctrl:forget_landed:albatross_export_dest.v:tb/mutants/controller/forget_landed.sed \
+    ctrl:bad_index:albatross_export_dest.v:tb/mutants/controller/bad_index.sed \
+    ctrl:wrong_lane:albatross_export.v:tb/mutants/controller/wrong_lane.sed
+
+# The unbounded proofs (abc pdr: tasks three, four on the free image, three_w1,
+# four_w1 on the fixed one) take longer than make test allows: they run behind
+# their own target, each bounded by the task's timeout (3600 s), and write their
+# verdict to build/reports/formal_sby.json as the others.
+FCTRL_PDR := three three_w1 four four_w1
+.PHONY: formal-ctrl-pdr
+formal-ctrl-pdr: $(FSBY_DEPS) formal/ctrl/ctrl.sby formal/ctrl/fctrl.v $(FSBY_RTL_ctrl) $(FCTRL_DIR)/base/.stamp
+	@for t in $(FCTRL_PDR); do $(FSBY_RUN) formal-ctrl-pdr-$$t --sby formal/ctrl/ctrl.sby --task $$t \
+	    --expect pass --timeout 3700 || fail=1; done; exit $${fail:-0}
+
+$(FCTRL_DIR)/base/.stamp: $(FCTRL_SRC) $(RTL_INC) formal/ctrl/tests.mk
+	@rm -rf $(@D) && mkdir -p $(@D) && cp $(FCTRL_SRC) $(RTL_INC) $(@D)/ && touch $@
+define fctrl_mutant_dir
+$(FCTRL_DIR)/$(call neg_field,$(1),2)/.stamp: $(FCTRL_DIR)/base/.stamp $(FSBY_MUT)/ctrl/$(call neg_field,$(1),2)/$(call neg_field,$(1),3)
+	@if [ ! -f $(FCTRL_DIR)/base/$(call neg_field,$(1),3) ]; then echo "mutant $(call neg_field,$(1),2) edits $(call neg_field,$(1),3), which the controller (CTRL_RTL) no longer has: retarget it"; exit 1; fi
+	@rm -rf $$(@D) && cp -r $(FCTRL_DIR)/base $$(@D) && cp $(FSBY_MUT)/ctrl/$(call neg_field,$(1),2)/$(call neg_field,$(1),3) $$(@D)/ && touch $$@
+test-formal-ctrl-negative-$(call neg_field,$(1),2): $(FCTRL_DIR)/$(call neg_field,$(1),2)/.stamp
+endef
+$(foreach m,$(filter ctrl:%,$(FSBY_MUTANTS)),$(eval $(call fctrl_mutant_dir,$(m))))
+$(foreach t,$(FSBY_TESTS_SPEC),$(if $(filter ctrl,$(call neg_field,$(t),2)),test-$(call neg_field,$(t),1))): \
+        $(FCTRL_DIR)/base/.stamp
