@@ -9,7 +9,7 @@
 // The schedule is one COPY entry (channel 0, ND = 2, source and destination
 // places, W, the four-slot flag and the drop run K as free constants e_*,
 // joined by the script to the harness's observers; with F_FIXED one fixed
-// image: W = 1, every base 0, K = 2); time-rigid only (no
+// image: W = 2, every base 0, K = 2); time-rigid only (no
 // SYNC entry, no poll).  Rules of the environment (the sequencer's
 // guarantees, assumed):
 //   * go_o only after enable_i has been high, never while a slot runs (from
@@ -68,8 +68,9 @@ module fseq_contract #(
     // the entry (free constants; the harness joins its observers to them)
 `ifdef F_FIXED
     // one fixed image (the negatives: a broken variant needs only be caught):
-    // W = 1, every base 0, K = 2, the kind still free
-    (* keep *) wire [11:0]   e_words     = 12'd1;
+    // W = 2 (a word count of 1 hides the word-count mutants), every base 0,
+    // K = 2, the kind still free
+    (* keep *) wire [11:0]   e_words     = 12'd2;
     (* anyconst, keep *) reg e_four;
     (* keep *) wire [AW-1:0] e_src_base  = {AW{1'b0}};
     (* keep *) wire [AW-1:0] e_dst_base0 = {AW{1'b0}};
