@@ -10,6 +10,7 @@
 #   formal-<core>-cover               non-vacuity: every cover reached
 #   formal-<core>-negative-<variant>  a broken variant; passes only if the proof
 #                                     fails on the named property
+#   make formal-slow                  the tests of FSBY_SLOW_SPEC (not in make test)
 # Build outputs in build/formal/sby/.
 
 FSBY_RUN     := $(PYTHON) tools/formal_sby.py
@@ -24,6 +25,11 @@ FSBY_MUT     := $(BUILD)/formal/sby/mutant-src
 # FSBY_RTL_<core> names another file (a harness over several modules), to that file.
 FSBY_TESTS_SPEC :=
 FSBY_MUTANTS    :=
+# Tests too slow for make test (a proof or a negative that needs several slots):
+# the same fields, each with its rule but run only by make formal-slow, bounded by
+# FSBY_SLOW_TIMEOUT.
+FSBY_SLOW_SPEC  :=
+FSBY_SLOW_TIMEOUT := 3700
 include $(sort $(wildcard formal/*/tests.mk))
 
 FSBY_NAMES := $(foreach t,$(FSBY_TESTS_SPEC),$(call neg_field,$(t),1))
@@ -54,6 +60,10 @@ fsby_core_deps = formal/$(1)/$(1).sby $(wildcard formal/$(1)/*.v) $(or $(FSBY_RT
 define fsby_test
 test-$(call neg_field,$(1),1): $(FSBY_DEPS) $(call fsby_core_deps,$(call neg_field,$(1),2))
 	@tools/run_test.sh $(call neg_field,$(1),1) $(FSBY_RUN) $(call neg_field,$(1),1) --sby formal/$(call neg_field,$(1),2)/$(call neg_field,$(1),2).sby \
-	    --task $(call neg_field,$(1),3) --expect '$(call neg_field,$(1),4)' --timeout $(FSBY_TIMEOUT)
+	    --task $(call neg_field,$(1),3) --expect '$(call neg_field,$(1),4)' --timeout $(2)
 endef
-$(foreach t,$(FSBY_TESTS_SPEC),$(eval $(call fsby_test,$(t))))
+$(foreach t,$(FSBY_TESTS_SPEC),$(eval $(call fsby_test,$(t),$(FSBY_TIMEOUT))))
+$(foreach t,$(FSBY_SLOW_SPEC),$(eval $(call fsby_test,$(t),$(FSBY_SLOW_TIMEOUT))))
+FSBY_SLOW_NAMES := $(foreach t,$(FSBY_SLOW_SPEC),$(call neg_field,$(t),1))
+.PHONY: formal-slow $(addprefix test-,$(FSBY_SLOW_NAMES))
+formal-slow: $(addprefix test-,$(FSBY_SLOW_NAMES))
