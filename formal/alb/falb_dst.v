@@ -50,6 +50,9 @@
 //                       landed Actual store that changes Actual is a
 //                       publication, and a consumer never sees one value as
 //                       New twice.
+// With PROTO = 0 (the harness then returns free load data) only the access
+// shapes are checked: dst_no_held_write, dst_no_actual_write,
+// dst_readback_needed and dst_new_once need the consumer's control word.
 // Outputs for covers and harness invariants: pub_o (an Actual store acked),
 // held_o, act_o.
 `default_nettype none
@@ -58,6 +61,7 @@ module falb_dst #(
     parameter AW    = 4,    // word-address bits of a board RAM
     parameter WW    = 2,    // bits of W (W = 1 .. 2**WW - 1, stride W + 1 <= 4)
     parameter BB    = 4,    // board bits of the bus address
+    parameter PROTO = 1,    // 1: check the protocol rules; 0: the access shapes only (load data free)
     parameter BOARD = 1     // this channel's board
 ) (
     input  wire              clk_i,
@@ -219,12 +223,12 @@ module falb_dst #(
             dst_ctrl_store:       assert(!(st && ctrl) || (st_act && valid_act) || (st_slot && sbyte[7:1] == 7'd0));
             dst_publish_complete: assert(!st_act || full(byte0[2:0], done_q, s));
             dst_slot_complete:    assert(!st_slot || full(slot_b, done_q, s));
-            dst_no_held_write:    assert(!(st && inb) || b != held_o);
+            dst_no_held_write:    assert(PROTO == 0 || !(st && inb) || b != held_o);
             dst_slot_first:       assert(!(st_act && four_i) || cmp_q[byte0[2:0]]);
-            dst_no_actual_write:  assert(!(st && inb && !four_i) || b != act_q);
-            dst_readback_needed:  assert(!(ld_ctrl && !four_i && sel_i[0]) || unk_q);
+            dst_no_actual_write:  assert(PROTO == 0 || !(st && inb && !four_i) || b != act_q);
+            dst_readback_needed:  assert(PROTO == 0 || !(ld_ctrl && !four_i && sel_i[0]) || unk_q);
             dst_one_load:         assert(!(ld_ctrl && four_i) || !ld_q);
-            dst_new_once:         assert(!(publish && carry_i) || news_q == 2'd0);
+            dst_new_once:         assert(PROTO == 0 || !(publish && carry_i) || news_q == 2'd0);
         end
     end
 `endif

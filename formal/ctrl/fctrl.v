@@ -20,6 +20,10 @@
 // falb_slot.v; Wishbone classic: formal/wb/fwb_master.v with OPT_ABORT, the
 // bus master withdraws a timed-out request) and
 //   bus_board   every request goes to the source's or a destination's board.
+// With F_SHAPE the load data are free and only the access shapes are checked
+// (the observers' PROTO = 0): the proof of the bus rules, the slot timing, the
+// retry and drop rule and every access's place and lanes, without the
+// producer's and consumers' state.
 // Covers: cov_new, cov_old (a New / an Old Import read the source), cov_pub0,
 // cov_pub1 (each destination published), cov_drop, cov_retry, cov_readback
 // (a destination's Actual store whose answer was lost, read back in a later
@@ -43,6 +47,11 @@ module fctrl #(
     input  wire [1:0]  c1_op_i
 );
     localparam BB = 4, TIMEOUT = 3;
+`ifdef F_SHAPE
+    localparam PROTO = 0;      // F_SHAPE: free load data, the access shapes only
+`else
+    localparam PROTO = 1;
+`endif
 
     wire          m_cyc, m_stb, m_we;
     wire [AW+3:0] m_adr;
@@ -75,18 +84,18 @@ module fctrl #(
     wire        s_carry;
     reg         carry_q;                   // this slot's Import read the watched value
     wire [2:0]  d0_held, d0_act, d1_held, d1_act;
-    falb_src #(.AW(AW), .WW(WW), .BB(BB), .BOARD(1)) src (
+    falb_src #(.AW(AW), .WW(WW), .BB(BB), .PROTO(PROTO), .BOARD(1)) src (
         .clk_i(clk_i), .rst_i(rst_i), .base_i(e_src_base), .words_i(w), .four_i(e_four),
         .cyc_i(m_cyc), .stb_i(m_stb), .we_i(m_we), .adr_i(m_adr), .sel_i(m_sel), .wdat_i(m_wdat),
         .ack_i(ack_i), .land_i(land_i), .op_i(p_op_i), .wb_i(p_wb_i),
         .slot_start_i(s_go), .watch_i(p_watch_i), .carry_o(s_carry),
         .ctrl_o(s_ctrl), .hit_o(s_hit), .rl_store_o(s_rl), .word_load_o(s_wl));
-    falb_dst #(.AW(AW), .WW(WW), .BB(BB), .BOARD(2)) dst0 (
+    falb_dst #(.AW(AW), .WW(WW), .BB(BB), .PROTO(PROTO), .BOARD(2)) dst0 (
         .clk_i(clk_i), .rst_i(rst_i), .slot_start_i(s_go), .base_i(e_dst_base0), .words_i(w), .four_i(e_four),
         .cyc_i(m_cyc), .stb_i(m_stb), .we_i(m_we), .adr_i(m_adr), .sel_i(m_sel), .wdat_i(m_wdat),
         .ack_i(ack_i), .land_i(land_i), .op_i(c0_op_i), .carry_i(carry_q),
         .ctrl_o(d0_word), .hit_o(d0_hit), .ctrl_hit_o(d0_ctrl), .pub_o(d0_pub), .held_o(d0_held), .act_o(d0_act));
-    falb_dst #(.AW(AW), .WW(WW), .BB(BB), .BOARD(3)) dst1 (
+    falb_dst #(.AW(AW), .WW(WW), .BB(BB), .PROTO(PROTO), .BOARD(3)) dst1 (
         .clk_i(clk_i), .rst_i(rst_i), .slot_start_i(s_go), .base_i(e_dst_base1), .words_i(w), .four_i(e_four),
         .cyc_i(m_cyc), .stb_i(m_stb), .we_i(m_we), .adr_i(m_adr), .sel_i(m_sel), .wdat_i(m_wdat),
         .ack_i(ack_i), .land_i(land_i), .op_i(c1_op_i), .carry_i(carry_q),
@@ -109,9 +118,11 @@ module fctrl #(
     wire s_ctrl_hit = s_hit && m_adr[AW-1:0] == e_src_base;
     always @* begin
         m_rdat = rdat_i;
-        if (s_ctrl_hit) m_rdat = s_ctrl;
-        if (d0_ctrl)    m_rdat = d0_word;
-        if (d1_ctrl)    m_rdat = d1_word;
+        if (PROTO != 0) begin
+            if (s_ctrl_hit) m_rdat = s_ctrl;
+            if (d0_ctrl)    m_rdat = d0_word;
+            if (d1_ctrl)    m_rdat = d1_word;
+        end
     end
 
 `ifdef FORMAL

@@ -29,14 +29,17 @@ module fseq_contract #(
     parameter ROM_FILE   = "",   // unused
     parameter TIME_BITS  = 16,   // unused
     parameter TIMEOUT    = 8,    // unused (the harness checks the bus master's)
-    parameter POLL       = 16    // unused
+    parameter POLL       = 16,   // unused
+    parameter HAS_SYNC        = 1,  // unused (the controller's configuration parameters, where it passes them)
+    parameter HAS_ROM_RECHECK = 1,  // unused
+    parameter HAS_ENTRY_CHECK = 1   // unused
 ) (
     input  wire                    clk_i,
     input  wire                    rst_i,
     input  wire                    enable_i,
     output wire                    go_o,
     output wire [1:0]              kind_o,
-    output wire [4:0]              chan_o,
+    output wire [6:0]              chan_o,         // (7 bits: a 5-bit connection takes the low bits)
     output wire [2:0]              nd_o,
     output wire [11:0]             words_o,
     output wire [3:0]              src_board_o,
@@ -104,7 +107,7 @@ module fseq_contract #(
     assign go_o         = f_go && !rst_i && en_q && !run_q && gap_q == 3'd6 && !slot_done_i;
     assign may_access_o = go_o || live_q;
     assign kind_o       = 2'd1;                  // ALB_KIND_COPY
-    assign chan_o       = 5'd0;
+    assign chan_o       = 7'd0;
     assign nd_o         = 3'd2;
     assign words_o      = e_words;
     assign src_board_o  = 4'd1;

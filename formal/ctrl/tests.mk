@@ -86,11 +86,11 @@ FSBY_TESTS_SPEC += \
 FSBY_SLOW_SPEC += $(foreach n,$(FCTRL_NEG),$(if $(filter $(call neg_field,$(n),1),$(FCTRL_DEEP)),$(call fctrl_neg_spec,$(n))))
 FSBY_MUTANTS += $(FCTRL_MUTANTS)
 
-# The unbounded proofs (abc pdr: tasks three, four on the free image, three_fixed,
+# The unbounded proofs (abc pdr: tasks shape, three, four on the free image, shape_fixed, three_fixed,
 # four_fixed on the fixed one) take longer than make test allows: they run behind
 # their own target, each bounded by the task's timeout (3600 s), and write their
 # verdict to build/reports/formal_sby.json as the others.
-FCTRL_PDR := three three_fixed four four_fixed
+FCTRL_PDR := shape_fixed shape three_fixed three four_fixed four
 .PHONY: formal-ctrl-pdr
 formal-ctrl-pdr: $(FSBY_DEPS) formal/ctrl/ctrl.sby formal/ctrl/fctrl.v $(FSBY_RTL_ctrl) $(FCTRL_DIR)/base/.stamp
 	@for t in $(FCTRL_PDR); do $(FSBY_RUN) formal-ctrl-pdr-$$t --sby formal/ctrl/ctrl.sby --task $$t \
