@@ -1,0 +1,112 @@
+# formal/ctrl/tests.mk -- the SymbiYosys tests of formal/ctrl/ctrl.sby
+# (tools/mk/formal_sby.mk says the fields: NAME:CORE:TASK:EXPECT,
+# CORE:VARIANT:FILE:SED).  The harness takes the controller's own top; its
+# mutants are the old proofs' mutants (formal/copy, formal/export,
+# formal/import, formal/rtl, tb/mutants/engines, tb/mutants/controller), each
+# applied to the rtl/ file it edits, and each must be caught by the property
+# that keeps its meaning (docs/verification.md "The controller on its own RTL").
+# The controller's files are the Makefile's CTRL_RTL without the sequencer's
+# (fseq_contract.v takes its place), copied with the contract header into
+# build/formal/sby/ctrl-rtl/base/, which ctrl.sby reads whole: the proof follows
+# the controller's file set.  Each mutant's folder is that one with its file
+# edited (a mutant of a file the controller no longer has is reported).
+FCTRL_SRC     := $(filter-out rtl/albatross_sequencer.v rtl/albatross_schedule_rom.v rtl/albatross_rom_check.v \
+                              rtl/albatross_entry_check.v,$(CTRL_RTL))
+FCTRL_DIR     := $(BUILD)/formal/sby/ctrl-rtl
+FSBY_RTL_ctrl := $(FCTRL_SRC) formal/ctrl/fseq_contract.v $(wildcard formal/alb/*.v)
+# The negatives: VARIANT:PROPERTY (the property that keeps the old mutant's
+# meaning; docs/verification.md has each one's intent).
+FCTRL_NEG := \
+    early_publish:dst_publish_complete \
+    publish_early:dst_publish_complete \
+    writes_locked:dst_no_held_write \
+    ignore_actual:dst_no_actual_write \
+    extra_access:dst_readback_needed \
+    drop_total:retry_same|drop_k \
+    ignore_rl4:dst_no_held_write \
+    same_slot4:dst_no_held_write \
+    actual_first4:dst_slot_first \
+    early_slot4:dst_slot_complete \
+    extra_load4:dst_one_load \
+    idx_actual:src_no_torn \
+    loop4:src_wait_free \
+    new_unstored:dst_new_once \
+    old_by_actual:dst_new_once \
+    skip_confirm:src_no_torn \
+    store_actual:src_store_rl \
+    wrong_slot:src_no_torn \
+    import_no_readlocked:src_no_torn \
+    never_delivered:dst_new_once \
+    forget_landed:dst_new_once \
+    bad_index:dst_ctrl_store|dst_in_channel \
+    wrong_lane:dst_ctrl_store
+# Today's controller (the Import and Export engines): the old proofs' own edits,
+# CORE:VARIANT:FILE:SED.  Once the controller is its sequencer and one transfer
+# datapath (rtl/albatross_transfer.v), the same intents are the edits
+# formal/ctrl/mutants/VARIANT.sed of that file (checked against the ctrl
+# branch's datapath; their '# target:' line names the file).
+FCTRL_OLD := \
+    ctrl:early_publish:albatross_export.v:formal/export/mutants/early_publish.sed \
+    ctrl:publish_early:albatross_export.v:formal/rtl/mutants/publish_early.sed \
+    ctrl:writes_locked:albatross_export_dest.v:formal/export/mutants/writes_locked.sed \
+    ctrl:ignore_actual:albatross_export_dest.v:formal/export/mutants/ignore_actual.sed \
+    ctrl:extra_access:albatross_export.v:formal/export/mutants/extra_access.sed \
+    ctrl:drop_total:albatross_export.v:formal/export/mutants/drop_total.sed \
+    ctrl:ignore_rl4:albatross_export_dest.v:formal/export/mutants/ignore_rl4.sed \
+    ctrl:same_slot4:albatross_export_dest.v:formal/export/mutants/same_slot4.sed \
+    ctrl:actual_first4:albatross_export.v:formal/export/mutants/actual_first4.sed \
+    ctrl:early_slot4:albatross_export.v:formal/export/mutants/early_slot4.sed \
+    ctrl:extra_load4:albatross_export.v:formal/export/mutants/extra_load4.sed \
+    ctrl:idx_actual:albatross_import.v:formal/import/mutants/idx_actual.sed \
+    ctrl:loop4:albatross_import.v:formal/import/mutants/loop4.sed \
+    ctrl:new_unstored:albatross_import.v:formal/import/mutants/new_unstored.sed \
+    ctrl:old_by_actual:albatross_import.v:formal/import/mutants/old_by_actual.sed \
+    ctrl:skip_confirm:albatross_import.v:formal/import/mutants/skip_confirm.sed \
+    ctrl:store_actual:albatross_import.v:formal/import/mutants/store_actual.sed \
+    ctrl:wrong_slot:albatross_import.v:formal/import/mutants/wrong_slot.sed \
+    ctrl:import_no_readlocked:albatross_import.v:tb/mutants/engines/import_no_readlocked.sed \
+    ctrl:never_delivered:albatross_controller.v:tb/mutants/controller/never_delivered.sed \
+    ctrl:forget_landed:albatross_export_dest.v:tb/mutants/controller/forget_landed.sed \
+    ctrl:bad_index:albatross_export_dest.v:tb/mutants/controller/bad_index.sed \
+    ctrl:wrong_lane:albatross_export.v:tb/mutants/controller/wrong_lane.sed
+ifneq ($(wildcard rtl/albatross_transfer.v),)
+FCTRL_MUTANTS := $(foreach n,$(FCTRL_NEG),ctrl:$(call neg_field,$(n),1):albatross_transfer.v)
+else
+FCTRL_MUTANTS := $(FCTRL_OLD)
+endif
+# The negatives whose counterexample needs two slots or more (a value published
+# twice, a reader overtaken by three Exports) take longer than make test allows:
+# make formal-slow runs them.
+FCTRL_DEEP := new_unstored old_by_actual never_delivered forget_landed ignore_rl4
+fctrl_neg_spec = formal-ctrl-negative-$(call neg_field,$(1),1):ctrl:neg_$(call neg_field,$(1),1):$(call neg_field,$(1),2)
+FSBY_TESTS_SPEC += \
+    formal-ctrl-cover3:ctrl:cover3:pass \
+    formal-ctrl-cover4:ctrl:cover4:pass \
+    formal-ctrl-shape-fixed:ctrl:shape_fixed:pass \
+    formal-ctrl-shape-negative-drop_total:ctrl:neg_shape_drop_total:retry_same|drop_k \
+    $(foreach n,$(FCTRL_NEG),$(if $(filter $(call neg_field,$(n),1),$(FCTRL_DEEP)),,$(call fctrl_neg_spec,$(n))))
+FSBY_SLOW_SPEC += $(foreach n,$(FCTRL_NEG),$(if $(filter $(call neg_field,$(n),1),$(FCTRL_DEEP)),$(call fctrl_neg_spec,$(n))))
+FSBY_MUTANTS += $(FCTRL_MUTANTS)
+
+# The unbounded proofs (abc pdr: tasks shape, three, four on the free image, three_fixed,
+# four_fixed on the fixed one) take longer than make test allows: they run behind
+# their own target, each bounded by the task's timeout (3600 s), and write their
+# verdict to build/reports/formal_sby.json as the others.
+FCTRL_PDR := shape three_fixed three four_fixed four
+.PHONY: formal-ctrl-pdr
+formal-ctrl-pdr: $(FSBY_DEPS) formal/ctrl/ctrl.sby formal/ctrl/fctrl.v $(FSBY_RTL_ctrl) $(FCTRL_DIR)/base/.stamp
+	@for t in $(FCTRL_PDR); do $(FSBY_RUN) formal-ctrl-pdr-$$t --sby formal/ctrl/ctrl.sby --task $$t \
+	    --expect pass --timeout 3700 || fail=1; done; exit $${fail:-0}
+
+$(FCTRL_DIR)/base/.stamp: $(FCTRL_SRC) $(RTL_INC) formal/ctrl/tests.mk
+	@rm -rf $(@D) && mkdir -p $(@D) && cp $(FCTRL_SRC) $(RTL_INC) $(@D)/ && touch $@
+define fctrl_mutant_dir
+$(FCTRL_DIR)/$(call neg_field,$(1),2)/.stamp: $(FCTRL_DIR)/base/.stamp $(FSBY_MUT)/ctrl/$(call neg_field,$(1),2)/$(call neg_field,$(1),3)
+	@if [ ! -f $(FCTRL_DIR)/base/$(call neg_field,$(1),3) ]; then echo "mutant $(call neg_field,$(1),2) edits $(call neg_field,$(1),3), which the controller (CTRL_RTL) no longer has: retarget it"; exit 1; fi
+	@rm -rf $$(@D) && cp -r $(FCTRL_DIR)/base $$(@D) && cp $(FSBY_MUT)/ctrl/$(call neg_field,$(1),2)/$(call neg_field,$(1),3) $$(@D)/ && touch $$@
+test-formal-ctrl-negative-$(call neg_field,$(1),2): $(FCTRL_DIR)/$(call neg_field,$(1),2)/.stamp
+endef
+$(foreach m,$(FCTRL_MUTANTS),$(eval $(call fctrl_mutant_dir,$(m))))
+$(foreach t,$(FSBY_TESTS_SPEC) $(FSBY_SLOW_SPEC),$(if $(filter ctrl,$(call neg_field,$(t),2)),test-$(call neg_field,$(t),1))): \
+        $(FCTRL_DIR)/base/.stamp
+test-formal-ctrl-shape-negative-drop_total: $(FCTRL_DIR)/drop_total/.stamp
