@@ -26,7 +26,7 @@ corefiles-print:
 
 test-corefiles: $(BUILD)/corefiles.mk
 	@mkdir -p $(COREFILES_DIR)
-	@$(MAKE) -s --no-print-directory corefiles-print > $(COREFILES_DIR)/vars.txt
+	@env -u ALB_SUITE $(MAKE) -s --no-print-directory corefiles-print > $(COREFILES_DIR)/vars.txt
 	@tools/run_test.sh corefiles $(COREFILES_CHECK) --vars $(COREFILES_DIR)/vars.txt
 
 test-corefiles-negative-orphan:
