@@ -16,10 +16,11 @@
 //     copy (New if a store was made).  Four-slot: load the control word, c =
 //     1 + 2 pair(A) + Slot[pair(A)]; c = L: Old; else store ReadLocked := A,
 //     load the control word again, L := 1 + 2 pair(A) + Slot[pair(A)]: New.
-//     Actual naming no buffer ends the slot (corrupt).  In the ack clock of
-//     the final control load the value is chosen: the destinations that need
-//     it are all active ones if New (new_o: taken_at := the time now), else those still
-//     in need (st_need_i); none: the slot ends.  A cut-off after a
+//     Actual naming no buffer ends the slot (corrupt; 0, not started:
+//     nothing new, no count).  In the ack clock of the final control load
+//     the value is chosen: the destinations that need it are all active ones
+//     if New (new_o: taken_at := the time now), else those still in need
+//     (st_need_i); none: the slot ends.  A cut-off after a
 //     ReadLocked store and before its confirming load forgets the copy.
 //   * Export, to the destinations d in need in index order: per d, load its
 //     Actual if the copy is unknown (three-buffer read-back: an Actual equal
@@ -27,10 +28,11 @@
 //     leaves), then load ReadLocked (four-slot: the whole control word, with
 //     the landed check) and pick the buffer (three-buffer: the last of 1..3
 //     that is neither Actual nor ReadLocked; four-slot: p = 1 - pair(R), s =
-//     1 - Slot_p); then per word k: one source load (COPY; TIME: the slot
-//     time; STATUS: status_i at index_o) and one store per d; then per d
-//     taken_at (word W, stride W + 1), four-slot the Slot byte, then Actual
-//     (published).  TIME and STATUS run the Export alone from go_i.
+//     1 - Slot_p; a ReadLocked of 0, not started, is Buffer1, four-slot
+//     p = 1; a read-back Actual of 0 leaves the copy unknown; no count);
+//     then per word k: one source load (COPY; TIME: the slot time; STATUS:
+//     status_i at index_o) and one store per d; then per d taken_at (word
+//     W, stride W + 1), four-slot the Slot byte, then Actual (published).  TIME and STATUS run the Export alone from go_i.
 //   * Failures (err_i, which includes the bus master's timeout): cyc drops
 //     for one clock; then the same access again if may_access_i, else the
 //     cut-off (the slot ends).  A destination access failing K = drop_run_i
@@ -108,12 +110,14 @@ module albatross_transfer #(
     localparam RL_BIT  = 8 * (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
     localparam S0_BIT  = 8 * (ALB_CH_OFF_SLOT0 % ALB_CH_WORD_BYTES);
     localparam S1_BIT  = 8 * (ALB_CH_OFF_SLOT1 % ALB_CH_WORD_BYTES);
+    localparam [7:0] NOT_STARTED = ALB_CH_NOT_STARTED;
 
     generate
         if (ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES != 0 || ALB_CH_OFF_READLOCKED / ALB_CH_WORD_BYTES != 0 ||
             ALB_CH_OFF_SLOT0 / ALB_CH_WORD_BYTES != 0 || ALB_CH_OFF_SLOT1 / ALB_CH_WORD_BYTES != 0 ||
             ALB_CH_OFF_BUFFERS != ALB_CH_WORD_BYTES || ALB_CH_WORD_BYTES != 4 || ALB_CH_BUFFER1 != 1 ||
-            ALB_CH_BUFFER_LAST != 3 || ALB_CH_TAKEN_AT_WORDS != 1 || AW < 3) begin : g_contract_check
+            ALB_CH_BUFFER_LAST != 3 || ALB_CH_TAKEN_AT_WORDS != 1 || ALB_CH_NOT_STARTED != 0 || AW < 3)
+        begin : g_contract_check
             albatross_transfer_contract_mismatch u_error ();
         end
     endgenerate
@@ -160,6 +164,10 @@ module albatross_transfer #(
     wire [7:0] r_byte   = dat_i[RL_BIT +: 8];
     wire       a_valid  = a_byte[7:3] == 5'd0 && a_byte[2:0] != 3'd0 && (four_i ? a_byte[2:0] <= 3'd4 : !a_byte[2]);
     wire       r_valid  = r_byte[7:3] == 5'd0 && r_byte[2:0] != 3'd0 && (four_i ? r_byte[2:0] <= 3'd4 : !r_byte[2]);
+    // Not started (0, a zeroed RAM): no error.  Actual: nothing published
+    // (Import: nothing new; Export: copy unknown); ReadLocked: Buffer1.
+    wire       a_zero   = a_byte == NOT_STARTED;
+    wire       r_zero   = r_byte == NOT_STARTED;
     wire       a_pair   = a_byte[2] | (a_byte[1] & a_byte[0]);      // (x - 1) >> 1 for x = 1..4
     wire       r_pair   = r_byte[2] | (r_byte[1] & r_byte[0]);
     // Source: c of this word (first load), b from the Actual stored (second).
@@ -170,7 +178,7 @@ module albatross_transfer #(
     // Destination pick.
     wire [1:0] r_lock   = r_valid ? r_byte[1:0] : 2'd0;
     wire [1:0] pick3    = (copy_d != 2'd3 && r_lock != 2'd3) ? 2'd3 : (copy_d != 2'd2 && r_lock != 2'd2) ? 2'd2 : 2'd1;
-    wire       pk_p     = r_valid ? !r_pair : a_valid ? !a_pair : 1'b1;
+    wire       pk_p     = r_valid ? !r_pair : r_zero ? 1'b1 : a_valid ? !a_pair : 1'b1;
     wire       pk_s     = !(pk_p ? dat_i[S1_BIT] : dat_i[S0_BIT]);
     wire [2:0] pick     = four_i ? {1'b0, pk_p, pk_s} + 3'd1 : {1'b0, pick3};
     wire       read_act = ack && (state_q == S_DST_ACT || (four_i && state_q == S_DST_RL));
@@ -303,7 +311,7 @@ module albatross_transfer #(
                 S_SRC_ACT: if (ack) begin
                     ald_q <= a_byte[2:0];
                     if (!a_valid) begin
-                        icor_q <= 1'b1;
+                        icor_q <= !a_zero;
                         finish;
                     end else if (!a_match) begin
                         new_q <= 1'b1;
@@ -318,8 +326,8 @@ module albatross_transfer #(
                 S_SRC_WORD: if (ack) take_word;
                 S_WAIT: if (word_ok) take_word;
                         else if (!may_access_i || copy_i) cut_off;      // (COPY: only entered without may_access_i)
-                S_DST_ACT: if (ack && !a_valid) cor_q <= cor_q | d_bit;
-                S_DST_RL: if (ack && (!r_valid || (four_i && !a_valid))) cor_q <= cor_q | d_bit;
+                S_DST_ACT: if (ack && !a_valid && !a_zero) cor_q <= cor_q | d_bit;
+                S_DST_RL: if (ack && ((!r_valid && !r_zero) || (four_i && !a_valid && !a_zero))) cor_q <= cor_q | d_bit;
                 default: ;
             endcase
             if (landed || (ack && state_q == S_DST_FIN)) pub_q <= pub_q | d_bit;
