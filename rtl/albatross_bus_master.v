@@ -1,6 +1,8 @@
 // albatross_bus_master -- the controller's one master port on the system bus
 // (Wishbone B4 classic, address {board[3:0], word}), shared by REQS
-// requesters (the Import engine, the Export engine, the sequencer's poll).
+// requesters (in the controller: the transfer datapath and the sequencer's
+// poll; in the hardware endpoints' proofs: the Import and Export engines).
+// The owner field is as wide as a requester index needs (1 bit for REQS 2).
 // Rules:
 //   * Requesters are Wishbone B4 classic masters on a word address plus a
 //     board field; the master adds the board field (m_adr_o = {board, word}).
@@ -73,7 +75,7 @@ module albatross_bus_master #(
     localparam TMO_BITS = (TIMEOUT > 1) ? $clog2(TIMEOUT) : 1;
     localparam integer        TMO_LAST_I = TIMEOUT - 1;
     localparam [TMO_BITS-1:0] TMO_LAST   = TMO_LAST_I[TMO_BITS-1:0];
-    localparam OWN_BITS = 2;
+    localparam OWN_BITS = (REQS > 2) ? 2 : 1;   // bits of a requester index (the owner field)
 
     generate
         if (REQS < 1 || REQS > 4 || TIMEOUT < 2 || BOARD_BITS < 1) begin : g_param_check

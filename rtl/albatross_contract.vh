@@ -61,6 +61,7 @@ localparam ALB_CH_BUFFERS        = 3;
 localparam ALB_CH_BUFFER1        = 1;
 localparam ALB_CH_BUFFER_LAST    = 3;
 localparam ALB_CH_INITIAL_INDEX  = 1;
+localparam ALB_CH_NOT_STARTED    = 0;  // a control byte its writer has not set yet
 localparam ALB_CH_TAKEN_AT_WORDS = 1;  // destination stride: W + TAKEN_AT_WORDS
 // four-slot kind (E0 flag FOUR_SLOT): slot bytes, buffers 1..FS_BUFFERS, buffer b is
 // pair (b-1)>>1, slot (b-1)&1

@@ -14,7 +14,7 @@
 //                         (figure 3), the Export (figure 4) to up to 4
 //                         destinations, TIME and STATUS, on one requester
 //   albatross_bus_master  the one bus port: board field, timeout; its
-//                         requesters are the datapath (0) and the poll (2)
+//                         requesters are the datapath (0) and the poll (1)
 //   albatross_counters    per-channel counters and the STATUS words
 //                         (HAS_STATUS)
 // Rules:
@@ -109,7 +109,7 @@ module albatross_controller #(
     wire [4*AW-1:0] dst_base;
     wire [31:0]   slot_time;
     wire [31:0]   bus_rdat;
-    wire [2:0]    r_ack, r_err;
+    wire [1:0]    r_ack, r_err;
     reg           slot_end;
     reg [1:0]     sync_rl_q;
     reg           ready_q;                                 // channel state cleared
@@ -123,7 +123,7 @@ module albatross_controller #(
         .src_board_o(src_board), .src_base_o(src_base), .dst_board_o(dst_board), .dst_base_o(dst_base),
         .slot_time_o(slot_time), .sync_entry_o(sync_entry), .four_o(four), .may_access_o(may_access), .slot_done_i(slot_end),
         .poll_cyc_o(poll_cyc), .poll_board_o(poll_board), .poll_adr_o(poll_adr), .poll_dat_i(bus_rdat),
-        .poll_ack_i(r_ack[2]), .poll_err_i(r_err[2]), .sync_rl_i(sync_rl_q),
+        .poll_ack_i(r_ack[1]), .poll_err_i(r_err[1]), .sync_rl_i(sync_rl_q),
         .time_o(time_o), .cycle_o(cycle_start), .error_o(error_o), .rom_errors_o(rom_errors_o), .cycles_o(cycles),
         .drop_run_o(drop_run));
 
@@ -173,12 +173,11 @@ module albatross_controller #(
     wire [31:0] status_word;
     wire        status_valid;
     wire        cnt_busy;
-    // Requesters of the bus master: 0 the transfer datapath, 2 the poll; 1 is
-    // unused and tied off (the master's owner field is 2 bits wide).
-    wire [2:0]  r_cyc, r_we;
-    wire [3*AW-1:0] r_adr;
-    wire [11:0] r_sel, r_board;
-    wire [95:0] r_wdat;
+    // Requesters of the bus master: 0 the transfer datapath, 1 the poll.
+    wire [1:0]  r_cyc, r_we;
+    wire [2*AW-1:0] r_adr;
+    wire [7:0]  r_sel, r_board;
+    wire [63:0] r_wdat;
 
     albatross_transfer #(.ADDR_WIDTH(AW)) u_transfer (
         .clk_i(clk_i), .rst_i(rst_i),
@@ -194,18 +193,18 @@ module albatross_controller #(
         .dat_o(r_wdat[31:0]), .dat_i(bus_rdat), .ack_i(r_ack[0]), .err_i(r_err[0]));
 
     // The sync-mode poll: a load of the SYNC source's control word.
-    assign r_cyc[2:1]        = {poll_cyc, 1'b0};
-    assign r_we[2:1]         = 2'b00;
-    assign r_adr[AW +: 2*AW] = {poll_adr, {AW{1'b0}}};
-    assign r_board[11:4]     = {poll_board, 4'd0};
-    assign r_sel[11:4]       = {4'b0001 << ALB_CH_OFF_ACTUAL, 4'd0};
-    assign r_wdat[95:32]     = 64'd0;
+    assign r_cyc[1]        = poll_cyc;
+    assign r_we[1]         = 1'b0;
+    assign r_adr[AW +: AW] = poll_adr;
+    assign r_board[7:4]    = poll_board;
+    assign r_sel[7:4]      = 4'b0001 << ALB_CH_OFF_ACTUAL;
+    assign r_wdat[63:32]   = 32'd0;
 
     // ------------------------------------------------------------ bus master
     wire        fail;
     wire [15:0] fails_total;
     wire        overlap;
-    albatross_bus_master #(.ADDR_WIDTH(AW), .BOARD_BITS(4), .REQS(3), .TIMEOUT(TIMEOUT)) u_bus (
+    albatross_bus_master #(.ADDR_WIDTH(AW), .BOARD_BITS(4), .REQS(2), .TIMEOUT(TIMEOUT)) u_bus (
         .clk_i(clk_i), .rst_i(rst_i),
         .r_cyc_i(r_cyc), .r_we_i(r_we), .r_adr_i(r_adr), .r_board_i(r_board),
         .r_sel_i(r_sel), .r_dat_i(r_wdat), .r_dat_o(bus_rdat), .r_ack_o(r_ack), .r_err_o(r_err),
@@ -264,7 +263,7 @@ module albatross_controller #(
     endgenerate
 
     // Signals kept for waveforms and proofs only.
-    wire unused = &{1'b0, fails_total, overlap, cycle_start, cnt_busy, r_ack[1], r_err[1]};
+    wire unused = &{1'b0, fails_total, overlap, cycle_start, cnt_busy};
 
 endmodule
 

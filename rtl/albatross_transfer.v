@@ -16,10 +16,11 @@
 //     copy (New if a store was made).  Four-slot: load the control word, c =
 //     1 + 2 pair(A) + Slot[pair(A)]; c = L: Old; else store ReadLocked := A,
 //     load the control word again, L := 1 + 2 pair(A) + Slot[pair(A)]: New.
-//     Actual naming no buffer ends the slot (corrupt).  In the ack clock of
-//     the final control load the value is chosen: the destinations that need
-//     it are all active ones if New (new_o: taken_at := the time now), else those still
-//     in need (st_need_i); none: the slot ends.  A cut-off after a
+//     Actual naming no buffer ends the slot (corrupt; 0, not started:
+//     nothing new, no count).  In the ack clock of the final control load
+//     the value is chosen: the destinations that need it are all active ones
+//     if New (new_o: taken_at := the time now), else those still in need
+//     (st_need_i); none: the slot ends.  A cut-off after a
 //     ReadLocked store and before its confirming load forgets the copy.
 //   * Export, to the destinations d in need in index order: per d, load its
 //     Actual if the copy is unknown (three-buffer read-back: an Actual equal
@@ -27,10 +28,11 @@
 //     leaves), then load ReadLocked (four-slot: the whole control word, with
 //     the landed check) and pick the buffer (three-buffer: the last of 1..3
 //     that is neither Actual nor ReadLocked; four-slot: p = 1 - pair(R), s =
-//     1 - Slot_p); then per word k: one source load (COPY; TIME: the slot
-//     time; STATUS: status_i at index_o) and one store per d; then per d
-//     taken_at (word W, stride W + 1), four-slot the Slot byte, then Actual
-//     (published).  TIME and STATUS run the Export alone from go_i.
+//     1 - Slot_p; a ReadLocked of 0, not started, is Buffer1, four-slot
+//     p = 1; a read-back Actual of 0 leaves the copy unknown; no count);
+//     then per word k: one source load (COPY; TIME: the slot time; STATUS:
+//     status_i at index_o) and one store per d; then per d taken_at (word
+//     W, stride W + 1), four-slot the Slot byte, then Actual (published).  TIME and STATUS run the Export alone from go_i.
 //   * Failures (err_i, which includes the bus master's timeout): cyc drops
 //     for one clock; then the same access again if may_access_i, else the
 //     cut-off (the slot ends).  A destination access failing K = drop_run_i
@@ -45,6 +47,8 @@
 //     cut-off or the decision that nothing is to be done.  The access order
 //     and timing are those of the former Import and Export engines.
 //   * Reset clears control state only.
+// Parts: albatross_transfer_dest (the per-destination registers),
+// albatross_transfer_access (address, lanes and write data of the access).
 `default_nettype none
 
 module albatross_transfer #(
@@ -106,16 +110,14 @@ module albatross_transfer #(
     localparam RL_BIT  = 8 * (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
     localparam S0_BIT  = 8 * (ALB_CH_OFF_SLOT0 % ALB_CH_WORD_BYTES);
     localparam S1_BIT  = 8 * (ALB_CH_OFF_SLOT1 % ALB_CH_WORD_BYTES);
-    localparam [3:0] SEL_ACT = 4'b0001 << (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
-    localparam [3:0] SEL_RL  = 4'b0001 << (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
-    localparam [3:0] SEL_S0  = 4'b0001 << (ALB_CH_OFF_SLOT0 % ALB_CH_WORD_BYTES);
-    localparam [3:0] SEL_S1  = 4'b0001 << (ALB_CH_OFF_SLOT1 % ALB_CH_WORD_BYTES);
+    localparam [7:0] NOT_STARTED = ALB_CH_NOT_STARTED;
 
     generate
         if (ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES != 0 || ALB_CH_OFF_READLOCKED / ALB_CH_WORD_BYTES != 0 ||
             ALB_CH_OFF_SLOT0 / ALB_CH_WORD_BYTES != 0 || ALB_CH_OFF_SLOT1 / ALB_CH_WORD_BYTES != 0 ||
             ALB_CH_OFF_BUFFERS != ALB_CH_WORD_BYTES || ALB_CH_WORD_BYTES != 4 || ALB_CH_BUFFER1 != 1 ||
-            ALB_CH_BUFFER_LAST != 3 || ALB_CH_TAKEN_AT_WORDS != 1 || AW < 3) begin : g_contract_check
+            ALB_CH_BUFFER_LAST != 3 || ALB_CH_TAKEN_AT_WORDS != 1 || ALB_CH_NOT_STARTED != 0 || AW < 3)
+        begin : g_contract_check
             albatross_transfer_contract_mismatch u_error ();
         end
     endgenerate
@@ -145,10 +147,10 @@ module albatross_transfer #(
     reg [2:0]  ald_q;                 // the source Actual last loaded
     reg [2:0]  rl_q;
     reg        new_q, icor_q, imp_q, exp_q;
-    reg [3:0]  serve_q, need_q, known_q, pub_q, cor_q;
-    reg [7:0]  act_q;
-    reg [11:0] buf_q, tried_q;
-    genvar     g;
+    reg [3:0]  serve_q, need_q, pub_q, cor_q;
+    wire [3:0] known_q;               // albatross_transfer_dest's view
+    wire [2:0] buf_d, tried_d;
+    wire [1:0] copy_d;
 
     wire dst   = state_q[3];
     wire ack   = ack_i && stb_q;
@@ -156,19 +158,16 @@ module albatross_transfer #(
 
     // ------------------------------------------------------------ current destination
     wire [3:0]    d_bit = 4'b0001 << d_q;
-    wire [AW-1:0] base_d  = d_q[1] ? (d_q[0] ? dst_base_i[3*AW +: AW] : dst_base_i[2*AW +: AW])
-                                   : (d_q[0] ? dst_base_i[AW +: AW] : dst_base_i[0 +: AW]);
-    wire [2:0]    buf_d   = d_q[1] ? (d_q[0] ? buf_q[9 +: 3] : buf_q[6 +: 3]) : (d_q[0] ? buf_q[3 +: 3] : buf_q[0 +: 3]);
-    wire [2:0]    tried_d = d_q[1] ? (d_q[0] ? tried_q[9 +: 3] : tried_q[6 +: 3])
-                                   : (d_q[0] ? tried_q[3 +: 3] : tried_q[0 +: 3]);
-    wire [1:0]    act_d   = d_q[1] ? (d_q[0] ? act_q[6 +: 2] : act_q[4 +: 2]) : (d_q[0] ? act_q[2 +: 2] : act_q[0 +: 2]);
-    wire [1:0]    copy_d  = |(known_q & d_bit) ? act_d : 2'd0;
 
     // The control word just loaded.
     wire [7:0] a_byte   = dat_i[ACT_BIT +: 8];
     wire [7:0] r_byte   = dat_i[RL_BIT +: 8];
     wire       a_valid  = a_byte[7:3] == 5'd0 && a_byte[2:0] != 3'd0 && (four_i ? a_byte[2:0] <= 3'd4 : !a_byte[2]);
     wire       r_valid  = r_byte[7:3] == 5'd0 && r_byte[2:0] != 3'd0 && (four_i ? r_byte[2:0] <= 3'd4 : !r_byte[2]);
+    // Not started (0, a zeroed RAM): no error.  Actual: nothing published
+    // (Import: nothing new; Export: copy unknown); ReadLocked: Buffer1.
+    wire       a_zero   = a_byte == NOT_STARTED;
+    wire       r_zero   = r_byte == NOT_STARTED;
     wire       a_pair   = a_byte[2] | (a_byte[1] & a_byte[0]);      // (x - 1) >> 1 for x = 1..4
     wire       r_pair   = r_byte[2] | (r_byte[1] & r_byte[0]);
     // Source: c of this word (first load), b from the Actual stored (second).
@@ -179,7 +178,7 @@ module albatross_transfer #(
     // Destination pick.
     wire [1:0] r_lock   = r_valid ? r_byte[1:0] : 2'd0;
     wire [1:0] pick3    = (copy_d != 2'd3 && r_lock != 2'd3) ? 2'd3 : (copy_d != 2'd2 && r_lock != 2'd2) ? 2'd2 : 2'd1;
-    wire       pk_p     = r_valid ? !r_pair : a_valid ? !a_pair : 1'b1;
+    wire       pk_p     = r_valid ? !r_pair : r_zero ? 1'b1 : a_valid ? !a_pair : 1'b1;
     wire       pk_s     = !(pk_p ? dat_i[S1_BIT] : dat_i[S0_BIT]);
     wire [2:0] pick     = four_i ? {1'b0, pk_p, pk_s} + 3'd1 : {1'b0, pick3};
     wire       read_act = ack && (state_q == S_DST_ACT || (four_i && state_q == S_DST_RL));
@@ -312,7 +311,7 @@ module albatross_transfer #(
                 S_SRC_ACT: if (ack) begin
                     ald_q <= a_byte[2:0];
                     if (!a_valid) begin
-                        icor_q <= 1'b1;
+                        icor_q <= !a_zero;
                         finish;
                     end else if (!a_match) begin
                         new_q <= 1'b1;
@@ -327,8 +326,8 @@ module albatross_transfer #(
                 S_SRC_WORD: if (ack) take_word;
                 S_WAIT: if (word_ok) take_word;
                         else if (!may_access_i || copy_i) cut_off;      // (COPY: only entered without may_access_i)
-                S_DST_ACT: if (ack && !a_valid) cor_q <= cor_q | d_bit;
-                S_DST_RL: if (ack && (!r_valid || (four_i && !a_valid))) cor_q <= cor_q | d_bit;
+                S_DST_ACT: if (ack && !a_valid && !a_zero) cor_q <= cor_q | d_bit;
+                S_DST_RL: if (ack && ((!r_valid && !r_zero) || (four_i && !a_valid && !a_zero))) cor_q <= cor_q | d_bit;
                 default: ;
             endcase
             if (landed || (ack && state_q == S_DST_FIN)) pub_q <= pub_q | d_bit;
@@ -380,9 +379,9 @@ module albatross_transfer #(
 
     // ------------------------------------------------------------ per-destination fields
     // Each destination's Actual copy, its known bit, its picked buffer and
-    // the buffer of its failed Actual store, written with explicit enables
-    // (the events of the current destination d_q, in the branch of the main
-    // block they belong to).
+    // the buffer of its failed Actual store (albatross_transfer_dest), written
+    // with explicit enables (the events of the current destination d_q, in
+    // the branch of the main block they belong to).
     wire       nrm      = !go_i && !(err_i && stb_q) && !(retry_q && !drop_q);
     wire       e_start  = (go_i && !copy_i) || (nrm && choose && need_now != 4'd0);
     wire       e_errfin = !go_i && err_i && stb_q && state_q == S_DST_FIN;
@@ -390,31 +389,12 @@ module albatross_transfer #(
     wire       e_rl     = nrm && adv && state_q == S_DST_RL;
     wire       e_fin    = nrm && ack && state_q == S_DST_FIN;
     wire       no_tried = go_i || new_q;               // a fresh value: no failed store of it
-    generate
-        for (g = 0; g < 4; g = g + 1) begin : g_dest
-            always @(posedge clk_i) begin
-                if (rst_i) begin
-                    known_q[g]         <= 1'b0;
-                    tried_q[3*g +: 3]  <= 3'd0;
-                end else if (e_start) begin
-                    known_q[g]         <= st_known[g];
-                    act_q[2*g +: 2]    <= st_act_i[2*g +: 2];
-                    tried_q[3*g +: 3]  <= no_tried ? 3'd0 : st_tried_i[3*g +: 3];
-                end else if (d_bit[g]) begin
-                    if (e_errfin) begin
-                        known_q[g]        <= 1'b0;
-                        tried_q[3*g +: 3] <= buf_d;
-                    end
-                    if (e_act || (e_rl && ack && four_i) || e_fin) tried_q[3*g +: 3] <= 3'd0;
-                    if ((e_act && a_valid) || e_fin) begin
-                        known_q[g]      <= 1'b1;
-                        act_q[2*g +: 2] <= e_fin ? buf_d[1:0] : a_byte[1:0];
-                    end
-                    if (e_rl) buf_q[3*g +: 3] <= pick;
-                end
-            end
-        end
-    endgenerate
+    albatross_transfer_dest u_dest (
+        .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start), .st_known_i(st_known), .st_act_i(st_act_i),
+        .st_tried_i(st_tried_i), .fresh_i(no_tried), .d_i(d_q), .err_fin_i(e_errfin),
+        .clr_tried_i(e_act || (e_rl && ack && four_i) || e_fin), .set_act_i((e_act && a_valid) || e_fin),
+        .act_i(e_fin ? buf_d[1:0] : a_byte[1:0]), .set_buf_i(e_rl), .pick_i(pick),
+        .known_o(known_q), .buf_d_o(buf_d), .tried_d_o(tried_d), .copy_d_o(copy_d), .act_o(act_o), .tried_o(tried_o));
 
     // ------------------------------------------------------------ the word stored
     // word_q takes the word the destinations' stores write (take_word's
@@ -431,49 +411,22 @@ module albatross_transfer #(
     end
 
     // ------------------------------------------------------------ the access
-    wire          src    = !dst;
-    wire          w_src  = state_q == S_SRC_WORD;
-    wire          w_dst  = state_q == S_DST_WORD;
-    wire          w_tkn  = state_q == S_DST_TKN;
-    wire          datacc = w_src || w_dst || w_tkn;
-    wire          t_val  = (w_dst && time_kind_i && !copy_i) || (w_tkn && !copy_i);   // TIME's value, TIME's and STATUS's taken_at
-    // Word k of buffer b: base + 1 + (b - 1) * S + k, S = W (source) or W + 1.
-    wire [1:0]    b      = src ? rl_q[1:0] : buf_d[1:0];   // 1..4 (4 as 0)
-    wire [1:0]    bm1    = b - 2'd1;
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire [AW+11:0] w_wide = {{AW{1'b0}}, words_i};
-    wire [AW+11:0] k_wide = {{AW{1'b0}}, k_q};
-    /* verilator lint_on UNUSEDSIGNAL */
-    wire [AW-1:0] stride = w_wide[AW-1:0] + {{(AW-1){1'b0}}, dst};
-    wire [AW-1:0] m      = ({AW{bm1[0]}} & stride) + ({AW{bm1[1]}} & {stride[AW-2:0], 1'b0});
-    wire [AW-1:0] off    = {AW{datacc}} & (m + k_wide[AW-1:0] + {{(AW-1){1'b0}}, w_src || w_tkn});
-    wire [AW-1:0] base   = src ? src_base_i : base_d;
-    wire [1:0]    dbm1   = buf_d[1:0] - 2'd1;         // four-slot: {p, s} of d's buffer
-
-    assign cyc_o   = stb_q;
-    assign we_o    = state_q == S_SRC_RL || w_dst || w_tkn || state_q == S_DST_SLOT || state_q == S_DST_FIN;
-    assign adr_o   = base + off;
-    assign board_o = src ? src_board_i : dst_board_i[4*d_q +: 4];
-    assign sel_o   = (state_q == S_SRC_ACT) ? (four_i ? 4'hF : SEL_ACT) :
-                     (state_q == S_SRC_RL) ? SEL_RL :
-                     (state_q == S_DST_ACT || state_q == S_DST_FIN) ? SEL_ACT :
-                     (state_q == S_DST_RL) ? (four_i ? 4'hF : SEL_RL) :
-                     (state_q == S_DST_SLOT) ? (dbm1[1] ? SEL_S1 : SEL_S0) : 4'hF;
-    assign dat_o   = ({32{state_q == S_SRC_RL}} & ({29'd0, ald_q} << RL_BIT)) |
-                     ({32{w_dst && !t_val}} & word_q) | ({32{t_val}} & slot_time_i) | ({32{w_tkn && copy_i}} & st_taken_i) |
-                     ({32{state_q == S_DST_SLOT}} & ({31'd0, dbm1[0]} << (dbm1[1] ? S1_BIT : S0_BIT))) |
-                     ({32{state_q == S_DST_FIN}} & ({29'd0, buf_d} << ACT_BIT));
+    albatross_transfer_access #(.ADDR_WIDTH(AW)) u_access (
+        .dst_i(dst), .src_act_i(state_q == S_SRC_ACT), .src_rl_i(state_q == S_SRC_RL),
+        .src_word_i(state_q == S_SRC_WORD), .dst_act_i(state_q == S_DST_ACT), .dst_rl_i(state_q == S_DST_RL),
+        .dst_word_i(state_q == S_DST_WORD), .dst_tkn_i(state_q == S_DST_TKN), .dst_slot_i(state_q == S_DST_SLOT),
+        .dst_fin_i(state_q == S_DST_FIN), .copy_i(copy_i), .time_kind_i(time_kind_i), .four_i(four_i),
+        .words_i(words_i), .k_i(k_q), .d_i(d_q), .rl_i(rl_q[1:0]), .buf_i(buf_d), .ald_i(ald_q),
+        .src_board_i(src_board_i), .src_base_i(src_base_i), .dst_board_i(dst_board_i), .dst_base_i(dst_base_i),
+        .word_i(word_q), .slot_time_i(slot_time_i), .taken_i(st_taken_i),
+        .we_o(we_o), .adr_o(adr_o), .board_o(board_o), .sel_o(sel_o), .dat_o(dat_o));
+    assign cyc_o = stb_q;
 
     // ------------------------------------------------------------ results
     function [2:0] popcount4;
         input [3:0] v;
         popcount4 = {2'd0, v[0]} + {2'd0, v[1]} + {2'd0, v[2]} + {2'd0, v[3]};
     endfunction
-    generate
-        for (g = 0; g < 4; g = g + 1) begin : g_act
-            assign act_o[2*g +: 2] = known_q[g] ? act_q[2*g +: 2] : 2'd0;
-        end
-    endgenerate
 
     assign index_o     = k_q;
     assign done_o      = done_q;
@@ -482,7 +435,6 @@ module albatross_transfer #(
     assign new_o       = nrm && choose && new_q;
     assign rl_o        = rl_q;
     assign need_o      = serve_q & ~pub_q;
-    assign tried_o     = tried_q;
     assign transfers_o = exp_q ? popcount4(pub_q) : 3'd0;
     assign corrupt_o   = {2'd0, icor_q} + popcount4(cor_q);
 

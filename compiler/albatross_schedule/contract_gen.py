@@ -91,6 +91,7 @@ def render_vh(c: Contract) -> str:
     L.append(f"localparam ALB_CH_BUFFER1        = {c.buffer1};")
     L.append(f"localparam ALB_CH_BUFFER_LAST    = {c.buffer_last};")
     L.append(f"localparam ALB_CH_INITIAL_INDEX  = {c.initial_index};")
+    L.append(f"localparam ALB_CH_NOT_STARTED    = {c.not_started};  // a control byte its writer has not set yet")
     L.append(f"localparam ALB_CH_TAKEN_AT_WORDS = {c.taken_at_words};  // destination stride: W + TAKEN_AT_WORDS")
     L.append("// four-slot kind (E0 flag FOUR_SLOT): slot bytes, buffers 1..FS_BUFFERS, buffer b is")
     L.append("// pair (b-1)>>1, slot (b-1)&1")

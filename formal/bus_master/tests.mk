@@ -3,6 +3,7 @@
 FSBY_TESTS_SPEC += \
     formal-bus_master:bus_master:prove:pass \
     formal-bus_master-pdr:bus_master:prove_pdr:pass \
+    formal-bus_master-pdr-reqs2:bus_master:prove_pdr_reqs2:pass \
     formal-bus_master-cover:bus_master:cover:pass \
     formal-bus_master-negative-no_gap:bus_master:neg_no_gap:fail_gap \
     formal-bus_master-negative-tmo_late:bus_master:neg_tmo_late:err_tmo \

@@ -276,6 +276,51 @@ struct Consumer {                       // Import (the paper, figure 3) on one b
     }
 };
 
+// ------------------------------------------------------------------ the CPUs' four-slot protocol
+// The four-slot layout (rtl/albatross_contract.toml [layout.four_slot]):
+// Actual, ReadLocked, Slot0, Slot1 in byte lanes 0..3 of the control word,
+// Buffer1..4 from word 1; buffer b is pair (b-1)>>1, slot (b-1)&1.
+static inline unsigned fs_buf(unsigned p, unsigned s) { return 1 + 2 * p + s; }
+static inline unsigned fs_pair(unsigned b) { return (b - 1) >> 1; }
+
+struct Producer4 {                      // the four-slot Export on one board
+    int board;
+    unsigned base, w;
+    void init(Sim &s) { s.wr(board, base, 0xF, 0x00000101); }   // Actual = ReadLocked = 1, slots 0
+    unsigned publish(Sim &s, const std::vector<uint32_t> &v) {
+        uint32_t c = s.rd(board, base);
+        unsigned r = c >> 8 & 0xFF;
+        unsigned p = 1 - fs_pair(r), sl = 1 - (c >> (16 + 8 * p) & 1);
+        unsigned b = fs_buf(p, sl);
+        for (unsigned i = 0; i < w; ++i) s.wr(board, base + 1 + (b - 1) * w + i, 0xF, v[i]);
+        s.wr(board, base, 1u << (2 + p), sl << (16 + 8 * p));   // Slot_p := s
+        s.wr(board, base, 0x1, b);                              // Actual := b
+        return b;
+    }
+};
+
+struct Consumer4 {                      // the four-slot Import on one board: wait-free
+    int board;
+    unsigned base, words, l = 0;        // words: value + taken_at; l: the buffer read last (0 none)
+    unsigned accesses = 0;              // control accesses of the last Import
+    void init(Sim &s) { s.wr(board, base, 0xF, 0x00000101); l = 0; }
+    bool import(Sim &s, std::vector<uint32_t> &out) {
+        uint32_t c = s.rd(board, base);
+        unsigned a = c & 0xFF, pa = fs_pair(a);
+        bool isnew = fs_buf(pa, c >> (16 + 8 * pa) & 1) != l;
+        accesses = 1;
+        if (isnew) {
+            s.wr(board, base, 0x2, a << 8);                     // ReadLocked := A
+            c = s.rd(board, base);
+            l = fs_buf(pa, c >> (16 + 8 * pa) & 1);
+            accesses = 3;
+        }
+        out.resize(words);
+        for (unsigned i = 0; i < words; ++i) out[i] = s.rd(board, base + 1 + (l - 1) * words + i);
+        return isnew;
+    }
+};
+
 std::vector<uint32_t> value(unsigned n);
 
 // Common set-up: ROM, control bytes, the CPUs.
@@ -305,6 +350,8 @@ void check_slot_timing(const char *what, const std::vector<Attempt> &v, uint64_t
 void scenario_basic();
 void scenario_corrupt();
 void scenario_four();
+// ctrl_scenarios_cold.cpp
+void scenario_cold();
 // ctrl_scenarios_faults.cpp
 void scenario_faults();
 void scenario_dead();

@@ -37,6 +37,12 @@
 //   abandon  a COPY whose Import ends without choosing (source dead) counts
 //            the channel's stored need as abandoned (group 32: the state-RAM
 //            write-back regression; negative controller-negative-stale_need)
+//   cold     zeroed board RAMs (docs/protocol.md "Cold start"): a source
+//            Actual of 0 ends the Import with nothing new, a destination
+//            ReadLocked of 0 is Buffer1 (four-slot: pair 1, also with an Actual
+//            copy in pair 1), no corrupt count in STATUS, and every value
+//            arrives once the CPUs have run their init (group 2; negative
+//            controller-negative-cold)
 // Each check prints what it expected and what it got.  Exit status 0 if all
 // pass, else 64 + a bit mask of the failed groups (1 timing, 2 data, 4 rom,
 // 8 faults, 16 dead, 32 abandon).  --inject=timing makes the timing checker expect one
@@ -44,8 +50,8 @@
 // Options: --dir=DIR (work directory for the ROM file, created)  --inject=timing
 //          --scenario=NAME (default: all)
 // Files: ctrl_bench.h/.cpp (checks, ROM builder, model wrapper, CPU protocol),
-//        ctrl_scenarios_data.cpp (basic, corrupt, four), ctrl_scenarios_faults.cpp (faults, dead, sync,
-//        abandon).
+//        ctrl_scenarios_data.cpp (basic, corrupt, four), ctrl_scenarios_faults.cpp (faults, dead,
+//        droprun, sync, abandon), ctrl_scenarios_cold.cpp (cold).
 #include "ctrl_bench.h"
 
 // ------------------------------------------------------------------ main
@@ -65,7 +71,7 @@ int main(int argc, char **argv) {
             }
         }
         else {
-            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|sync|four|abandon]\n",
+            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|droprun|sync|four|abandon|cold]\n",
                          argv[0]);
             return 2;
         }
@@ -74,7 +80,7 @@ int main(int argc, char **argv) {
     struct { const char *name; void (*fn)(); } sc[] = {
         {"basic", scenario_basic}, {"corrupt", scenario_corrupt}, {"faults", scenario_faults}, {"dead", scenario_dead},
         {"droprun", scenario_droprun},
-        {"sync", scenario_sync}, {"four", scenario_four}, {"abandon", scenario_abandon}};
+        {"sync", scenario_sync}, {"four", scenario_four}, {"abandon", scenario_abandon}, {"cold", scenario_cold}};
     for (auto &x : sc)
         if (only.empty() || only == x.name) x.fn();
     std::printf("test_controller: %u checks, %u failed%s\n", g_checks, g_fails,

@@ -14,13 +14,19 @@
 #                                         a controller that ignores the ROM's drop
 #                                         run (H2) fails scenario droprun
 #                                         (exit 80: dead group only)
+#   make test-controller-cold             scenario cold alone: zeroed board RAMs (cold start)
+#   make test-controller-negative-cold    the controller with the rule from before the
+#                                         cold-start contract (tb/mutants/controller/
+#                                         cold_zero_corrupt.sed) fails scenario cold
+#                                         (exit 66: data group only)
 # The model reads its ROM from "ctrl_rom.hex" in the working directory that
 # each run selects with --dir, so the two runs never share a ROM file.
 
 CTRL_DIR := $(BUILD)/ctrl
 CTRL_BIN := $(CTRL_DIR)/obj/Vtb_system
 CTRL_CPP := tb/controller/test_controller.cpp tb/controller/ctrl_bench.cpp \
-            tb/controller/ctrl_scenarios_data.cpp tb/controller/ctrl_scenarios_faults.cpp
+            tb/controller/ctrl_scenarios_data.cpp tb/controller/ctrl_scenarios_faults.cpp \
+            tb/controller/ctrl_scenarios_cold.cpp
 CTRL_SRC := tb/system/tb_system.v tb/common/bus_fault_injector.v $(CORE_soc_system) $(CTRL_CPP) tb/controller/ctrl_bench.h \
             $(RTL_INC) tb/common/albatross_contract.h
 
@@ -96,3 +102,34 @@ test-controller-smoke-negative-droprun: $(CTRL_NEG_DR)/obj/Vtb_system
 	    grep -m 3 "^FAIL" $(CTRL_NEG_DR)/run.log | sed "s/^FAIL/  caught:/"; \
 	    if [ $$rc -eq 80 ]; then echo "the controller that ignores H2 fails scenario droprun, as it must (exit 80)"; \
 	    else echo "expected exit 80 (dead group only), came exit $$rc"; tail -n 5 $(CTRL_NEG_DR)/run.log; exit 1; fi'
+
+# Cold start (docs/controller.md "Cold start"): scenario cold alone, and its
+# negative: the controller that takes a control byte of 0 as out of range
+# (corrupt; the four-slot pair from the Actual copy) fails it.
+CTRL_NEG_COLD := $(CTRL_DIR)/mutant-cold_zero_corrupt
+$(CTRL_NEG_COLD)/src/albatross_transfer.v: rtl/albatross_transfer.v tb/mutants/controller/cold_zero_corrupt.sed
+	@mkdir -p $(@D)
+	sed -f tb/mutants/controller/cold_zero_corrupt.sed $< > $@
+	@if cmp -s $@ $<; then echo "mutant cold_zero_corrupt did not apply: $< no longer has the lines it edits"; \
+	    rm -f $@; exit 1; fi
+$(CTRL_NEG_COLD)/obj/Vtb_system: $(CTRL_SRC) $(CTRL_NEG_COLD)/src/albatross_transfer.v tools/mk/controller.mk
+	@mkdir -p $(CTRL_NEG_COLD)
+	verilator --cc --exe --build -j 2 -O3 -Wall --top-module tb_system \
+	    -GROM_FILE='"ctrl_rom.hex"' -CFLAGS "-O2 -std=c++17 -Wall -Wextra $(TB_COMMON_INC)" \
+	    --Mdir $(CTRL_NEG_COLD)/obj -y $(CTRL_NEG_COLD)/src $(VLIB) tb/system/tb_system.v $(abspath $(CTRL_CPP)) \
+	    > $(CTRL_NEG_COLD)/build.log 2>&1 || { cat $(CTRL_NEG_COLD)/build.log; exit 1; }
+
+TESTS += controller-cold controller-negative-cold
+.PHONY: test-controller-cold test-controller-negative-cold
+test-controller-cold: $(CTRL_BIN)
+	@tools/run_test.sh controller-cold $(CTRL_BIN) --dir=$(CTRL_DIR)/cold --scenario=cold
+
+test-controller-negative-cold: $(CTRL_NEG_COLD)/obj/Vtb_system
+	@tools/run_test.sh controller-negative-cold bash -c '$< --dir=$(CTRL_NEG_COLD)/run --scenario=cold \
+	    > $(CTRL_NEG_COLD)/run.log 2>&1; rc=$$?; \
+	    grep -m 3 "^FAIL" $(CTRL_NEG_COLD)/run.log | sed "s/^FAIL/  caught:/"; \
+	    if [ $$rc -eq 66 ] && grep -q "^FAIL cold.*corrupt" $(CTRL_NEG_COLD)/run.log && \
+	       grep -q "^FAIL cold four cycle 1: destination control word" $(CTRL_NEG_COLD)/run.log; then \
+	        echo "the controller with the old zero rule fails scenario cold, as it must (exit 66)"; \
+	    else echo "expected exit 66 with a corrupt count and the four-slot pair caught, came exit $$rc"; \
+	        tail -n 5 $(CTRL_NEG_COLD)/run.log; exit 1; fi'
