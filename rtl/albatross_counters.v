@@ -85,7 +85,9 @@ module albatross_counters #(
     endfunction
 
     // The deltas with this clock's events.
-    wire [15:0] retry_n   = (retry_i && d_retry_q != 16'hFFFF) ? d_retry_q + 16'd1 : d_retry_q;
+    // Saturating: the carry out of the increment says the count is at its top.
+    wire [16:0] retry_inc = {1'b0, d_retry_q} + {16'd0, retry_i};
+    wire [15:0] retry_n   = retry_inc[15:0] | {16{retry_inc[16]}};
     wire [3:0]  corrupt_n = d_corrupt_q + {1'b0, corrupt_i};
 
     // Channel words; the commit uses the read port in phases 1 and 2.
