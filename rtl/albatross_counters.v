@@ -85,7 +85,9 @@ module albatross_counters #(
     endfunction
 
     // The deltas with this clock's events.
-    wire [15:0] retry_n   = (retry_i && d_retry_q != 16'hFFFF) ? d_retry_q + 16'd1 : d_retry_q;
+    // Saturating: the carry out of the increment says the count is at its top.
+    wire [16:0] retry_inc = {1'b0, d_retry_q} + {16'd0, retry_i};
+    wire [15:0] retry_n   = retry_inc[15:0] | {16{retry_inc[16]}};
     wire [3:0]  corrupt_n = d_corrupt_q + {1'b0, corrupt_i};
 
     // Channel words; the commit uses the read port in phases 1 and 2.
@@ -100,7 +102,9 @@ module albatross_counters #(
     wire [CB-1:0] wr_adr = !ready_q ? clear_q : (phase_q == 2'd2) ? w0 : w1;
     // One pair of saturating adders: the deltas of the word being written.
     wire [2:0]    add_hi = (phase_q == 2'd2) ? xfer_q : aband_q;
-    wire [15:0]   add_lo = (phase_q == 2'd2) ? retry_n : {12'd0, corrupt_n};
+    // In phase 3 the retry delta is 0 or 1 (cleared in phase 2), so its high
+    // bits can feed the adder in both phases; only the low four are selected.
+    wire [15:0]   add_lo = {retry_n[15:4], (phase_q == 2'd2) ? retry_n[3:0] : corrupt_n};
     wire [31:0]   wr_dat = !ready_q ? 32'd0 : {sat_add(rd_q[31:16], {13'd0, add_hi}), sat_add(rd_q[15:0], add_lo)};
 
     always @(posedge clk_i) begin

@@ -91,14 +91,16 @@ module albatross_entry_check #(
             place_ok = below({28'd0, p[ALB_ROM_PLACE_BOARD_LSB +: 4]}, NB) && (ext >> ADDR_WIDTH) == 15'd0;
         end
     endfunction
-    wire [13:0] e3d    = e3_i + (four_i ? 14'd4 : 14'd3);            // 3 (four: 4) * (W + 1)
+    // One span for both halves: 3 (four: 4) * W in clock 3 (the source, of
+    // W words), 3 (four: 4) * (W + 1) in clocks 4 and 5 (the destinations).
+    wire [13:0] e3d    = e3_i + ((step_i == 3'd3) ? 14'd0 : four_i ? 14'd4 : 14'd3);
     wire        lo_ok  = place_ok(rom_i[15:0], e3d);
     wire        hi_ok  = place_ok(rom_i[31:16], e3d);
     always @* begin
         case (step_i)
             3'd1:    bad_o = (CHK && e0_bad) || bad_mark_i;
             3'd2:    bad_o = CHK && e2_bad;
-            3'd3:    bad_o = CHK && kind_i == ALB_KIND_COPY[1:0] && !place_ok(rom_i[15:0], e3_i);
+            3'd3:    bad_o = CHK && kind_i == ALB_KIND_COPY[1:0] && !lo_ok;
             3'd4:    bad_o = CHK && (!lo_ok || (nd_i >= 3'd2 && !hi_ok));
             3'd5:    bad_o = CHK && ((nd_i >= 3'd3 && !lo_ok) || (nd_i == 3'd4 && !hi_ok));
             default: bad_o = 1'b0;
