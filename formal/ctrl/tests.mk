@@ -40,40 +40,10 @@ FCTRL_NEG := \
     forget_landed:dst_new_once \
     bad_index:dst_ctrl_store|dst_in_channel \
     wrong_lane:dst_ctrl_store
-# Today's controller (the Import and Export engines): the old proofs' own edits,
-# CORE:VARIANT:FILE:SED.  Once the controller is its sequencer and one transfer
-# datapath (rtl/albatross_transfer.v), the same intents are the edits
-# formal/ctrl/mutants/VARIANT.sed of that file (checked against the ctrl
-# branch's datapath; their '# target:' line names the file).
-FCTRL_OLD := \
-    ctrl:early_publish:albatross_export.v:formal/export/mutants/early_publish.sed \
-    ctrl:publish_early:albatross_export.v:formal/rtl/mutants/publish_early.sed \
-    ctrl:writes_locked:albatross_export_dest.v:formal/export/mutants/writes_locked.sed \
-    ctrl:ignore_actual:albatross_export_dest.v:formal/export/mutants/ignore_actual.sed \
-    ctrl:extra_access:albatross_export.v:formal/export/mutants/extra_access.sed \
-    ctrl:drop_total:albatross_export.v:formal/export/mutants/drop_total.sed \
-    ctrl:ignore_rl4:albatross_export_dest.v:formal/export/mutants/ignore_rl4.sed \
-    ctrl:same_slot4:albatross_export_dest.v:formal/export/mutants/same_slot4.sed \
-    ctrl:actual_first4:albatross_export.v:formal/export/mutants/actual_first4.sed \
-    ctrl:early_slot4:albatross_export.v:formal/export/mutants/early_slot4.sed \
-    ctrl:extra_load4:albatross_export.v:formal/export/mutants/extra_load4.sed \
-    ctrl:idx_actual:albatross_import.v:formal/import/mutants/idx_actual.sed \
-    ctrl:loop4:albatross_import.v:formal/import/mutants/loop4.sed \
-    ctrl:new_unstored:albatross_import.v:formal/import/mutants/new_unstored.sed \
-    ctrl:old_by_actual:albatross_import.v:formal/import/mutants/old_by_actual.sed \
-    ctrl:skip_confirm:albatross_import.v:formal/import/mutants/skip_confirm.sed \
-    ctrl:store_actual:albatross_import.v:formal/import/mutants/store_actual.sed \
-    ctrl:wrong_slot:albatross_import.v:formal/import/mutants/wrong_slot.sed \
-    ctrl:import_no_readlocked:albatross_import.v:tb/mutants/engines/import_no_readlocked.sed \
-    ctrl:never_delivered:albatross_controller.v:tb/mutants/controller/never_delivered.sed \
-    ctrl:forget_landed:albatross_export_dest.v:tb/mutants/controller/forget_landed.sed \
-    ctrl:bad_index:albatross_export_dest.v:tb/mutants/controller/bad_index.sed \
-    ctrl:wrong_lane:albatross_export.v:tb/mutants/controller/wrong_lane.sed
-ifneq ($(wildcard rtl/albatross_transfer.v),)
-FCTRL_MUTANTS := $(foreach n,$(FCTRL_NEG),ctrl:$(call neg_field,$(n),1):albatross_transfer.v)
-else
-FCTRL_MUTANTS := $(FCTRL_OLD)
-endif
+# Each mutant is formal/ctrl/mutants/VARIANT.sed, an edit of the controller
+# file its '# target:' line names (CORE:VARIANT:FILE).
+fctrl_target  = $(notdir $(shell sed -n 's/^# target: *//p' formal/ctrl/mutants/$(1).sed))
+FCTRL_MUTANTS := $(foreach n,$(FCTRL_NEG),ctrl:$(call neg_field,$(n),1):$(call fctrl_target,$(call neg_field,$(n),1)))
 # The negatives whose counterexample needs two slots or more (a value published
 # twice, a reader overtaken by three Exports) take longer than make test allows:
 # make formal-slow runs them.
@@ -94,7 +64,7 @@ FSBY_MUTANTS += $(FCTRL_MUTANTS)
 # verdict to build/reports/formal_sby.json as the others.
 FCTRL_PDR := shape three_fixed three four_fixed four
 .PHONY: formal-ctrl-pdr
-formal-ctrl-pdr: $(FSBY_DEPS) formal/ctrl/ctrl.sby formal/ctrl/fctrl.v $(FSBY_RTL_ctrl) $(FCTRL_DIR)/base/.stamp
+formal-ctrl-pdr: $(FSBY_DEPS) formal/ctrl/ctrl.sby formal/ctrl/fctrl.v $(FSBY_RTL_ctrl) $(FCTRL_DIR)/base/.stamp ## [formal] the unbounded PDR tasks of the controller-top harness (up to an hour each)
 	@for t in $(FCTRL_PDR); do $(FSBY_RUN) formal-ctrl-pdr-$$t --sby formal/ctrl/ctrl.sby --task $$t \
 	    --expect pass --timeout 3700 || fail=1; done; exit $${fail:-0}
 
