@@ -1,5 +1,5 @@
 // albatross_entry_check -- the field checks of albatross_sequencer's entry
-// fetch (docs/controller.md "Validation", issue 12 section 1): combinational,
+// fetch (docs/controller.md "Validation"): combinational,
 // one ROM word a clock.
 // Rules (bad_o high: the entry being fetched is invalid):
 //   * FETCH clock 1 (E0): kind above 3; the SYNC flag on other than entry 0

@@ -1,13 +1,13 @@
 // albatross_export -- the Export engine: the producer's side of the
-// three-buffer protocol (seed 3.1, figure 4) in hardware, on one Wishbone
+// three-buffer protocol (the paper, section 3.1, figure 4) in hardware, on one Wishbone
 // B4 classic master port, to DESTS destination channels in lockstep.  It
 // takes the value as a word stream and never holds more than one word; it
 // keeps no per-channel state beyond the transfer (each destination's copy of
 // Actual comes in with start_i and goes out on act_known_o/act_o), so a
 // controller can run many channels through one engine and
 // albatross_export_endpoint can keep one channel in registers.  With four_i
-// at start every destination is of the four-slot kind (issue 13,
-// rtl/albatross_contract.toml [layout.four_slot]).  This module holds the
+// at start every destination is of the four-slot kind
+// (rtl/albatross_contract.toml [layout.four_slot]).  This module holds the
 // registers and the order of the steps; albatross_export_dest (its rules) the
 // current destination's fields, the visiting order, the pick, the address.
 // Rules:
@@ -53,7 +53,7 @@
 //     for one clock, and in that clock may_access_i decides: the same access
 //     again in the next clock, or the cut-off.  DROP = 1: a destination one
 //     of whose accesses fails K = drop_run_i times in a row (K below 2 reads
-//     as 2; the compiler plans K from the fault hypothesis, ROM H2, issue 15)
+//     as 2; the compiler plans K from the fault hypothesis, ROM H2)
 //     is dropped for the rest of the Export (in the clock after the K-th
 //     failure the engine goes on as if the access had been acked, without its
 //     effect), so a dead board never blocks the others; failures that are not

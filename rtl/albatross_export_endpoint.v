@@ -2,7 +2,7 @@
 // Export engine (albatross_export) with the channel fixed by parameters and
 // its Actual copy kept in the engine's own registers, for a user's RTL block
 // (a sensor interface, say) that publishes a channel into a DPRAM port
-// without a CPU (seed 3.1, figure 4).  Connect the Wishbone port straight to
+// without a CPU (the paper, section 3.1, figure 4).  Connect the Wishbone port straight to
 // an albatross_dpram port (or any Wishbone B4 classic slave; tie wb_err_i 0
 // if it has none).
 // Rules:

@@ -1,12 +1,12 @@
 // albatross_import -- the Import engine: the consumer's side of the
-// three-buffer protocol (seed 3.1, figure 3) in hardware, on one Wishbone
+// three-buffer protocol (the paper, section 3.1, figure 3) in hardware, on one Wishbone
 // B4 classic master port.  It runs one Import of a channel at a time and
 // hands the value out as a word stream; it keeps no per-channel state of its
 // own beyond the transfer (the ReadLocked copy comes in with start_i and goes
 // out on rl_known_o/rl_o), so a controller can run many channels through one
 // engine and albatross_import_endpoint can keep one channel in registers.
 // With four_i at start it runs the consumer of the four-slot kind instead
-// (Simpson's four-slot mechanism on single-writer bytes, issue 13;
+// (Simpson's four-slot mechanism on single-writer bytes;
 // rtl/albatross_contract.toml [layout.four_slot]): wait-free, a fixed number
 // of accesses whatever the producer does.
 // Rules:

@@ -1,9 +1,9 @@
 // albatross_rom_check -- the schedule ROM's integrity check for
 // albatross_sequencer: the start-up CRC pass and the background re-check,
-// with the memory of prefix signatures (docs/controller.md "Execution",
-// issue 12 section 1).  The sequencer owns the ROM and its one read port;
-// this module says which word to read when the sequencer does not need the
-// port, and checks the words so read.
+// with the memory of prefix signatures (docs/controller.md "Execution").
+// The sequencer owns the ROM and its one read port; this module says which
+// word to read when the sequencer does not need the port, and checks the
+// words so read.
 // Rules:
 //   * CRC (rtl/albatross_contract.toml): c = CRC_SEED; for each word w in
 //     address order c = (c * x^32 + w) mod P, P = x^32 + CRC_POLY; over

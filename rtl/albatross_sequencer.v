@@ -1,6 +1,6 @@
 // albatross_sequencer -- the controller's schedule sequencer: the schedule
 // ROM, the cycle and slot timing, the deadline and the global time
-// (docs/controller.md "Execution", issue 12 section 1).
+// (docs/controller.md "Execution").
 // Rules:
 //   * Global time: time_o counts clocks since reset (32 bits).  Time within a
 //     cycle (rel) is TIME_BITS wide and counts from the cycle start; the
@@ -92,7 +92,7 @@ module albatross_sequencer #(
     output wire                    error_o,        // the ROM is invalid: idle for good
     output wire [15:0]             rom_errors_o,   // skipped entries and background mismatches
     output wire [15:0]             cycles_o,
-    output wire [7:0]              drop_run_o      // ROM H2: the drop run K (issue 15), from the start-up pass
+    output wire [7:0]              drop_run_o      // ROM H2: the drop run K, from the start-up pass
 );
 
 `include "albatross_contract.vh"

@@ -1,6 +1,6 @@
 // albatross_transfer -- the controller's one transfer datapath: a single
 // state machine that runs, on one Wishbone B4 classic requester port, the
-// consumer's Import of the source (seed figure 3; four-slot kind: Simpson's
+// consumer's Import of the source (the paper's figure 3; four-slot kind: Simpson's
 // mechanism on single-writer bytes) and the producer's Export (figure 4) to
 // up to 4 destinations, streaming the value word by word (one source load,
 // then one store per destination).  It replaces separate Import and Export
