@@ -30,7 +30,7 @@ mutate() {  # FILE SED-ARGS...: apply, and insist that it changed the file
 case $kind in
     file)   mutate "$lib/rtl/albatross_dpram.core" 's/- albatross_dpram\.v/- albatross_dpram_typo.v/'
             expect='names albatross_dpram_typo.v, expected the file' ;;
-    dep)    mutate "$lib/rtl/albatross_controller.core" '/- albatross:ip:contract:/d'
+    dep)    mutate "$lib/rtl/albatross_controller.core" -e '/- albatross:ip:contract:/d' -e 's/^\( *\)depend:$/\1depend: []/'
             expect="Cannot find include file: .?albatross_contract\.vh" ;;
     schema) mutate "$lib/rtl/albatross_bus.core" 's/^filesets:/fileset:/'
             expect='expected FuseSoC to load core albatross:ip:bus' ;;
