@@ -129,7 +129,7 @@ test-tb-fs-crash: $(TB)
 # causes, with termination ignored).
 NEGATIVE := \
   no-arbitration:no-arbitration:exhaustive:byte_atomicity \
-  no-arbitration-protocol:no-arbitration:exhaustive:driver_error:--ignore,byte_atomicity \
+  no-arbitration-protocol:no-arbitration:exhaustive:definite_results:--ignore,byte_atomicity \
   priority-a:priority-a:random:access_time \
   while_as_if:while_as_if:random:mutual_exclusion \
   ignore_readlocked:ignore_readlocked:random:definite_results \
