@@ -22,7 +22,9 @@ with probability at most p_m = (1 - q)^m.  The family is taken for m = 1, 2,
 B_{slots_needed_at_target} is the compiler's age_bound.at_target (checked:
 a mismatch is an error).  On the robot (mobot_sim --age-samples) an age is the
 consumer's, at its Import; a copy channel's bound adds its producer's longest
-gap between Actual stores so far (the robot's own age check does the same).
+gap between Actual stores so far (the robot's own age check does the same);
+that gap is known from the producer's second Actual store on, so a copy
+channel's earlier samples are its warm-up: counted (warmup_samples), not judged.
 
 The check, per channel, consumer and bound: k of the N measured ages exceed
 B_m.  Ages are not independent trials (all values published between two
@@ -154,9 +156,16 @@ def check(report, ages, span_cycles, optimistic=1.0):
             key = (chan["name"], cons["board_index"])
             name = "%s to board %d (%s)" % (chan["name"], cons["board_index"], cons["board"])
             samples = ages.get(key, [])
+            # The robot's copy ages are judged against B + the producer's gap so far, which is
+            # known only from its second Actual store on: earlier samples are its warm-up.
+            def warm(s):
+                return s[2] is None and chan["kind"] == "copy" and s[1] == 0
+            warmup = sum(1 for s in samples if warm(s))
+            samples = [s for s in samples if not warm(s)]
             f = cons["faults"]
             res = {"channel": chan["name"], "size": chan["size"], "board": cons["board"],
                    "board_index": cons["board_index"], "samples": len(samples),
+                   "warmup_samples": warmup,
                    "predicted_slot_delivery": f["slot_delivery_probability"],
                    "predicted_cycle_delivery": 1 - (1 - f["cycle_delivery_probability"]) * optimistic,
                    "age_bound_fault_free": f["age_bound"]["fault_free"]["clocks"],
