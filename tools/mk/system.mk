@@ -242,9 +242,7 @@ test-system-negative-landed-same-value: $(SYS_DIR)/mutant-forget_landed/tb_syste
 # that ignores ReadLocked (mutant fs_ignore_readlocked) writes the buffer the
 # consumer reads by the fourth overtake: a torn value.
 SYS_OVERTAKE := --stretch-import GlobalTime:3:3000
-# The negative is out of make test for now: retargeted to the transfer
-# datapath, this mutant is no longer caught (an open gap, run it by name).
-TESTS += system-four-slot-overtaken
+TESTS += system-four-slot-overtaken system-negative-four-slot-overtaken
 test-system-four-slot-overtaken: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 	@$(call sys_run,four-slot-overtaken) --plan $(SYS_RIGID) $(SYS_OVERTAKE)
 test-system-negative-four-slot-overtaken: $(SYS_DIR)/mutant-fs_ignore_readlocked/tb_system $(SYS_RIGID)/tb_plan.txt
