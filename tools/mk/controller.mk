@@ -53,18 +53,25 @@ test-controller-smoke-negative: $(CTRL_BIN)
 # The abandon scenario alone, and its negative: the controller mutant that
 # reproduces the state-RAM write-back regression (the abandoned count of a COPY
 # whose Import ended without choosing taken from a stale Export's need).
-CTRL_MUT_DIR := $(CTRL_DIR)/mutant-stale_need
-$(CTRL_MUT_DIR)/src/albatross_controller.v: rtl/albatross_controller.v tb/mutants/controller/stale_need.sed
-	@mkdir -p $(@D)
-	sed -f tb/mutants/controller/stale_need.sed $< > $@
-	@if cmp -s $@ $<; then echo "mutant stale_need did not apply: rtl/albatross_controller.v no longer has the line it edits"; \
-	    rm -f $@; exit 1; fi
-$(CTRL_MUT_DIR)/obj/Vtb_system: $(CTRL_SRC) $(CTRL_MUT_DIR)/src/albatross_controller.v tools/mk/controller.mk
-	@mkdir -p $(CTRL_MUT_DIR)
+# The bench built on a controller mutant: $(1) = the mutant's name,
+# tb/mutants/controller/$(1).sed, which names the file it edits on its
+# '# target:' line; the model in $(CTRL_DIR)/mutant-$(1)/obj.
+ctrl_mut_target = $(shell sed -n 's/^# target: *//p' tb/mutants/controller/$(1).sed)
+define ctrl_mutant_model
+$(CTRL_DIR)/mutant-$(1)/src/$(notdir $(call ctrl_mut_target,$(1))): $(call ctrl_mut_target,$(1)) tb/mutants/controller/$(1).sed
+	@mkdir -p $$(@D)
+	sed -f tb/mutants/controller/$(1).sed $$< > $$@
+	@if cmp -s $$@ $$<; then echo "mutant $(1) did not apply: $$< no longer has the line it edits"; \
+	    rm -f $$@; exit 1; fi
+$(CTRL_DIR)/mutant-$(1)/obj/Vtb_system: $(CTRL_SRC) $(CTRL_DIR)/mutant-$(1)/src/$(notdir $(call ctrl_mut_target,$(1))) tools/mk/controller.mk
+	@mkdir -p $(CTRL_DIR)/mutant-$(1)
 	verilator --cc --exe --build -j 2 -O3 -Wall --top-module tb_system \
 	    -GROM_FILE='"ctrl_rom.hex"' -CFLAGS "-O2 -std=c++17 -Wall -Wextra $(TB_COMMON_INC)" \
-	    --Mdir $(CTRL_MUT_DIR)/obj -y $(CTRL_MUT_DIR)/src $(VLIB) tb/system/tb_system.v $(abspath $(CTRL_CPP)) \
-	    > $(CTRL_MUT_DIR)/build.log 2>&1 || { cat $(CTRL_MUT_DIR)/build.log; exit 1; }
+	    --Mdir $(CTRL_DIR)/mutant-$(1)/obj -y $(CTRL_DIR)/mutant-$(1)/src $(VLIB) tb/system/tb_system.v $(abspath $(CTRL_CPP)) \
+	    > $(CTRL_DIR)/mutant-$(1)/build.log 2>&1 || { cat $(CTRL_DIR)/mutant-$(1)/build.log; exit 1; }
+endef
+$(foreach m,stale_need cold_zero_corrupt,$(eval $(call ctrl_mutant_model,$(m))))
+CTRL_MUT_DIR := $(CTRL_DIR)/mutant-stale_need
 
 TESTS += controller-abandon controller-negative-stale_need
 .PHONY: test-controller-abandon test-controller-negative-stale_need
@@ -107,17 +114,6 @@ test-controller-smoke-negative-droprun: $(CTRL_NEG_DR)/obj/Vtb_system
 # negative: the controller that takes a control byte of 0 as out of range
 # (corrupt; the four-slot pair from the Actual copy) fails it.
 CTRL_NEG_COLD := $(CTRL_DIR)/mutant-cold_zero_corrupt
-$(CTRL_NEG_COLD)/src/albatross_transfer.v: rtl/albatross_transfer.v tb/mutants/controller/cold_zero_corrupt.sed
-	@mkdir -p $(@D)
-	sed -f tb/mutants/controller/cold_zero_corrupt.sed $< > $@
-	@if cmp -s $@ $<; then echo "mutant cold_zero_corrupt did not apply: $< no longer has the lines it edits"; \
-	    rm -f $@; exit 1; fi
-$(CTRL_NEG_COLD)/obj/Vtb_system: $(CTRL_SRC) $(CTRL_NEG_COLD)/src/albatross_transfer.v tools/mk/controller.mk
-	@mkdir -p $(CTRL_NEG_COLD)
-	verilator --cc --exe --build -j 2 -O3 -Wall --top-module tb_system \
-	    -GROM_FILE='"ctrl_rom.hex"' -CFLAGS "-O2 -std=c++17 -Wall -Wextra $(TB_COMMON_INC)" \
-	    --Mdir $(CTRL_NEG_COLD)/obj -y $(CTRL_NEG_COLD)/src $(VLIB) tb/system/tb_system.v $(abspath $(CTRL_CPP)) \
-	    > $(CTRL_NEG_COLD)/build.log 2>&1 || { cat $(CTRL_NEG_COLD)/build.log; exit 1; }
 
 TESTS += controller-cold controller-negative-cold
 .PHONY: test-controller-cold test-controller-negative-cold
