@@ -63,12 +63,27 @@ $(TB_DIR)/mutants/%.c: tb/mutants/driver/%.sed c-driver/albatross.c
 	    echo "mutant $* changed $$n lines of c-driver/albatross.c, expected exactly 1 (tb/mutants/driver/$*.sed must match one line)"; \
 	    rm -f $@; exit 1; fi
 
+# The harness's own objects, compiled once per RAM model (they include the
+# model's Vdut.h): $(TB_DIR)/harness-<model>/<source>.o.  Every variant on that
+# model links them with its driver, so a driver mutant costs one C compile.
+TB_MODELS := albatross_dpram dpram_no_arbitration dpram_priority_a
+tb_harness_objs = $(patsubst %.cpp,$(TB_DIR)/harness-$(1)/%.o,$(notdir $(TB_SRC)))
+define tb_harness
+$(TB_DIR)/harness-$(1)/%.o: tb/dpram/%.cpp $(TB_HDR) $(TB_DIR)/model-$(1)/Vdut__ALL.a
+	@mkdir -p $$(@D)
+	$(CXX) $(TB_CXXFLAGS) -I$(TB_DIR)/model-$(1) -c $$< -o $$@
+$(TB_DIR)/harness-$(1)/%.o: tb/common/%.cpp $(TB_HDR) $(TB_DIR)/model-$(1)/Vdut__ALL.a
+	@mkdir -p $$(@D)
+	$(CXX) $(TB_CXXFLAGS) -I$(TB_DIR)/model-$(1) -c $$< -o $$@
+endef
+$(foreach m,$(TB_MODELS),$(eval $(call tb_harness,$(m))))
+
 # tb_dpram linked against <model> and <driver source>.
 define tb_variant
-$(TB_DIR)/$(1)/tb_dpram: $(TB_SRC) $(TB_HDR) $(TB_DIR)/model-$(2)/Vdut__ALL.a $(TB_DIR)/verilated.o $(3)
+$(TB_DIR)/$(1)/tb_dpram: $(call tb_harness_objs,$(2)) $(TB_DIR)/model-$(2)/Vdut__ALL.a $(TB_DIR)/verilated.o $(3)
 	@mkdir -p $$(@D)
 	$(CC) $(TB_CFLAGS) -c $(3) -o $$(@D)/driver.o
-	$(CXX) $(TB_CXXFLAGS) -I$(TB_DIR)/model-$(2) $(TB_SRC) $$(@D)/driver.o \
+	$(CXX) $(call tb_harness_objs,$(2)) $$(@D)/driver.o \
 	    $(TB_DIR)/model-$(2)/Vdut__ALL.a $(TB_DIR)/verilated.o -pthread -o $$@
 endef
 $(eval $(call tb_variant,albatross,albatross_dpram,c-driver/albatross.c))
