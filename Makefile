@@ -130,7 +130,7 @@ NPROC         ?= $(shell nproc 2>/dev/null || echo 2)
 # one co-simulation scenario, one controller scenario, one formal proof and
 # one model check, the compiler, one endpoint, one system run.
 CHECK_TESTS   := lint contract-current driver-unit host-threads-model tb-random controller-smoke \
-                 formal-copy formal-spin compiler-four_slot endpoint-import system-rigid
+                 formal-export formal-spin compiler-four_slot endpoint-import system-rigid
 # suite_run NAME, TESTS: run them in parallel, the costliest first (by the
 # last run's report: a long test started last would run alone at the end),
 # then the summary.

@@ -4,7 +4,6 @@ FSBY_TESTS_SPEC += \
     formal-sequencer:sequencer:prove:pass \
     formal-sequencer-sync:sequencer:prove_sync:pass \
     formal-sequencer-error:sequencer:prove_bad:pass \
-    formal-sequencer-pdr:sequencer:prove_pdr:pass \
     formal-sequencer-cover:sequencer:cover:pass \
     formal-sequencer-cover-sync:sequencer:cover_sync:pass \
     formal-sequencer-cover-error:sequencer:cover_bad:pass \
@@ -24,3 +23,6 @@ $(FSEQ_ROM_FILES) &: formal/sequencer/gen_rom.py rtl/albatross_contract.toml \
 	$(PYTHON) formal/sequencer/gen_rom.py $(FSEQ_ROM)
 $(foreach t,$(FSBY_TESTS_SPEC),$(if $(filter sequencer,$(call neg_field,$(t),2)),test-$(call neg_field,$(t),1))): \
         $(FSEQ_ROM_FILES)
+# The same properties by abc pdr, without the k-induction's white-box probes:
+# a second, independent proof of what formal-sequencer proves (make formal-slow).
+FSBY_SLOW_SPEC += formal-sequencer-pdr:sequencer:prove_pdr:pass
