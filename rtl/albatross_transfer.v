@@ -390,7 +390,7 @@ module albatross_transfer #(
     wire       e_fin    = nrm && ack && state_q == S_DST_FIN;
     wire       no_tried = go_i || new_q;               // a fresh value: no failed store of it
     albatross_transfer_dest u_dest (
-        .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start), .st_known_i(st_known), .st_act_i(st_act_i),
+        .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start), .st_act_i(st_act_i),
         .st_tried_i(st_tried_i), .fresh_i(no_tried), .d_i(d_q), .err_fin_i(e_errfin),
         .clr_tried_i(e_act || (e_rl && ack && four_i) || e_fin), .set_act_i((e_act && a_valid) || e_fin),
         .act_i(e_fin ? buf_d[1:0] : a_byte[1:0]), .set_buf_i(e_rl), .pick_i(pick),
