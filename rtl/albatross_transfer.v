@@ -42,9 +42,8 @@
 //     may_access_i is 1, in the clock after the previous ack (no idle bus
 //     clock inside a transfer); go_i's first access is on the bus in the
 //     next clock.  done_o is high for one clock after the last ack, the
-//     cut-off or the decision that nothing is to be done.  The access order
-//     and timing are those of the former Import and Export engines.
-//   * Reset clears control state only.
+//     cut-off or the decision that nothing is to be done.  Reset clears
+//     control state only.
 // Parts: albatross_transfer_dest (the per-destination registers),
 // albatross_transfer_access (address, lanes and write data of the access),
 // albatross_transfer_pick (the control-word decode and the buffer picks).
@@ -182,16 +181,26 @@ module albatross_transfer #(
     // Cut off between the ReadLocked store and its confirming load: forget.
     wire       forget   = state_q == S_SRC_RL || ((state_q == S_SRC_SLOT || (state_q == S_SRC_ACT && new_q)) && !choose);
 
-    // Put an access on the bus in the next clock, or end the slot (cut-off).
+    // req: the main block below begins an access in this clock, branch by
+    // branch (every begin_access call and the retry: keep it in step).
+    wire       nrm      = !go_i && !(err_i && stb_q) && !(retry_q && !drop_q);
+    wire       dst_go   = (state_q == S_DST_ACT && !leave) || has_next ||
+                          (want ? (!copy_i && word_ok)
+                                : ((state_q == S_DST_WORD && last_wd) || state_q == S_DST_TKN || state_q == S_DST_SLOT));
+    wire       req      = !rst_i && ((go_i && !copy_i) || (!go_i && !(err_i && stb_q) && retry_q && !drop_q) ||
+                          (nrm && ((ack && ((state_q == S_SRC_ACT && a_valid && !a_match) || state_q == S_SRC_RL ||
+                                            state_q == S_SRC_WORD)) ||
+                                   (state_q == S_WAIT && word_ok) || (choose && need_now != 4'd0) ||
+                                   (adv && dst && need_m != 4'd0 && dst_go))));
+
+    // Put an access on the bus in the next clock; when may_access_i is low the
+    // slot is cut off instead, in one place after the main block (req).
     task begin_access;
-        input [3:0] s;
-        input [1:0] d;
+        input [3:0] s; input [1:0] d;
         begin
-            d_q <= d;
-            if (may_access_i) begin
-                state_q <= s;
-                stb_q   <= 1'b1;
-            end else cut_off;
+            d_q     <= d;
+            state_q <= s;
+            stb_q   <= 1'b1;
         end
     endtask
     task finish;
@@ -199,12 +208,6 @@ module albatross_transfer #(
             state_q <= S_IDLE;
             stb_q   <= 1'b0;
             done_q  <= 1'b1;
-        end
-    endtask
-    task cut_off;
-        begin
-            finish;
-            if (forget) rl_q <= 3'd0;
         end
     endtask
     // Start the Export to start_need.
@@ -263,8 +266,7 @@ module albatross_transfer #(
             if (dst) run_q <= run_inc;
         end else if (retry_q && !drop_q) begin
             retry_q <= 1'b0;
-            if (may_access_i) stb_q <= 1'b1;
-            else cut_off;
+            stb_q   <= 1'b1;                       // (or the cut-off: req)
         end else begin
             retry_q <= 1'b0;
             drop_q  <= 1'b0;
@@ -288,7 +290,7 @@ module albatross_transfer #(
                 S_SRC_SLOT: if (ack) rl_q <= pick_l;
                 S_SRC_WORD: if (ack) begin_access(S_DST_WORD, first_d);     // take word k_q
                 S_WAIT: if (word_ok) begin_access(S_DST_WORD, first_d);
-                        else if (!may_access_i || copy_i) cut_off;      // (COPY: only entered without may_access_i)
+                        else if (!may_access_i || copy_i) finish;       // the cut-off (COPY: only entered without may_access_i)
                 S_DST_ACT: if (ack && !a_valid && !a_zero) cor_q <= cor_q | d_bit;
                 S_DST_RL: if (ack && ((!r_valid && !r_zero) || (four_i && !a_valid && !a_zero))) cor_q <= cor_q | d_bit;
                 default: ;
@@ -329,6 +331,10 @@ module albatross_transfer #(
                 else if (state_q == S_DST_FIN) finish;
             end
         end
+        if (req && !may_access_i) begin                  // the cut-off
+            finish;
+            if (forget) rl_q <= 3'd0;
+        end
         // A source word load on the bus when the deadline check fails ends the
         // slot there (done_o); the load itself finishes (ack, or err) silently.
         if (early_q) done_q <= 1'b0;
@@ -342,7 +348,6 @@ module albatross_transfer #(
     // ------------------------------------------------------------ per-destination fields
     // albatross_transfer_dest, written with explicit enables: the events of
     // the current destination d_q, in the branch of the main block they belong to.
-    wire       nrm      = !go_i && !(err_i && stb_q) && !(retry_q && !drop_q);
     wire       e_start  = (go_i && !copy_i) || (nrm && choose && need_now != 4'd0);
     wire       e_errfin = !go_i && err_i && stb_q && state_q == S_DST_FIN;
     wire       e_act    = nrm && ack && state_q == S_DST_ACT;
@@ -364,10 +369,7 @@ module albatross_transfer #(
                    (nrm && word_ok && (state_q == S_WAIT || (adv && dst && want)));
     always @(posedge clk_i) if (take_en) word_q <= copy_i ? dat_i : status_i;
     // k_q: the index of the next word to take; 0 when an Export starts.
-    always @(posedge clk_i) begin
-        if (e_start) k_q <= 12'd0;
-        else if (take_en) k_q <= k_q + 12'd1;
-    end
+    always @(posedge clk_i) if (e_start) k_q <= 12'd0; else if (take_en) k_q <= k_q + 12'd1;
 
     // ------------------------------------------------------------ the access
     albatross_transfer_access #(.ADDR_WIDTH(AW)) u_access (
@@ -383,7 +385,6 @@ module albatross_transfer #(
 
     // ------------------------------------------------------------ results
     function [2:0] popcount4; input [3:0] v; popcount4 = {2'd0, v[0]} + {2'd0, v[1]} + {2'd0, v[2]} + {2'd0, v[3]}; endfunction
-
     assign index_o     = k_q;
     assign done_o      = done_q;
     assign imp_run_o   = imp_q;
