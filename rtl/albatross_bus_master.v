@@ -9,7 +9,7 @@
 //   * The system bus obeys Wishbone classic whatever the requesters do.  An
 //     access (the bus request m_*) starts with the owner's fields, passed
 //     through in the clock it is raised (no idle bus clock is added); from
-//     its second clock on, m_we_o, m_adr_o, m_sel_o and m_dat_o come from a
+//     its second clock on, m_we_o, m_adr_o, m_sel_o and m_dat_o (HOLD_DAT 1) come from a
 //     register holding the first clock's values, until ack, err or the
 //     timeout ends the access.  So an owner that changes its fields in the
 //     middle of an access cannot change the slave's request.  An owner that
@@ -27,6 +27,11 @@
 //     ack nor err) and overlap_o goes high for good (a design error that a
 //     test or proof can watch for).  ack and err go only to the owner, and
 //     only in a clock in which it holds cyc.
+//   * HOLD_DAT 0 (the controller): m_dat_o is always the owner's r_dat_i,
+//     not held; the requesters keep their store data stable until the
+//     answer themselves (the controller's datapath does: formal/ctrl proves
+//     Wishbone classic at the controller's port, store data included).
+//     we, adr and sel are held whatever HOLD_DAT is.
 //   * Timeout: an access that sees neither ack nor err in TIMEOUT clocks of
 //     cyc fails: the owner gets err in the TIMEOUT-th clock, and the request
 //     is dropped at the slave.
@@ -42,7 +47,8 @@ module albatross_bus_master #(
     parameter ADDR_WIDTH = 10, // word-address bits of a board RAM
     parameter BOARD_BITS = 4,  // bits of the board field (high address bits)
     parameter REQS       = 3,  // requesters, 1..4
-    parameter TIMEOUT    = 8   // clocks of cyc without ack/err before an access fails, >= 2
+    parameter TIMEOUT    = 8,  // clocks of cyc without ack/err before an access fails, >= 2
+    parameter HOLD_DAT   = 1   // 1: store data held like the other fields; 0: passed through (the requesters hold them)
 ) (
     input  wire                           clk_i,
     input  wire                           rst_i,       // synchronous, active high
@@ -114,6 +120,7 @@ module albatross_bus_master #(
                                  r_board_i[owner*BOARD_BITS +: BOARD_BITS], r_adr_i[owner*ADDR_WIDTH +: ADDR_WIDTH],
                                  r_sel_i[owner*4 +: 4], r_dat_i[owner*32 +: 32]};
     wire [FW-1:0]       field = pend_q ? held_q : live;
+    wire [31:0]         wdat  = (HOLD_DAT != 0) ? field[31:0] : live[31:0];
     wire                tmo   = cyc && !m_ack_i && !m_err_i && tmo_q == TMO_LAST;
     wire                fail  = cyc && !m_ack_i && (m_err_i || tmo);
     wire                ack   = cyc && m_ack_i;
@@ -146,7 +153,7 @@ module albatross_bus_master #(
     assign m_we_o    = field[FW-1];
     assign m_adr_o   = field[36 +: BOARD_BITS + ADDR_WIDTH];
     assign m_sel_o   = field[32 +: 4];
-    assign m_dat_o   = field[31:0];
+    assign m_dat_o   = wdat;
     assign r_dat_o   = m_dat_i;
     assign r_ack_o   = {{(REQS-1){1'b0}}, ack} << owner;
     assign r_err_o   = {{(REQS-1){1'b0}}, fail} << owner;

@@ -26,10 +26,8 @@
 //     Actual if the copy is unknown (three-buffer read-back: an Actual equal
 //     to the buffer of a failed Actual store shows it landed: published, d
 //     leaves), then load ReadLocked (four-slot: the whole control word, with
-//     the landed check) and pick the buffer (three-buffer: the last of 1..3
-//     that is neither Actual nor ReadLocked; four-slot: p = 1 - pair(R), s =
-//     1 - Slot_p; a ReadLocked of 0, not started, is Buffer1, four-slot
-//     p = 1; a read-back Actual of 0 leaves the copy unknown; no count);
+//     the landed check) and pick the buffer (albatross_transfer_pick; a
+//     read-back Actual of 0 leaves the copy unknown; no count);
 //     then per word k: one source load (COPY; TIME: the slot time; STATUS:
 //     status_i at index_o) and one store per d; then per d taken_at (word
 //     W, stride W + 1), four-slot the Slot byte, then Actual (published).  TIME and STATUS run the Export alone from go_i.
@@ -44,11 +42,11 @@
 //     may_access_i is 1, in the clock after the previous ack (no idle bus
 //     clock inside a transfer); go_i's first access is on the bus in the
 //     next clock.  done_o is high for one clock after the last ack, the
-//     cut-off or the decision that nothing is to be done.  The access order
-//     and timing are those of the former Import and Export engines.
-//   * Reset clears control state only.
+//     cut-off or the decision that nothing is to be done.  Reset clears
+//     control state only.
 // Parts: albatross_transfer_dest (the per-destination registers),
-// albatross_transfer_access (address, lanes and write data of the access).
+// albatross_transfer_access (address, lanes and write data of the access),
+// albatross_transfer_pick (the control-word decode and the buffer picks).
 `default_nettype none
 
 module albatross_transfer #(
@@ -106,19 +104,9 @@ module albatross_transfer #(
 `include "albatross_contract.vh"
 
     localparam AW      = ADDR_WIDTH;
-    localparam ACT_BIT = 8 * (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
-    localparam RL_BIT  = 8 * (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
-    localparam S0_BIT  = 8 * (ALB_CH_OFF_SLOT0 % ALB_CH_WORD_BYTES);
-    localparam S1_BIT  = 8 * (ALB_CH_OFF_SLOT1 % ALB_CH_WORD_BYTES);
-    localparam [7:0] NOT_STARTED = ALB_CH_NOT_STARTED;
-
     generate
-        if (ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES != 0 || ALB_CH_OFF_READLOCKED / ALB_CH_WORD_BYTES != 0 ||
-            ALB_CH_OFF_SLOT0 / ALB_CH_WORD_BYTES != 0 || ALB_CH_OFF_SLOT1 / ALB_CH_WORD_BYTES != 0 ||
-            ALB_CH_OFF_BUFFERS != ALB_CH_WORD_BYTES || ALB_CH_WORD_BYTES != 4 || ALB_CH_BUFFER1 != 1 ||
-            ALB_CH_BUFFER_LAST != 3 || ALB_CH_TAKEN_AT_WORDS != 1 || ALB_CH_NOT_STARTED != 0 || AW < 3)
-        begin : g_contract_check
-            albatross_transfer_contract_mismatch u_error ();
+        if (AW < 3) begin : g_param_check
+            albatross_transfer_parameter_out_of_range u_error ();
         end
     endgenerate
 
@@ -151,36 +139,18 @@ module albatross_transfer #(
     wire [3:0] known_q;               // albatross_transfer_dest's view
     wire [2:0] buf_d, tried_d;
     wire [1:0] copy_d;
+    wire       dst      = state_q[3];
+    wire       ack      = ack_i && stb_q;
+    wire       drop_now = retry_q && drop_q;
+    wire [3:0] d_bit    = 4'b0001 << d_q;     // the current destination
 
-    wire dst   = state_q[3];
-    wire ack   = ack_i && stb_q;
-    wire drop_now = retry_q && drop_q;
-
-    // ------------------------------------------------------------ current destination
-    wire [3:0]    d_bit = 4'b0001 << d_q;
-
-    // The control word just loaded.
-    wire [7:0] a_byte   = dat_i[ACT_BIT +: 8];
-    wire [7:0] r_byte   = dat_i[RL_BIT +: 8];
-    wire       a_valid  = a_byte[7:3] == 5'd0 && a_byte[2:0] != 3'd0 && (four_i ? a_byte[2:0] <= 3'd4 : !a_byte[2]);
-    wire       r_valid  = r_byte[7:3] == 5'd0 && r_byte[2:0] != 3'd0 && (four_i ? r_byte[2:0] <= 3'd4 : !r_byte[2]);
-    // Not started (0, a zeroed RAM): no error.  Actual: nothing published
-    // (Import: nothing new; Export: copy unknown); ReadLocked: Buffer1.
-    wire       a_zero   = a_byte == NOT_STARTED;
-    wire       r_zero   = r_byte == NOT_STARTED;
-    wire       a_pair   = a_byte[2] | (a_byte[1] & a_byte[0]);      // (x - 1) >> 1 for x = 1..4
-    wire       r_pair   = r_byte[2] | (r_byte[1] & r_byte[0]);
-    // Source: c of this word (first load), b from the Actual stored (second).
-    wire [2:0] cur_b    = {1'b0, a_pair, a_pair ? dat_i[S1_BIT] : dat_i[S0_BIT]} + 3'd1;
-    wire       p_ald    = ald_q[2] | (ald_q[1] & ald_q[0]);
-    wire [2:0] pick_l   = {1'b0, p_ald, p_ald ? dat_i[S1_BIT] : dat_i[S0_BIT]} + 3'd1;
-    wire       a_match  = four_i ? cur_b == rl_q : a_byte[2:0] == rl_q;
-    // Destination pick.
-    wire [1:0] r_lock   = r_valid ? r_byte[1:0] : 2'd0;
-    wire [1:0] pick3    = (copy_d != 2'd3 && r_lock != 2'd3) ? 2'd3 : (copy_d != 2'd2 && r_lock != 2'd2) ? 2'd2 : 2'd1;
-    wire       pk_p     = r_valid ? !r_pair : r_zero ? 1'b1 : a_valid ? !a_pair : 1'b1;
-    wire       pk_s     = !(pk_p ? dat_i[S1_BIT] : dat_i[S0_BIT]);
-    wire [2:0] pick     = four_i ? {1'b0, pk_p, pk_s} + 3'd1 : {1'b0, pick3};
+    // The control word just loaded and the picks (albatross_transfer_pick).
+    wire [2:0] a_byte, pick_l, pick;
+    wire       a_valid, a_zero, r_valid, r_zero, a_match;
+    albatross_transfer_pick u_pick (
+        .dat_i(dat_i), .four_i(four_i), .ald_i(ald_q), .rl_i(rl_q), .copy_i(copy_d),
+        .a_byte_o(a_byte), .a_valid_o(a_valid), .a_zero_o(a_zero), .r_valid_o(r_valid), .r_zero_o(r_zero),
+        .a_match_o(a_match), .pick_l_o(pick_l), .pick_o(pick));
     wire       read_act = ack && (state_q == S_DST_ACT || (four_i && state_q == S_DST_RL));
     wire       landed   = read_act && a_valid && a_byte[2:0] == tried_d && tried_d != 3'd0;
     wire       leave    = dst && (drop_now || landed);
@@ -211,24 +181,26 @@ module albatross_transfer #(
     // Cut off between the ReadLocked store and its confirming load: forget.
     wire       forget   = state_q == S_SRC_RL || ((state_q == S_SRC_SLOT || (state_q == S_SRC_ACT && new_q)) && !choose);
 
-    // Put an access on the bus in the next clock, or end the slot (cut-off).
+    // req: the main block below begins an access in this clock, branch by
+    // branch (every begin_access call and the retry: keep it in step).
+    wire       nrm      = !go_i && !(err_i && stb_q) && !(retry_q && !drop_q);
+    wire       dst_go   = (state_q == S_DST_ACT && !leave) || has_next ||
+                          (want ? (!copy_i && word_ok)
+                                : ((state_q == S_DST_WORD && last_wd) || state_q == S_DST_TKN || state_q == S_DST_SLOT));
+    wire       req      = !rst_i && ((go_i && !copy_i) || (!go_i && !(err_i && stb_q) && retry_q && !drop_q) ||
+                          (nrm && ((ack && ((state_q == S_SRC_ACT && a_valid && !a_match) || state_q == S_SRC_RL ||
+                                            state_q == S_SRC_WORD)) ||
+                                   (state_q == S_WAIT && word_ok) || (choose && need_now != 4'd0) ||
+                                   (adv && dst && need_m != 4'd0 && dst_go))));
+
+    // Put an access on the bus in the next clock; when may_access_i is low the
+    // slot is cut off instead, in one place after the main block (req).
     task begin_access;
-        input [3:0] s;
-        input [1:0] d;
+        input [3:0] s; input [1:0] d;
         begin
-            d_q <= d;
-            if (may_access_i) begin
-                state_q <= s;
-                stb_q   <= 1'b1;
-            end else cut_off;
-        end
-    endtask
-    task cut_off;
-        begin
-            state_q <= S_IDLE;
-            stb_q   <= 1'b0;
-            done_q  <= 1'b1;
-            if (forget) rl_q <= 3'd0;
+            d_q     <= d;
+            state_q <= s;
+            stb_q   <= 1'b1;
         end
     endtask
     task finish;
@@ -246,12 +218,6 @@ module albatross_transfer #(
             need_q   <= start_need;
             run_q    <= 8'd0;
             begin_access((st_known[first_in] || four_i) ? S_DST_RL : S_DST_ACT, first_in);
-        end
-    endtask
-    // Take word k_q from the stream: store it to the first destination.
-    task take_word;
-        begin
-            begin_access(S_DST_WORD, first_d);
         end
     endtask
 
@@ -300,8 +266,7 @@ module albatross_transfer #(
             if (dst) run_q <= run_inc;
         end else if (retry_q && !drop_q) begin
             retry_q <= 1'b0;
-            if (may_access_i) stb_q <= 1'b1;
-            else cut_off;
+            stb_q   <= 1'b1;                       // (or the cut-off: req)
         end else begin
             retry_q <= 1'b0;
             drop_q  <= 1'b0;
@@ -323,9 +288,9 @@ module albatross_transfer #(
                     begin_access(four_i ? S_SRC_SLOT : S_SRC_ACT, 2'd0);
                 end
                 S_SRC_SLOT: if (ack) rl_q <= pick_l;
-                S_SRC_WORD: if (ack) take_word;
-                S_WAIT: if (word_ok) take_word;
-                        else if (!may_access_i || copy_i) cut_off;      // (COPY: only entered without may_access_i)
+                S_SRC_WORD: if (ack) begin_access(S_DST_WORD, first_d);     // take word k_q
+                S_WAIT: if (word_ok) begin_access(S_DST_WORD, first_d);
+                        else if (!may_access_i || copy_i) finish;       // the cut-off (COPY: only entered without may_access_i)
                 S_DST_ACT: if (ack && !a_valid && !a_zero) cor_q <= cor_q | d_bit;
                 S_DST_RL: if (ack && ((!r_valid && !r_zero) || (four_i && !a_valid && !a_zero))) cor_q <= cor_q | d_bit;
                 default: ;
@@ -352,7 +317,7 @@ module albatross_transfer #(
                             state_q <= S_WAIT;
                             stb_q   <= 1'b0;
                         end
-                    end else if (word_ok) take_word;
+                    end else if (word_ok) begin_access(S_DST_WORD, first_d);
                     else begin
                         state_q <= S_WAIT;
                         stb_q   <= 1'b0;
@@ -366,9 +331,12 @@ module albatross_transfer #(
                 else if (state_q == S_DST_FIN) finish;
             end
         end
-        // A source word load on the bus when the deadline check fails ends
-        // the slot there (done_o), as the Export engine waiting for that word
-        // did; the load itself finishes (ack, or err and no retry) silently.
+        if (req && !may_access_i) begin                  // the cut-off
+            finish;
+            if (forget) rl_q <= 3'd0;
+        end
+        // A source word load on the bus when the deadline check fails ends the
+        // slot there (done_o); the load itself finishes (ack, or err) silently.
         if (early_q) done_q <= 1'b0;
         if (!rst_i && !go_i && state_q == S_SRC_WORD && !may_access_i && !early_q) begin
             done_q  <= 1'b1;
@@ -378,11 +346,8 @@ module albatross_transfer #(
     end
 
     // ------------------------------------------------------------ per-destination fields
-    // Each destination's Actual copy, its known bit, its picked buffer and
-    // the buffer of its failed Actual store (albatross_transfer_dest), written
-    // with explicit enables (the events of the current destination d_q, in
-    // the branch of the main block they belong to).
-    wire       nrm      = !go_i && !(err_i && stb_q) && !(retry_q && !drop_q);
+    // albatross_transfer_dest, written with explicit enables: the events of
+    // the current destination d_q, in the branch of the main block they belong to.
     wire       e_start  = (go_i && !copy_i) || (nrm && choose && need_now != 4'd0);
     wire       e_errfin = !go_i && err_i && stb_q && state_q == S_DST_FIN;
     wire       e_act    = nrm && ack && state_q == S_DST_ACT;
@@ -390,25 +355,21 @@ module albatross_transfer #(
     wire       e_fin    = nrm && ack && state_q == S_DST_FIN;
     wire       no_tried = go_i || new_q;               // a fresh value: no failed store of it
     albatross_transfer_dest u_dest (
-        .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start), .st_known_i(st_known), .st_act_i(st_act_i),
+        .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start), .st_act_i(st_act_i),
         .st_tried_i(st_tried_i), .fresh_i(no_tried), .d_i(d_q), .err_fin_i(e_errfin),
         .clr_tried_i(e_act || (e_rl && ack && four_i) || e_fin), .set_act_i((e_act && a_valid) || e_fin),
         .act_i(e_fin ? buf_d[1:0] : a_byte[1:0]), .set_buf_i(e_rl), .pick_i(pick),
         .known_o(known_q), .buf_d_o(buf_d), .tried_d_o(tried_d), .copy_d_o(copy_d), .act_o(act_o), .tried_o(tried_o));
 
     // ------------------------------------------------------------ the word stored
-    // word_q takes the word the destinations' stores write (take_word's
-    // clock): the source word in its load's ack clock, a STATUS word when
-    // it is taken (TIME's value is slot_time_i itself).  One enable, one
-    // two-way multiplexer.
+    // word_q: the word the stores write, taken when the first store begins:
+    // the source word (its load's ack clock) or a STATUS word (TIME's value
+    // is slot_time_i itself).
     wire take_en = (nrm && ack && state_q == S_SRC_WORD) ||
                    (nrm && word_ok && (state_q == S_WAIT || (adv && dst && want)));
     always @(posedge clk_i) if (take_en) word_q <= copy_i ? dat_i : status_i;
     // k_q: the index of the next word to take; 0 when an Export starts.
-    always @(posedge clk_i) begin
-        if (e_start) k_q <= 12'd0;
-        else if (take_en) k_q <= k_q + 12'd1;
-    end
+    always @(posedge clk_i) if (e_start) k_q <= 12'd0; else if (take_en) k_q <= k_q + 12'd1;
 
     // ------------------------------------------------------------ the access
     albatross_transfer_access #(.ADDR_WIDTH(AW)) u_access (
@@ -423,11 +384,7 @@ module albatross_transfer #(
     assign cyc_o = stb_q;
 
     // ------------------------------------------------------------ results
-    function [2:0] popcount4;
-        input [3:0] v;
-        popcount4 = {2'd0, v[0]} + {2'd0, v[1]} + {2'd0, v[2]} + {2'd0, v[3]};
-    endfunction
-
+    function [2:0] popcount4; input [3:0] v; popcount4 = {2'd0, v[0]} + {2'd0, v[1]} + {2'd0, v[2]} + {2'd0, v[3]}; endfunction
     assign index_o     = k_q;
     assign done_o      = done_q;
     assign imp_run_o   = imp_q;

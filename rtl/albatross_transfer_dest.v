@@ -1,6 +1,7 @@
 // albatross_transfer_dest -- the per-destination registers of the transfer
 // datapath (albatross_transfer): for each of the 4 destinations of an entry
-// its Actual copy with a known bit, the buffer the Export picked for it and
+// its Actual copy (0: unknown; the known bit is the copy being nonzero),
+// the buffer the Export picked for it and
 // the buffer of its failed Actual store; and the view of the current
 // destination d_i (a multiplexer per field).
 // Rules:
@@ -13,14 +14,15 @@
 //     act_i, known); set_buf_i (the picked buffer becomes pick_i).  When
 //     several are high in one clock the later in this list wins.
 //   * Timing: registered, in the clock after the enables; reset clears the
-//     known bits and the buffers tried (the copies and picks are data).
+//     copies and the buffers tried (the picks are data).  A four-slot
+//     destination's copy is not used (the datapath ignores it): the Actual
+//     store of buffer 4 leaves it 0.
 `default_nettype none
 
 module albatross_transfer_dest (
     input  wire        clk_i,
     input  wire        rst_i,          // synchronous, active high
     input  wire        start_i,        // load all destinations from the state RAM
-    input  wire [3:0]  st_known_i,     // the copies known (st_act_i nonzero)
     input  wire [7:0]  st_act_i,       // Actual copies, d at [2d +: 2]
     input  wire [11:0] st_tried_i,     // buffers of failed Actual stores, d at [3d +: 3]
     input  wire        fresh_i,        // with start_i: no buffer tried
@@ -39,8 +41,7 @@ module albatross_transfer_dest (
     output wire [11:0] tried_o         // the buffers tried, d at [3d +: 3]
 );
 
-    reg  [3:0]  known_q;
-    reg  [7:0]  act_q;
+    reg  [7:0]  act_q;                 // 0: unknown
     reg  [11:0] buf_q, tried_q;
     wire [3:0]  d_bit = 4'b0001 << d_i;
     genvar      g;
@@ -49,34 +50,29 @@ module albatross_transfer_dest (
         for (g = 0; g < 4; g = g + 1) begin : g_dest
             always @(posedge clk_i) begin
                 if (rst_i) begin
-                    known_q[g]         <= 1'b0;
+                    act_q[2*g +: 2]    <= 2'd0;
                     tried_q[3*g +: 3]  <= 3'd0;
                 end else if (start_i) begin
-                    known_q[g]         <= st_known_i[g];
                     act_q[2*g +: 2]    <= st_act_i[2*g +: 2];
                     tried_q[3*g +: 3]  <= fresh_i ? 3'd0 : st_tried_i[3*g +: 3];
                 end else if (d_bit[g]) begin
                     if (err_fin_i) begin
-                        known_q[g]        <= 1'b0;
+                        act_q[2*g +: 2]   <= 2'd0;
                         tried_q[3*g +: 3] <= buf_d_o;
                     end
                     if (clr_tried_i) tried_q[3*g +: 3] <= 3'd0;
-                    if (set_act_i) begin
-                        known_q[g]      <= 1'b1;
-                        act_q[2*g +: 2] <= act_i;
-                    end
+                    if (set_act_i) act_q[2*g +: 2] <= act_i;
                     if (set_buf_i) buf_q[3*g +: 3] <= pick_i;
                 end
             end
-            assign act_o[2*g +: 2] = known_q[g] ? act_q[2*g +: 2] : 2'd0;
+            assign known_o[g] = act_q[2*g +: 2] != 2'd0;
         end
     endgenerate
 
-    wire [1:0] act_d = d_i[1] ? (d_i[0] ? act_q[6 +: 2] : act_q[4 +: 2]) : (d_i[0] ? act_q[2 +: 2] : act_q[0 +: 2]);
     assign buf_d_o   = d_i[1] ? (d_i[0] ? buf_q[9 +: 3] : buf_q[6 +: 3]) : (d_i[0] ? buf_q[3 +: 3] : buf_q[0 +: 3]);
     assign tried_d_o = d_i[1] ? (d_i[0] ? tried_q[9 +: 3] : tried_q[6 +: 3]) : (d_i[0] ? tried_q[3 +: 3] : tried_q[0 +: 3]);
-    assign copy_d_o  = known_q[d_i] ? act_d : 2'd0;
-    assign known_o   = known_q;
+    assign copy_d_o  = d_i[1] ? (d_i[0] ? act_q[6 +: 2] : act_q[4 +: 2]) : (d_i[0] ? act_q[2 +: 2] : act_q[0 +: 2]);
+    assign act_o     = act_q;
     assign tried_o   = tried_q;
 
 endmodule

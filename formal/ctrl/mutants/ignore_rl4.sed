@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_pick.v
 # ignore_rl4 (formal/export/mutants/ignore_rl4.sed on the datapath): the
 # four-slot pair is picked from Actual, ignoring the reader's ReadLocked.
 # Must fail dst_no_held_write.

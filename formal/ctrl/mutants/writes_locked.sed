@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_pick.v
 # writes_locked (formal/export/mutants/writes_locked.sed, tb/mutants/engines/
 # export_writes_locked.sed, tb/mutants/controller/ignore_readlocked.sed on the
 # datapath): the pick ignores the ReadLocked just loaded.  Must fail

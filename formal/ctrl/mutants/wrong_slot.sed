@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_pick.v
 # wrong_slot (formal/import/mutants/wrong_slot.sed on the datapath): the
 # four-slot Import reads the other slot of the announced pair.  Must fail
 # src_no_torn.

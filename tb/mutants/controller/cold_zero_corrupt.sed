@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_pick.v
 # Controller mutant: the rule from before the cold-start contract.  A control
 # byte of 0 (not started, a zeroed RAM) is out of range like 4..255: a source
 # Actual of 0 and a destination's Actual or ReadLocked of 0 count corrupt, and

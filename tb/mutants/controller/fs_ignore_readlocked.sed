@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_pick.v
 # Controller mutant: the four-slot Export ignores the destination's
 # ReadLocked when it picks the pair to write: it takes the pair opposite to
 # Actual's, as if no consumer were reading.  A consumer still reading the

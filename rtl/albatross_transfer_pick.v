@@ -1,0 +1,89 @@
+// albatross_transfer_pick -- the control-word decode of the transfer
+// datapath (albatross_transfer): what a load of a control word (the
+// source's or a destination's Actual, ReadLocked and Slot bytes at the
+// contract's lane offsets) says, and the buffer picks made from it.
+// Purely combinational, on the read data of the load (dat_i).
+// Rules:
+//   * A control byte is valid when it names a buffer: 1..3, four-slot 1..4.
+//     0 is "not started" (a zeroed RAM: no error, a_zero_o/r_zero_o); any
+//     other value is corrupt.  pair(x) = (x - 1) >> 1 for x = 1..4.
+//   * Source (the Import): cur_b is c = 1 + 2 pair(A) + Slot[pair(A)] of this
+//     load; a_match_o: the load shows the copy rl_i again (four-slot: c = L;
+//     three-buffer: A = the copy); pick_l_o (four-slot, the second load) is
+//     L = 1 + 2 pair(ald_i) + Slot[pair(ald_i)], from the Actual stored.
+//   * Destination (the Export): three-buffer, the last of 1..3 that is
+//     neither the Actual copy copy_i nor ReadLocked (a ReadLocked that names
+//     no buffer counts as none); four-slot, p = 1 - pair(ReadLocked) (not
+//     started: p = 1; not valid: 1 - pair(Actual), or p = 1), s = 1 - Slot_p,
+//     buffer 1 + 2p + s.
+`default_nettype none
+
+module albatross_transfer_pick (
+    input  wire [31:0] dat_i,          // the control word loaded
+    input  wire        four_i,         // the four-slot kind
+    input  wire [2:0]  ald_i,          // the source Actual loaded first (four-slot pick of L)
+    input  wire [2:0]  rl_i,           // the ReadLocked copy / four-slot L (0 unknown)
+    input  wire [1:0]  copy_i,         // the destination's Actual copy (0 unknown)
+    output wire [2:0]  a_byte_o,       // the Actual byte's buffer bits
+    output wire        a_valid_o,      // Actual names a buffer
+    output wire        a_zero_o,       // Actual is 0 (not started)
+    output wire        r_valid_o,      // ReadLocked names a buffer
+    output wire        r_zero_o,       // ReadLocked is 0 (not started)
+    output wire        a_match_o,      // source: the load shows the copy again (Old)
+    output wire [2:0]  pick_l_o,       // source, four-slot: L from the second load
+    output wire [2:0]  pick_o          // destination: the buffer to write
+);
+
+`include "albatross_contract.vh"
+
+    localparam ACT_BIT = 8 * (ALB_CH_OFF_ACTUAL % ALB_CH_WORD_BYTES);
+    localparam RL_BIT  = 8 * (ALB_CH_OFF_READLOCKED % ALB_CH_WORD_BYTES);
+    localparam S0_BIT  = 8 * (ALB_CH_OFF_SLOT0 % ALB_CH_WORD_BYTES);
+    localparam S1_BIT  = 8 * (ALB_CH_OFF_SLOT1 % ALB_CH_WORD_BYTES);
+    localparam [7:0] NOT_STARTED = ALB_CH_NOT_STARTED;
+
+    generate
+        if (ALB_CH_OFF_ACTUAL / ALB_CH_WORD_BYTES != 0 || ALB_CH_OFF_READLOCKED / ALB_CH_WORD_BYTES != 0 ||
+            ALB_CH_OFF_SLOT0 / ALB_CH_WORD_BYTES != 0 || ALB_CH_OFF_SLOT1 / ALB_CH_WORD_BYTES != 0 ||
+            ALB_CH_OFF_BUFFERS != ALB_CH_WORD_BYTES || ALB_CH_WORD_BYTES != 4 || ALB_CH_BUFFER1 != 1 ||
+            ALB_CH_BUFFER_LAST != 3 || ALB_CH_TAKEN_AT_WORDS != 1 || ALB_CH_NOT_STARTED != 0)
+        begin : g_contract_check
+            albatross_transfer_pick_contract_mismatch u_error ();
+        end
+    endgenerate
+
+    // The control word just loaded.
+    wire [7:0] a_byte   = dat_i[ACT_BIT +: 8];
+    wire [7:0] r_byte   = dat_i[RL_BIT +: 8];
+    wire       a_valid  = a_byte[7:3] == 5'd0 && a_byte[2:0] != 3'd0 && (four_i ? a_byte[2:0] <= 3'd4 : !a_byte[2]);
+    wire       r_valid  = r_byte[7:3] == 5'd0 && r_byte[2:0] != 3'd0 && (four_i ? r_byte[2:0] <= 3'd4 : !r_byte[2]);
+    // Not started (0, a zeroed RAM): no error.  Actual: nothing published
+    // (Import: nothing new; Export: copy unknown); ReadLocked: Buffer1.
+    wire       a_zero   = a_byte == NOT_STARTED;
+    wire       r_zero   = r_byte == NOT_STARTED;
+    wire       a_pair   = a_byte[2] | (a_byte[1] & a_byte[0]);      // (x - 1) >> 1 for x = 1..4
+    wire       r_pair   = r_byte[2] | (r_byte[1] & r_byte[0]);
+    // Source: c of this word (first load), b from the Actual stored (second).
+    wire [2:0] cur_b    = {1'b0, a_pair, a_pair ? dat_i[S1_BIT] : dat_i[S0_BIT]} + 3'd1;
+    wire       p_ald    = ald_i[2] | (ald_i[1] & ald_i[0]);
+    wire [2:0] pick_l   = {1'b0, p_ald, p_ald ? dat_i[S1_BIT] : dat_i[S0_BIT]} + 3'd1;
+    wire       a_match  = four_i ? cur_b == rl_i : a_byte[2:0] == rl_i;
+    // Destination pick.
+    wire [1:0] r_lock   = r_valid ? r_byte[1:0] : 2'd0;
+    wire [1:0] pick3    = (copy_i != 2'd3 && r_lock != 2'd3) ? 2'd3 : (copy_i != 2'd2 && r_lock != 2'd2) ? 2'd2 : 2'd1;
+    wire       pk_p     = r_valid ? !r_pair : r_zero ? 1'b1 : a_valid ? !a_pair : 1'b1;
+    wire       pk_s     = !(pk_p ? dat_i[S1_BIT] : dat_i[S0_BIT]);
+    wire [2:0] pick     = four_i ? {1'b0, pk_p, pk_s} + 3'd1 : {1'b0, pick3};
+
+    assign a_byte_o  = a_byte[2:0];
+    assign a_valid_o = a_valid;
+    assign a_zero_o  = a_zero;
+    assign r_valid_o = r_valid;
+    assign r_zero_o  = r_zero;
+    assign a_match_o = a_match;
+    assign pick_l_o  = pick_l;
+    assign pick_o    = pick;
+
+endmodule
+
+`default_nettype wire
