@@ -81,13 +81,16 @@ space         := $(empty) $(empty)
 neg_field      = $(word $(2),$(subst :, ,$(1)))
 
 # Each fragment in tools/mk/ adds its tests to TESTS (names) and rules test-<name>;
-# the formal ones also to FORMAL_TESTS (make formal runs just those).
+# the formal ones also to FORMAL_TESTS (make formal runs just those).  Tests
+# too slow for make test (the boards' place and route, second proofs, deep
+# negatives) go to SLOW_TESTS instead: make test-slow runs them.
 TESTS         :=
+SLOW_TESTS    :=
 BENCHES       :=
 FORMAL_TESTS  :=
 include $(sort $(wildcard tools/mk/*.mk))
 
-.PHONY: help deps lint test check list-tests formal bench figures sim clean distclean
+.PHONY: help deps lint test check test-slow test-all list-tests list-slow-tests formal bench figures sim clean distclean
 
 help: ## [start] list the targets, grouped (a "## [group] text" comment on a rule line)
 	@python3 tools/make_help.py $(MAKEFILE_LIST)
@@ -148,6 +151,15 @@ check: ## the quick loop: one test of each part, same output as make test
 
 list-tests: ## every test's name, one a line (run one: make test-NAME)
 	@printf '%s\n' $(TESTS)
+
+test-slow: ## the tests left out of make test to keep it quick (boards' place and route, second proofs, deep negatives), same output
+	@$(call suite_run,slow,$(SLOW_TESTS))
+
+test-all: ## make test and make test-slow in one run, same output
+	@$(call suite_run,all,$(TESTS) $(SLOW_TESTS))
+
+list-slow-tests: ## the names of make test-slow's tests, one a line
+	@printf '%s\n' $(SLOW_TESTS)
 
 formal: ## the formal proofs and model checks alone (also part of make test)
 	@$(call suite_run,formal,$(FORMAL_TESTS))

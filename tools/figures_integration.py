@@ -345,7 +345,7 @@ SECTIONS["host-threads-reliability"] = host_threads_reliability
 def suite_times():
     """How long make test and make check take (build/reports/suite_*.json, tools/suite_report.py)."""
     rows = []
-    for name in ("check", "check_hogs", "test", "test_hogs"):
+    for name in ("check", "check_hogs", "test", "test_hogs", "slow"):
         r = load(f"suite_{name}.json")
         if not r:
             continue

@@ -33,6 +33,7 @@ FORMAL_RTL_TESTS := formal-controller formal-controller-negative-ignore_readlock
 # runs: formal/ctrl proves the controller's top against the sequencer's
 # contract, formal/sequencer proves the sequencer's side of it.  So these run
 # with make formal-slow, not in make test.
+SLOW_TESTS += $(FORMAL_RTL_TESTS)
 .PHONY: formal-slow
 formal-slow: $(addprefix test-,$(FORMAL_RTL_TESTS))
 .PHONY: $(addprefix test-,$(FORMAL_RTL_TESTS))

@@ -65,5 +65,6 @@ endef
 $(foreach t,$(FSBY_TESTS_SPEC),$(eval $(call fsby_test,$(t),$(FSBY_TIMEOUT))))
 $(foreach t,$(FSBY_SLOW_SPEC),$(eval $(call fsby_test,$(t),$(FSBY_SLOW_TIMEOUT))))
 FSBY_SLOW_NAMES := $(foreach t,$(FSBY_SLOW_SPEC),$(call neg_field,$(t),1))
+SLOW_TESTS += $(FSBY_SLOW_NAMES)
 .PHONY: formal-slow $(addprefix test-,$(FSBY_SLOW_NAMES))
 formal-slow: $(addprefix test-,$(FSBY_SLOW_NAMES)) ## [formal] the proofs and negatives too slow for make test (each bounded, about an hour at most)

@@ -21,7 +21,7 @@
 #                    cores' heartbeats blink, no error LED (-ulx3s, -arty:
 #                    those tops; -negative, -ulx3s-negative, -arty-negative:
 #                    a corrupted ROM image must light the top's error LED)
-#   make test-fpga-icebreaker, test-fpga-ulx3s  a board's flow to its
+#   make test-fpga-icebreaker, test-fpga-ulx3s  (in make test-slow) a board's flow to its
 #                    bitstream as a test: fits, meets its clock
 #   make test-fpga-icebreaker-pico2-expect-fail  the iCEBreaker top with two
 #                    PicoRV32 boards (SERV_MASK 0) placed and routed at 12 MHz:
@@ -221,7 +221,11 @@ $(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
 BENCHES += synth area
 
 TESTS += fpga-soc fpga-soc-threebuffer-negative fpga-soc-bound-negative fpga-soc-ulx3s fpga-soc-ulx3s-drift fpga-soc-ulx3s-drift-negative fpga-soc-arty fpga-soc-negative fpga-soc-ulx3s-negative fpga-soc-arty-negative \
-         fpga-soc-pins-negative fpga-icebreaker fpga-icebreaker-pico2-expect-fail fpga-ulx3s fpga-report-negative fpga-arty fpga-lint
+         fpga-soc-pins-negative fpga-report-negative fpga-lint
+# The boards' flows (synthesis, place and route, fit and clock; about 6 min of
+# CPU time together) run with make test-slow: make test checks the tops in
+# simulation, their lint and the fit/clock checker itself (fpga-report-negative).
+SLOW_TESTS += fpga-icebreaker fpga-icebreaker-pico2-expect-fail fpga-ulx3s fpga-arty
 .PHONY: test-fpga-soc test-fpga-soc-threebuffer-negative test-fpga-soc-bound-negative test-fpga-soc-ulx3s test-fpga-soc-ulx3s-drift test-fpga-soc-ulx3s-drift-negative test-fpga-soc-arty test-fpga-soc-negative test-fpga-soc-ulx3s-negative \
         test-fpga-soc-arty-negative test-fpga-soc-pins-negative test-fpga-icebreaker test-fpga-icebreaker-pico2-expect-fail test-fpga-ulx3s \
         test-fpga-report-negative test-fpga-arty test-fpga-lint
