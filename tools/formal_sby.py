@@ -176,6 +176,11 @@ def main():
     write_json(REPORT, {"checks": allr})
     print(f"figures: {a.name}: engine {rec['engine']}, mode {mode}, depth {rec['depth'] or '-'}, "
           f"result {result}, {secs} s")
+    if not ok:
+        # what SymbiYosys said last (a tool error, a timeout, the failed
+        # assertions), so that a log of the suite alone tells why
+        tail = [ln for ln in out.splitlines() if ln.strip() and "Warning" not in ln][-12:]
+        print("\n".join("  sby: " + ln for ln in tail))
     print(msg)
     sys.exit(0 if ok else 1)
 
