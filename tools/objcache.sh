@@ -10,12 +10,51 @@
 # macro, so a harness's own -DNAME=... need not split the cache; the object
 # is compiled without them too, so that it is the same whoever asks first.
 # Any other file is compiled as asked.
+#
+# A harness's own source (a .cpp outside the object folder, compiled with
+# -c) is cached too, by its preprocessed text: the same harness built
+# against many mutants of one top (whose generated header is the same)
+# compiles once.  The preprocessing pass also writes the dependency file
+# that the compile would have written, so make's later decisions are the same.
 set -u
 src=${!#}
 case "$src" in
     */include/verilated*.cpp) ;;
+    /*.cpp|../*.cpp)
+        harness=1 ;;
     *) exec "$@" ;;
 esac
+if [ "${harness-}" = 1 ]; then
+    out= prev= mmd= pre=() key=()
+    for a in "$@"; do
+        if [ "$prev" = "-o" ]; then out=$a; prev=; continue; fi
+        prev=$a
+        case "$a" in
+            -o) continue ;;
+            -c) pre+=(-E); key+=(-c); continue ;;
+            -MMD|-MD) mmd=$a ;;
+        esac
+        pre+=("$a"); key+=("$a")
+    done
+    case " $* " in *" -c "*) ;; *) exec "$@" ;; esac
+    [ -n "$out" ] || exec "$@"
+    root=$(cd "$(dirname "$0")/.." && pwd)
+    dir=$root/build/objcache
+    mkdir -p "$dir"
+    tmp=$dir/.pre.$$.ii
+    # (the dependency file named as the compile names it: out's stem + .d)
+    "${pre[@]}" -o "$tmp" ${mmd:+-MF "${out%.*}.d" -MT "$out"} || { rm -f "$tmp"; exec "$@"; }
+    h=$(printf '%s\n' "${key[@]}" "$(sha1sum < "$tmp")" | sha1sum | cut -c1-16)
+    rm -f "$tmp"
+    obj=$dir/$(basename "$src" .cpp)-$h.o
+    if [ -f "$obj" ]; then
+        cp "$obj" "$out"
+        exit 0
+    fi
+    "$@" || exit
+    cp "$out" "$obj.$$" && mv -f "$obj.$$" "$obj"
+    exit 0
+fi
 args=() key=() out=
 prev=
 for a in "$@"; do
