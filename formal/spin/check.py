@@ -226,6 +226,8 @@ def main():
     ap.add_argument("--json", required=True)
     ap.add_argument("--variant", default=None)
     ap.add_argument("--must-fail", default="mutex,definite")
+    ap.add_argument("--only", default="", help="comma-separated checks: run just these")
+    ap.add_argument("--skip", default="", help="comma-separated checks: run all but these")
     a = ap.parse_args()
     MODEL = os.path.join(HERE, a.model + ".pml")
     if a.model == "four_slot":
@@ -234,6 +236,16 @@ def main():
         safety = {k: (p, [d] if isinstance(d, str) else d, 1000000)
                   for k, (p, d) in SAFETY.items()}
         ltl, cflags = LTL, []
+    only = [x for x in a.only.split(",") if x]
+    skip = [x for x in a.skip.split(",") if x]
+    unknown = [x for x in only + skip if x not in safety and x not in ltl]
+    if unknown:
+        raise SystemExit(f"check.py: no check named {', '.join(unknown)} in {a.model} "
+                         f"(there are: {', '.join(list(safety) + list(ltl))})")
+    if only or skip:
+        keep = (lambda n: n in only) if only else (lambda n: n not in skip)
+        safety = {k: v for k, v in safety.items() if keep(k)}
+        ltl = {k: v for k, v in ltl.items() if keep(k)}
     os.makedirs(a.out, exist_ok=True)
     os.makedirs(os.path.dirname(a.json) or ".", exist_ok=True)
     results, bad = [], []
@@ -299,7 +311,7 @@ def main():
             d = build(a.out, name, defines, True, cflags)
             r = pan(d, [], depth)
             record(name, prop, "holds", r, r["errors"] == 0, "")
-        d = build(a.out, "ltl", [], False, cflags)
+        d = build(a.out, "ltl", [], False, cflags) if ltl else None
         for name, (prop, fair, expected) in ltl.items():
             if name in LTL_BUILD:
                 claim, defines = LTL_BUILD[name]

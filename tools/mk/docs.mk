@@ -12,7 +12,7 @@
 #   docs/img/fault_rates.svg  delivery and worst age against the true fault
 #                          rate (make bench-fault-rates, seed 1; deterministic,
 #                          refreshed by make docs-pictures, compared by its own
-#                          test-docs-pictures-fault-rates:
+#                          test-docs-pictures-fault-rates in make test-slow:
 #                          tools/mk/system_fault_rates.mk)
 # The simulation is deterministic for a given seed: the same tree gives the
 # same pictures bit for bit.  A change that moves any timing of the robot
