@@ -21,6 +21,8 @@ struct Options {
     std::string plan_dir, rom, report, label = "system";
     std::string ages;                            // --ages FILE: every measured latency/age (CSV)
     uint64_t cycles = 400000, seed = 1, dead_at = 0;
+    unsigned handoff_watchdog_s = 10;            // --handoff-watchdog S: CPU seconds a simulated CPU
+                                                 // may run without handing control back
     double fault_rate = 0, burst = 0, latency_scale = 1;   // burst 0: independent accesses
     bool fault_per_clock = false;                // negative test: the old injector, one draw per clock
     double land_actual = 0;                      // negative test: a destination Actual store is performed

@@ -33,6 +33,8 @@
 //                                                 (the background CRC check must find it)
 //             [--corrupt-actual CH:C]             channel CH's producer stores Actual = 7 at cycle C
 //             [--rom FILE] [--report FILE] [--label NAME]
+//             [--handoff-watchdog S]              CPU seconds a simulated CPU may run without
+//                                                 handing control back (default 10, 1..3600)
 //             [--ages FILE]                       every measured latency / age as CSV
 //                                                 (channel,board,cycle,age; tools/fault_rates.py)
 //             [--latency-scale F] [--expect-caught-by CHECKER]...   negative tests
@@ -203,7 +205,7 @@ int main(int argc, char **argv)
     // A CPU whose C code loops without a RAM access never hands control back
     // to this loop, so no bound in simulated cycles can stop it: the CPU-time
     // hand-off watchdog ends the run with a message naming the CPU.
-    SimCpu::arm_handoff_watchdog(10);
+    SimCpu::arm_handoff_watchdog(o.handoff_watchdog_s);
     uint64_t wait[SystemSim::kBoards] = {};
     std::mt19937_64 land_rng(o.seed ^ 0x1A4Dull);
     sim.fault_accesses = sim.fault_injected = sim.dead_accesses = 0;

@@ -209,7 +209,7 @@ $(SYS_WD)/rom.hex: sim/mobot3.toml $(SCHEDULE_SRC)
 TESTS += system-negative-watchdog
 test-system-negative-watchdog: $(SYS_DIR)/mutant-zero_readlocked/tb_system $(SYS_WD)/tb_plan.txt
 	@tools/run_test.sh system-negative-watchdog bash -c '$< --plan $(SYS_WD) --seed $(SEED) --cycles 300000 \
-	    --label system-negative-watchdog > $(SYS_DIR)/watchdog.log 2>&1; rc=$$?; tail -1 $(SYS_DIR)/watchdog.log; \
+	    --handoff-watchdog 2 --label system-negative-watchdog > $(SYS_DIR)/watchdog.log 2>&1; rc=$$?; tail -1 $(SYS_DIR)/watchdog.log; \
 	    if [ $$rc = 3 ] && grep -q "tb: watchdog: simulated CPU" $(SYS_DIR)/watchdog.log; then \
 	    echo "the hand-off watchdog ended the run, as expected"; \
 	    else echo "expected the hand-off watchdog to end the run (exit 3), got exit $$rc"; exit 1; fi'
