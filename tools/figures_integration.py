@@ -4,6 +4,7 @@ measured against it, the SymbiYosys proofs, the kinds' cost, VexRiscv's cost
 and tests, the make sim excerpt, the driver on host threads.  SECTIONS maps
 each block name to the function that makes its table."""
 from figures_common import Absent, load, missing, table, n
+from suite_report import TARGET   # suite name -> its make target
 
 
 SECTIONS = {}
@@ -349,7 +350,7 @@ def suite_times():
         r = load(f"suite_{name}.json")
         if not r:
             continue
-        rows.append([f"`make {r['suite']}`", r["tests"], f"{r['passed']} passed", f"{r['wall_s'] / 60:.1f} min",
+        rows.append([f"`make {TARGET.get(r['suite'], r['suite'])}`", r["tests"], f"{r['passed']} passed", f"{r['wall_s'] / 60:.1f} min",
                      f"{r['jobs']}", f"{r['loadavg_end'][0]:.1f}" + (f" ({r['busy']})" if r.get("busy") else ""),
                      f"{r['cpu_sum_s'] / 60:.1f} min", f"{r['idle_estimate_s'] / 60:.1f} min", r["date"]])
     if not rows:

@@ -20,6 +20,9 @@ import time
 
 RESULTS = "build/results"
 
+# The make target of each suite name (tools/mk: suite_run NAME).
+TARGET = {"slow": "test-slow", "all": "test-all"}
+
 
 def prerequisites():
     """{target: [prerequisites]} from make's database (make -pq, no rule runs)."""
@@ -140,7 +143,7 @@ def main():
         json.dump(rep, f, indent=1)
         f.write("\n")
     slow = sorted(rows, key=lambda r: -r["cpu_s"])[:12]
-    print(f"make {name}: {wall / 60:.1f} min wall on {jobs} jobs (load average {load[0]:.1f} at the end); "
+    print(f"make {TARGET.get(name, name)}: {wall / 60:.1f} min wall on {jobs} jobs (load average {load[0]:.1f} at the end); "
           f"CPU time {cpu_sum / 60:.1f} min (runs and builds), so about {rep['idle_estimate_s'] / 60:.1f} min "
           f"on an idle machine with {min(jobs, os.cpu_count() or 1)} cores ({out})")
     print("the tests that cost most CPU time (run + builds of their own; builds shared with other tests not counted):")
