@@ -106,7 +106,7 @@ def main():
     # files are found from its folder as before.
     scale = min(10.0, max(1.0, os.getloadavg()[0] / (os.cpu_count() or 1)))
     with open(a.sby) as f:
-        script = re.sub(r"(?m)^(timeout\s+)(\d+)", lambda m: f"{m.group(1)}{round(int(m.group(2)) * scale)}", f.read())
+        script = re.sub(r"(?m)^((?:~?\w+:\s*)?timeout\s+)(\d+)", lambda m: f"{m.group(1)}{round(int(m.group(2)) * scale)}", f.read())
     cmd = ["yowasp-sby", "-f", "--prefix", prefix, "-T", a.task]
     try:
         p = subprocess.run(cmd, cwd=os.path.dirname(a.sby) or ".", env=env, stdout=subprocess.PIPE, input=script,
