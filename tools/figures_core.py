@@ -338,7 +338,7 @@ def formal_spin():
 def formal_rtl():
     rep = load("formal_rtl.json")
     if not rep:
-        missing("formal_rtl.json", "make formal-slow")
+        missing("formal_rtl.json", "make test-slow")
     rows = []
     for c in (rep or {}).get("checks", []):
         det = c.get("detail") or {}

@@ -86,7 +86,8 @@ test-formal-spin-four-slot:
 # keeps the other crash_* and ctrl_* rows, and New/Old itself.
 SPIN_FS_DEEP := crash_newold,ctrl_newold
 SLOW_TESTS   += formal-spin-four-slot-deep
-.PHONY: test-formal-spin-four-slot-deep
+.PHONY: test-formal-spin-four-slot-deep formal-slow
+formal-slow: test-formal-spin-four-slot-deep
 test-formal-spin-four-slot-deep:
 	@tools/run_test.sh formal-spin-four-slot-deep $(PYTHON) $(SPIN_CHECK) --model four_slot --only $(SPIN_FS_DEEP) \
 	    --out $(SPIN_FS_DIR)/deep --json $(REPORTS)/formal_spin_four_slot_deep.json
