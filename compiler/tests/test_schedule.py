@@ -370,9 +370,15 @@ class GeneratedCTests(unittest.TestCase):
 
 class BadDescriptionTests(unittest.TestCase):
     """compiler/tests/bad/*.toml: exit status 2, the expected message, no
-    traceback, nothing written."""
+    traceback, nothing written.  The command's own main() runs each one in
+    this process (a Python start-up per file cost 10 s); test_missing_file and
+    PackageTests run the installed command itself."""
 
     def test_bad_descriptions(self):
+        import contextlib
+        import io
+        from albatross_schedule import cli
+
         files = sorted(f for f in os.listdir(BAD) if f.endswith(".toml"))
         self.assertGreater(len(files), 40)
         for f in files:
@@ -384,12 +390,17 @@ class BadDescriptionTests(unittest.TestCase):
                 self.assertIsNotNone(m, f"{f}: the first line must be '# expect: <message>'")
                 out = os.path.join(OUT, "bad", f[:-5])
                 shutil.rmtree(out, ignore_errors=True)
-                r = subprocess.run(TOOL + [path, "--out", out], capture_output=True, text=True,
-                                   env=TOOL_ENV)
-                self.assertEqual(r.returncode, 2, f"{f}: exit {r.returncode}\n{r.stdout}{r.stderr}")
-                self.assertIn(m.group(1), r.stderr)
-                self.assertNotIn("Traceback", r.stderr)
-                self.assertTrue(r.stderr.startswith("error: " + path), r.stderr)
+                stdout, stderr = io.StringIO(), io.StringIO()
+                with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
+                    try:
+                        rc = cli.main([path, "--out", out])
+                    except SystemExit as e:     # argparse: a usage error
+                        rc = e.code
+                err = stderr.getvalue()
+                self.assertEqual(rc, 2, f"{f}: exit {rc}\n{stdout.getvalue()}{err}")
+                self.assertIn(m.group(1), err)
+                self.assertNotIn("Traceback", err)
+                self.assertTrue(err.startswith("error: " + path), err)
                 self.assertFalse(os.path.exists(out), f"{f}: outputs written for a bad description")
 
     def test_missing_file(self):
