@@ -157,6 +157,16 @@ int main(int argc, char **argv)
         if (now.stopped && !stop_at) stop_at = c;
         if (!pins_at && !(pins_fail = pins(m, false)).empty()) pins_at = c;
         prev = now;
+        // A negative test stops once its verdict is settled: the pins' failure
+        // is then the message (no error or stop before it, both heartbeats
+        // seen twice), and nothing later can turn it into a pass.
+        if (!expect_fail.empty() && pins_at && !error_at && !stop_at && toggles[0] >= 2 && toggles[1] >= 2 &&
+            !gt_words) {
+            std::printf("  cycle %llu: the pins' failure is settled; the negative test stops here\n",
+                        (unsigned long long)c);
+            cycles = c;
+            break;
+        }
         if (gt_words && !starved_at && watchdog && c - gt_changed > watchdog) starved_at = c;
         if (c % (cycles / 10) == 0)
             std::printf("  [%3llu%%] cycle %llu: heartbeat changes sensor %llu, actuator %llu, LEDs %02x\n",
