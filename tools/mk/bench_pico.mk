@@ -30,7 +30,7 @@ $(PBN_DIR)/bench.dis: $(PBN_DIR)/bench.elf
 $(PBN_BIN): $(PBN_RTL) tb/pico/bench_pico.cpp tb/pico/picorv32.vlt tb/common/report.h tools/mk/bench_pico.mk
 	$(PICO_NEED)
 	@mkdir -p $(PBN_DIR)
-	verilator --cc --exe --build -j 2 -O3 $(PBN_VFLAGS) -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" \
+	$(VERILATOR_BUILD) -j 2 -O3 $(PBN_VFLAGS) -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" \
 	    --Mdir $(PBN_DIR)/obj $(PICO_RV32_V) tb/pico/pico_bench.v $(abspath tb/pico/bench_pico.cpp) \
 	    > $(PBN_DIR)/build.log 2>&1 || { cat $(PBN_DIR)/build.log; exit 1; }
 
@@ -57,7 +57,7 @@ $(PBN_SERV_BIN): $(PBN_RTL) tb/pico/bench_pico.cpp tb/pico/picorv32.vlt \
 	$(PICO_NEED)
 	$(SERV_NEED)
 	@mkdir -p $(@D)
-	verilator --cc --exe --build -j 2 -O3 $(PBN_VFLAGS) -y $(SERV_CPU_RTL) tb/pico/serv.vlt -GSERV=1 \
+	$(VERILATOR_BUILD) -j 2 -O3 $(PBN_VFLAGS) -y $(SERV_CPU_RTL) tb/pico/serv.vlt -GSERV=1 \
 	    -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" --Mdir $(@D) $(PICO_RV32_V) tb/pico/pico_bench.v \
 	    $(abspath tb/pico/bench_pico.cpp) > $(@D)/build.log 2>&1 || { cat $(@D)/build.log; exit 1; }
 

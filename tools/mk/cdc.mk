@@ -19,7 +19,7 @@ CDC_SRC         := tb/cdc/tb_dpram_async.v $(CORE_wb_cdc) $(CORE_dpram) \
 
 $(CDC_BIN): $(CDC_SRC) tools/mk/cdc.mk
 	@mkdir -p $(CDC_DIR)
-	verilator --cc --exe --build -j 2 -O3 -Wall --top-module tb_dpram_async \
+	$(VERILATOR_BUILD) -j 2 -O3 -Wall --top-module tb_dpram_async \
 	    -GSYNC_STAGES=$(CDC_SYNC_STAGES) -GADDR_WIDTH=$(CDC_ADDR_WIDTH) \
 	    -CFLAGS "-O2 -DSYNC_STAGES=$(CDC_SYNC_STAGES) -DADDR_WIDTH=$(CDC_ADDR_WIDTH)" \
 	    --Mdir $(CDC_DIR)/obj -y rtl tb/cdc/tb_dpram_async.v $(abspath $(CDC_CPP)) \

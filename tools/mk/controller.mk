@@ -32,7 +32,7 @@ CTRL_SRC := tb/system/tb_system.v tb/common/bus_fault_injector.v $(CORE_soc_syst
 
 $(CTRL_BIN): $(CTRL_SRC) tools/mk/controller.mk
 	@mkdir -p $(CTRL_DIR)
-	verilator --cc --exe --build -j 2 -O3 -Wall --top-module tb_system \
+	$(VERILATOR_BUILD) -j 2 -O3 -Wall --top-module tb_system \
 	    -GROM_FILE='"ctrl_rom.hex"' -CFLAGS "-O2 -std=c++17 -Wall -Wextra $(TB_COMMON_INC)" \
 	    --Mdir $(CTRL_DIR)/obj $(VLIB) tb/system/tb_system.v $(abspath $(CTRL_CPP)) \
 	    > $(CTRL_DIR)/build.log 2>&1 || { cat $(CTRL_DIR)/build.log; exit 1; }
@@ -65,7 +65,7 @@ $(CTRL_DIR)/mutant-$(1)/src/$(notdir $(call ctrl_mut_target,$(1))): $(call ctrl_
 	    rm -f $$@; exit 1; fi
 $(CTRL_DIR)/mutant-$(1)/obj/Vtb_system: $(CTRL_SRC) $(CTRL_DIR)/mutant-$(1)/src/$(notdir $(call ctrl_mut_target,$(1))) tools/mk/controller.mk
 	@mkdir -p $(CTRL_DIR)/mutant-$(1)
-	verilator --cc --exe --build -j 2 -O3 -Wall --top-module tb_system \
+	$(VERILATOR_BUILD) -j 2 -O3 -Wall --top-module tb_system \
 	    -GROM_FILE='"ctrl_rom.hex"' -CFLAGS "-O2 -std=c++17 -Wall -Wextra $(TB_COMMON_INC)" \
 	    --Mdir $(CTRL_DIR)/mutant-$(1)/obj -y $(CTRL_DIR)/mutant-$(1)/src $(VLIB) tb/system/tb_system.v $(abspath $(CTRL_CPP)) \
 	    > $(CTRL_DIR)/mutant-$(1)/build.log 2>&1 || { cat $(CTRL_DIR)/mutant-$(1)/build.log; exit 1; }
@@ -96,7 +96,7 @@ $(CTRL_NEG_DR)/src/albatross_controller.v: rtl/albatross_controller.v tools/mk/c
 	    rm -f $@; exit 1; fi
 $(CTRL_NEG_DR)/obj/Vtb_system: $(CTRL_SRC) $(CTRL_NEG_DR)/src/albatross_controller.v
 	@mkdir -p $(CTRL_NEG_DR)
-	verilator --cc --exe --build -j 2 -O3 -Wall -Wno-UNUSEDSIGNAL --top-module tb_system \
+	$(VERILATOR_BUILD) -j 2 -O3 -Wall -Wno-UNUSEDSIGNAL --top-module tb_system \
 	    -GROM_FILE='"ctrl_rom.hex"' -CFLAGS "-O2 -std=c++17 -Wall -Wextra $(TB_COMMON_INC)" \
 	    --Mdir $(CTRL_NEG_DR)/obj -y $(CTRL_NEG_DR)/src $(VLIB) tb/system/tb_system.v $(abspath $(CTRL_CPP)) \
 	    > $(CTRL_NEG_DR)/build.log 2>&1 || { cat $(CTRL_NEG_DR)/build.log; exit 1; }

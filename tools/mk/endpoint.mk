@@ -51,7 +51,7 @@ $(EP_DIR)/$(1)/V$(2): $(EP_ENGINES) $(3) $(EP_CORE) $$$$(PICO_RV32_V) tb/endpoin
         tb/endpoint/$(2:_pico=)/test_$(2).cpp $(EP_CHECK) tools/mk/endpoint.mk
 	$$(PICO_NEED)
 	@mkdir -p $$(@D)
-	verilator --cc --exe --build -j 2 -O3 $(if $(4),-y $(4)) $$(EP_VFLAGS) --top-module $(2) $(5) \
+	$(VERILATOR_BUILD) -j 2 -O3 $(if $(4),-y $(4)) $$(EP_VFLAGS) --top-module $(2) $(5) \
 	    -CFLAGS "$$(EP_CXXFLAGS)" --Mdir $$(@D)/obj -o ../V$(2) \
 	    $$(PICO_RV32_V) tb/endpoint/$(2:_pico=)/$(2).v $$(abspath tb/endpoint/$(2:_pico=)/test_$(2).cpp) \
 	    $$(abspath tb/common/protocol_checker.cpp) > $$(@D)/build.log 2>&1 || { cat $$(@D)/build.log; exit 1; }

@@ -169,7 +169,7 @@ bitstream: pnr ## pack the iCEBreaker and ULX3S tops -> build/fpga/icebreaker_to
 # ULX3S model's PLL is fpga/EHXPLLL.v (its two clocks at the real 2:1).
 FPGA_SIM_DEPS := $(FPGA_RTL) $(RTL_INC) fpga/EHXPLLL.v fpga/test_fpga_soc.cpp tb/common/report.h tb/pico/picorv32.vlt tools/mk/fpga.mk
 # Recipe: the model of top $(1) from file $(4), harness define $(2), parameters $(3), into $(@D).
-FPGA_VERILATE = verilator --cc --exe --build -j 2 -O3 $(FPGA_VFLAGS) --top-module $(1) $(3) \
+FPGA_VERILATE = $(VERILATOR_BUILD) -j 2 -O3 $(FPGA_VFLAGS) --top-module $(1) $(3) \
     -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC) -D$(2)" --Mdir $(@D) $(PICO_RV32_V) $(4) $(abspath fpga/test_fpga_soc.cpp) \
     > $(@D)/build.log 2>&1 || { cat $(@D)/build.log; exit 1; }
 define fpga_sim

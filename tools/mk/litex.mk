@@ -62,7 +62,7 @@ $(LX_DIR)/run/sim_rom.init: $(LX_DIR)/fw/litex_pair.hex
 $(LX_DIR)/obj/Vsim: $(LX_DIR)/gateware/sim.v tb/litex/test_litex_soc.cpp tb/litex/litex.vlt tb/common/report.h \
         tools/mk/litex.mk
 	$(VEX_NEED)
-	verilator --cc --exe --build -j 2 -O3 -Wall --timescale 1ns/1ps --top-module sim tb/litex/litex.vlt \
+	$(VERILATOR_BUILD) -j 2 -O3 -Wall --timescale 1ns/1ps --top-module sim tb/litex/litex.vlt \
 	    -CFLAGS "$(LX_CXX)" --Mdir $(@D) $$(cat $(LX_DIR)/gateware/sources.txt) $(abspath tb/litex/test_litex_soc.cpp) \
 	    > $(LX_DIR)/build.log 2>&1 || { cat $(LX_DIR)/build.log; exit 1; }
 

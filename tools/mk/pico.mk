@@ -56,7 +56,7 @@ PICO_BIN := $(PICO_DIR)/obj/Vpico_pair
 $(PICO_BIN): $(PICO_RTL) $(PICO_RV32_V) tb/pico/test_pico_pair.cpp tb/pico/picorv32.vlt tb/common/report.h tools/mk/pico.mk
 	$(PICO_NEED)
 	@mkdir -p $(PICO_DIR)
-	verilator --cc --exe --build -j 2 -O3 $(PICO_VFLAGS) -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" \
+	$(VERILATOR_BUILD) -j 2 -O3 $(PICO_VFLAGS) -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" \
 	    --Mdir $(PICO_DIR)/obj $(PICO_RV32_V) tb/pico/pico_pair.v $(abspath tb/pico/test_pico_pair.cpp) \
 	    > $(PICO_DIR)/build.log 2>&1 || { cat $(PICO_DIR)/build.log; exit 1; }
 

@@ -67,7 +67,7 @@ define pb_model
 $(PB_DIR)/$(1)/Vpico_boards: $(PB_RTL) $(RTL_INC) $(PICO_RV32_V) $(PB_SRC) $(PB_HDR) tb/pico/picorv32.vlt tools/mk/pico_boards.mk
 	$$(PICO_NEED)
 	@mkdir -p $$(@D)
-	verilator --cc --exe --build -j 2 -O3 $(2) $(PB_VFLAGS) -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" \
+	$(VERILATOR_BUILD) -j 2 -O3 $(2) $(PB_VFLAGS) -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" \
 	    --Mdir $$(@D) $(PICO_RV32_V) sim/pico_boards.v $(abspath $(PB_SRC)) \
 	    > $$(@D)/build.log 2>&1 || { cat $$(@D)/build.log; exit 1; }
 endef

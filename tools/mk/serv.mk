@@ -74,7 +74,7 @@ $(SERV_DIR)/mask$(1)/Vpico_pair: $(SERV_RTL) tb/pico/test_pico_pair.cpp tb/pico/
 	$$(SERV_NEED)
 	$$(PICO_NEED)
 	@mkdir -p $$(@D)
-	verilator --cc --exe --build -j 2 -O3 $$(SERV_VFLAGS) -GSERV_MASK=$(1) --prefix Vpico_pair \
+	$(VERILATOR_BUILD) -j 2 -O3 $$(SERV_VFLAGS) -GSERV_MASK=$(1) --prefix Vpico_pair \
 	    -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" --Mdir $$(@D) $$(PICO_RV32_V) tb/pico/pico_pair.v \
 	    $$(abspath tb/pico/test_pico_pair.cpp) > $(SERV_DIR)/build-mask$(1).log 2>&1 \
 	    || { cat $(SERV_DIR)/build-mask$(1).log; exit 1; }

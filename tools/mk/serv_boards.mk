@@ -14,7 +14,7 @@ $(SB_BIN): $(PB_RTL) $(RTL_INC) $(PICO_RV32_V) $(PB_SRC) $(PB_HDR) \
 	$(SERV_NEED)
 	$(PICO_NEED)
 	@mkdir -p $(@D)
-	verilator --cc --exe --build -j 2 -O3 $(PB_VFLAGS) -y $(SERV_CPU_RTL) tb/pico/serv.vlt -GSERV_MASK=8 \
+	$(VERILATOR_BUILD) -j 2 -O3 $(PB_VFLAGS) -y $(SERV_CPU_RTL) tb/pico/serv.vlt -GSERV_MASK=8 \
 	    -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" --Mdir $(@D) $(PICO_RV32_V) sim/pico_boards.v $(abspath $(PB_SRC)) \
 	    > $(@D)/build.log 2>&1 || { cat $(@D)/build.log; exit 1; }
 

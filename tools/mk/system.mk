@@ -34,7 +34,7 @@ $(SYS_DIR)/$(1)/model/Vsys__ALL.a: $(RTL) $(RTL_INC) $(TB_RTL) soc/albatross_sys
 	@mkdir -p $$(@D)
 	verilator --cc -O3 --prefix Vsys --top-module tb_system $(if $(2),-y $(dir $(2))) $(VLIB) \
 	    -Mdir $$(@D) tb/system/tb_system.v
-	$$(MAKE) -s -C $$(@D) -f Vsys.mk OPT_FAST=$(if $(filter real,$(1)),-O3,-O1) CXX="$$(CXX)" >/dev/null
+	$$(MAKE) -s -C $$(@D) -f Vsys.mk OPT_SLOW=-O0 OPT_FAST=$(if $(filter real,$(1)),-O3,-O1) CXX="$$(CXX)" >/dev/null
 $(SYS_DIR)/$(1)/system_sim.o: tb/system/system_sim.cpp $(SYS_HDR) $(SYS_DIR)/$(1)/model/Vsys__ALL.a \
         $(if $(filter real,$(1)),,$(SYS_DIR)/real/system_sim.o)
 	$(if $(filter real,$(1)),,if cmp -s $(SYS_DIR)/$(1)/model/Vsys.h $(SYS_DIR)/real/model/Vsys.h; then \

@@ -89,7 +89,7 @@ $(VEX_DIR)/$(1)/Vpico_pair: $(VEX_RTL) tb/pico/test_vex_pair.cpp tb/pico/picorv3
 	$$(VEX_NEED)
 	$$(PICO_NEED)
 	@mkdir -p $$(@D)
-	verilator --cc --exe --build -j 2 -O3 $$(VEX_VFLAGS) $(2) --prefix Vpico_pair -CFLAGS "$(VEX_CXX)" \
+	$(VERILATOR_BUILD) -j 2 -O3 $$(VEX_VFLAGS) $(2) --prefix Vpico_pair -CFLAGS "$(VEX_CXX)" \
 	    --Mdir $$(@D) $$(PICO_RV32_V) $$(VEX_CPU_V) tb/pico/pico_pair.v $$(abspath tb/pico/test_vex_pair.cpp) \
 	    $$(abspath tb/common/protocol_checker.cpp) > $(VEX_DIR)/build-$(1).log 2>&1 \
 	    || { cat $(VEX_DIR)/build-$(1).log; exit 1; }
@@ -149,7 +149,7 @@ $(VEX_BENCH_BIN): $(PBN_RTL) $(VEX_RTL) tb/pico/bench_pico.cpp tb/pico/picorv32.
 	$(VEX_NEED)
 	$(PICO_NEED)
 	@mkdir -p $(@D)
-	verilator --cc --exe --build -j 2 -O3 $(PBN_VFLAGS) tb/pico/vexriscv.vlt -GVEX=1 --prefix Vpico_bench \
+	$(VERILATOR_BUILD) -j 2 -O3 $(PBN_VFLAGS) tb/pico/vexriscv.vlt -GVEX=1 --prefix Vpico_bench \
 	    -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" --Mdir $(@D) $(PICO_RV32_V) $(VEX_CPU_V) tb/pico/pico_bench.v \
 	    $(abspath tb/pico/bench_pico.cpp) > $(@D)/build.log 2>&1 || { cat $(@D)/build.log; exit 1; }
 $(VEX_DIR)/fw/bench.elf: tb/pico/firmware/bench.c c-driver/albatross.c $(FW_DEPS) tools/mk/vexriscv.mk
@@ -179,7 +179,7 @@ $(VB_BIN): $(PB_RTL) $(RTL_INC) $(CORE_FS_soc_system_vexriscv) $(PICO_RV32_V) $(
 	$(VEX_NEED)
 	$(PICO_NEED)
 	@mkdir -p $(@D)
-	verilator --cc --exe --build -j 2 -O3 $(PB_VFLAGS) tb/pico/vexriscv.vlt -GVEX_MASK=8 \
+	$(VERILATOR_BUILD) -j 2 -O3 $(PB_VFLAGS) tb/pico/vexriscv.vlt -GVEX_MASK=8 \
 	    -CFLAGS "-O2 -std=c++17 $(TB_COMMON_INC)" --Mdir $(@D) $(PICO_RV32_V) $(VEX_CPU_V) sim/pico_boards.v \
 	    $(abspath $(PB_SRC)) > $(@D)/build.log 2>&1 || { cat $(@D)/build.log; exit 1; }
 
