@@ -190,3 +190,9 @@ test-termination-negative-scale: $(PB_BIN) $(PB_FW) $(PB_SCHED)/tb_plan.txt
 	@tools/run_test.sh termination-negative-scale $(PB_BIN) $(PB_FW_ARGS) --cycles $(TERM_NEG_CYCLES) --seed $(SEED) \
 	    --termination-scale 0.5 --label termination-negative-scale --expect-caught-by termination \
 	    --report $(REPORTS)/termination_negative_scale.json
+
+# test-docs-pictures (tools/mk/docs.mk) runs make sim with its defaults (no
+# trace): what that needs is built by the suite as a shared build, once, not
+# inside the test's own make while other tests build the same model.
+test-docs-pictures: $(PB_BIN) $(foreach b,$(PB_BOARDS),$(PB_DIR)/mobot3/fw-clock/$(b).hex) \
+    $(BUILD)/schedule/mobot3/tb_plan.txt $(BUILD)/schedule/mobot3/rom.hex
