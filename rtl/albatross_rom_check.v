@@ -32,10 +32,16 @@
 //     start-up pass read it; 0 after reset, until the pass has read word 2.
 //   * Reset (synchronous) clears the read address and the CRC; the
 //     signature memory is never reset (the start-up pass writes it).
+//   * HAS_ROM_RECHECK 0 (the sequencer then issues reads only in the
+//     start-up pass): no background check, so no prefix is read back and no
+//     bad mark is set: mism_o and bad_o are 0 (what the memory, written by
+//     the start-up pass with clear marks, returned), and the signature
+//     memory, its compare and the CRC reload are left out.
 `default_nettype none
 
 module albatross_rom_check #(
-    parameter ROM_WORDS = 1024   // schedule ROM depth in 32-bit words, >= 12
+    parameter ROM_WORDS = 1024,  // schedule ROM depth in 32-bit words, >= 12
+    parameter HAS_ROM_RECHECK = 1 // 1: the background re-check; 0: the start-up pass only
 ) (
     input  wire                     clk_i,
     input  wire                     rst_i,        // synchronous, active high
@@ -102,7 +108,8 @@ module albatross_rom_check #(
     wire [31:0]        crc_n    = crc_step(crc_q, bg_dadr_q == 3 ? 32'd0 : rom_dat_i);
     wire [RG_BITS-1:0] fetch_part = fetch_ent_i[RG_BITS-1:0] + 1'b1;
     wire [RG_BITS-1:0] rd_part  = fetch_i ? fetch_part : bg_adr_q[RG_BITS+2:3];
-    wire               mism     = p_end && !learn_i && crc_n != sig_q[31:0];
+    localparam         RECHECK  = HAS_ROM_RECHECK != 0;
+    wire               mism     = RECHECK && p_end && !learn_i && crc_n != sig_q[31:0];
 
     wire               wr       = (p_end && learn_i) || mism;
 
@@ -127,7 +134,7 @@ module albatross_rom_check #(
             bg_data_q <= bg_issue;
             bg_dadr_q <= bg_adr_q;
             if (bg_issue) bg_adr_q <= (bg_adr_q == last_word_i) ? {ROM_AW{1'b0}} : bg_adr_q + 1'b1;
-            if (bg_data_q) crc_q <= p_last ? CRC_SEED : (p_end && !learn_i) ? sig_q[31:0] : crc_n;
+            if (bg_data_q) crc_q <= p_last ? CRC_SEED : (RECHECK && p_end && !learn_i) ? sig_q[31:0] : crc_n;
         end
     end
 
@@ -135,7 +142,7 @@ module albatross_rom_check #(
     assign last_o   = p_last;
     assign crc_ok_o = crc_n == h3_i;
     assign mism_o   = mism && !sig_q[32];
-    assign bad_o    = clash_q ? clash_bad_q : sig_q[32];
+    assign bad_o    = RECHECK && (clash_q ? clash_bad_q : sig_q[32]);
     assign h2_o     = h2_q;
 
 endmodule

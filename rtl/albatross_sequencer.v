@@ -204,7 +204,7 @@ module albatross_sequencer #(
     // The start-up CRC and the background re-check; in the clock S of a
     // fetch it reads the fetched entry's bad mark for FETCH clock 1.
     wire p_last, crc_ok, mism_new, bad_mark;
-    albatross_rom_check #(.ROM_WORDS(ROM_WORDS)) u_rom_check (
+    albatross_rom_check #(.ROM_WORDS(ROM_WORDS), .HAS_ROM_RECHECK(HAS_ROM_RECHECK)) u_rom_check (
         .clk_i(clk_i), .rst_i(rst_i), .learn_i(state_q == ST_CHECK), .bg_on_i(bg_on),
         .main_rom_i(main_rom), .last_word_i(last_word), .adr_o(bg_adr), .rom_dat_i(rom_q),
         .h3_i(h3_q), .fetch_i(start_now), .fetch_ent_i(ent_q), .last_o(p_last), .crc_ok_o(crc_ok),
