@@ -59,7 +59,7 @@ test-controller-smoke-negative: $(CTRL_BIN)
 ctrl_mut_target = $(shell sed -n 's/^# target: *//p' tb/mutants/controller/$(1).sed)
 define ctrl_mutant_model
 $(CTRL_DIR)/mutant-$(1)/src/$(notdir $(call ctrl_mut_target,$(1))): $(call ctrl_mut_target,$(1)) tb/mutants/controller/$(1).sed
-	@mkdir -p $$(@D)
+	@rm -rf $$(@D) && mkdir -p $$(@D)
 	sed -f tb/mutants/controller/$(1).sed $$< > $$@
 	@if cmp -s $$@ $$<; then echo "mutant $(1) did not apply: $$< no longer has the line it edits"; \
 	    rm -f $$@; exit 1; fi

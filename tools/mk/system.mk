@@ -49,12 +49,14 @@ $(eval $(call sys_model,real,))
 # Controller mutants (tb/mutants/controller/*.sed applied to the real RTL):
 # each system checker has a negative test that must catch one.
 # Each .sed names the controller file it edits on its '# target:' line; the
-# mutated copy keeps the file name, so the model's -y finds it first.
+# mutated copy keeps the file name, so the model's -y finds it first.  Its
+# folder is emptied first: a copy left from a target the mutant had before
+# would shadow the real file.
 CTRL_MUTANTS := $(patsubst tb/mutants/controller/%.sed,%,$(wildcard tb/mutants/controller/*.sed))
 sys_mutant_target = $(shell sed -n 's/^# target: *//p' tb/mutants/controller/$(1).sed)
 define sys_mutant
 $(SYS_DIR)/mutant-src/$(1)/$(notdir $(call sys_mutant_target,$(1))): tb/mutants/controller/$(1).sed $(call sys_mutant_target,$(1))
-	@mkdir -p $$(@D)
+	@rm -rf $$(@D) && mkdir -p $$(@D)
 	sed -f $$< $(call sys_mutant_target,$(1)) > $$@
 	@if cmp -s $$@ $(call sys_mutant_target,$(1)); then \
 	    echo "controller mutant $(1) did not apply: $(call sys_mutant_target,$(1)) no longer has the line tb/mutants/controller/$(1).sed edits"; \
