@@ -340,7 +340,7 @@ test-fpga-arty: $(FPGA_IMAGES)
 
 # Each file of fpga/ as a top: Verilator -Wall, Icarus, Yosys (with the images
 # the tops load).  Yosys reads the sources once and elaborates each top from
-# that saved design (one run instead of one per top: 19 -> 11 s).
+# that saved design (one run, not one per top).
 test-fpga-lint: $(FPGA_IMAGES)
 	$(PICO_NEED)
 	$(SERV_NEED)

@@ -26,24 +26,26 @@ $(SYS_DIR)/obj/driver.o: c-driver/albatross.c $(SYS_HDR)
 # A model and its tb_system binary: $(1) = name, $(2) = extra -y library first.
 # The real model's C++ is compiled with -O3 (the fault-rate runs are long); a
 # mutant's with -O1 (its negative test runs well under a second: the build is
-# most of its cost).  system_sim.cpp sees only the model's top class, Vsys.h:
-# a mutant whose Vsys.h equals the real model's (the same ports: every mutant
-# so far) links the real model's system_sim.o instead of compiling its own.
+# most of its cost).
 define sys_model
 $(SYS_DIR)/$(1)/model/Vsys__ALL.a: $(RTL) $(RTL_INC) $(TB_RTL) soc/albatross_system.v $(2)
 	@mkdir -p $$(@D)
 	verilator --cc -O3 --prefix Vsys --top-module tb_system $(if $(2),-y $(dir $(2))) $(VLIB) \
 	    -Mdir $$(@D) tb/system/tb_system.v
-	$$(MAKE) -s -C $$(@D) -f Vsys.mk OPT_SLOW=-O0 OPT_FAST=$(if $(filter real,$(1)),-O3,-O1) CXX="$$(CXX)" >/dev/null
-$(SYS_DIR)/$(1)/system_sim.o: tb/system/system_sim.cpp $(SYS_HDR) $(SYS_DIR)/$(1)/model/Vsys__ALL.a \
-        $(if $(filter real,$(1)),,$(SYS_DIR)/real/system_sim.o)
-	$(if $(filter real,$(1)),,if cmp -s $(SYS_DIR)/$(1)/model/Vsys.h $(SYS_DIR)/real/model/Vsys.h; then \
-	    cp $(SYS_DIR)/real/system_sim.o $$@; else) \
-	    $$(CXX) $$(TB_CXXFLAGS) -Itb/system -I$(SYS_DIR)/$(1)/model -c $$< -o $$@$(if $(filter real,$(1)),,; fi)
+	$$(MAKE) -s -C $$(@D) -f Vsys.mk OPT_FAST=$(if $(filter real,$(1)),-O3,-O1) CXX="$$(CXX)" >/dev/null
 $(SYS_DIR)/$(1)/tb_system: $(SYS_DIR)/$(1)/system_sim.o $(SYS_OBJS) $(SYS_DIR)/$(1)/model/Vsys__ALL.a \
         $(TB_DIR)/verilated.o
 	$$(CXX) $$^ -pthread -o $$@
 endef
+# system_sim.cpp sees only the model's top class, Vsys.h: a mutant whose Vsys.h
+# equals the real model's (the same ports: every mutant so far) links the real
+# model's system_sim.o instead of compiling its own.
+$(SYS_DIR)/real/system_sim.o: tb/system/system_sim.cpp $(SYS_HDR) $(SYS_DIR)/real/model/Vsys__ALL.a
+	$(CXX) $(TB_CXXFLAGS) -Itb/system -I$(SYS_DIR)/real/model -c $< -o $@
+$(SYS_DIR)/mutant-%/system_sim.o: tb/system/system_sim.cpp $(SYS_HDR) $(SYS_DIR)/mutant-%/model/Vsys__ALL.a \
+        $(SYS_DIR)/real/system_sim.o
+	if cmp -s $(SYS_DIR)/mutant-$*/model/Vsys.h $(SYS_DIR)/real/model/Vsys.h; then cp $(SYS_DIR)/real/system_sim.o $@; \
+	else $(CXX) $(TB_CXXFLAGS) -Itb/system -I$(SYS_DIR)/mutant-$*/model -c $< -o $@; fi
 $(eval $(call sys_model,real,))
 
 # Controller mutants (tb/mutants/controller/*.sed applied to the real RTL):

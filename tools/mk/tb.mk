@@ -29,14 +29,14 @@ $(TB_DIR)/model-%/Vdut__ALL.a: $(RTL) $(TB_RTL)
 	@mkdir -p $(@D)
 	verilator --cc -O3 --prefix Vdut --top-module $* -GADDR_WIDTH=10 -Mdir $(@D) \
 	    $(filter %/$*.v %/$*_core.v,$(RTL) $(TB_RTL))
-	$(MAKE) -s -C $(@D) -f Vdut.mk OPT_SLOW=-O0 OPT_FAST=-O3 CXX="$(CXX)" >/dev/null
+	$(MAKE) -s -C $(@D) -f Vdut.mk OPT_FAST=-O3 CXX="$(CXX)" >/dev/null
 
 # The same model with --trace (VCD waves), for make sim.
 $(TB_DIR)/model-%-trace/Vdut__ALL.a: $(RTL) $(TB_RTL)
 	@mkdir -p $(@D)
 	verilator --cc --trace -O3 --prefix Vdut --top-module $* -GADDR_WIDTH=10 -Mdir $(@D) \
 	    $(filter %/$*.v %/$*_core.v,$(RTL) $(TB_RTL))
-	$(MAKE) -s -C $(@D) -f Vdut.mk OPT_SLOW=-O0 OPT_FAST=-O3 CXX="$(CXX)" >/dev/null
+	$(MAKE) -s -C $(@D) -f Vdut.mk OPT_FAST=-O3 CXX="$(CXX)" >/dev/null
 
 $(TB_DIR)/verilated_vcd_c.o:
 	@mkdir -p $(@D)
