@@ -63,16 +63,22 @@ $(TB_DIR)/mutants/%.c: tb/mutants/driver/%.sed c-driver/albatross.c
 	    echo "mutant $* changed $$n lines of c-driver/albatross.c, expected exactly 1 (tb/mutants/driver/$*.sed must match one line)"; \
 	    rm -f $@; exit 1; fi
 
-# The harness's own objects, compiled once per RAM model (they include the
-# model's Vdut.h): $(TB_DIR)/harness-<model>/<source>.o.  Every variant on that
-# model links them with its driver, so a driver mutant costs one C compile.
+# The harness's own objects: only ram_bus.cpp includes the model's Vdut.h,
+# so it is compiled once per RAM model ($(TB_DIR)/harness-<model>/ram_bus.o);
+# every other source once for all models ($(TB_DIR)/harness/<source>.o).
+# Every variant links them with its driver, so a driver mutant costs one C
+# compile and another RAM model one C++ file.
 TB_MODELS := albatross_dpram dpram_no_arbitration dpram_priority_a
-tb_harness_objs = $(patsubst %.cpp,$(TB_DIR)/harness-$(1)/%.o,$(notdir $(TB_SRC)))
+TB_SHARED_OBJS := $(patsubst %.cpp,$(TB_DIR)/harness/%.o,$(filter-out ram_bus.cpp,$(notdir $(TB_SRC))))
+tb_harness_objs = $(TB_SHARED_OBJS) $(TB_DIR)/harness-$(1)/ram_bus.o
+$(TB_DIR)/harness/%.o: tb/dpram/%.cpp $(TB_HDR)
+	@mkdir -p $(@D)
+	$(CXX) $(TB_CXXFLAGS) -c $< -o $@
+$(TB_DIR)/harness/%.o: tb/common/%.cpp $(TB_HDR)
+	@mkdir -p $(@D)
+	$(CXX) $(TB_CXXFLAGS) -c $< -o $@
 define tb_harness
-$(TB_DIR)/harness-$(1)/%.o: tb/dpram/%.cpp $(TB_HDR) $(TB_DIR)/model-$(1)/Vdut__ALL.a
-	@mkdir -p $$(@D)
-	$(CXX) $(TB_CXXFLAGS) -I$(TB_DIR)/model-$(1) -c $$< -o $$@
-$(TB_DIR)/harness-$(1)/%.o: tb/common/%.cpp $(TB_HDR) $(TB_DIR)/model-$(1)/Vdut__ALL.a
+$(TB_DIR)/harness-$(1)/ram_bus.o: tb/common/ram_bus.cpp $(TB_HDR) $(TB_DIR)/model-$(1)/Vdut__ALL.a
 	@mkdir -p $$(@D)
 	$(CXX) $(TB_CXXFLAGS) -I$(TB_DIR)/model-$(1) -c $$< -o $$@
 endef
