@@ -2,7 +2,8 @@
 # recipe_shell.sh TARGET -c CMD -- the shell of make's recipes while a suite
 # runs (make test / make check set ALB_SUITE; tools/mk/suite.mk makes this
 # script SHELL, with the target's name first).  It times every recipe line
-# into build/results/recipes.tsv (target, wall ms, exit status, CPU ms), so that builds
+# into build/results/recipes.tsv (target, wall ms, exit status, CPU ms, start
+# in ms since the epoch), so that builds
 # are measured too, not only the tests' runs.  A build's output goes to
 # build/results/builds/TARGET.log and reaches the console only if the build
 # fails; a test's recipe (test-*: tools/run_test.sh, which prints the verdict
@@ -29,5 +30,5 @@ esac
 # what the recipe costs whatever else runs on the machine.
 times > "$dir/.times.$$"
 cpu=$(tail -n 1 "$dir/.times.$$" | awk '{ s = 0; for (i = 1; i <= 2; i++) { split($i, a, "m"); s += a[1] * 60 + a[2] } printf "%d", s * 1000 }'); rm -f "$dir/.times.$$"
-printf '%s\t%d\t%d\t%d\n' "$target" $(( ($(date +%s%N) - t0) / 1000000 )) "$rc" "$cpu" >> "$dir/recipes.tsv"
+printf '%s\t%d\t%d\t%d\t%d\n' "$target" $(( ($(date +%s%N) - t0) / 1000000 )) "$rc" "$cpu" $(( t0 / 1000000 )) >> "$dir/recipes.tsv"
 exit "$rc"

@@ -62,18 +62,46 @@ def order(name, tests):
     return sorted(tests, key=lambda t: -cost.get(t, mid))
 
 
+def idle_slots(spans, start, end, jobs):
+    """From the recipes' (start ms, end ms, target): the slot-seconds left
+    empty between start and end with `jobs` slots, and the longest stretches
+    with fewer recipes running than slots (what ran then, how long)."""
+    ev = sorted([(a, 1, n) for a, b, n in spans] + [(b, -1, n) for a, b, n in spans])
+    running, idle, stretches, t, cur = set(), 0.0, [], start, None
+    for when, kind, n in ev + [(end, 0, None)]:
+        when = min(max(when, start), end)
+        if when > t and len(running) < jobs:
+            idle += (jobs - len(running)) * (when - t) / 1e3
+            key = " + ".join(sorted(running)) or "nothing"
+            if cur and cur[0] == key and cur[2] == t:
+                cur[1] += (when - t) / 1e3
+                cur[2] = when
+            else:
+                cur = [key, (when - t) / 1e3, when]
+                stretches.append(cur)
+        t = max(t, when)
+        if kind == 1:
+            running.add(n)
+        elif kind == -1:
+            running.discard(n)
+    stretches.sort(key=lambda c: -c[1])
+    return idle, [{"recipes": k, "s": round(s, 1)} for k, s, _ in stretches[:10] if s >= 1]
+
+
 def main():
     if sys.argv[1] == "--order":
         print(" ".join(order(sys.argv[2], sys.argv[3:])))
         return
     name, t0, jobs, tests = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4:]
     wall = (time.time_ns() - t0) / 1e9
-    recipes, rcpu = {}, {}
+    recipes, rcpu, spans = {}, {}, []
     try:
         with open(f"{RESULTS}/recipes.tsv") as f:
             for line in f:
                 p = line.rstrip("\n").split("\t")
-                if len(p) == 4 and not p[0].startswith("test-"):
+                if len(p) == 5:
+                    spans.append((int(p[4]), int(p[4]) + int(p[1]), p[0]))
+                if len(p) == 5 and not p[0].startswith("test-"):
                     recipes[p[0]] = recipes.get(p[0], 0) + int(p[1])
                     rcpu[p[0]] = rcpu.get(p[0], 0) + int(p[3])
     except OSError:
@@ -115,6 +143,7 @@ def main():
                      "cpu_s": (run_cpu + own_cpu) / 1e3,
                      "builds": [{"target": d, "s": recipes[d] / 1e3, "cpu_s": rcpu[d] / 1e3, "shared_by": len(users[d])}
                                 for d in need[t]]})
+    idle_s, alone = idle_slots(spans, t0 // 1000000, time.time_ns() // 1000000, jobs)
     run_sum = sum(r["run_s"] or 0 for r in rows)
     build_sum = sum(recipes.values()) / 1e3
     cpu_sum = (sum(r["run_cpu_s"] for r in rows) * 1e3 + sum(rcpu.values())) / 1e3
@@ -127,6 +156,8 @@ def main():
            "run_sum_s": round(run_sum, 1), "build_sum_s": round(build_sum, 1), "cpu_sum_s": round(cpu_sum, 1),
            # On an idle machine the suite takes at least its CPU time shared by the cores.
            "idle_estimate_s": round(cpu_sum / min(jobs, os.cpu_count() or 1), 1),
+           # job slots left empty (slot-seconds): what packing cost, and what ran alone then
+           "idle_slot_s": round(idle_s, 1), "ran_alone": alone,
            "cores": os.cpu_count(), "loadavg_end": [round(x, 2) for x in load],
            "cpu": next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")),
                        platform.processor()),
@@ -150,6 +181,9 @@ def main():
     for r in slow:
         print(f"  {r['cpu_s']:7.1f} s CPU  {r['test']}  (run {r['run_cpu_s']:.1f} s CPU, {r['run_s'] or 0:.1f} s wall; "
               f"own builds {r['own_build_cpu_s']:.1f} s CPU)")
+    print(f"job slots left empty: {idle_s:.0f} slot-seconds of {jobs * wall:.0f}"
+          + ("; the longest stretches with fewer recipes than slots ran: "
+             + ", ".join(f"{a['recipes']} ({a['s']:.0f} s)" for a in alone[:5]) if alone else ""))
     sb = sorted(rcpu, key=lambda d: -rcpu[d])[:8]
     if sb:
         print("the builds that cost most: " + ", ".join(f"{d} {rcpu[d] / 1e3:.1f} s ({len(users.get(d, []))} tests)"
