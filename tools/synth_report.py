@@ -150,9 +150,10 @@ def synth_family(fam, src, top, aw, outdir, args):
     log1 = os.path.join(outdir, fam + "_memory.log")
     st1 = os.path.join(outdir, fam + "_memory_stat.json")
     dump1 = os.path.join(outdir, fam + "_memory_left.txt")
+    il1 = os.path.join(outdir, fam + "_memory.il")
     ok, secs, msg = run_yosys(head + synth + " -run :map_ffram; "
-                              "tee -q -o %s stat -json; tee -q -o %s dump t:$mem_v2"
-                              % (st1, dump1), log1, args.timeout)
+                              "tee -q -o %s stat -json; tee -q -o %s dump t:$mem_v2; write_rtlil %s"
+                              % (st1, dump1, yosys_quote(il1)), log1, args.timeout)
     r["yosys_seconds"] += secs
     if not ok:
         r["error"] = msg + " (log %s)" % log1
@@ -163,15 +164,16 @@ def synth_family(fam, src, top, aw, outdir, args):
     r["lutrams"] = count(types1, spec["lutrams"])
     r["warnings"] = warnings_of(log1)
 
-    # Step 2: the whole script, unless it would only grind a RAM into FFs.
+    # Step 2: the rest of the script, on the design step 1 left (the cell
+    # library it read included), unless it would only grind a RAM into FFs.
     if r["logic_ram_bits"] and not args.full:
         r["note"] = ("memory left as logic (%d bits, no block/distributed RAM mapping): "
                      "full synthesis skipped, use --full" % r["logic_ram_bits"])
         return r
     log2 = os.path.join(outdir, fam + ".log")
     st2 = os.path.join(outdir, fam + "_stat.json")
-    ok, secs, msg = run_yosys(head + synth + "; tee -q -o %s stat -json" % st2,
-                              log2, args.timeout)
+    ok, secs, msg = run_yosys("read_rtlil %s; %s -run map_ffram:; tee -q -o %s stat -json"
+                              % (yosys_quote(il1), synth, st2), log2, args.timeout)
     r["yosys_seconds"] += secs
     if not ok:
         r["error"] = msg + " (log %s)" % log2
