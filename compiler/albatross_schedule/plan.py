@@ -78,10 +78,13 @@ def _place(order, targets, lengths, cap, fixed_first):
         return None
 
     def corridor(d):
+        # (the planner's hot loop: comparisons written out, not min/max calls)
         lo = [0] * m
         prev = 0
         for i in range(m):
-            e = max(targets[i] - d, prev)
+            e = targets[i] - d
+            if e < prev:
+                e = prev
             if fixed_first and i == 0:
                 e = 0
             lo[i] = e
@@ -91,9 +94,12 @@ def _place(order, targets, lengths, cap, fixed_first):
         hi = [0] * m
         nxt = cap
         for i in range(m - 1, -1, -1):
-            h = min(targets[i] + d, nxt - lengths[i])
-            if fixed_first and i == 0:
-                h = min(h, 0)
+            h = targets[i] + d
+            room = nxt - lengths[i]
+            if room < h:
+                h = room
+            if fixed_first and i == 0 and h > 0:
+                h = 0
             if h < lo[i]:
                 return None
             hi[i] = h
@@ -128,24 +134,34 @@ def _balance(order, pos, lengths, cap, cycle, fixed_first, sweeps=40):
     by_ch = {}
     for i, sl in enumerate(order):
         by_ch.setdefault(sl[0], []).append(i)
+    # The moves of one sweep, in order: slot i, its channel neighbours a
+    # (before, da = cycle when it wraps) and b (after, db), the room below
+    # (the end of slot i - 1; 0 for the first) and above (the start of slot
+    # i + 1, or cap, less i's length).  The planner's hot loop: each plan
+    # it tries is balanced here.
+    steps = []
+    for idx in by_ch.values():
+        n = len(idx)
+        if n < 2:
+            continue
+        for j, i in enumerate(idx):
+            if fixed_first and i == 0:
+                continue
+            steps.append((i, idx[j - 1], cycle if j == 0 else 0, idx[(j + 1) % n], cycle if j + 1 == n else 0,
+                          lengths[i - 1] if i > 0 else None, i + 1 < m, lengths[i]))
     for _ in range(sweeps):
         moved = False
-        for k, idx in by_ch.items():
-            n = len(idx)
-            if n < 2:
-                continue
-            for j, i in enumerate(idx):
-                if fixed_first and i == 0:
-                    continue
-                p = pos[idx[j - 1]] - (cycle if j == 0 else 0)
-                q = pos[idx[(j + 1) % n]] + (cycle if j + 1 == n else 0)
-                want = (p + q) // 2
-                lo = pos[i - 1] + lengths[i - 1] if i > 0 else 0
-                hi = (pos[i + 1] if i + 1 < m else cap) - lengths[i]
-                new = min(max(want, lo), hi)
-                if new != pos[i]:
-                    pos[i] = new
-                    moved = True
+        for i, a, da, b, db, len_below, has_above, len_i in steps:
+            new = (pos[a] - da + pos[b] + db) // 2
+            lo = pos[i - 1] + len_below if len_below is not None else 0
+            if new < lo:
+                new = lo
+            hi = (pos[i + 1] if has_above else cap) - len_i
+            if new > hi:
+                new = hi
+            if new != pos[i]:
+                pos[i] = new
+                moved = True
         if not moved:
             break
     return pos
