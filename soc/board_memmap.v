@@ -5,7 +5,8 @@
 // Memory map (address bits 31:28 select the region; soc/firmware/board.h):
 //   0x0xxx_xxxx  local RAM, RAM_WORDS words, performed at the edge after the
 //                request (one-cycle access), loaded from FW_FILE (synthesis:
-//                block-RAM contents) or, in simulation, from +fw<CORE>=FILE
+//                block-RAM contents); in simulation from +fw<CORE>=FILE when
+//                that plusarg is given (it overrides FW_FILE)
 //   0x1xxx_xxxx  DPRAM window: wb_* through a pico_wb_adapter
 //   0x2xxx_xxxx  board registers, one-cycle access, reads give 0:
 //                +0x00 TOHOST: a store sets done_o and code_o
@@ -39,7 +40,7 @@ module board_memmap #(
     parameter CORE       = 0,     // index: the firmware plusarg is +fw<CORE>=FILE (0..3)
     parameter ADDR_WIDTH = 10,    // word-address bits of the DPRAM port
     parameter RAM_WORDS  = 4096,  // words of the local RAM (16 KiB)
-    parameter FW_FILE    = ""     // $readmemh program image at configuration ("": +fw<CORE>=FILE in simulation)
+    parameter FW_FILE    = ""     // $readmemh program image at configuration (simulation: +fw<CORE>=FILE instead, when given)
 ) (
     input  wire                  clk_i,
     input  wire                  rst_i,     // synchronous, active high
@@ -83,15 +84,18 @@ module board_memmap #(
     reg [31:0] ram_rdata_q;
     reg        ram_ready_q;
     wire [RAM_BITS-1:0] ram_idx = addr_i[RAM_BITS+1:2];
+    // The program: FW_FILE; in simulation +fw<CORE>=FILE, when given, instead
+    // (so one simulation model runs other programs).
+`ifdef SYNTHESIS
     generate
         if (FW_FILE != "") begin : g_fw
             initial $readmemh(FW_FILE, ram);
         end
     endgenerate
-`ifndef SYNTHESIS  // simulation only: Yosys has no $value$plusargs
+`else  // simulation: Yosys has no $value$plusargs
     reg [8*256-1:0] fw_file;
     integer         have_fw;
-    initial if (FW_FILE == "") begin
+    initial begin
         case (CORE)
             0:       have_fw = $value$plusargs("fw0=%s", fw_file);
             1:       have_fw = $value$plusargs("fw1=%s", fw_file);
@@ -99,6 +103,7 @@ module board_memmap #(
             default: have_fw = $value$plusargs("fw3=%s", fw_file);
         endcase
         if (have_fw != 0) $readmemh(fw_file, ram);
+        else if (FW_FILE != "") $readmemh(FW_FILE, ram);
         else $display("board_memmap: no +fw%0d=FILE given, core %0d has an empty RAM", CORE, CORE);
     end
 `endif

@@ -182,14 +182,6 @@ endef
 $(eval $(call fpga_sim,icebreaker_top,TOP_ICEBREAKER))
 $(eval $(call fpga_sim,ulx3s_top,TOP_ULX3S,-GBEAT_LOG2=1))
 $(eval $(call fpga_sim,arty_top,TOP_ARTY,-GBEAT_LOG2=1))
-# The iCEBreaker top on the images of duo3b.toml (the programs are block-RAM
-# contents fixed by parameters; the DPRAM images are the demo's, see above).
-$(FPGA_DIR)/sim-3b/Vicebreaker_top: $(FPGA_SIM_DEPS)
-	$(PICO_NEED)
-	$(SERV_NEED)
-	@mkdir -p $(@D)
-	$(call FPGA_VERILATE,icebreaker_top,TOP_ICEBREAKER,'-GROM_FILE="$(FPGA_3B_IMG)/rom.hex"' \
-	    '-GFW_PREFIX="$(FPGA_3B_IMG)/fw"',fpga/icebreaker_top.v)
 FPGA_SIM = $(FPGA_DIR)/sim-$(1)/V$(1)
 
 # Broken systems, each built from a sed of one file, for the negative tests
@@ -251,13 +243,14 @@ $(eval $(call fpga_soc_tests,-ulx3s,ulx3s_top,4000000))
 $(eval $(call fpga_soc_tests,-arty,arty_top,4000000))
 
 # The negative of the four-slot GlobalTime: the iCEBreaker model
-# with the ROM and programs of duo3b.toml (GlobalTime three-buffer, not spaced
-# for the SERV sensor).  The controller overtakes the sensor's Import loop:
+# with the ROM and programs of duo3b.toml given as +rom, +fw0 and +fw1
+# (GlobalTime three-buffer, not spaced for the SERV sensor).  The controller overtakes the sensor's Import loop:
 # the Import exceeds its (wrongly computed) bound, or never finishes, and the
 # harness must say so.
 define fpga_soc_3b_test
-test-fpga-soc-threebuffer-negative: $(FPGA_DIR)/sim-3b/Vicebreaker_top $$(FPGA_IMAGES) $$(FPGA_3B_IMAGES)
-	@tools/run_test.sh fpga-soc-threebuffer-negative $(FPGA_DIR)/sim-3b/Vicebreaker_top --cycles 4000000 \
+test-fpga-soc-threebuffer-negative: $(call FPGA_SIM,icebreaker_top) $$(FPGA_IMAGES) $$(FPGA_3B_IMAGES)
+	@tools/run_test.sh fpga-soc-threebuffer-negative $(call FPGA_SIM,icebreaker_top) --cycles 4000000 \
+	    +rom=$(FPGA_3B_IMG)/rom.hex +fw0=$(FPGA_3B_IMG)/fw0.hex +fw1=$(FPGA_3B_IMG)/fw1.hex \
 	    $(call FPGA_GT_ARGS,$(FPGA_3B_SCHED)/sensor.h) --expect-fail "the sensor's GlobalTime Import"
 # The count itself: the demo checked against a bound one access below the
 # compiler's must fail on it (a New four-slot Import takes exactly 3 + W).
