@@ -80,6 +80,8 @@ SAFETY_FS = {
                  ["CHECK_DEFINITE"], 3000000),
     "actuality": ("actuality: an Import returns the value in Actual's buffer when "
                   "it began, or a newer one", ["CHECK_ACTUALITY"], 3000000),
+    "actuality_w1": ("actuality with one data word (W = 1: which value, not how "
+                     "many words; torn values are definite's)", ["CHECK_ACTUALITY", "W=1"], 3000000),
     "newold": ("New/Old: the value is never older than the previous Import's "
                "(never back in time), and the Import returns New exactly when it "
                "is newer (the first Import, L = 0: New)", ["CHECK_NEWOLD"], 3000000),
@@ -109,6 +111,8 @@ SAFETY_FS = {
                       "while Actual is 0)", ["CHECK_DEFINITE", "COLD_START", "L_INIT=1"], 3000000),
     "cold_actuality": ("cold start on a zeroed RAM: actuality",
                        ["CHECK_ACTUALITY", "COLD_START", "L_INIT=1"], 3000000),
+    "cold_actuality_w1": ("cold start on a zeroed RAM: actuality with one data word (W = 1)",
+                          ["CHECK_ACTUALITY", "COLD_START", "L_INIT=1", "W=1"], 3000000),
     "cold_newold": ("cold start on a zeroed RAM: New/Old (the producer keeps out of "
                     "pair 0 until the consumer starts, so Buffer1 read as Old is "
                     "the initial value)", ["CHECK_NEWOLD", "COLD_START", "L_INIT=1"], 3000000),

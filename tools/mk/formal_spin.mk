@@ -53,9 +53,10 @@ test-formal-spin-negative-cold-read-zero:
 #                               from a zeroed RAM (cold_*);
 #                               reader_wait_free, writer_wait_free and lock_free
 #                               all HOLD.  Report: build/reports/formal_spin_four_slot.json
-#                               (crash_newold and ctrl_newold: below, make test-slow)
+#                               (actuality and cold_actuality at W = 1 here; at
+#                               W = 2, crash_newold and ctrl_newold: below, make test-slow)
 #   make test-formal-spin-four-slot-deep
-#                               those two rows (build/reports/formal_spin_four_slot_deep.json)
+#                               those four rows (build/reports/formal_spin_four_slot_deep.json)
 #   make test-formal-spin-four-slot-negative-<variant>
 #                               a broken variant must violate the checks named
 #                               in its third field (breadth-first: a shortest
@@ -84,7 +85,7 @@ test-formal-spin-four-slot:
 # New/Old with consumer crashes and with the controller's Import rule: the two
 # longest searches (about 45 s together), run with make test-slow.  make test
 # keeps the other crash_* and ctrl_* rows, and New/Old itself.
-SPIN_FS_DEEP := crash_newold,ctrl_newold
+SPIN_FS_DEEP := crash_newold,ctrl_newold,actuality,cold_actuality
 SLOW_TESTS   += formal-spin-four-slot-deep
 .PHONY: test-formal-spin-four-slot-deep formal-slow
 formal-slow: test-formal-spin-four-slot-deep
