@@ -3,7 +3,6 @@
 FSBY_TESTS_SPEC += \
     formal-import:import:prove:pass \
     formal-import-push:import:prove_push:pass \
-    formal-import-pdr:import:prove_pdr:pass \
     formal-import-cover:import:cover:pass \
     formal-import-negative-store_actual:import:neg_store_actual:store_rl_only \
     formal-import-negative-skip_confirm:import:neg_skip_confirm:load_not_written \
@@ -17,3 +16,6 @@ FSBY_TESTS_SPEC += \
     formal-import-four-negative-loop4:import:four_neg_loop4:fs_store_rl|fs_wait_free
 FSBY_MUTANTS += import:store_actual import:skip_confirm import:new_unstored import:idx_actual import:wrong_slot \
                 import:old_by_actual import:loop4
+# The same properties by abc pdr, without the k-induction's white-box probes:
+# a second, independent proof of what formal-import proves (make formal-slow).
+FSBY_SLOW_SPEC += formal-import-pdr:import:prove_pdr:pass
