@@ -21,8 +21,10 @@ FSEQ_ROM_FILES := $(foreach i,time sync badcrc,$(FSEQ_ROM)/$(i).hex $(FSEQ_ROM)/
 $(FSEQ_ROM_FILES) &: formal/sequencer/gen_rom.py rtl/albatross_contract.toml \
                      $(wildcard compiler/albatross_schedule/*.py)
 	$(PYTHON) formal/sequencer/gen_rom.py $(FSEQ_ROM)
-$(foreach t,$(FSBY_TESTS_SPEC),$(if $(filter sequencer,$(call neg_field,$(t),2)),test-$(call neg_field,$(t),1))): \
-        $(FSEQ_ROM_FILES)
 # The same properties by abc pdr, without the k-induction's white-box probes:
 # a second, independent proof of what formal-sequencer proves (make formal-slow).
 FSBY_SLOW_SPEC += formal-sequencer-pdr:sequencer:prove_pdr:pass
+# Every sequencer test, make test-slow's too, needs the images (listed after
+# both specs: a target list is expanded where make reads it).
+$(foreach t,$(FSBY_TESTS_SPEC) $(FSBY_SLOW_SPEC),$(if $(filter sequencer,$(call neg_field,$(t),2)),test-$(call neg_field,$(t),1))): \
+        $(FSEQ_ROM_FILES)
