@@ -66,7 +66,7 @@ SPIN_FS_DIR      := $(SPIN_DIR)/four_slot
 SPIN_FS_NEGATIVE := wrong-order:WRONG_ORDER:mutex,definite \
                     index-from-actual:INDEX_FROM_ACTUAL:mutex,definite \
                     ignore-readlocked:IGNORE_READLOCKED:mutex,definite \
-                    rl-as-last:RL_AS_LAST:actuality \
+                    rl-as-last:RL_AS_LAST:actuality,actuality_w1 \
                     slot-after-actual:SLOT_AFTER_ACTUAL:definite,actuality,newold \
                     new-if-a-ne-l:NEW_IF_A_NE_L:newold \
                     reread:REREAD:bound,reader_wait_free \

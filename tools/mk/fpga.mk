@@ -244,7 +244,8 @@ $(eval $(call fpga_soc_tests,-arty,arty_top,4000000))
 
 # The negative of the four-slot GlobalTime: the iCEBreaker model
 # with the ROM and programs of duo3b.toml given as +rom, +fw0 and +fw1
-# (GlobalTime three-buffer, not spaced for the SERV sensor).  The controller overtakes the sensor's Import loop:
+# (GlobalTime three-buffer, not spaced for the SERV sensor).  The controller
+# overtakes the sensor's Import loop:
 # the Import exceeds its (wrongly computed) bound, or never finishes, and the
 # harness must say so.
 define fpga_soc_3b_test
