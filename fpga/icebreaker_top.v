@@ -2,9 +2,9 @@
 // 12 MHz oscillator; pins in constraints/icebreaker.pcf): albatross_system with
 // two boards, 'sensor' (board 0, a SERV core) exporting Sample and
 // 'actuator' (board 1, a PicoRV32) importing and checking it (fpga/duo.toml,
-// fpga/firmware/duo_*.c).  Two PicoRV32 and the controller do not fit the UP5K's
-// 5280 logic cells; the bit-serial SERV does, and the two sides of the
-// channel then run at very different speeds.
+// fpga/firmware/duo_*.c).  The bit-serial SERV sensor shows the two sides of
+// a channel at very different speeds; SERV_MASK 0 puts both boards on
+// PicoRV32, which also fits the UP5K (test-fpga-icebreaker-pico2).
 // LEDs (the PMOD2 snap-off and the two on-board LEDs): LED1/LED2 blink with
 // the sensor's/actuator's heartbeat (every 256 Exports / New Imports), LED3
 // and LED4 light when a core stopped, LED5 on a controller error; the green
@@ -16,7 +16,7 @@ module icebreaker_top #(
     parameter ROM_FILE   = "build/fpga/duo/rom.hex",  // schedule ROM image
     parameter FW_PREFIX  = "build/fpga/duo/fw",       // board c's program: <prefix><c>.hex
     parameter RAM_PREFIX = "build/fpga/duo/ram",      // board c's DPRAM image: <prefix><c>.hex
-    parameter SERV_MASK  = 1                          // board 0 (sensor) on SERV; 0: both on PicoRV32 (does not fit the UP5K)
+    parameter SERV_MASK  = 1                          // board 0 (sensor) on SERV; 0: both on PicoRV32
 ) (
     input  wire clk_i,      // 12 MHz
     input  wire btn_n_i,    // BTN_N, active low

@@ -17,8 +17,7 @@ Designs (files are read with -DSYNTHESIS; parameters as the systems use them):
               fpga/arty_top.v (xc7): two PicoRV32 boards; with their DPRAMs,
               the bus and the controller
   top_pico2   (ice40 only, not in the default list) the iCEBreaker top with
-              two PicoRV32 boards (SERV_MASK 0): the configuration the
-              controller must become small enough for
+              two PicoRV32 boards (SERV_MASK 0; test-fpga-icebreaker-pico2)
 For each design and family: Yosys synth_ice40 / synth_ecp5 / synth_xilinx
 -family xc7 -flatten, counted from `stat -json` (LUTs, flip-flops, carries,
 block RAMs, distributed RAMs).  With --pnr, the iCE40 and ECP5 netlists are

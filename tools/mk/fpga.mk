@@ -23,9 +23,9 @@
 #                    a corrupted ROM image must light the top's error LED)
 #   make test-fpga-icebreaker, test-fpga-ulx3s  (in make test-slow) a board's flow to its
 #                    bitstream as a test: fits, meets its clock
-#   make test-fpga-icebreaker-pico2-expect-fail  the iCEBreaker top with two
-#                    PicoRV32 boards (SERV_MASK 0) placed and routed at 12 MHz:
-#                    passes while it does not fit (a visible limit)
+#   make test-fpga-icebreaker-pico2  (in make test-slow) the iCEBreaker top
+#                    with two PicoRV32 boards (SERV_MASK 0) placed and routed:
+#                    fits the UP5K, meets 12 MHz
 #   make test-fpga-arty   the Arty top synthesises (Yosys; no open place and
 #                    route for 7-series)
 #   make test-fpga-lint   Verilator -Wall, Icarus and Yosys on FPGA_LINT (fpga/ and soc/ tops)
@@ -217,9 +217,9 @@ TESTS += fpga-soc fpga-soc-threebuffer-negative fpga-soc-bound-negative fpga-soc
 # The boards' flows (synthesis, place and route, fit and clock; about 6 min of
 # CPU time together) run with make test-slow: make test checks the tops in
 # simulation, their lint and the fit/clock checker itself (fpga-report-negative).
-SLOW_TESTS += fpga-icebreaker fpga-icebreaker-pico2-expect-fail fpga-ulx3s fpga-arty
+SLOW_TESTS += fpga-icebreaker fpga-icebreaker-pico2 fpga-ulx3s fpga-arty
 .PHONY: test-fpga-soc test-fpga-soc-threebuffer-negative test-fpga-soc-bound-negative test-fpga-soc-ulx3s test-fpga-soc-ulx3s-drift test-fpga-soc-ulx3s-drift-negative test-fpga-soc-arty test-fpga-soc-negative test-fpga-soc-ulx3s-negative \
-        test-fpga-soc-arty-negative test-fpga-soc-pins-negative test-fpga-icebreaker test-fpga-icebreaker-pico2-expect-fail test-fpga-ulx3s \
+        test-fpga-soc-arty-negative test-fpga-soc-pins-negative test-fpga-icebreaker test-fpga-icebreaker-pico2 test-fpga-ulx3s \
         test-fpga-report-negative test-fpga-arty test-fpga-lint
 # Per top: test-fpga-soc$(1) runs it for $(3) clocks (the iCEBreaker, whose
 # sensor is on SERV and slow to start, gets more than the PicoRV32-only
@@ -306,21 +306,16 @@ $(eval $(call fpga_board_flow,icebreaker,ice40,icepack $(FPGA_DIR)/synth/top_ice
 $(eval $(call fpga_board_flow,ulx3s,ecp5,$$(ECPPACK) $(FPGA_DIR)/synth/top_ecp5.config,ulx3s_top.bit))
 
 # The iCEBreaker top with two PicoRV32 boards (SERV_MASK 0) instead of a
-# SERV and a PicoRV32: the target configuration, placed and routed at 12 MHz
-# on the UP5K, checked for fit and clock like test-fpga-icebreaker.  It does
-# not fit yet (the controller is too large): this test keeps that limit
-# visible.  It passes only while the place and route fails for lack of room
-# (logic cells or block RAMs), printing by how much, and fails with a message
-# as soon as the top fits, so that it is then made an ordinary test.
-test-fpga-icebreaker-pico2-expect-fail: $(FPGA_IMAGES)
+# SERV and a PicoRV32, placed and routed at 12 MHz on the UP5K and checked
+# for fit and clock like test-fpga-icebreaker.  It fits because
+# fpga/duo_system.v builds the controller without the features its schedule
+# does not use (STATUS counters, sync poll); the report shows the margin.
+test-fpga-icebreaker-pico2: $(FPGA_IMAGES)
 	$(PICO_NEED)
-	@tools/run_test.sh fpga-icebreaker-pico2-expect-fail bash -c '$(FPGA_REPORT) --designs top_pico2 --families ice40 --pnr \
+	@tools/run_test.sh fpga-icebreaker-pico2 bash -c '$(FPGA_REPORT) --designs top_pico2 --families ice40 --pnr \
 	    --report $(REPORTS)/fpga_pnr_icebreaker_pico2.json > $(FPGA_DIR)/pico2.log 2>&1; rc=$$?; \
 	    grep -E "LUT|cells|BRAM|RAM|fit|failed" $(FPGA_DIR)/pico2.log | tail -n 8; \
-	    if [ $$rc -eq 0 ]; then echo "the iCEBreaker top with two PicoRV32 boards now fits and meets 12 MHz: make it an ordinary test (test-fpga-icebreaker-pico2)"; exit 1; \
-	    elif grep -qE "to fit|no BELs remaining|Unable to place|Failed to place" $(FPGA_DIR)/pico2.log; then \
-	        echo "the iCEBreaker top with two PicoRV32 boards does not fit yet, as expected (the limit this test keeps visible)"; \
-	    else echo "expected a failure to fit, came another failure (exit $$rc): $$(tail -n 1 $(FPGA_DIR)/pico2.log)"; exit 1; fi'
+	    if [ $$rc -ne 0 ]; then echo "expected the iCEBreaker top with two PicoRV32 boards to fit the UP5K and meet 12 MHz, came (exit $$rc): $$(tail -n 1 $(FPGA_DIR)/pico2.log)"; exit 1; fi'
 
 # The fit and clock checks of those tests fail a slow or oversized top.
 test-fpga-report-negative:
