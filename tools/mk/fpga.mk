@@ -314,7 +314,7 @@ test-fpga-icebreaker-pico2: $(FPGA_IMAGES)
 	$(PICO_NEED)
 	@tools/run_test.sh fpga-icebreaker-pico2 bash -c '$(FPGA_REPORT) --designs top_pico2 --families ice40 --pnr \
 	    --report $(REPORTS)/fpga_pnr_icebreaker_pico2.json > $(FPGA_DIR)/pico2.log 2>&1; rc=$$?; \
-	    grep -E "LUT|cells|BRAM|RAM|fit|failed" $(FPGA_DIR)/pico2.log | tail -n 8; \
+	    grep -E "top_pico2|LUT|cells|BRAM|RAM|fit|failed" $(FPGA_DIR)/pico2.log | tail -n 8; \
 	    if [ $$rc -ne 0 ]; then echo "expected the iCEBreaker top with two PicoRV32 boards to fit the UP5K and meet 12 MHz, came (exit $$rc): $$(tail -n 1 $(FPGA_DIR)/pico2.log)"; exit 1; fi'
 
 # The fit and clock checks of those tests fail a slow or oversized top.
