@@ -75,6 +75,7 @@ module albatross_rom_check #(
     reg [ROM_AW-1:0]   bg_adr_q;      // next word to read
     reg [ROM_AW-1:0]   bg_dadr_q;     // word in rom_dat_i when bg_data_q
     reg                bg_data_q;
+    reg                dat_last_q;    // bg_dadr_q == last_word_i (last_word_i is fixed while checks run)
     reg [31:0]         crc_q;
 
     // ------------------------------------------------------------ memory (never reset)
@@ -104,7 +105,8 @@ module albatross_rom_check #(
     wire               bg_issue = bg_on_i && !main_rom_i;
     wire [RG_BITS-1:0] part     = bg_dadr_q[RG_BITS+2:3];            // 0 header, k+1 entry k
     wire               p_end    = bg_data_q && bg_dadr_q[2:0] == 3'b011;
-    wire               p_last   = bg_data_q && bg_dadr_q == last_word_i;
+    wire               at_last  = bg_adr_q == last_word_i;
+    wire               p_last   = bg_data_q && dat_last_q;
     wire [31:0]        crc_n    = crc_step(crc_q, bg_dadr_q == 3 ? 32'd0 : rom_dat_i);
     wire [RG_BITS-1:0] fetch_part = fetch_ent_i[RG_BITS-1:0] + 1'b1;
     wire [RG_BITS-1:0] rd_part  = fetch_i ? fetch_part : bg_adr_q[RG_BITS+2:3];
@@ -133,7 +135,8 @@ module albatross_rom_check #(
             if (bg_data_q && learn_i && bg_dadr_q == 2) h2_q <= rom_dat_i[ALB_ROM_H2_DROP_RUN_LSB +: 8];
             bg_data_q <= bg_issue;
             bg_dadr_q <= bg_adr_q;
-            if (bg_issue) bg_adr_q <= (bg_adr_q == last_word_i) ? {ROM_AW{1'b0}} : bg_adr_q + 1'b1;
+            dat_last_q <= at_last;                  // one compare for the wrap and p_last
+            if (bg_issue) bg_adr_q <= at_last ? {ROM_AW{1'b0}} : bg_adr_q + 1'b1;
             if (bg_data_q) crc_q <= p_last ? CRC_SEED : (RECHECK && p_end && !learn_i) ? sig_q[31:0] : crc_n;
         end
     end
