@@ -52,14 +52,14 @@ module albatross_rom_check #(
     output wire [$clog2(ROM_WORDS)-1:0] adr_o,    // ROM word to read when main_rom_i is low
     input  wire [31:0]              rom_dat_i,    // the ROM word read in the previous clock
     input  wire [31:0]              h3_i,         // the CRC the header states
-    input  wire                     fetch_i,      // clock S of a fetch: read fetch_ent_i's mark
+    input  wire                     fetch_i,      // clock S of a fetch: read fetch_part_i's mark
     /* verilator lint_off UNUSEDSIGNAL */
-    input  wire [7:0]               fetch_ent_i,  // the entry fetched (its part is entry + 1)
+    input  wire [7:0]               fetch_part_i, // the part of the entry fetched: entry + 1
     /* verilator lint_on UNUSEDSIGNAL */
     output wire                     last_o,       // the check of last_word_i
     output wire                     crc_ok_o,     // the CRC including this word equals h3_i
     output wire                     mism_o,       // a part's first background mismatch
-    output wire                     bad_o,        // the bad mark read for fetch_ent_i
+    output wire                     bad_o,        // the bad mark read for fetch_part_i
     output wire [7:0]               h2_o          // H2's drop run, as the start-up pass read it
 );
 
@@ -108,7 +108,7 @@ module albatross_rom_check #(
     wire               at_last  = bg_adr_q == last_word_i;
     wire               p_last   = bg_data_q && dat_last_q;
     wire [31:0]        crc_n    = crc_step(crc_q, bg_dadr_q == 3 ? 32'd0 : rom_dat_i);
-    wire [RG_BITS-1:0] fetch_part = fetch_ent_i[RG_BITS-1:0] + 1'b1;
+    wire [RG_BITS-1:0] fetch_part = fetch_part_i[RG_BITS-1:0];
     wire [RG_BITS-1:0] rd_part  = fetch_i ? fetch_part : bg_adr_q[RG_BITS+2:3];
     localparam         RECHECK  = HAS_ROM_RECHECK != 0;
     wire               mism     = RECHECK && p_end && !learn_i && crc_n != sig_q[31:0];

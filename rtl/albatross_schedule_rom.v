@@ -8,11 +8,11 @@
 //     header (header_i: step_i 0..3 read H0, H1, H3 and entry 0's E1), the
 //     clock S of a fetch (start_i: E0 of entry ent_i) and the fetch
 //     (fetch_i, step_i 1..5: E2, E3, E4, E5, then E1 of the next entry, of
-//     entry 0 after the last, ne_i).  In every other clock the word is the
+//     entry 0 after the last, last_i).  In every other clock the word is the
 //     background check's (bg_adr_i, rtl/albatross_rom_check.v).
 //   * Addresses: entry k's word j is 4 + 8k + j = {k, 3'b100} + j (mod
 //     2^ROM_AW): E0, E2, E3 are {k, 1jj}; E4, E5 and the next E1 are
-//     {k + 1, 0jj / 101}; no adder wider than the entry count.
+//     {k + 1, 0jj / 101}, k + 1 from the sequencer (ent_inc_i): no adder.
 //   * Simulation only: +rom_upset_word=N +rom_upset_at=T flips bit 16 of
 //     word N when time_i = T (a run-time upset for the background check).
 `default_nettype none
@@ -28,7 +28,8 @@ module albatross_schedule_rom #(
     input  wire              fetch_i,     // the entry is fetched (step_i 1..5: a read; 6: none)
     input  wire [2:0]        step_i,      // clock within the header or the fetch
     input  wire [7:0]        ent_i,       // the entry fetched
-    input  wire [7:0]        ne_i,        // entries in the ROM
+    input  wire [7:0]        ent_inc_i,   // ent_i + 1
+    input  wire              last_i,      // ent_i is the last entry
     input  wire [$clog2(ROM_WORDS)-1:0] bg_adr_i,    // the background check's word
     output wire              main_o,      // a main read in this clock (the check's word waits)
     output wire [31:0]       dat_o
@@ -59,11 +60,10 @@ module albatross_schedule_rom #(
     // ------------------------------------------------------------ address
     wire              fetch_rom = fetch_i && step_i <= 3'd5;
     wire              main_rom  = header_i || start_i || fetch_rom;
-    wire [7:0]        ent_inc   = ent_i + 8'd1;
     wire              adr_inc   = fetch_i && step_i >= 3'd3;             // E4, E5, next E1
     /* verilator lint_off UNUSEDSIGNAL */
-    wire [7:0]        ent_sel   = adr_inc ? ent_inc : ent_i;
-    wire              adr_wrap  = fetch_i && step_i >= 3'd5 && ent_inc == ne_i;  // last entry: word 5
+    wire [7:0]        ent_sel   = adr_inc ? ent_inc_i : ent_i;
+    wire              adr_wrap  = fetch_i && step_i >= 3'd5 && last_i;  // last entry: word 5
     /* verilator lint_on UNUSEDSIGNAL */
     reg  [2:0]        adr_lo;
     always @* begin

@@ -195,9 +195,11 @@ module albatross_sequencer #(
     wire [ROM_AW-1:0]  last_word = last_wide[ROM_AW-1:0];
     wire [ROM_AW-1:0]  bg_adr;        // the ROM check's next word
     wire [7:0]         ent_inc   = ent_q + 8'd1;
+    wire               last_ent  = ent_inc == ne_q;
     albatross_schedule_rom #(.ROM_WORDS(ROM_WORDS), .ROM_FILE(ROM_FILE)) u_rom (
         .clk_i(clk_i), .time_i(time_q), .header_i(state_q == ST_HEADER), .start_i(start_now),
-        .fetch_i(state_q == ST_FETCH), .step_i(step_q), .ent_i(ent_q), .ne_i(ne_q), .bg_adr_i(bg_adr),
+        .fetch_i(state_q == ST_FETCH), .step_i(step_q), .ent_i(ent_q), .ent_inc_i(ent_inc), .last_i(last_ent),
+        .bg_adr_i(bg_adr),
         .main_o(main_rom), .dat_o(rom_q));
 
     // ------------------------------------------------------------ ROM check
@@ -207,7 +209,7 @@ module albatross_sequencer #(
     albatross_rom_check #(.ROM_WORDS(ROM_WORDS), .HAS_ROM_RECHECK(HAS_ROM_RECHECK)) u_rom_check (
         .clk_i(clk_i), .rst_i(rst_i), .learn_i(state_q == ST_CHECK), .bg_on_i(bg_on),
         .main_rom_i(main_rom), .last_word_i(last_word), .adr_o(bg_adr), .rom_dat_i(rom_q),
-        .h3_i(h3_q), .fetch_i(start_now), .fetch_ent_i(ent_q), .last_o(p_last), .crc_ok_o(crc_ok),
+        .h3_i(h3_q), .fetch_i(start_now), .fetch_part_i(ent_inc), .last_o(p_last), .crc_ok_o(crc_ok),
         .mism_o(mism_new), .bad_o(bad_mark), .h2_o(drop_run_o));
 
     // ------------------------------------------------------------ field checks at fetch
@@ -226,7 +228,6 @@ module albatross_sequencer #(
     // ------------------------------------------------------------ control
     wire [TB:0] rel_next = {1'b0, rel_q} + 1'b1;
     wire cycle_end  = rel_next >= {1'b0, cycle_q};  // rel_q >= H1 - 1 (late only if a slot overran: recover)
-    wire last_ent   = ent_inc == ne_q;
     wire poll_hit   = poll_q && poll_ack_i && poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 8] != 8'd0 &&
                       poll_dat_i[8*ALB_CH_OFF_ACTUAL + 2 +: 6] == 6'd0 &&
                       poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 2] != sync_rl_i;
