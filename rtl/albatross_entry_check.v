@@ -82,20 +82,26 @@ module albatross_entry_check #(
                           (e0_kind == ALB_KIND_STATUS && e0_w != W_STATUS);
     wire        e2_bad  = start_bad_i || rom_i[31:TB] != 0 || below({{(32-TB){1'b0}}, rom_i[TB-1:0]}, MIN_LEN) ||
                           e2_end_i > {1'b0, cycle_i} || {1'b0, start_i} < prev_end_i;
+    // base + span < 2^ADDR_WIDTH: the bits of each above ADDR_WIDTH are 0 and
+    // the sum of the low ADDR_WIDTH bits has no carry out (a carry chain, no sum).
+    localparam AW = ADDR_WIDTH;
     function place_ok;                 // board < NB and base + 3*stride < 2^ADDR_WIDTH
-        input [15:0] p;
-        input [13:0] s3;
-        reg [14:0] ext;
+        input [15:0]   p;
+        input [AW-1:0] span_lo;        // the span's low bits (the others: e3d_ok)
+        reg [11:0] base;
+        reg [AW:0] lo;
         begin
-            ext = {3'd0, p[ALB_ROM_PLACE_BASE_LSB +: 12]} + {1'b0, s3};
-            place_ok = below({28'd0, p[ALB_ROM_PLACE_BOARD_LSB +: 4]}, NB) && (ext >> ADDR_WIDTH) == 15'd0;
+            base = p[ALB_ROM_PLACE_BASE_LSB +: 12];
+            lo = {1'b0, base[AW-1:0]} + {1'b0, span_lo};
+            place_ok = below({28'd0, p[ALB_ROM_PLACE_BOARD_LSB +: 4]}, NB) && ({4'd0, base} >> AW) == 16'd0 && !lo[AW];
         end
     endfunction
     // One span for both halves: 3 (four: 4) * W in clock 3 (the source, of
     // W words), 3 (four: 4) * (W + 1) in clocks 4 and 5 (the destinations).
     wire [13:0] e3d    = e3_i + ((step_i == 3'd3) ? 14'd0 : four_i ? 14'd4 : 14'd3);
-    wire        lo_ok  = place_ok(rom_i[15:0], e3d);
-    wire        hi_ok  = place_ok(rom_i[31:16], e3d);
+    wire        e3d_ok = ({2'd0, e3d} >> AW) == 16'd0;
+    wire        lo_ok  = e3d_ok && place_ok(rom_i[15:0], e3d[AW-1:0]);
+    wire        hi_ok  = e3d_ok && place_ok(rom_i[31:16], e3d[AW-1:0]);
     always @* begin
         case (step_i)
             3'd1:    bad_o = (CHK && e0_bad) || bad_mark_i;
