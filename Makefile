@@ -121,6 +121,7 @@ deps-venv: ## the PyPI part of make deps alone: build/venv from PYTHON_BASE, PIP
 CTRL_CORE_PARAMS := $(shell sed -n 's/^ *parameter \(HAS_[A-Z_]*\) *=.*/-G\1=0/p' rtl/albatross_controller.v)
 lint: ## Verilator -Wall lint, Icarus and Yosys read of the RTL and the test-only Verilog
 	@tools/lint.sh $(RTL) $(TB_RTL)
+	@test -n "$(CTRL_CORE_PARAMS)" || { echo "lint: no HAS_* parameter found in rtl/albatross_controller.v for the core configuration"; exit 1; }
 	@verilator --lint-only -Wall -Irtl -y rtl $(CTRL_CORE_PARAMS) rtl/albatross_controller.v && \
 	    echo "lint ok  rtl/albatross_controller.v, core configuration (verilator)"
 

@@ -7,11 +7,13 @@
 # For changes that must not alter behaviour (area work): any difference in
 # any output in any clock fails.  CLOCKS per run, default 2000000; 14 runs.
 # HAS=0 in the environment compares the core configuration (the four HAS_*
-# parameters 0) instead of the full one.  Outputs in build/equiv/.  Exit status 0 when every run is equivalent.
+# parameters 0) instead of the full one (HAS=1, the default).  Outputs in
+# build/equiv/.  Exit status 0 when every run is equivalent.
 set -euo pipefail
 rev=${1:-main}
 clocks=${2:-2000000}
 has=${HAS:-1}
+case "$has" in 0|1) ;; *) echo "ctrl_equiv: HAS must be 0 (core configuration) or 1 (full), not '$has'"; exit 2;; esac
 out=build/equiv
 rm -rf "$out/ref" "$out/obj"
 mkdir -p "$out/ref"
@@ -43,5 +45,5 @@ done
 for w in 3 7 100 201; do
     run "$clocks" 3 0.05 0 +rom=build/schedule/mobot3/rom.hex +rom_upset_word=$w +rom_upset_at=50000
 done
-[ $fail -eq 0 ] && echo "ctrl_equiv: every run equivalent to $rev (HAS=$has)" || echo "ctrl_equiv: FAIL: a run differed from $rev"
+[ $fail -eq 0 ] && echo "ctrl_equiv: every run equivalent to $rev (HAS=$has)" || echo "ctrl_equiv: FAIL: a run differed from $rev (HAS=$has)"
 exit $fail
