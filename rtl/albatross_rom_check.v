@@ -23,7 +23,8 @@
 //     prefix of the previous part; at the end of each part it is compared
 //     with that part's stored prefix.  A mismatch sets the part's bad mark;
 //     mism_o is high in the clock of the first mismatch of a part (counted
-//     once).  After last_word_i the CRC restarts from CRC_SEED.
+//     once).  After last_word_i the CRC restarts from CRC_SEED (only with
+//     the re-check: without it no word is checked after the start-up pass).
 //   * One read port on the signatures: the background part, except in the
 //     clock fetch_i (no background read is issued then), which reads part
 //     fetch_part_i; bad_o is that part's bad mark in the next clock (as it
@@ -137,7 +138,7 @@ module albatross_rom_check #(
             bg_dadr_q <= bg_adr_q;
             dat_last_q <= at_last;                  // one compare for the wrap and p_last
             if (bg_issue) bg_adr_q <= at_last ? {ROM_AW{1'b0}} : bg_adr_q + 1'b1;
-            if (bg_data_q) crc_q <= p_last ? CRC_SEED : (RECHECK && p_end && !learn_i) ? sig_q[31:0] : crc_n;
+            if (bg_data_q) crc_q <= (RECHECK && p_last) ? CRC_SEED : (RECHECK && p_end && !learn_i) ? sig_q[31:0] : crc_n;
         end
     end
 
