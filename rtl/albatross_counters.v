@@ -63,8 +63,8 @@ module albatross_counters #(
     (* no_rw_check *)
     reg [31:0]   ram [0:2*N_CHAN-1];
     reg [31:0]   rd_q;
-    reg [CB-1:0] rd_adr_q;
-    reg          rd_done_q;     // rd_q holds the STATUS word of rd_adr_q
+    reg [CB-1:0] rd_next_q;     // the RAM word read last, + 1: its STATUS index (mod 2^CB)
+    reg          rd_done_q;     // rd_q holds the STATUS word of index rd_next_q
     reg          ready_q;
     reg [CB-1:0] clear_q;
     reg [1:0]    phase_q;       // commit: 0 none, 1 read word 2c, 2 write it + read 2c+1, 3 write that
@@ -102,15 +102,30 @@ module albatross_counters #(
     wire [CB-1:0] wr_adr = !ready_q ? clear_q : (phase_q == 2'd2) ? w0 : w1;
     // One pair of saturating adders: the deltas of the word being written.
     wire [2:0]    add_hi = (phase_q == 2'd2) ? xfer_q : aband_q;
-    // In phase 3 the retry delta is 0 or 1 (cleared in phase 2), so its high
-    // bits can feed the adder in both phases; only the low four are selected.
-    wire [15:0]   add_lo = {retry_n[15:4], (phase_q == 2'd2) ? retry_n[3:0] : corrupt_n};
-    wire [31:0]   wr_dat = !ready_q ? 32'd0 : {sat_add(rd_q[31:16], {13'd0, add_hi}), sat_add(rd_q[15:0], add_lo)};
+    // The low word adds the retry delta and this clock's retry as the
+    // adder's carry in (phase 2), not the saturated sum retry_n: with a
+    // count c >= 0, min(c + min(d + r, 2^16 - 1), 2^16 - 1) = min(c + d + r,
+    // 2^16 - 1), so the sum is the same and the failure that makes r is one
+    // carry chain from the write data, not two.  In phase 3 the retry delta
+    // is 0 (cleared in phase 2: that clock's retry counts towards the next
+    // commit), so its high bits can feed the adder in both phases; only the
+    // low four are selected.
+    wire [15:0]   add_lo = {d_retry_q[15:4], (phase_q == 2'd2) ? d_retry_q[3:0] : corrupt_n};
+    wire          add_ci = phase_q == 2'd2 && retry_i;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [17:0]   lo_sum = {1'b0, rd_q[15:0], add_ci} + {1'b0, add_lo, add_ci};   // bit 0 (unused): makes the carry in
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [15:0]   lo_sat = lo_sum[17] ? 16'hFFFF : lo_sum[16:1];
+    wire [31:0]   wr_dat = !ready_q ? 32'd0 : {sat_add(rd_q[31:16], {13'd0, add_hi}), lo_sat};
+
+    // rd_adr + 1, without an adder after the decrement: w0 + 1 = w1 (w0 is
+    // even), and idx_m1 + 1 is the index itself.
+    wire [CB-1:0] rd_next = (phase_q == 2'd1) ? w1 : (phase_q == 2'd2) ? w1 + 1'b1 : status_index_i[CB-1:0];
 
     always @(posedge clk_i) begin
         if (wr) ram[wr_adr] <= wr_dat;
-        rd_q     <= ram[rd_adr];
-        rd_adr_q <= rd_adr;
+        rd_q      <= ram[rd_adr];
+        rd_next_q <= rd_next;
     end
 
     always @(posedge clk_i) begin
@@ -151,7 +166,7 @@ module albatross_counters #(
     assign ready_o        = ready_q;
     assign busy_o         = phase_q != 2'd0;
     assign status_o       = zero_q ? {rom_errors_i, cycles_i} : rd_q;
-    assign status_valid_o = (zero_q && status_index_i == {INDEX_WIDTH{1'b0}}) || (rd_done_q && rd_adr_q == idx_m1[CB-1:0] && status_index_i != {INDEX_WIDTH{1'b0}});
+    assign status_valid_o = (zero_q && status_index_i == {INDEX_WIDTH{1'b0}}) || (rd_done_q && rd_next_q == status_index_i[CB-1:0] && status_index_i != {INDEX_WIDTH{1'b0}});
 
 endmodule
 
