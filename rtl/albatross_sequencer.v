@@ -149,7 +149,7 @@ module albatross_sequencer #(
     reg [2:0]          state_q;
     reg [2:0]          step_q;        // clock within ST_HEADER, ST_FETCH
     reg [31:0]         time_q;
-    reg [TB-1:0]       rel_q;         // clocks since the cycle start
+    reg [TB:0]         next_rel_q;    // rel + 1: the time within the cycle of the next clock (rel wraps at 2^TB)
     reg [TB-1:0]       cycle_q;       // H1
     reg [7:0]          ne_q;
     reg                smode_q;
@@ -184,7 +184,7 @@ module albatross_sequencer #(
     reg                poll_q;
 
     // ------------------------------------------------------------ ROM and its read port
-    wire               start_now = state_q == ST_WAIT && rel_q >= start_q;   // clock S (late only after an overrun)
+    wire               start_now = state_q == ST_WAIT && next_rel_q > {1'b0, start_q};   // rel >= start: clock S (late only after an overrun)
     wire               main_rom;      // a main read: the background check waits
     wire [31:0]        rom_q;         // the word read in the previous clock
     wire               bg_on     = state_q == ST_CHECK || (HAS_ROM_RECHECK != 0 && (state_q == ST_WAIT ||
@@ -226,8 +226,9 @@ module albatross_sequencer #(
         .cycle_i(cycle_q), .prev_end_i(prev_end_q), .e2_end_i(e2_end), .bad_o(bad_now));
 
     // ------------------------------------------------------------ control
-    wire [TB:0] rel_next = {1'b0, rel_q} + 1'b1;
-    wire cycle_end  = rel_next >= {1'b0, cycle_q};  // rel_q >= H1 - 1 (late only if a slot overran: recover)
+    // rel is kept as rel + 1 (next_rel_q): each compare below reads a
+    // register, with no incrementer in front of it.
+    wire cycle_end  = next_rel_q >= {1'b0, cycle_q};  // rel >= H1 - 1 (late only if a slot overran: recover)
     wire poll_hit   = poll_q && poll_ack_i && poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 8] != 8'd0 &&
                       poll_dat_i[8*ALB_CH_OFF_ACTUAL + 2 +: 6] == 6'd0 &&
                       poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 2] != sync_rl_i;
@@ -239,7 +240,7 @@ module albatross_sequencer #(
     wire        go_now   = state_q == ST_FETCH && step_q == 3'd6 && !bad_q && kind_q != ALB_KIND_IDLE[1:0];
     // Saturating counters: the carry out of the increment says the count is at its top.
     wire        rerr_up  = mism_new | (entry_over && state_q == ST_FETCH && bad_q);
-    wire [16:0] rerr_inc = {1'b0, rerr_q} + {16'd0, rerr_up};
+    wire [16:0] rerr_inc = {1'b0, rerr_q} + 17'd1;   // (rerr_up enables it: the event is not on the carry chain)
     wire [16:0] cyc_inc  = {1'b0, cycles_q} + 17'd1;
 
     always @(posedge clk_i) begin
@@ -255,8 +256,8 @@ module albatross_sequencer #(
             sync_ok_q <= 1'b0;
         end else begin
             time_q    <= time_q + 32'd1;
-            rel_q     <= rel_next[TB-1:0];
-            if (!rerr_inc[16]) rerr_q <= rerr_inc[15:0];
+            next_rel_q <= {1'b0, next_rel_q[TB-1:0]} + 1'b1;
+            if (rerr_up && !rerr_inc[16]) rerr_q <= rerr_inc[15:0];
             case (state_q)
                 ST_HEADER: if (enable_i || step_q != 3'd0) begin
                     step_q <= step_q + 3'd1;
@@ -347,7 +348,7 @@ module albatross_sequencer #(
                 pc_q        <= POLL_LAST;
             end
             if (new_cycle) begin
-                rel_q       <= {TB{1'b0}};
+                next_rel_q  <= {{TB{1'b0}}, 1'b1};
                 ent_q       <= 8'd0;
                 prev_end_q  <= {(TB+1){1'b0}};
                 poll_q      <= 1'b0;
@@ -370,7 +371,7 @@ module albatross_sequencer #(
     assign slot_time_o  = slot_time_q;
     assign sync_entry_o = sflag_q;
     assign four_o       = four_q;
-    assign may_access_o = (state_q == ST_TRANSFER || go_now) && {1'b0, rel_q} < end_q - MARGIN_T; // c + 1 + MARGIN <= D (D >= MIN_LEN > MARGIN)
+    assign may_access_o = (state_q == ST_TRANSFER || go_now) && next_rel_q <= end_q - MARGIN_T; // c + 1 + MARGIN <= D (D >= MIN_LEN > MARGIN)
     assign poll_cyc_o   = poll_q;
     assign poll_board_o = sync_brd_q;
     assign poll_adr_o   = sync_base_q;

@@ -224,8 +224,8 @@ module fseq (
     localparam       AW = $clog2(F_ROM_WORDS);
     localparam [AW-1:0] LAST_W = F_ROM_WORDS - 1;      // the image's last word
     (* keep *) wire [2:0]          f_state, f_step;
-    (* keep *) wire [F_TB-1:0]     f_rel, f_cycle, f_start;
-    (* keep *) wire [F_TB:0]       f_end, f_prev_end;
+    (* keep *) wire [F_TB-1:0]     f_cycle, f_start;
+    (* keep *) wire [F_TB:0]       f_next_rel, f_end, f_prev_end;   // f_next_rel: rel + 1
     (* keep *) wire [7:0]          f_ne, f_ent;
     (* keep *) wire [AW-1:0]       f_bg_adr, f_bg_dadr;
     (* keep *) wire                f_smode, f_sync_ok, f_start_bad, f_bad, f_sflag, f_poll, f_bg_data;
@@ -327,7 +327,7 @@ module fseq (
                 inv_rom_main: assert(f_rom_q == rom_main);
             end
             if (run) begin
-                inv_run: assert(hdr_ok && !error_o && f_rel == crel[F_TB-1:0] && crel32 < F_H1 &&
+                inv_run: assert(hdr_ok && !error_o && f_next_rel == {1'b0, crel[F_TB-1:0]} + 1'b1 && crel32 < F_H1 &&
                                 f_ent <= 8'd2 &&
                                 f_start == st_want[F_TB-1:0] && !f_start_bad &&
                                 f_prev_end == pe_want && (busy_q == xfer) && (!xfer || cur_q == e1) &&
