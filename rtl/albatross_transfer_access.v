@@ -84,12 +84,17 @@ module albatross_transfer_access #(
     /* verilator lint_on UNUSEDSIGNAL */
     wire [AW-1:0] stride = w_wide[AW-1:0] + {{(AW-1){1'b0}}, dst_i};
     wire [AW-1:0] m      = ({AW{bm1[0]}} & stride) + ({AW{bm1[1]}} & {stride[AW-2:0], 1'b0});
-    wire [AW-1:0] off    = {AW{datacc}} & (m + k_wide[AW-1:0] + {{(AW-1){1'b0}}, src_word_i || dst_tkn_i});
     wire [AW-1:0] base   = src ? src_base_i : base_d;
+    // base + k + 1 (the carry in: word k of the source, or taken_at) beside
+    // (b - 1) * S, then their sum: two carry chains deep, not three.
+    wire          cin    = src_word_i || dst_tkn_i;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [AW:0]   base_k = {base, cin} + {{AW{datacc}} & k_wide[AW-1:0], cin};   // bit 0 (unused): makes the carry in
+    /* verilator lint_on UNUSEDSIGNAL */
     wire [1:0]    dbm1   = buf_i[1:0] - 2'd1;         // four-slot: {p, s} of d's buffer
 
     assign we_o    = src_rl_i || dst_word_i || dst_tkn_i || dst_slot_i || dst_fin_i;
-    assign adr_o   = base + off;
+    assign adr_o   = base_k[AW:1] + ({AW{datacc}} & m);
     assign board_o = src ? src_board_i : dst_board_i[4*d_i +: 4];
     assign sel_o   = src_act_i ? (four_i ? 4'hF : SEL_ACT) :
                      src_rl_i ? SEL_RL :
