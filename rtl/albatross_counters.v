@@ -74,13 +74,18 @@ module albatross_counters #(
     reg          zero_q;        // status index 0 was presented
     reg [6:0]    chan_q;        // the channel being committed
 
+    // a + b + ci, saturating at 2^16 - 1; ci enters as the adder's carry in
+    // (bit 0 of {a, ci} + {b, ci}), so it adds no carry chain of its own.
     function [15:0] sat_add;
         input [15:0] a;
         input [15:0] b;
-        reg [16:0] s;
+        input        ci;
+        /* verilator lint_off UNUSEDSIGNAL */
+        reg [17:0] s;                   // bit 0 (unused): makes the carry in
+        /* verilator lint_on UNUSEDSIGNAL */
         begin
-            s = {1'b0, a} + {1'b0, b};
-            sat_add = s[16] ? 16'hFFFF : s[15:0];
+            s = {1'b0, a, ci} + {1'b0, b, ci};
+            sat_add = s[17] ? 16'hFFFF : s[16:1];
         end
     endfunction
 
@@ -112,11 +117,7 @@ module albatross_counters #(
     // low four are selected.
     wire [15:0]   add_lo = {d_retry_q[15:4], (phase_q == 2'd2) ? d_retry_q[3:0] : corrupt_n};
     wire          add_ci = phase_q == 2'd2 && retry_i;
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire [17:0]   lo_sum = {1'b0, rd_q[15:0], add_ci} + {1'b0, add_lo, add_ci};   // bit 0 (unused): makes the carry in
-    /* verilator lint_on UNUSEDSIGNAL */
-    wire [15:0]   lo_sat = lo_sum[17] ? 16'hFFFF : lo_sum[16:1];
-    wire [31:0]   wr_dat = !ready_q ? 32'd0 : {sat_add(rd_q[31:16], {13'd0, add_hi}), lo_sat};
+    wire [31:0]   wr_dat = !ready_q ? 32'd0 : {sat_add(rd_q[31:16], {13'd0, add_hi}, 1'b0), sat_add(rd_q[15:0], add_lo, add_ci)};
 
     // rd_adr + 1, without an adder after the decrement: w0 + 1 = w1 (w0 is
     // even), and idx_m1 + 1 is the index itself.
