@@ -23,7 +23,7 @@
 #                    a corrupted ROM image must light the top's error LED)
 #   make test-fpga-icebreaker, test-fpga-ulx3s  (in make test-slow) a board's flow to its
 #                    bitstream as a test: fits, meets its clock
-#   make test-fpga-icebreaker-pico2  (in make test-slow) the iCEBreaker top
+#   make test-fpga-icebreaker-pico2  (in make test) the iCEBreaker top
 #                    with two PicoRV32 boards (SERV_MASK 0) placed and routed:
 #                    fits the UP5K, meets 12 MHz
 #   make test-fpga-arty   the Arty top synthesises (Yosys; no open place and
@@ -213,11 +213,14 @@ $(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
 BENCHES += synth area
 
 TESTS += fpga-soc fpga-soc-threebuffer-negative fpga-soc-bound-negative fpga-soc-ulx3s fpga-soc-ulx3s-drift fpga-soc-ulx3s-drift-negative fpga-soc-arty fpga-soc-negative fpga-soc-ulx3s-negative fpga-soc-arty-negative \
-         fpga-soc-pins-negative fpga-report-negative fpga-lint
-# The boards' flows (synthesis, place and route, fit and clock; about 6 min of
-# CPU time together) run with make test-slow: make test checks the tops in
-# simulation, their lint and the fit/clock checker itself (fpga-report-negative).
-SLOW_TESTS += fpga-icebreaker fpga-icebreaker-pico2 fpga-ulx3s fpga-arty
+         fpga-soc-pins-negative fpga-report-negative fpga-lint fpga-icebreaker-pico2
+# The iCEBreaker with two PicoRV32 boards is placed and routed in make test
+# (about 2.5 min of one core: the fullest top, and the one a controller that
+# grows would stop fitting).  The other boards' flows (synthesis, place and
+# route, fit and clock; about 3.5 min of CPU time together) run with make
+# test-slow: make test checks those tops in simulation, their lint and the
+# fit/clock checker itself (fpga-report-negative).
+SLOW_TESTS += fpga-icebreaker fpga-ulx3s fpga-arty
 .PHONY: test-fpga-soc test-fpga-soc-threebuffer-negative test-fpga-soc-bound-negative test-fpga-soc-ulx3s test-fpga-soc-ulx3s-drift test-fpga-soc-ulx3s-drift-negative test-fpga-soc-arty test-fpga-soc-negative test-fpga-soc-ulx3s-negative \
         test-fpga-soc-arty-negative test-fpga-soc-pins-negative test-fpga-icebreaker test-fpga-icebreaker-pico2 test-fpga-ulx3s \
         test-fpga-report-negative test-fpga-arty test-fpga-lint
