@@ -3,15 +3,25 @@
 // Connects albatross_controller (the only master) to port B of each board's
 // albatross_dpram.  Rules and timing:
 //   * The master address is {board[BOARD_BITS-1:0], word[ADDR_WIDTH-1:0]}, with
-//     BOARD_BITS = 4.  cyc and stb go only to the addressed board.  we, adr,
-//     sel and dat go to every board, and a board ignores them unless it is
-//     selected.
-//   * dat, ack and err come back from the addressed board only, so a late ack
-//     from another board is never taken.  A board with no err output ties its
-//     s_err_i bit to 0.
+//     BOARD_BITS = 4.  cyc and stb go only to the addressed board, in the same
+//     clock (no added latency).  we, adr, sel and dat go to every board, and a
+//     board ignores them unless it is selected.
+//   * Boards answer registered: ack (or err) comes in a clock after the one
+//     in which the request began, never in that first clock (albatross_dpram's
+//     port B takes 1 or 2 clocks).  The master holds its request until the
+//     answer (Wishbone classic).
+//   * The answer (dat, ack, err) is taken from the board that was requested
+//     in the previous clock (answer_q, the one register here); by the two
+//     rules above that is the board addressed now whenever a board answers.
+//     So the answer path starts at a register and the board's outputs, not
+//     at the master's address: a master that computes its address in the
+//     clock of the request does not find the bus's decode in its read path.
+//     A board that was not requested in the previous clock is not heard: a
+//     late ack from another board is never taken, and neither is an answer
+//     in a request's first clock (outside this bus's contract).
 //   * An access to a board >= NB is answered with err in the same clock.
-//   * Purely combinational: no clock, no added latency.  The access time is the
-//     slave's own; albatross_dpram's port B takes 1 or 2 clocks.
+//   * answer_q is a pure function of the previous clock's request and needs
+//     no reset.
 // Slave vectors are flattened: board b uses bits [b*w +: w] of a w-bit field.
 `default_nettype none
 
@@ -19,6 +29,7 @@ module albatross_bus #(
     parameter NB         = 4,   // boards (slaves), 1..16
     parameter ADDR_WIDTH = 10   // word-address bits of a board RAM
 ) (
+    input  wire                     clk_i,     // the bus clock (the controller's and port B's)
     // master side (the controller)
     input  wire                     m_cyc_i,
     input  wire                     m_stb_i,
@@ -61,6 +72,10 @@ module albatross_bus #(
     end
     wire none = ~|sel_b;
 
+    // The board requested in the previous clock: the one whose answer is taken.
+    reg [NB-1:0] answer_q;
+    always @(posedge clk_i) answer_q <= sel_b & {NB{req}};
+
     assign s_cyc_o = {NB{m_cyc_i}} & sel_b;
     assign s_stb_o = {NB{m_stb_i}} & sel_b;
     assign s_we_o  = {NB{m_we_i}};
@@ -68,18 +83,18 @@ module albatross_bus #(
     assign s_sel_o = {NB{m_sel_i}};
     assign s_dat_o = {NB{m_dat_i}};
 
-    // Read data, ack and err of the addressed board (AND-OR of the one-hot select).
+    // Read data, ack and err of that board (AND-OR of the one-hot answer_q).
     reg [31:0] dat_r;
     integer b;
     always @* begin
         dat_r = 32'd0;
         for (b = 0; b < NB; b = b + 1)
-            dat_r = dat_r | (s_dat_i[b*32 +: 32] & {32{sel_b[b]}});
+            dat_r = dat_r | (s_dat_i[b*32 +: 32] & {32{answer_q[b]}});
     end
 
     assign m_dat_o = dat_r;
-    assign m_ack_o = |(s_ack_i & sel_b);
-    assign m_err_o = |(s_err_i & sel_b) | (req & none);
+    assign m_ack_o = |(s_ack_i & answer_q);
+    assign m_err_o = |(s_err_i & answer_q) | (req & none);
 
 endmodule
 

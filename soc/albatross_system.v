@@ -190,7 +190,7 @@ module albatross_system #(
     endgenerate
 
     albatross_bus #(.NB(NB), .ADDR_WIDTH(ADDR_WIDTH)) u_bus (
-        .m_cyc_i(b_cyc), .m_stb_i(b_stb), .m_we_i(b_we), .m_adr_i(b_adr), .m_sel_i(b_sel),
+        .clk_i(clk_i), .m_cyc_i(b_cyc), .m_stb_i(b_stb), .m_we_i(b_we), .m_adr_i(b_adr), .m_sel_i(b_sel),
         .m_dat_i(b_wdat), .m_dat_o(bus_dat_o), .m_ack_o(bus_ack_o), .m_err_o(bus_err_o),
         .s_cyc_o(s_cyc), .s_stb_o(s_stb), .s_we_o(s_we), .s_adr_o(s_adr), .s_sel_o(s_sel),
         .s_dat_o(s_wdat), .s_dat_i(s_rdat), .s_ack_i(s_ack), .s_err_i({NB{1'b0}})

@@ -1,17 +1,20 @@
 // fbus -- proof harness of albatross_bus (formal/bus/bus.sby,
 // docs/verification.md "Formal proofs (RTL)").
 //
-// The bus is combinational; the harness gives the properties a clock (clk_i)
-// and a reset in the first clock only.  The master side is checked as a
-// Wishbone classic slave (formal/wb/fwb_slave.v: any master that obeys the
-// rules), each board's side as a master (formal/wb/fwb_master.v: any board
-// that obeys the slave rules, answering with ack or err within MAX_WAIT = 2
-// clocks as albatross_dpram's port B does, so the bus must pass that bound on).
+// The harness gives the bus a reset in the first clock only (the bus has
+// none; its one register, the answering board, needs none).  The master side
+// is checked as a Wishbone classic slave (formal/wb/fwb_slave.v: any master
+// that obeys the rules), each board's side as a master (formal/wb/fwb_master.v:
+// any board that obeys the slave rules, answering with ack or err within
+// MAX_WAIT = 2 clocks as albatross_dpram's port B does, so the bus must pass
+// that bound on).  Boards answer registered, as the bus requires: never in a
+// request's first clock (board_registered, an assumption).
 // NB = 3 boards, so board numbers 3..15 exist in the address but not on the
 // bus; ADDR_WIDTH = 3.  Routing properties (labels):
 //   route_cyc     cyc and stb reach only the addressed board.
 //   route_fields  every board sees the master's we, adr (word part), sel, dat.
-//   route_answer  for an existing board, ack, err and dat are that board's.
+//   route_answer  for an existing board, ack and err are that board's, and
+//                 so is dat with an ack.
 //   err_absent    a request to a board >= NB is answered with err at once.
 //   ack_selected  ack only when an existing board is addressed.
 `default_nettype none
@@ -41,7 +44,7 @@ module fbus #(
     wire [NB*32-1:0]       s_dat_o;
 
     albatross_bus #(.NB(NB), .ADDR_WIDTH(ADDR_WIDTH)) dut (
-        .m_cyc_i(m_cyc_i), .m_stb_i(m_stb_i), .m_we_i(m_we_i), .m_adr_i(m_adr_i),
+        .clk_i(clk_i), .m_cyc_i(m_cyc_i), .m_stb_i(m_stb_i), .m_we_i(m_we_i), .m_adr_i(m_adr_i),
         .m_sel_i(m_sel_i), .m_dat_i(m_dat_i), .m_dat_o(m_dat_o), .m_ack_o(m_ack_o),
         .m_err_o(m_err_o),
         .s_cyc_o(s_cyc_o), .s_stb_o(s_stb_o), .s_we_o(s_we_o), .s_adr_o(s_adr_o),
@@ -62,6 +65,7 @@ module fbus #(
         .ack_i(m_ack_o), .err_i(m_err_o),
         .f_past_valid_o(m_pv), .f_outstanding_o(m_out), .f_wait_o(m_wait), .f_read_ack_o(m_rack));
 
+    wire [NB-1:0] registered;
     genvar b;
     generate for (b = 0; b < NB; b = b + 1) begin : board
         wire       pv, out, rack;
@@ -72,7 +76,10 @@ module fbus #(
             .wdat_i(s_dat_o[b*32 +: 32]), .rdat_i(s_dat_i[b*32 +: 32]),
             .ack_i(s_ack_i[b]), .err_i(s_err_i[b]),
             .f_past_valid_o(pv), .f_outstanding_o(out), .f_wait_o(wt), .f_read_ack_o(rack));
+        // A registered board: an answer only to a request pending since an earlier clock.
+        assign registered[b] = !(s_ack_i[b] || s_err_i[b]) || out;
     end endgenerate
+    always @* if (!init_q) board_registered: assume(&registered);
 
     // ----------------------------------------------------------- routing
     wire [3:0] brd = m_adr_i[ADDR_WIDTH +: 4];
@@ -98,7 +105,7 @@ module fbus #(
                 b_dat = s_dat_i[i*32 +: 32];
             end
         end
-        ok_answer = brd >= NB || (m_ack_o == b_ack && m_err_o == b_err && m_dat_o == b_dat);
+        ok_answer = brd >= NB || (m_ack_o == b_ack && m_err_o == b_err && (!b_ack || m_dat_o == b_dat));
     end
     always @* begin
         if (!init_q) begin

@@ -4,8 +4,9 @@ FSBY_TESTS_SPEC += \
     formal-bus:bus:prove:pass \
     formal-bus-cover:bus:cover:pass \
     formal-bus-negative-err_no_stb:bus:neg_err_no_stb:wb_m.props.ans_in_req \
-    formal-bus-negative-alias:bus:neg_alias:ack_selected
-FSBY_MUTANTS += bus:err_no_stb bus:alias
+    formal-bus-negative-alias:bus:neg_alias:ack_selected \
+    formal-bus-negative-sticky_answer:bus:neg_sticky_answer:route_answer
+FSBY_MUTANTS += bus:err_no_stb bus:alias bus:sticky_answer
 # The same properties by abc pdr, without the k-induction's white-box probes:
 # a second, independent proof of what formal-bus proves (make formal-slow).
 FSBY_SLOW_SPEC += formal-bus-pdr:bus:prove_pdr:pass
