@@ -33,7 +33,9 @@
 //     no go_o.
 //   * Deadline D = cycle start + start + length.  may_access_o is high in a
 //     clock c of a slot when an access put on the bus in clock c+1 ends
-//     before D even if it times out: c + 1 <= D - TIMEOUT - 2.
+//     before D even if it times out: c + 1 <= D - TIMEOUT - 2.  go_o and
+//     the deadline check are registers, decided in the clock before, so the
+//     transfer's decisions start at a register.
 //   * The slot ends at slot_done_i; the next entry waits for its start.
 //     After the last entry: time-rigid, the next cycle starts at cycle start
 //     + H1; position-synchronised (H0 flag, entry 0 a valid SYNC COPY), the
@@ -237,7 +239,19 @@ module albatross_sequencer #(
     wire new_cycle  = (state_q == ST_CYCLE_END && (cycle_end || poll_hit)) ||
                       (entry_over && last_ent && cycle_end) ||       // the last slot ends at H1 - 1
                       (state_q == ST_CHECK && p_last && crc_ok);
-    wire        go_now   = state_q == ST_FETCH && step_q == 3'd6 && !bad_q && kind_q != ALB_KIND_IDLE[1:0];
+    // go and the deadline check are registered, decided a clock ahead, so that
+    // the transfer's decisions start at a register: go_q in FETCH clock 5
+    // (bad_q then takes clock 5's check as well), in_time_q from rel + 1 and
+    // D of the clock before (rel + 2 <= D - MARGIN, that is rel + 1 < D - MARGIN;
+    // used only in FETCH clock 6 and in the transfer, where neither a new
+    // cycle nor a new D comes between).
+    reg         go_q, in_time_q;
+    wire        go_now   = go_q;
+    always @(posedge clk_i) begin
+        go_q      <= !rst_i && state_q == ST_FETCH && step_q == 3'd5 && !bad_q && !bad_now &&
+                     kind_q != ALB_KIND_IDLE[1:0];
+        in_time_q <= {1'b0, next_rel_q[TB-1:0]} < end_q - MARGIN_T;
+    end
     // Saturating counters: the carry out of the increment says the count is at its top.
     wire        rerr_up  = mism_new | (entry_over && state_q == ST_FETCH && bad_q);
     wire [16:0] rerr_inc = {1'b0, rerr_q} + 17'd1;   // (rerr_up enables it: the event is not on the carry chain)
@@ -371,7 +385,7 @@ module albatross_sequencer #(
     assign slot_time_o  = slot_time_q;
     assign sync_entry_o = sflag_q;
     assign four_o       = four_q;
-    assign may_access_o = (state_q == ST_TRANSFER || go_now) && next_rel_q <= end_q - MARGIN_T; // c + 1 + MARGIN <= D (D >= MIN_LEN > MARGIN)
+    assign may_access_o = (state_q == ST_TRANSFER || go_now) && in_time_q;   // c + 1 + MARGIN <= D (D >= MIN_LEN > MARGIN)
     assign poll_cyc_o   = poll_q;
     assign poll_board_o = sync_brd_q;
     assign poll_adr_o   = sync_base_q;
