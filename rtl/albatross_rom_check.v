@@ -17,8 +17,10 @@
 //     begins, and the header fixes last_word_i before).
 //   * Start-up (learn_i): the CRC runs over the whole image, and its value
 //     after each part is stored as that part's prefix signature (bad mark
-//     clear).  last_o is high with the check of last_word_i; crc_ok_o then
-//     says whether the CRC equals h3_i.
+//     clear).  No read is issued in the clock of the check of last_word_i;
+//     last_o is high in the clock after it, and crc_ok_o then says whether
+//     the CRC (the register, through last_word_i) equals h3_i: a compare of
+//     two registers, not of the last step's result.
 //   * Background (learn_i low): the CRC is carried on from the stored
 //     prefix of the previous part; at the end of each part it is compared
 //     with that part's stored prefix.  A mismatch sets the part's bad mark;
@@ -57,8 +59,8 @@ module albatross_rom_check #(
     /* verilator lint_off UNUSEDSIGNAL */
     input  wire [7:0]               fetch_part_i, // the part of the entry fetched: entry + 1
     /* verilator lint_on UNUSEDSIGNAL */
-    output wire                     last_o,       // the check of last_word_i
-    output wire                     crc_ok_o,     // the CRC including this word equals h3_i
+    output wire                     last_o,       // the clock after the check of last_word_i
+    output wire                     crc_ok_o,     // the CRC register equals h3_i
     output wire                     mism_o,       // a part's first background mismatch
     output wire                     bad_o,        // the bad mark read for fetch_part_i
     output wire [7:0]               h2_o          // H2's drop run, as the start-up pass read it
@@ -78,6 +80,7 @@ module albatross_rom_check #(
     reg                bg_data_q;
     reg                dat_last_q;    // bg_dadr_q == last_word_i (last_word_i is fixed while checks run)
     reg [31:0]         crc_q;
+    reg                last_q;        // the clock after the check of last_word_i
 
     // ------------------------------------------------------------ memory (never reset)
     // No collision logic on the RAM (no_rw_check: a read of the word written
@@ -103,11 +106,13 @@ module albatross_rom_check #(
         end
     endfunction
 
-    wire               bg_issue = bg_on_i && !main_rom_i;
     wire [RG_BITS-1:0] part     = bg_dadr_q[RG_BITS+2:3];            // 0 header, k+1 entry k
     wire               p_end    = bg_data_q && bg_dadr_q[2:0] == 3'b011;
     wire               at_last  = bg_adr_q == last_word_i;
     wire               p_last   = bg_data_q && dat_last_q;
+    // (start-up: no read in the clock of the last check, so that the CRC
+    // register holds the whole image's CRC in the next clock)
+    wire               bg_issue = bg_on_i && !main_rom_i && !(p_last && learn_i);
     wire [31:0]        crc_n    = crc_step(crc_q, bg_dadr_q == 3 ? 32'd0 : rom_dat_i);
     wire [RG_BITS-1:0] fetch_part = fetch_part_i[RG_BITS-1:0];
     wire [RG_BITS-1:0] rd_part  = fetch_i ? fetch_part : bg_adr_q[RG_BITS+2:3];
@@ -131,6 +136,7 @@ module albatross_rom_check #(
             bg_data_q <= 1'b0;
             bg_adr_q  <= {ROM_AW{1'b0}};
             crc_q     <= CRC_SEED;
+            last_q    <= 1'b0;
             h2_q      <= 8'd0;
         end else begin
             if (bg_data_q && learn_i && bg_dadr_q == 2) h2_q <= rom_dat_i[ALB_ROM_H2_DROP_RUN_LSB +: 8];
@@ -138,13 +144,19 @@ module albatross_rom_check #(
             bg_dadr_q <= bg_adr_q;
             dat_last_q <= at_last;                  // one compare for the wrap and p_last
             if (bg_issue) bg_adr_q <= at_last ? {ROM_AW{1'b0}} : bg_adr_q + 1'b1;
-            if (bg_data_q) crc_q <= (RECHECK && p_last) ? CRC_SEED : (RECHECK && p_end && !learn_i) ? sig_q[31:0] : crc_n;
+            last_q    <= p_last;
+            // After the last word the CRC restarts from CRC_SEED: at once in
+            // the background, a clock later after the start-up pass (its CRC
+            // is compared in that clock).
+            if (bg_data_q) crc_q <= (RECHECK && p_last && !learn_i) ? CRC_SEED :
+                                    (RECHECK && p_end && !learn_i) ? sig_q[31:0] : crc_n;
+            else if (RECHECK && last_q) crc_q <= CRC_SEED;
         end
     end
 
     assign adr_o    = bg_adr_q;
-    assign last_o   = p_last;
-    assign crc_ok_o = crc_n == h3_i;
+    assign last_o   = last_q;
+    assign crc_ok_o = crc_q == h3_i;
     assign mism_o   = mism && !sig_q[32];
     assign bad_o    = RECHECK && (clash_q ? clash_bad_q : sig_q[32]);
     assign h2_o     = h2_q;

@@ -12,8 +12,10 @@
 //     signatures are rtl/albatross_rom_check.v's, the ROM, its loading and
 //     the word read in each clock rtl/albatross_schedule_rom.v's (their rules).
 //   * Start-up (after enable_i): read the header (5 clocks), then one CRC
-//     pass over the image, one word a clock, storing the CRC after the header
-//     and after each entry (their prefix CRCs).  A bad magic, NE outside
+//     pass over the image, one word a clock (its first read issued in the
+//     header's last clock, its CRC compared one clock after its last
+//     check), storing the CRC after the header and after each entry (their
+//     prefix CRCs).  A bad magic, NE outside
 //     1..NE_MAX, a cycle that does not fit, or a CRC other than H3 raises
 //     error_o for good: the sequencer never starts a slot or a poll.
 //   * Background check: in every clock the ROM is not fetching, one word is
@@ -189,7 +191,12 @@ module albatross_sequencer #(
     wire               start_now = state_q == ST_WAIT && next_rel_q > {1'b0, start_q};   // rel >= start: clock S (late only after an overrun)
     wire               main_rom;      // a main read: the background check waits
     wire [31:0]        rom_q;         // the word read in the previous clock
-    wire               bg_on     = state_q == ST_CHECK || (HAS_ROM_RECHECK != 0 && (state_q == ST_WAIT ||
+    // The start-up pass issues its first read in the header's last clock
+    // (step 4, no header read), so that its CRC is compared one clock after
+    // its last word's check and the first cycle starts when it did with
+    // the compare in that check's clock.
+    wire               hdr_last  = state_q == ST_HEADER && step_q == 3'd4;
+    wire               bg_on     = state_q == ST_CHECK || hdr_last || (HAS_ROM_RECHECK != 0 && (state_q == ST_WAIT ||
                                    state_q == ST_TRANSFER || state_q == ST_CYCLE_END));
     /* verilator lint_off UNUSEDSIGNAL */
     wire [ROM_AW+11:0] last_wide = {{ROM_AW{1'b0}}, 1'b0, ne_q, 3'b011}; // 4 + 8*NE - 1
@@ -199,7 +206,7 @@ module albatross_sequencer #(
     wire [7:0]         ent_inc   = ent_q + 8'd1;
     wire               last_ent  = ent_inc == ne_q;
     albatross_schedule_rom #(.ROM_WORDS(ROM_WORDS), .ROM_FILE(ROM_FILE)) u_rom (
-        .clk_i(clk_i), .time_i(time_q), .header_i(state_q == ST_HEADER), .start_i(start_now),
+        .clk_i(clk_i), .time_i(time_q), .header_i(state_q == ST_HEADER && !hdr_last), .start_i(start_now),
         .fetch_i(state_q == ST_FETCH), .step_i(step_q), .ent_i(ent_q), .ent_inc_i(ent_inc), .last_i(last_ent),
         .bg_adr_i(bg_adr),
         .main_o(main_rom), .dat_o(rom_q));
@@ -207,11 +214,11 @@ module albatross_sequencer #(
     // ------------------------------------------------------------ ROM check
     // The start-up CRC and the background re-check; in the clock S of a
     // fetch it reads the fetched entry's bad mark for FETCH clock 1.
-    wire p_last, crc_ok, mism_new, bad_mark;
+    wire pass_done, crc_ok, mism_new, bad_mark;   // pass_done: the clock after the start-up pass's last check
     albatross_rom_check #(.ROM_WORDS(ROM_WORDS), .HAS_ROM_RECHECK(HAS_ROM_RECHECK)) u_rom_check (
         .clk_i(clk_i), .rst_i(rst_i), .learn_i(state_q == ST_CHECK), .bg_on_i(bg_on),
         .main_rom_i(main_rom), .last_word_i(last_word), .adr_o(bg_adr), .rom_dat_i(rom_q),
-        .h3_i(h3_q), .fetch_i(start_now), .fetch_part_i(ent_inc), .last_o(p_last), .crc_ok_o(crc_ok),
+        .h3_i(h3_q), .fetch_i(start_now), .fetch_part_i(ent_inc), .last_o(pass_done), .crc_ok_o(crc_ok),
         .mism_o(mism_new), .bad_o(bad_mark), .h2_o(drop_run_o));
 
     // ------------------------------------------------------------ field checks at fetch
@@ -238,7 +245,7 @@ module albatross_sequencer #(
                       (state_q == ST_TRANSFER && slot_done_i);
     wire new_cycle  = (state_q == ST_CYCLE_END && (cycle_end || poll_hit)) ||
                       (entry_over && last_ent && cycle_end) ||       // the last slot ends at H1 - 1
-                      (state_q == ST_CHECK && p_last && crc_ok);
+                      (state_q == ST_CHECK && pass_done && crc_ok);
     // go and the deadline check are registered, decided a clock ahead, so that
     // the transfer's decisions start at a register: go_q in FETCH clock 5
     // (bad_q then takes clock 5's check as well), in_time_q from rel + 1 and
@@ -296,7 +303,7 @@ module albatross_sequencer #(
                         state_q       <= err_q ? ST_ERROR : ST_CHECK;
                     end
                 end
-                ST_CHECK: if (p_last) begin
+                ST_CHECK: if (pass_done) begin
                     if (!crc_ok) begin                                    // else new_cycle
                         state_q <= ST_ERROR;
                         err_q   <= 1'b1;

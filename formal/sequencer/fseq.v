@@ -228,7 +228,7 @@ module fseq (
     (* keep *) wire [F_TB:0]       f_next_rel, f_end, f_prev_end;   // f_next_rel: rel + 1
     (* keep *) wire [7:0]          f_ne, f_ent;
     (* keep *) wire [AW-1:0]       f_bg_adr, f_bg_dadr;
-    (* keep *) wire                f_smode, f_sync_ok, f_start_bad, f_bad, f_sflag, f_poll, f_bg_data;
+    (* keep *) wire                f_smode, f_sync_ok, f_start_bad, f_bad, f_sflag, f_poll, f_bg_data, f_last;
     (* keep *) wire [31:0]         f_h3, f_slot_time, f_crc;
     (* keep *) wire [1:0]          f_kind;
     (* keep *) wire [6:0]          f_chan;
@@ -291,7 +291,8 @@ module fseq (
                                          f_crc == F_CRCB[31:0] && !error_o && !started_q && !f_poll));
             if (!rst_q) begin
                 inv_bg:  assert(f_bg_adr == (f_bg_data ? bg_nxt : f_bg_dadr) && f_bg_dadr <= LAST_W);
-                inv_crc: assert(f_crc == crcb);
+                // (in the clock after the start-up pass's last check: the whole image's CRC)
+                inv_crc: assert(f_crc == ((f_state == ST_CHECK && f_last) ? F_CRC_ALL : crcb));
             end
             inv_poll:    assert(!f_poll || (f_state == ST_CYCLE_END && f_smode && f_sync_ok));
             inv_sync:    assert(!f_sync_ok || (F_SYNC0 && f_sync_brd == F_SRCB0 && f_sync_base == F_SRCA0));
@@ -300,16 +301,17 @@ module fseq (
                                   (f_state == ST_HEADER || f_state == ST_CHECK || (!F_VALID && f_state == ST_ERROR)));
             end
             if (f_state == ST_HEADER) begin
-                inv_header: assert(f_step <= 3'd4 && !error_o && (rst_q || (!f_bg_data && f_bg_dadr == 0)) &&
+                inv_header: assert(f_step <= 3'd4 && !error_o && !f_last && (rst_q || (!f_bg_data && f_bg_dadr == 0)) &&
                                    (f_step < 3'd2 || (f_ne == F_NE && f_smode == F_SMODE)) &&
                                    (f_step < 3'd3 || f_cycle == F_H1[F_TB-1:0]) &&
                                    (f_step < 3'd4 || f_h3 == F_H3));
             end
             if (f_state == ST_CHECK) begin
-                inv_check: assert(hdr_ok && !error_o && f_start == F_S0[F_TB-1:0] && !f_start_bad);
+                inv_check: assert(hdr_ok && !error_o && f_start == F_S0[F_TB-1:0] && !f_start_bad &&
+                                  (!f_last || (!f_bg_data && f_bg_dadr == 0)));
             end
             if (f_state == ST_ERROR) begin
-                inv_error: assert(!F_VALID && error_o && !cycle_o && !started_q && (!f_bg_data || f_bg_dadr == 0));
+                inv_error: assert(!F_VALID && error_o && !cycle_o && !started_q && !f_last && (!f_bg_data || f_bg_dadr == 0));
             end
             inv_sig: assert(&sig_ok);
             // the signature read register: the background part, or at FETCH clock 1 the entry's

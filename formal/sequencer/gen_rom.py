@@ -99,7 +99,8 @@ def vh(name, words, system_, plan, valid):
            f"localparam F_VALID = {int(valid)};  // the image is valid (else: the start-up must reject it)",
            f"localparam F_SMODE = {int(system_.sync_mode)};  // position-synchronised",
            lp("F_H1", fld("H1", "cycle").get(hdr[1]), 32, "cycle length"),
-           lp("F_H3", hdr[C.crc_index], 32, "the CRC the header states")]
+           lp("F_H3", hdr[C.crc_index], 32, "the CRC the header states"),
+           lp("F_CRC_ALL", C.crc(words), 32, "the CRC of the whole image (H3 read as 0)")]
     aw = ADDR_WIDTH
     for k in range(NE):
         e = words[C.entry_address(k): C.entry_address(k + 1)]
