@@ -8,8 +8,11 @@
 //     1..4 or a channel id >= N_CHAN; COPY with W = 0, TIME with W != 1,
 //     STATUS with W != 2*N_CHAN+1; or the background check's bad mark.
 //   * Clock 2 (E2, length): E1 did not fit (start_bad_i), the length does
-//     not fit in TIME_BITS or is below MIN_LEN, the slot ends after the
-//     cycle (e2_end_i > H1), or it starts before the previous slot's end.
+//     not fit in TIME_BITS or is below MIN_LEN, or the slot starts before
+//     the previous slot's end.
+//   * Clock 3: the slot ends after the cycle (end_i > H1; end_i is the
+//     register clock 2 wrote, so no adder stands between the ROM's output
+//     and this compare).
 //   * Clocks 3..5 (E3..E5): a place (source of a COPY, destinations 1..ND)
 //     with board >= NB or base + 3*(W or W+1) past 2^ADDR_WIDTH (FOUR_SLOT,
 //     on any kind: 4 buffers, base + 4*(W or W+1)).
@@ -36,7 +39,7 @@ module albatross_entry_check #(
     input  wire                 start_bad_i,  // E1 did not fit in TIME_BITS
     input  wire [TIME_BITS-1:0] cycle_i,      // H1
     input  wire [TIME_BITS:0]   prev_end_i,   // the previous valid slot's end
-    input  wire [TIME_BITS:0]   e2_end_i,     // start + length
+    input  wire [TIME_BITS:0]   end_i,        // start + length (E2's, from clock 3 on)
     output reg                  bad_o
 );
 
@@ -81,7 +84,8 @@ module albatross_entry_check #(
                           (e0_kind == ALB_KIND_TIME && e0_w != 12'd1) ||
                           (e0_kind == ALB_KIND_STATUS && e0_w != W_STATUS);
     wire        e2_bad  = start_bad_i || rom_i[31:TB] != 0 || below({{(32-TB){1'b0}}, rom_i[TB-1:0]}, MIN_LEN) ||
-                          e2_end_i > {1'b0, cycle_i} || {1'b0, start_i} < prev_end_i;
+                          {1'b0, start_i} < prev_end_i;
+    wire        end_bad = end_i > {1'b0, cycle_i};
     // base + span < 2^ADDR_WIDTH: the bits of each above ADDR_WIDTH are 0 and
     // the sum of the low ADDR_WIDTH bits has no carry out (a carry chain, no sum).
     localparam AW = ADDR_WIDTH;
@@ -106,7 +110,7 @@ module albatross_entry_check #(
         case (step_i)
             3'd1:    bad_o = (CHK && e0_bad) || bad_mark_i;
             3'd2:    bad_o = CHK && e2_bad;
-            3'd3:    bad_o = CHK && kind_i == ALB_KIND_COPY[1:0] && !lo_ok;
+            3'd3:    bad_o = CHK && (end_bad || (kind_i == ALB_KIND_COPY[1:0] && !lo_ok));
             3'd4:    bad_o = CHK && (!lo_ok || (nd_i >= 3'd2 && !hi_ok));
             3'd5:    bad_o = CHK && ((nd_i >= 3'd3 && !lo_ok) || (nd_i == 3'd4 && !hi_ok));
             default: bad_o = 1'b0;

@@ -232,7 +232,7 @@ module albatross_sequencer #(
                             .MIN_LEN(MIN_LEN_I), .HAS_ENTRY_CHECK(HAS_ENTRY_CHECK)) u_entry_check (
         .step_i(step_q), .rom_i(rom_q), .ent0_i(ent_q == 8'd0), .smode_i(smode_q), .bad_mark_i(bad_mark),
         .kind_i(kind_q), .four_i(four_q), .nd_i(nd_q), .e3_i(e3_q), .start_i(start_q), .start_bad_i(start_bad_q),
-        .cycle_i(cycle_q), .prev_end_i(prev_end_q), .e2_end_i(e2_end), .bad_o(bad_now));
+        .cycle_i(cycle_q), .prev_end_i(prev_end_q), .end_i(end_q), .bad_o(bad_now));
 
     // ------------------------------------------------------------ control
     // rel is kept as rel + 1 (next_rel_q): each compare below reads a
@@ -247,16 +247,16 @@ module albatross_sequencer #(
                       (entry_over && last_ent && cycle_end) ||       // the last slot ends at H1 - 1
                       (state_q == ST_CHECK && pass_done && crc_ok);
     // go and the deadline check are registered, decided a clock ahead, so that
-    // the transfer's decisions start at a register: go_q in FETCH clock 5
-    // (bad_q then takes clock 5's check as well), in_time_q from rel + 1 and
-    // D of the clock before (rel + 2 <= D - MARGIN, that is rel + 1 < D - MARGIN;
-    // used only in FETCH clock 6 and in the transfer, where neither a new
-    // cycle nor a new D comes between).
+    // the transfer's decisions start at registers: go_q in FETCH clock 5 from
+    // the entry's kind (go = go_q and not bad_q: the entry's checks are all
+    // in bad_q in clock 6), in_time_q from rel + 1 and D of the clock before
+    // (rel + 2 <= D - MARGIN, that is rel + 1 < D - MARGIN; used only in
+    // FETCH clock 6 and in the transfer, where neither a new cycle nor a new
+    // D comes between).
     reg         go_q, in_time_q;
-    wire        go_now   = go_q;
+    wire        go_now   = go_q && !bad_q;
     always @(posedge clk_i) begin
-        go_q      <= !rst_i && state_q == ST_FETCH && step_q == 3'd5 && !bad_q && !bad_now &&
-                     kind_q != ALB_KIND_IDLE[1:0];
+        go_q      <= !rst_i && state_q == ST_FETCH && step_q == 3'd5 && kind_q != ALB_KIND_IDLE[1:0];
         in_time_q <= {1'b0, next_rel_q[TB-1:0]} < end_q - MARGIN_T;
     end
     // Saturating counters: the carry out of the increment says the count is at its top.
