@@ -19,7 +19,11 @@
 //     A board that was not requested in the previous clock is not heard: a
 //     late ack from another board is never taken, and neither is an answer
 //     in a request's first clock (outside this bus's contract).
-//   * An access to a board >= NB is answered with err in the same clock.
+//   * An access to a board >= NB is answered with err in its second clock,
+//     like a registered board (answer_q's top bit: the previous clock
+//     requested an absent board and got no answer; the err goes out only
+//     while the request is still on the bus).  So no answer depends on this
+//     clock's address.
 //   * answer_q is a pure function of the previous clock's request and needs
 //     no reset.
 // Slave vectors are flattened: board b uses bits [b*w +: w] of a w-bit field.
@@ -72,9 +76,11 @@ module albatross_bus #(
     end
     wire none = ~|sel_b;
 
-    // The board requested in the previous clock: the one whose answer is taken.
-    reg [NB-1:0] answer_q;
-    always @(posedge clk_i) answer_q <= sel_b & {NB{req}};
+    // The board requested in the previous clock: the one whose answer is
+    // taken ([NB]: an absent board, unanswered in that clock: err now).
+    reg [NB:0] answer_q;
+    wire       absent_err = answer_q[NB] & req;
+    always @(posedge clk_i) answer_q <= {req & none & ~absent_err, sel_b & {NB{req}}};
 
     assign s_cyc_o = {NB{m_cyc_i}} & sel_b;
     assign s_stb_o = {NB{m_stb_i}} & sel_b;
@@ -93,8 +99,8 @@ module albatross_bus #(
     end
 
     assign m_dat_o = dat_r;
-    assign m_ack_o = |(s_ack_i & answer_q);
-    assign m_err_o = |(s_err_i & answer_q) | (req & none);
+    assign m_ack_o = |(s_ack_i & answer_q[NB-1:0]);
+    assign m_err_o = |(s_err_i & answer_q[NB-1:0]) | absent_err;
 
 endmodule
 

@@ -15,7 +15,9 @@
 //   route_fields  every board sees the master's we, adr (word part), sel, dat.
 //   route_answer  for an existing board, ack and err are that board's, and
 //                 so is dat with an ack.
-//   err_absent    a request to a board >= NB is answered with err at once.
+//   err_absent    a request to a board >= NB is answered with err in its
+//                 second clock (pending since an earlier clock) ...
+//   absent_late   ... and never in its first.
 //   ack_selected  ack only when an existing board is addressed.
 `default_nettype none
 
@@ -112,7 +114,8 @@ module fbus #(
             route_cyc:    assert(ok_cyc);
             route_fields: assert(ok_fields);
             route_answer: assert(ok_answer);
-            err_absent:   assert(!(req && brd >= NB) || m_err_o);
+            err_absent:   assert(!(req && brd >= NB && m_out) || m_err_o);
+            absent_late:  assert(!(req && brd >= NB && !m_out) || !m_err_o);
             ack_selected: assert(!m_ack_o || brd < NB);
         end
     end

@@ -3,7 +3,7 @@
 FSBY_TESTS_SPEC += \
     formal-bus:bus:prove:pass \
     formal-bus-cover:bus:cover:pass \
-    formal-bus-negative-err_no_stb:bus:neg_err_no_stb:wb_m.props.ans_in_req \
+    formal-bus-negative-err_no_stb:bus:neg_err_no_stb:absent_late \
     formal-bus-negative-alias:bus:neg_alias:ack_selected \
     formal-bus-negative-sticky_answer:bus:neg_sticky_answer:route_answer
 FSBY_MUTANTS += bus:err_no_stb bus:alias bus:sticky_answer

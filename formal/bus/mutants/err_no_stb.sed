@@ -1,3 +1,5 @@
-# err_no_stb: an absent board is answered with err on cyc alone (no stb): an
-# answer without a request.  Must fail wb_m ans_in_req (formal/bus/bus.sby neg_err_no_stb).
-s/assign m_err_o = |(s_err_i \& answer_q) | (req \& none);/assign m_err_o = |(s_err_i \& answer_q) | (m_cyc_i \& none);/
+# err_no_stb: an absent board is remembered on cyc alone (no stb), so a
+# request that follows a clock of cyc without stb is answered with err in its
+# first clock, an answer to a clock that was no request.  Must fail
+# absent_late (formal/bus/bus.sby neg_err_no_stb).
+s/always @(posedge clk_i) answer_q <= {req \& none \& ~absent_err, sel_b/always @(posedge clk_i) answer_q <= {m_cyc_i \& none \& ~absent_err, sel_b/
