@@ -148,9 +148,16 @@ CHECK_TESTS   := lint contract-current driver-unit host-threads-model tb-random 
                  formal-export formal-spin compiler-four_slot endpoint-import system-rigid
 # suite_run NAME, TESTS: run them in parallel, the costliest first (by the
 # last run's report: a long test started last would run alone at the end),
-# then the summary.
+# then the summary.  A long test whose prerequisites are a chain of builds
+# names them in SUITE_PREP_<test>: they are built first, because make -j
+# defers a goal whose prerequisites are still being built and comes back
+# to it only after every other goal has started (it would run alone at
+# the end).
+suite_prep = $(sort $(foreach t,$(1),$(SUITE_PREP_$(t))))
 suite_run = rm -rf $(BUILD)/results && mkdir -p $(BUILD)/results && echo $(words $(2)) > $(BUILD)/results/.total && \
-	t0=$$(date +%s%N); order=$$($(PYTHON) tools/suite_report.py --order $(1) $(2)); \
+	t0=$$(date +%s%N); \
+	$(if $(call suite_prep,$(2)),$(MAKE) -s -k -j$(NPROC) --no-print-directory $(call suite_prep,$(2)) > $(BUILD)/results/.prep.log 2>&1 || true;) \
+	order=$$($(PYTHON) tools/suite_report.py --order $(1) $(2)); \
 	ALB_SUITE=1 $(MAKE) -s -k -j$(NPROC) --output-sync=target --no-print-directory \
 	    $$(printf 'test-%s ' $$order) || true; \
 	$(PYTHON) tools/suite_report.py $(1) $$t0 $(NPROC) $(2); tools/summary.sh $(2)

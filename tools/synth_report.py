@@ -209,12 +209,16 @@ def bram_failure(fam, r, max_ffs):
 
 
 def write_json(path, obj):
-    """Write a report: its folder made, the file replaced whole (never left half written)."""
+    """Write a report: its folder made, the file replaced whole (never left half
+    written).  The temporary file is this process's own, so that tests running
+    in parallel that rewrite one shared report (formal_sby.json) never rename
+    each other's file away."""
     os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
-    with open(path + ".tmp", "w") as f:
+    tmp = f"{path}.{os.getpid()}.tmp"
+    with open(tmp, "w") as f:
         json.dump(obj, f, indent=2)
         f.write("\n")
-    os.replace(path + ".tmp", path)
+    os.replace(tmp, path)
 
 
 def fmt(v):

@@ -215,8 +215,10 @@ BENCHES += synth area
 TESTS += fpga-soc fpga-soc-threebuffer-negative fpga-soc-bound-negative fpga-soc-ulx3s fpga-soc-ulx3s-drift fpga-soc-ulx3s-drift-negative fpga-soc-arty fpga-soc-negative fpga-soc-ulx3s-negative fpga-soc-arty-negative \
          fpga-soc-pins-negative fpga-report-negative fpga-lint
 # First in the list: the longest test of make test, so that a run with no
-# timing report yet to order it by (a fresh clone) does not end with it alone.
+# timing report yet to order it by (a fresh clone) does not end with it alone;
+# its images are built before the suite starts (SUITE_PREP_, Makefile).
 TESTS := fpga-icebreaker-pico2 $(TESTS)
+SUITE_PREP_fpga-icebreaker-pico2 := $(FPGA_IMAGES)
 # The iCEBreaker with two PicoRV32 boards is placed and routed in make test
 # (about 2.5 min of one core: the fullest top, and the one a controller that
 # grows would stop fitting).  The other boards' flows (synthesis, place and
