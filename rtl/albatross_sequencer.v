@@ -192,9 +192,10 @@ module albatross_sequencer #(
     wire               main_rom;      // a main read: the background check waits
     wire [31:0]        rom_q;         // the word read in the previous clock
     // The start-up pass issues its first read in the header's last clock
-    // (step 4, no header read), so that its CRC is compared one clock after
-    // its last word's check and the first cycle starts when it did with
-    // the compare in that check's clock.
+    // (step 4, which reads no header word): its CRC is compared a clock
+    // after its last word's check (a register compare), and the first
+    // cycle still starts in the clock it would with the compare in the
+    // check's own clock.
     wire               hdr_last  = state_q == ST_HEADER && step_q == 3'd4;
     wire               bg_on     = state_q == ST_CHECK || hdr_last || (HAS_ROM_RECHECK != 0 && (state_q == ST_WAIT ||
                                    state_q == ST_TRANSFER || state_q == ST_CYCLE_END));
