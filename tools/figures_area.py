@@ -85,5 +85,33 @@ def controller_fmax():
         f"\n\n(`{REPORTS}/controller_area.json`; each placed out of context, seed 1.)"
 
 
+def controller_ladder():
+    r = load("controller_ladder.json")
+    if not r or "rows" not in r:
+        missing("controller_ladder.json", "make area")
+    fams = r["families"]
+    head = ["rung", "taken out (with every rung above)"] + \
+        [f"{fam} LUTs (saved; LUTs / PicoRV32)" for fam in fams]
+    rows = []
+    for e in r["rows"]:
+        cells = []
+        for fam in fams:
+            if fam not in e["luts"]:
+                cells.append("error")
+                continue
+            extra = [f"{n(e['saved'][fam])} saved"] if fam in e["saved"] else []
+            if fam in e["over_picorv32"]:
+                extra.append(f"{e['over_picorv32'][fam]:.2f}")
+            cells.append(n(e["luts"][fam]) + (f" ({'; '.join(extra)})" if extra else ""))
+        rows.append([str(e["rung"]), f"{e['name']}: {e['taken_out']}"] + cells)
+    goals = r.get("core_goals_over_picorv32", {})
+    pico = r.get("picorv32_luts", {})
+    out = table(head, rows)
+    if goals and pico:
+        out += ("\n\nThe core configuration's target: " + ", ".join(
+            f"{n(goals[f] * pico[f])} LUTs on {f} ({goals[f]:.2f} of one PicoRV32)" for f in goals if f in pico) + ".")
+    return out + f" (`{REPORTS}/controller_ladder.json`)"
+
+
 SECTIONS = {"controller-area": controller_area, "controller-growth": controller_growth,
-            "controller-fmax": controller_fmax}
+            "controller-fmax": controller_fmax, "controller-ladder": controller_ladder}

@@ -15,8 +15,15 @@
 #                    build/fpga/icebreaker_top.bin, build/fpga/ulx3s_top.bit
 #   make area        the controller by its configuration parameters (full,
 #                    each feature off, core), its growth with NB and N_CHAN
-#                    and its Fmax, against one PicoRV32 in the same run ->
-#                    build/reports/controller_area.json, controller_growth.json
+#                    and its Fmax, against one PicoRV32 in the same run, and
+#                    the core configuration's LUTs by function (a ladder of
+#                    rungs, each with one function more taken out:
+#                    tools/controller_ladder.py) ->
+#                    build/reports/controller_area.json, controller_growth.json,
+#                    controller_ladder.json
+#   make test-area-ladder   the ladder's edits still apply to rtl/ and every
+#                    rung elaborates (no synthesis); -negative: a copy of
+#                    rtl/ that the first rung's edit no longer matches fails
 #   make test-fpga-soc    the iCEBreaker top simulated (Verilator): both
 #                    cores' heartbeats blink, no error LED (-ulx3s, -arty:
 #                    those tops; -negative, -ulx3s-negative, -arty-negative:
@@ -147,10 +154,12 @@ pnr: $(FPGA_IMAGES) ## place and route the iCEBreaker and ULX3S tops, timing aga
 # same run (tools/controller_area.py).  AREA_JOBS syntheses at a time (at
 # most 2: each takes a minute or more).
 AREA_JOBS ?= 2
-area: $(BUILD)/schedule/mobot3/rom.hex ## the controller's LUTs, FFs, BRAMs, Fmax by configuration and growth, against PicoRV32 -> build/reports/controller_area.json, controller_growth.json
+area: $(BUILD)/schedule/mobot3/rom.hex ## the controller's LUTs, FFs, BRAMs, Fmax by configuration and growth, against PicoRV32, and the core's cost by function -> build/reports/controller_area.json, controller_growth.json, controller_ladder.json
 	$(PICO_NEED)
 	$(PYTHON) tools/controller_area.py --picorv32 $(PICO_RV32_V) --out $(FPGA_DIR)/area --jobs $(AREA_JOBS) \
 	    --report $(REPORTS)/controller_area.json --growth-report $(REPORTS)/controller_growth.json
+	$(PYTHON) tools/controller_ladder.py --out $(FPGA_DIR)/ladder --jobs $(AREA_JOBS) \
+	    --report $(REPORTS)/controller_ladder.json --area $(REPORTS)/controller_area.json
 
 bitstream: pnr ## pack the iCEBreaker and ULX3S tops -> build/fpga/icebreaker_top.bin, ulx3s_top.bit
 	icepack $(FPGA_DIR)/synth/top_ice40.asc $(FPGA_DIR)/icebreaker_top.bin
@@ -211,6 +220,27 @@ $(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
 	sed '2s/^.*$$/00000001/' $< > $@
 
 BENCHES += synth area
+
+# The function ladder of make area (tools/controller_ladder.py) is a set of
+# literal edits of rtl/: every edit must still apply and every rung
+# elaborate (no synthesis, seconds); the negative gives it a copy of rtl/
+# where the CRC compare the first rung edits is written differently.
+LADDER_DIR := $(FPGA_DIR)/ladder-check
+TESTS += area-ladder area-ladder-negative
+.PHONY: test-area-ladder test-area-ladder-negative
+test-area-ladder: $(BUILD)/schedule/mobot3/rom.hex
+	@tools/run_test.sh area-ladder python3 tools/controller_ladder.py --check --out $(LADDER_DIR)/ok
+
+test-area-ladder-negative: $(BUILD)/schedule/mobot3/rom.hex
+	@rm -rf $(LADDER_DIR)/neg && mkdir -p $(LADDER_DIR)/neg && cp -r rtl $(LADDER_DIR)/neg/
+	@sed -i 's/assign crc_ok_o = crc_q == h3_i;/assign crc_ok_o = h3_i == crc_q;/' $(LADDER_DIR)/neg/rtl/albatross_rom_check.v
+	@grep -q 'assign crc_ok_o = h3_i == crc_q;' $(LADDER_DIR)/neg/rtl/albatross_rom_check.v || \
+	    { echo "area-ladder-negative: the sed did not apply to rtl/albatross_rom_check.v"; exit 1; }
+	@tools/run_test.sh area-ladder-negative bash -c 'if python3 tools/controller_ladder.py --check \
+	    --rtl $(LADDER_DIR)/neg/rtl --out $(LADDER_DIR)/neg/out > $(LADDER_DIR)/neg.log 2>&1; then cat $(LADDER_DIR)/neg.log; \
+	    echo "expected the ladder check to fail on a copy whose CRC compare its first rung cannot find, it passed"; exit 1; fi; \
+	    grep "rung 1 (start-up CRC): expected the text .assign crc_ok_o = crc_q == h3_i;. once in albatross_rom_check.v, found it 0 times" \
+	    $(LADDER_DIR)/neg.log || { cat $(LADDER_DIR)/neg.log; echo "expected the failure to name rung 1 and its text"; exit 1; }'
 
 TESTS += fpga-soc fpga-soc-threebuffer-negative fpga-soc-bound-negative fpga-soc-ulx3s fpga-soc-ulx3s-drift fpga-soc-ulx3s-drift-negative fpga-soc-arty fpga-soc-negative fpga-soc-ulx3s-negative fpga-soc-arty-negative \
          fpga-soc-pins-negative fpga-report-negative fpga-lint
