@@ -9,7 +9,7 @@ localparam ALB_ROM_ENTRY_WORDS     = 8;
 localparam [15:0] ALB_ROM_MAGIC      = 16'hA1BA;
 localparam [31:0] ALB_ROM_CRC_POLY = 32'h000000AF;  // P = x^32 + POLY; c = (c * x^32 + word) mod P
 localparam [31:0] ALB_ROM_CRC_SEED = 32'hFFFFFFFF;
-localparam ALB_ROM_CRC_WORD        = 3;  // read as 0 by the CRC
+localparam ALB_ROM_CRC_WORD        = 3;  // the check word: a valid image's CRC is 0
 localparam ALB_ROM_TIME_BITS       = 16;  // widest time within a cycle
 localparam ALB_ROM_MAX_ENTRIES     = 255;
 localparam ALB_ROM_MAX_DESTS       = 4;

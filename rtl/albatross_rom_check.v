@@ -7,7 +7,8 @@
 // Rules:
 //   * CRC (rtl/albatross_contract.toml): c = CRC_SEED; for each word w in
 //     address order c = (c * x^32 + w) mod P, P = x^32 + CRC_POLY; over
-//     words 0 .. 4+8*NE-1 (last_word_i), H3 (word 3) read as 0.
+//     words 0 .. 4+8*NE-1 (last_word_i), H3 included: H3 is the check word
+//     that makes a valid image's CRC 0, so the check is a test for zero.
 //   * Parts: part 0 is the header (words 0..3), part k+1 entry k (words
 //     4+8k .. 11+8k).  A part ends at a word whose address is 3 mod 8.
 //   * A read is issued in each clock with bg_on_i high and main_rom_i low
@@ -19,8 +20,8 @@
 //     after each part is stored as that part's prefix signature (bad mark
 //     clear).  No read is issued in the clock of the check of last_word_i;
 //     last_o is high in the clock after it, and crc_ok_o then says whether
-//     the CRC (the register, through last_word_i) equals h3_i: a compare of
-//     two registers, not of the last step's result.
+//     the CRC (the register, through last_word_i) is 0: a test of a
+//     register, not of the last step's result.
 //   * Background (learn_i low): the CRC is carried on from the stored
 //     prefix of the previous part; at the end of each part it is compared
 //     with that part's stored prefix.  A mismatch sets the part's bad mark;
@@ -31,8 +32,6 @@
 //     clock fetch_i (no background read is issued then), which reads part
 //     fetch_part_i; bad_o is that part's bad mark in the next clock (as it
 //     was before a write in the clock fetch_i).
-//   * h2_o: the drop run field of H2 (rtl/albatross_contract.toml) as the
-//     start-up pass read it; 0 after reset, until the pass has read word 2.
 //   * Reset (synchronous) clears the read address and the CRC; the
 //     signature memory is never reset (the start-up pass writes it).
 //   * HAS_ROM_RECHECK 0 (the sequencer then issues reads only in the
@@ -54,16 +53,14 @@ module albatross_rom_check #(
     input  wire [$clog2(ROM_WORDS)-1:0] last_word_i, // 4 + 8*NE - 1
     output wire [$clog2(ROM_WORDS)-1:0] adr_o,    // ROM word to read when main_rom_i is low
     input  wire [31:0]              rom_dat_i,    // the ROM word read in the previous clock
-    input  wire [31:0]              h3_i,         // the CRC the header states
     input  wire                     fetch_i,      // clock S of a fetch: read fetch_part_i's mark
     /* verilator lint_off UNUSEDSIGNAL */
     input  wire [7:0]               fetch_part_i, // the part of the entry fetched: entry + 1
     /* verilator lint_on UNUSEDSIGNAL */
     output wire                     last_o,       // the clock after the check of last_word_i
-    output wire                     crc_ok_o,     // the CRC register equals h3_i
+    output wire                     crc_ok_o,     // the CRC register is 0
     output wire                     mism_o,       // a part's first background mismatch
-    output wire                     bad_o,        // the bad mark read for fetch_part_i
-    output wire [7:0]               h2_o          // H2's drop run, as the start-up pass read it
+    output wire                     bad_o         // the bad mark read for fetch_part_i
 );
 
 `include "albatross_contract.vh"
@@ -113,7 +110,7 @@ module albatross_rom_check #(
     // (start-up: no read in the clock of the last check, so that the CRC
     // register holds the whole image's CRC in the next clock)
     wire               bg_issue = bg_on_i && !main_rom_i && !(p_last && learn_i);
-    wire [31:0]        crc_n    = crc_step(crc_q, bg_dadr_q == 3 ? 32'd0 : rom_dat_i);
+    wire [31:0]        crc_n    = crc_step(crc_q, rom_dat_i);
     wire [RG_BITS-1:0] fetch_part = fetch_part_i[RG_BITS-1:0];
     wire [RG_BITS-1:0] rd_part  = fetch_i ? fetch_part : bg_adr_q[RG_BITS+2:3];
     localparam         RECHECK  = HAS_ROM_RECHECK != 0;
@@ -130,16 +127,13 @@ module albatross_rom_check #(
         clash_bad_q <= sig_q[32];
     end
 
-    reg [7:0] h2_q;                   // H2's drop run (start-up pass)
     always @(posedge clk_i) begin
         if (rst_i) begin
             bg_data_q <= 1'b0;
             bg_adr_q  <= {ROM_AW{1'b0}};
             crc_q     <= CRC_SEED;
             last_q    <= 1'b0;
-            h2_q      <= 8'd0;
         end else begin
-            if (bg_data_q && learn_i && bg_dadr_q == 2) h2_q <= rom_dat_i[ALB_ROM_H2_DROP_RUN_LSB +: 8];
             bg_data_q <= bg_issue;
             bg_dadr_q <= bg_adr_q;
             dat_last_q <= at_last;                  // one compare for the wrap and p_last
@@ -156,10 +150,9 @@ module albatross_rom_check #(
 
     assign adr_o    = bg_adr_q;
     assign last_o   = last_q;
-    assign crc_ok_o = crc_q == h3_i;
+    assign crc_ok_o = crc_q == 32'd0;
     assign mism_o   = mism && !sig_q[32];
     assign bad_o    = RECHECK && (clash_q ? clash_bad_q : sig_q[32]);
-    assign h2_o     = h2_q;
 
 endmodule
 

@@ -5,7 +5,7 @@
 //     simulation +rom=FILE overrides it), zero elsewhere; never reset.
 //   * One read a clock, registered: dat_o holds, from the next clock on, the
 //     word addressed in this one.  A main read (main_o) has priority: the
-//     header (header_i: step_i 0..3 read H0, H1, H3 and entry 0's E1), the
+//     header (header_i: step_i 0..3 read H0, H1, H2 and entry 0's E1), the
 //     clock S of a fetch (start_i: E0 of entry ent_i) and the fetch
 //     (fetch_i, step_i 1..5: E2, E3, E4, E5, then E1 of the next entry, of
 //     entry 0 after the last, last_i).  In every other clock the word is the
@@ -36,7 +36,7 @@ module albatross_schedule_rom #(
 );
 
     localparam              ROM_AW = $clog2(ROM_WORDS);
-    localparam [ROM_AW-1:0] A1 = 1, A3 = 3, A5 = 5;
+    localparam [ROM_AW-1:0] A1 = 1, A2 = 2, A5 = 5;
 
     // ------------------------------------------------------------ memory (never reset)
     reg [31:0] rom [0:ROM_WORDS-1];
@@ -84,7 +84,7 @@ module albatross_schedule_rom #(
             case (step_i)
                 3'd0:    main_adr = {ROM_AW{1'b0}};
                 3'd1:    main_adr = A1;
-                3'd2:    main_adr = A3;
+                3'd2:    main_adr = A2;
                 default: main_adr = A5;                              // E1 of entry 0
             endcase
     end

@@ -7,8 +7,8 @@
 //     header's cycle length and every slot's start and length must fit in
 //     TIME_BITS bits (higher bits set: the header, or the entry, is invalid).
 //   * ROM format (rtl/albatross_contract.toml): header H0..H3, entry k at
-//     word 4 + 8k; H3 is the CRC of the whole ROM image (words 0 .. 4+8*NE-1,
-//     H3 read as 0); no per-entry checksum.  The CRC and the prefix
+//     word 4 + 8k; H3 is the check word that makes the CRC of the whole
+//     image (words 0 .. 4+8*NE-1, H3 included) 0; no per-entry checksum.  The CRC and the prefix
 //     signatures are rtl/albatross_rom_check.v's, the ROM, its loading and
 //     the word read in each clock rtl/albatross_schedule_rom.v's (their rules).
 //   * Start-up (after enable_i): read the header (5 clocks), then one CRC
@@ -16,7 +16,7 @@
 //     header's last clock, its CRC compared one clock after its last
 //     check), storing the CRC after the header and after each entry (their
 //     prefix CRCs).  A bad magic, NE outside
-//     1..NE_MAX, a cycle that does not fit, or a CRC other than H3 raises
+//     1..NE_MAX, a cycle that does not fit, or a CRC other than 0 raises
 //     error_o for good: the sequencer never starts a slot or a poll.
 //   * Background check: in every clock the ROM is not fetching, one word is
 //     re-read and the CRC carried on from the stored prefix of the previous
@@ -96,7 +96,7 @@ module albatross_sequencer #(
     output wire                    error_o,        // the ROM is invalid: idle for good
     output wire [15:0]             rom_errors_o,   // skipped entries and background mismatches
     output wire [15:0]             cycles_o,
-    output wire [7:0]              drop_run_o      // ROM H2: the drop run K, from the start-up pass
+    output wire [7:0]              drop_run_o      // ROM H2: the drop run K, read with the header
 );
 
 `include "albatross_contract.vh"
@@ -136,13 +136,13 @@ module albatross_sequencer #(
             ALB_ROM_E4_DST0_LSB != 0 || ALB_ROM_E4_DST1_LSB != 16 || ALB_ROM_E5_DST2_LSB != 0 ||
             ALB_ROM_E5_DST3_LSB != 16 || ALB_ROM_H0_MAGIC_W != 16 || ALB_ROM_H0_NE_W != 8 ||
             ALB_ROM_TIME_BITS < TIME_BITS || ALB_ROM_CRC_WORD != 3 || ALB_ROM_E1_START_LSB != 0 ||
-            ALB_ROM_E2_LENGTH_LSB != 0 || ALB_ROM_H1_CYCLE_LSB != 0) begin : g_contract_check
+            ALB_ROM_E2_LENGTH_LSB != 0 || ALB_ROM_H1_CYCLE_LSB != 0 || ALB_ROM_H2_DROP_RUN_W != 8) begin : g_contract_check
             albatross_sequencer_contract_mismatch u_error ();
         end
     endgenerate
 
     // States of the sequencer.
-    localparam [2:0] ST_HEADER    = 3'd0,  // read H0, H1, H3 and entry 0's start
+    localparam [2:0] ST_HEADER    = 3'd0,  // read H0, H1, H2 and entry 0's start
                      ST_CHECK     = 3'd1,  // start-up CRC pass over the image
                      ST_ERROR     = 3'd2,  // the ROM is invalid: idle for good
                      ST_WAIT      = 3'd3,  // wait for the start of entry ent_q
@@ -158,7 +158,7 @@ module albatross_sequencer #(
     reg [7:0]          ne_q;
     reg                smode_q;
     reg                sync_ok_q;     // entry 0 is a valid SYNC COPY (this cycle)
-    reg [31:0]         h3_q;
+    reg [7:0]          drop_run_q;    // H2's drop run (data: read before the first slot, not reset)
     reg [TB-1:0]       start_q;       // E1 of entry ent_q; from FETCH clock 6 on, of entry ent_q + 1
                                       // (of entry 0 after the last entry and after the header)
     reg                start_bad_q;   // ... did not fit in TIME_BITS
@@ -219,8 +219,8 @@ module albatross_sequencer #(
     albatross_rom_check #(.ROM_WORDS(ROM_WORDS), .HAS_ROM_RECHECK(HAS_ROM_RECHECK)) u_rom_check (
         .clk_i(clk_i), .rst_i(rst_i), .learn_i(state_q == ST_CHECK), .bg_on_i(bg_on),
         .main_rom_i(main_rom), .last_word_i(last_word), .adr_o(bg_adr), .rom_dat_i(rom_q),
-        .h3_i(h3_q), .fetch_i(start_now), .fetch_part_i(ent_inc), .last_o(pass_done), .crc_ok_o(crc_ok),
-        .mism_o(mism_new), .bad_o(bad_mark), .h2_o(drop_run_o));
+        .fetch_i(start_now), .fetch_part_i(ent_inc), .last_o(pass_done), .crc_ok_o(crc_ok),
+        .mism_o(mism_new), .bad_o(bad_mark));
 
     // ------------------------------------------------------------ field checks at fetch
     wire [1:0]  e0_kind = rom_q[ALB_ROM_E0_KIND_LSB +: 2];   // (rules: rtl/albatross_entry_check.v)
@@ -295,7 +295,7 @@ module albatross_sequencer #(
                             cycle_q <= rom_q[TB-1:0];
                             if (rom_q[31:TB] != 0 || rom_q[TB-1:0] == {TB{1'b0}}) err_q <= 1'b1;
                         end
-                        3'd3: h3_q <= rom_q;                                    // H3
+                        3'd3: drop_run_q <= rom_q[ALB_ROM_H2_DROP_RUN_LSB +: 8];   // H2
                         default: ;
                     endcase
                     if (step_q == 3'd4) begin                                   // E1 of entry 0
@@ -402,6 +402,7 @@ module albatross_sequencer #(
     assign error_o      = err_q;
     assign rom_errors_o = rerr_q;
     assign cycles_o     = cycles_q;
+    assign drop_run_o   = drop_run_q;
 
 endmodule
 

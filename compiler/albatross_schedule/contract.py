@@ -288,15 +288,29 @@ class Contract:
         return next(w.index for w in self.header if w.crc)
 
     def crc(self, words) -> int:
-        """CRC of a ROM image: c = crc_seed; for each word w in address order
-        (the CRC word read as 0): c = (c * x^32 + w) mod (x^32 + crc_poly)."""
+        """CRC of ROM words: c = crc_seed; for each word w in address order (the
+        CRC word too): c = (c * x^32 + w) mod (x^32 + crc_poly).  A valid image's
+        CRC is 0 (its CRC word is check_word)."""
         wb = self.word_bits
         m = (1 << wb) - 1
         c = self.crc_seed
-        for i, w in enumerate(words):
+        for w in words:
             for _ in range(wb):
                 c = ((c << 1) & m) ^ (self.crc_poly if c >> (wb - 1) else 0)
-            c ^= 0 if i == self.crc_index else (w & m)
+            c ^= w & m
+        return c
+
+    def check_word(self, words) -> int:
+        """The CRC word that makes the CRC of the image 0: with it 0 the CRC is
+        c0, and the word at index i adds w * x^(32 (n - 1 - i)) mod P, so it is
+        c0 * x^-(32 (n - 1 - i)) mod P (x is invertible: crc_poly is odd)."""
+        wb = self.word_bits
+        ws = list(words)
+        ws[self.crc_index] = 0
+        c = self.crc(ws)
+        for _ in range(wb * (len(ws) - 1 - self.crc_index)):
+            # c * x^-1 mod P: c / x, or (c + P) / x when c is odd
+            c = ((c ^ self.crc_poly) >> 1) | (1 << (wb - 1)) if c & 1 else c >> 1
         return c
 
     def entry_address(self, k: int) -> int:

@@ -63,7 +63,7 @@ def render_vh(c: Contract) -> str:
     L.append(f"localparam [{c.word_bits - 1}:0] ALB_ROM_CRC_POLY = {c.word_bits}'h{c.crc_poly:08X};"
              "  // P = x^32 + POLY; c = (c * x^32 + word) mod P")
     L.append(f"localparam [{c.word_bits - 1}:0] ALB_ROM_CRC_SEED = {c.word_bits}'h{c.crc_seed:08X};")
-    L.append(f"localparam ALB_ROM_CRC_WORD        = {c.crc_index};  // read as 0 by the CRC")
+    L.append(f"localparam ALB_ROM_CRC_WORD        = {c.crc_index};  // the check word: a valid image's CRC is 0")
     L.append(f"localparam ALB_ROM_TIME_BITS       = {c.time_bits};  // widest time within a cycle")
     L.append(f"localparam ALB_ROM_MAX_ENTRIES     = {c.max_entries};")
     L.append(f"localparam ALB_ROM_MAX_DESTS       = {c.max_dests};")
@@ -263,13 +263,25 @@ def render_cxx(c: Contract) -> str:
     for k, v in c.entry_flags.items():
         L.append(f"constexpr unsigned EFLAG_{k.upper()} = 1u << {v};  // in E0.flags")
     L += ["",
-          "// CRC of a ROM image of n words (word ROM_CRC_WORD read as 0).",
+          "// CRC of n ROM words (the check word ROM_CRC_WORD too): 0 for a valid image.",
           "inline uint32_t rom_crc(const uint32_t *w, int n) {",
+          "    uint32_t c = ROM_CRC_SEED;",
+          "    for (int i = 0; i < n; ++i) {",
+          "        for (int b = 0; b < 32; ++b) c = (c << 1) ^ ((c >> 31) ? ROM_CRC_POLY : 0u);",
+          "        c ^= w[i];",
+          "    }",
+          "    return c;",
+          "}",
+          "// The check word of an image of n words: the word ROM_CRC_WORD that makes",
+          "// its CRC 0 (the CRC with that word 0, times x^-(32 (n - 1 - ROM_CRC_WORD)) mod P).",
+          "inline uint32_t rom_check_word(const uint32_t *w, int n) {",
           "    uint32_t c = ROM_CRC_SEED;",
           "    for (int i = 0; i < n; ++i) {",
           "        for (int b = 0; b < 32; ++b) c = (c << 1) ^ ((c >> 31) ? ROM_CRC_POLY : 0u);",
           "        c ^= (unsigned)i == ROM_CRC_WORD ? 0u : w[i];",
           "    }",
+          "    for (int b = 0; b < 32 * (n - 1 - (int)ROM_CRC_WORD); ++b)",
+          "        c = (c & 1u) ? ((c ^ ROM_CRC_POLY) >> 1) | 0x80000000u : c >> 1;",
           "    return c;",
           "}",
           "constexpr uint32_t place(uint32_t board, uint32_t base_word) {",

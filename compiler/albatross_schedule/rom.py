@@ -29,7 +29,7 @@ HFLAG_SYNC_MODE = C.flag("header", "sync_mode")
 
 
 def rom_crc(words) -> int:
-    """The contract's CRC of a whole ROM image (the CRC word H3 read as 0)."""
+    """The contract's CRC of a whole ROM image, its check word H3 included: 0 when valid."""
     return C.crc(words)
 
 
@@ -70,7 +70,7 @@ def encode_rom(system: System, plan: Plan) -> list:
                              ("H1", "cycle"): plan.cycle, ("H2", "drop_run"): system.drop_run})
     for s in plan.slots:
         words += encode_entry(s)
-    words[C.crc_index] = rom_crc(words)
+    words[C.crc_index] = C.check_word(words)
     return words
 
 
@@ -108,8 +108,9 @@ def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None
     magic = get(hdr, "H0", "magic")
     if magic != ROM_MAGIC:
         problems.append(f"H0 magic {magic:#06x}, expected {ROM_MAGIC:#06x}")
-    if rom_crc(words) != words[C.crc_index]:
-        problems.append(f"CRC {words[C.crc_index]:#010x}, expected {rom_crc(words):#010x}")
+    if rom_crc(words) != 0:
+        problems.append(f"CRC of the image {rom_crc(words):#010x}, expected 0 "
+                        f"(H3 {words[C.crc_index]:#010x}, expected {C.check_word(words):#010x})")
     problems += [f"{w.name} (reserved) is not 0" for w in C.header if w.reserved and hdr[w.index] != 0]
     problems += [f"{w.name}: bits outside its fields are not 0" for w in C.header
                  if not w.reserved and hdr[w.index] & ~sum(f.mask for f in w.fields) & 0xFFFFFFFF]

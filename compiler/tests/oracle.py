@@ -49,18 +49,42 @@ ORACLE_LAYOUT = {"off_actual": 0, "off_readlocked": 1, "off_buffers": 4, "buffer
 ORACLE_FOUR_SLOT = {"flag": 2, "buffers": 4, "off_slot": (2, 3), "initial_slot": 0}
 
 
-def crc(words):
-    """CRC of a ROM image, H3 (word 3) read as 0: polynomial division over
-    GF(2) by P = x^32 + x^7 + x^5 + x^3 + x^2 + x + 1, written as the
-    remainder of the image's polynomial (seed 0xFFFFFFFF prepended)."""
+def crc(words, seed=0xFFFFFFFF):
+    """CRC of ROM words, H3 (word 3) included: polynomial division over GF(2)
+    by P = x^32 + x^7 + x^5 + x^3 + x^2 + x + 1, written as the remainder of
+    the image's polynomial (the seed prepended).  A valid image's CRC is 0."""
     p = (1 << 32) | 0xAF
-    r = 0xFFFFFFFF
-    for i, w in enumerate(words):
-        r = (r << 32) | (0 if i == 3 else w)
+    r = seed
+    for w in words:
+        r = (r << 32) | w
         for b in range(63, 31, -1):          # reduce the degree below 32
             if r >> b & 1:
                 r ^= p << (b - 32)
     return r
+
+
+def check_word(words):
+    """The H3 (word 3) that makes the image's CRC 0.  The remainder is linear
+    in H3: solve M h = c0 over GF(2) by elimination, where c0 is the CRC with
+    H3 = 0 and column j of M the remainder of H3 = 2^j alone (seed 0)."""
+    ws = list(words)
+    ws[3] = 0
+    c0 = crc(ws)
+    n = len(ws)
+    cols = [crc([0, 0, 0, 1 << j] + [0] * (n - 4), seed=0) for j in range(32)]
+    # rows: equation i is bit i of sum_j h_j cols[j] = bit i of c0
+    rows = [(sum(((cols[j] >> i) & 1) << j for j in range(32)), (c0 >> i) & 1) for i in range(32)]
+    h, piv = 0, []
+    for j in range(32):
+        k = next(k for k in range(len(piv), 32) if rows[k][0] >> j & 1)
+        rows[len(piv)], rows[k] = rows[k], rows[len(piv)]
+        for k2 in range(32):
+            if k2 != len(piv) and rows[k2][0] >> j & 1:
+                rows[k2] = (rows[k2][0] ^ rows[len(piv)][0], rows[k2][1] ^ rows[len(piv)][1])
+        piv.append(j)
+    for i, j in enumerate(piv):
+        h |= rows[i][1] << j
+    return h
 
 
 def read_hex(path):
@@ -102,7 +126,7 @@ def rom_problems(words, n_chan, ram_words):
     hdr, entries = decode(words)
     if hdr["magic"] != 0xA1BA:
         p.append("bad magic")
-    if crc(words) != words[3]:
+    if crc(words) != 0:
         p.append("ROM CRC")
     if hdr["cycle_high"]:
         p.append("H1 above 16 bits")

@@ -113,10 +113,18 @@ class RomDecoderOracle(unittest.TestCase):
     def test_crc(self):
         rng = random.Random(1)
         self.assertEqual(O.crc([]), C.crc_seed, "CRC seed")
-        self.assertEqual(C.crc_index, 3, "the oracle reads H3 (word 3) as 0")
+        self.assertEqual(C.crc_index, 3, "the oracle's check word is H3 (word 3)")
         for n in (1, 3, 4, 12, 20):
             words = [rng.getrandbits(32) for _ in range(n)]
             self.assertEqual(O.crc(words), C.crc(words), f"CRC of {n} words")
+        for n in (4, 12, 20, 2044):
+            words = [rng.getrandbits(32) for _ in range(n)]
+            h = C.check_word(words)
+            self.assertEqual(h, O.check_word(words), f"check word of {n} words")
+            words[3] = h
+            self.assertEqual(C.crc(words), 0, f"CRC of {n} words with their check word")
+            words[rng.randrange(n)] ^= 1 << rng.randrange(32)
+            self.assertNotEqual(C.crc(words), 0, f"CRC of {n} words with one bit flipped")
 
     def valid_rom(self, kind="copy", w=1):
         """A one-entry ROM built from the definition alone."""
@@ -134,7 +142,7 @@ class RomDecoderOracle(unittest.TestCase):
         if kind == "copy":
             e[C.src_field.index] |= C.src_field.put(C.place(0, 16))
         rom = hdr + e
-        rom[C.crc_index] = C.crc(rom)
+        rom[C.crc_index] = C.check_word(rom)
         return rom
 
     def test_magic_kinds_and_addressing(self):

@@ -20,7 +20,7 @@ import unittest
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from oracle import (  # noqa: E402
     CFLAGS, CINC, COMPILER_DIR, ControllerModel, ORACLE_FOUR_SLOT, OUT, REPO, RamImage, TOOL, TOOL_ENV,
-    crc, decode, harness_source, layout_problems, pattern, plan_problems, read_hex, rom_problems)
+    check_word, decode, harness_source, layout_problems, pattern, plan_problems, read_hex, rom_problems)
 import albatross_schedule as S  # noqa: E402
 
 EXAMPLE = os.path.join(REPO, "compiler", "examples", "four_slot.toml")
@@ -78,7 +78,7 @@ class FourSlotExampleTests(unittest.TestCase):
 
     def reseal(self, words):
         words = list(words)
-        words[3] = crc(words)
+        words[3] = check_word(words)
         return words
 
     def test_flag_on_time_is_valid(self):

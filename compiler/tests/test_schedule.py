@@ -23,7 +23,7 @@ import unittest
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from oracle import (  # noqa: E402  (the oracles, the controller model, the paths)
     BAD, CFLAGS, CINC, COMPILER_DIR, ControllerModel, EXAMPLES, EXAMPLE_FILES,
-    OUT, REPO, RamImage, TOOL, TOOL_ENV, compile_example, crc,
+    OUT, REPO, RamImage, TOOL, TOOL_ENV, check_word, compile_example,
     decode, harness_source, layout_problems, pattern, plan_problems, read_hex, rom_problems)
 import albatross_schedule as S  # noqa: E402
 
@@ -553,7 +553,7 @@ class CheckerNegativeTests(unittest.TestCase):
         return rom_problems(rom, 16, self.ram_words)
 
     def reseal(self, rom, k):
-        rom[3] = crc(rom)
+        rom[3] = check_word(rom)
 
     def test_flipped_bit_fails_crc(self):
         for word in (1, 4 + 8 * 3 + 1, 4 + 8 * 7 + 4):

@@ -229,7 +229,8 @@ module fseq (
     (* keep *) wire [7:0]          f_ne, f_ent;
     (* keep *) wire [AW-1:0]       f_bg_adr, f_bg_dadr;
     (* keep *) wire                f_smode, f_sync_ok, f_start_bad, f_bad, f_sflag, f_poll, f_bg_data, f_last;
-    (* keep *) wire [31:0]         f_h3, f_slot_time, f_crc;
+    (* keep *) wire [31:0]         f_slot_time, f_crc;
+    (* keep *) wire [7:0]          f_drop;
     (* keep *) wire [1:0]          f_kind;
     (* keep *) wire [6:0]          f_chan;
     (* keep *) wire [2:0]          f_nd;
@@ -268,14 +269,14 @@ module fseq (
         case (f_step)
             3'd1:    main_a = hdr ? 32'd0 : e_base;
             3'd2:    main_a = hdr ? 32'd1 : e_base + 32'd2;
-            3'd3:    main_a = hdr ? 32'd3 : e_base + 32'd3;
+            3'd3:    main_a = hdr ? 32'd2 : e_base + 32'd3;
             3'd4:    main_a = hdr ? 32'd5 : e_base + 32'd4;
             3'd5:    main_a = e_base + 32'd5;
             default: main_a = hdr ? 32'd0 : (f_ent + 8'd1 == F_NE) ? 32'd5 : e_base + 32'd9;   // HEADER: word 0 while it waits
         endcase
     end
     wire [31:0]   rom_main = F_ROM[32*main_a[AW-1:0] +: 32];
-    wire          hdr_ok = f_ne == F_NE && f_smode == F_SMODE && f_cycle == F_H1[F_TB-1:0] && f_h3 == F_H3;
+    wire          hdr_ok = f_ne == F_NE && f_smode == F_SMODE && f_cycle == F_H1[F_TB-1:0] && f_drop == F_DROP;
     wire [F_TB:0] pe_want = (f_ent == 8'd0 && !xfer) ? {(F_TB+1){1'b0}} :
                             ((f_ent == 8'd0 && xfer) || (e1 && !xfer)) ? D0[F_TB:0] : D1[F_TB:0];
     // a part's signature is stored once the start-up pass has checked its last word
@@ -304,7 +305,7 @@ module fseq (
                 inv_header: assert(f_step <= 3'd4 && !error_o && !f_last && (rst_q || (!f_bg_data && f_bg_dadr == 0)) &&
                                    (f_step < 3'd2 || (f_ne == F_NE && f_smode == F_SMODE)) &&
                                    (f_step < 3'd3 || f_cycle == F_H1[F_TB-1:0]) &&
-                                   (f_step < 3'd4 || f_h3 == F_H3));
+                                   (f_step < 3'd4 || f_drop == F_DROP));
             end
             if (f_state == ST_CHECK) begin
                 inv_check: assert(hdr_ok && !error_o && f_start == F_S0[F_TB-1:0] && !f_start_bad &&

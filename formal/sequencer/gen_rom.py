@@ -14,7 +14,7 @@ and checked with its verify_rom; nothing is typed as a hex number here.
           (start = the previous slot's end), H1 = the longest cycle.
   badcrc  the time image with H3 one bit off: the start-up CRC pass must reject it.
 The .vh also holds the image itself (F_ROM) and the CRC tables the k-induction invariants use: F_CRCB, the CRC before
-each word (c after words 0..a-1, H3 read as 0), and F_PFX, the prefix CRC after each part
+each word (c after words 0..a-1, H3 included), and F_PFX, the prefix CRC after each part
 (header, entry k) that the start-up pass stores; both padded with 0 to every address.
 """
 import os
@@ -71,8 +71,8 @@ def image_sync():
 
 
 def crc_tables(words):
-    """CRC before each word (F_CRCB) and after each part (F_PFX), H3 read as 0."""
-    before = [C.crc(words[:a]) for a in range(len(words) + 1)]     # C.crc reads H3 as 0
+    """CRC before each word (F_CRCB) and after each part (F_PFX), H3 included."""
+    before = [C.crc(words[:a]) for a in range(len(words) + 1)]
     ends = [C.header_words - 1] + [C.entry_address(k + 1) - 1 for k in range(NE)]
     return before[:len(words)], [before[a + 1] for a in ends]
 
@@ -99,8 +99,8 @@ def vh(name, words, system_, plan, valid):
            f"localparam F_VALID = {int(valid)};  // the image is valid (else: the start-up must reject it)",
            f"localparam F_SMODE = {int(system_.sync_mode)};  // position-synchronised",
            lp("F_H1", fld("H1", "cycle").get(hdr[1]), 32, "cycle length"),
-           lp("F_H3", hdr[C.crc_index], 32, "the CRC the header states"),
-           lp("F_CRC_ALL", C.crc(words), 32, "the CRC of the whole image (H3 read as 0)")]
+           lp("F_DROP", fld("H2", "drop_run").get(hdr[2]), 8, "the drop run K"),
+           lp("F_CRC_ALL", C.crc(words), 32, "the CRC of the whole image, H3 included (0: valid)")]
     aw = ADDR_WIDTH
     for k in range(NE):
         e = words[C.entry_address(k): C.entry_address(k + 1)]

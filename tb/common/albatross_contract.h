@@ -61,13 +61,25 @@ constexpr unsigned HFLAG_SYNC_MODE = 1u << 0;  // in H0.flags
 constexpr unsigned EFLAG_SYNC = 1u << 0;  // in E0.flags
 constexpr unsigned EFLAG_FOUR_SLOT = 1u << 1;  // in E0.flags
 
-// CRC of a ROM image of n words (word ROM_CRC_WORD read as 0).
+// CRC of n ROM words (the check word ROM_CRC_WORD too): 0 for a valid image.
 inline uint32_t rom_crc(const uint32_t *w, int n) {
+    uint32_t c = ROM_CRC_SEED;
+    for (int i = 0; i < n; ++i) {
+        for (int b = 0; b < 32; ++b) c = (c << 1) ^ ((c >> 31) ? ROM_CRC_POLY : 0u);
+        c ^= w[i];
+    }
+    return c;
+}
+// The check word of an image of n words: the word ROM_CRC_WORD that makes
+// its CRC 0 (the CRC with that word 0, times x^-(32 (n - 1 - ROM_CRC_WORD)) mod P).
+inline uint32_t rom_check_word(const uint32_t *w, int n) {
     uint32_t c = ROM_CRC_SEED;
     for (int i = 0; i < n; ++i) {
         for (int b = 0; b < 32; ++b) c = (c << 1) ^ ((c >> 31) ? ROM_CRC_POLY : 0u);
         c ^= (unsigned)i == ROM_CRC_WORD ? 0u : w[i];
     }
+    for (int b = 0; b < 32 * (n - 1 - (int)ROM_CRC_WORD); ++b)
+        c = (c & 1u) ? ((c ^ ROM_CRC_POLY) >> 1) | 0x80000000u : c >> 1;
     return c;
 }
 constexpr uint32_t place(uint32_t board, uint32_t base_word) {

@@ -28,9 +28,9 @@ void check(unsigned group, bool ok, const char *fmt, ...) {
 // ------------------------------------------------------------------ schedule ROM
 size_t rom_addr(size_t k, unsigned j) { return C::ROM_HEADER_WORDS + C::ROM_ENTRY_WORDS * k + j; }
 
-// The CRC word of a ROM of ne entries.
+// The check word of a ROM of ne entries (its CRC then 0).
 void reseal(std::vector<uint32_t> &r, size_t ne) {
-    r[C::ROM_CRC_WORD] = C::rom_crc(&r[0], (int)rom_addr(ne, 0));
+    r[C::ROM_CRC_WORD] = C::rom_check_word(&r[0], (int)rom_addr(ne, 0));
 }
 
 // hflags: the H0 flags field (C::HFLAG_SYNC_MODE: position-synchronised).

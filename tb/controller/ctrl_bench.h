@@ -78,7 +78,7 @@ enum { IDLE = C::KIND_IDLE, COPY = C::KIND_COPY, TIME = C::KIND_TIME, STATUS = C
 // Word j of entry k.
 size_t rom_addr(size_t k, unsigned j);
 
-// The CRC word of a ROM of ne entries.
+// The check word of a ROM of ne entries (its CRC then 0).
 void reseal(std::vector<uint32_t> &r, size_t ne);
 
 // hflags: the H0 flags field (C::HFLAG_SYNC_MODE: position-synchronised).

@@ -233,13 +233,13 @@ test-area-ladder: $(BUILD)/schedule/mobot3/rom.hex
 
 test-area-ladder-negative: $(BUILD)/schedule/mobot3/rom.hex
 	@rm -rf $(LADDER_DIR)/neg && mkdir -p $(LADDER_DIR)/neg && cp -r rtl $(LADDER_DIR)/neg/
-	@sed -i 's/assign crc_ok_o = crc_q == h3_i;/assign crc_ok_o = h3_i == crc_q;/' $(LADDER_DIR)/neg/rtl/albatross_rom_check.v
-	@grep -q 'assign crc_ok_o = h3_i == crc_q;' $(LADDER_DIR)/neg/rtl/albatross_rom_check.v || \
+	@sed -i "s/assign crc_ok_o = crc_q == 32'd0;/assign crc_ok_o = 32'd0 == crc_q;/" $(LADDER_DIR)/neg/rtl/albatross_rom_check.v
+	@grep -q "assign crc_ok_o = 32'd0 == crc_q;" $(LADDER_DIR)/neg/rtl/albatross_rom_check.v || \
 	    { echo "area-ladder-negative: the sed did not apply to rtl/albatross_rom_check.v"; exit 1; }
 	@tools/run_test.sh area-ladder-negative bash -c 'if python3 tools/controller_ladder.py --check \
 	    --rtl $(LADDER_DIR)/neg/rtl --out $(LADDER_DIR)/neg/out > $(LADDER_DIR)/neg.log 2>&1; then cat $(LADDER_DIR)/neg.log; \
 	    echo "expected the ladder check to fail on a copy whose CRC compare its first rung cannot find, it passed"; exit 1; fi; \
-	    grep "rung 1 (start-up CRC): expected the text .assign crc_ok_o = crc_q == h3_i;. once in albatross_rom_check.v, found it 0 times" \
+	    grep "rung 1 (start-up CRC): expected the text .assign crc_ok_o = crc_q == 32.d0;. once in albatross_rom_check.v, found it 0 times" \
 	    $(LADDER_DIR)/neg.log || { cat $(LADDER_DIR)/neg.log; echo "expected the failure to name rung 1 and its text"; exit 1; }'
 
 TESTS += fpga-soc fpga-soc-threebuffer-negative fpga-soc-bound-negative fpga-soc-ulx3s fpga-soc-ulx3s-drift fpga-soc-ulx3s-drift-negative fpga-soc-arty fpga-soc-negative fpga-soc-ulx3s-negative fpga-soc-arty-negative \
