@@ -37,15 +37,15 @@ import concurrent.futures
 import json
 import os
 import shutil
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from controller_area import BASE, FEATURES, GOALS, TOP, chparam  # noqa: E402
-from fpga_report import CTRL_FILES, ROBOT_ROM, synth_files, tail  # noqa: E402
+from fpga_report import CTRL_FILES, ROBOT_ROM, run, synth_files, tail  # noqa: E402
 from synth_report import FAMILIES, write_json  # noqa: E402
 
 CORE = dict(BASE, **{p: 0 for p, _ in FEATURES})
+ELAB_TIMEOUT = 300   # seconds for one rung's elaboration (it takes about 2)
 
 # (name, what is taken out, [(rtl file, the line's text, its replacement)]).
 LADDER = [
@@ -105,9 +105,10 @@ def files_of(d):
 def elaborate(d, stem):
     script = (f"read_verilog -DSYNTHESIS -I{d} {' '.join(files_of(d))}; {chparam(CORE)}; "
               f"hierarchy -check -top {TOP}")
-    with open(stem + "_elab.log", "w") as log:
-        ok = subprocess.run(["yosys", "-q", "-p", script], stdout=log, stderr=subprocess.STDOUT).returncode == 0
-    return None if ok else tail(stem + "_elab.log")
+    ok, secs = run(["yosys", "-q", "-p", script], stem + "_elab.log", timeout=ELAB_TIMEOUT)
+    if ok:
+        return None
+    return f"yosys stopped after {ELAB_TIMEOUT} s" if secs >= ELAB_TIMEOUT else tail(stem + "_elab.log")
 
 
 def main():

@@ -301,17 +301,16 @@ class Contract:
         return c
 
     def check_word(self, words) -> int:
-        """The CRC word that makes the CRC of the image 0: with it 0 the CRC is
-        c0, and the word at index i adds w * x^(32 (n - 1 - i)) mod P, so it is
-        c0 * x^-(32 (n - 1 - i)) mod P (x is invertible: crc_poly is odd)."""
+        """The CRC word that makes the CRC of the image 0.  The word at index i
+        adds w * x^(32 (n - 1 - i)) mod P to the CRC, so the image's CRC c is
+        cancelled by adding c * x^-(32 (n - 1 - i)) mod P to the word it holds
+        (x is invertible: crc_poly is odd)."""
         wb = self.word_bits
-        ws = list(words)
-        ws[self.crc_index] = 0
-        c = self.crc(ws)
-        for _ in range(wb * (len(ws) - 1 - self.crc_index)):
+        c = self.crc(words)
+        for _ in range(wb * (len(words) - 1 - self.crc_index)):
             # c * x^-1 mod P: c / x, or (c + P) / x when c is odd
             c = ((c ^ self.crc_poly) >> 1) | (1 << (wb - 1)) if c & 1 else c >> 1
-        return c
+        return words[self.crc_index] ^ c
 
     def entry_address(self, k: int) -> int:
         return self.header_words + self.entry_words * k
