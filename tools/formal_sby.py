@@ -93,8 +93,7 @@ def main():
     ap.add_argument("--timeout", type=int, default=600)
     a = ap.parse_args()
     core = os.path.splitext(os.path.basename(a.sby))[0]
-    prefix = os.path.abspath(os.path.join(OUT, core))
-    workdir = f"{prefix}_{a.task}"
+    workdir = os.path.abspath(os.path.join(OUT, f"{core}_{a.task}"))
     opts = task_options(a.sby, a.task)
     warm_up()
     env = dict(os.environ, **ENV)
@@ -107,7 +106,12 @@ def main():
     scale = min(10.0, max(1.0, os.getloadavg()[0] / (os.cpu_count() or 1)))
     with open(a.sby) as f:
         script = re.sub(r"(?m)^((?:~?\w+:\s*)?timeout\s+)(\d+)", lambda m: f"{m.group(1)}{round(int(m.group(2)) * scale)}", f.read())
-    cmd = ["yowasp-sby", "-f", "--prefix", prefix, "-T", a.task]
+    # -d: the task's own work folder, with its own status database.  With
+    # --prefix, SBY keeps one status database for every task of the .sby in
+    # <prefix>/status.sqlite and -f deletes it at each task's start, so tasks
+    # of one .sby run in parallel (make -j) deleted each other's database
+    # ("sqlite3.OperationalError: disk I/O error").
+    cmd = ["yowasp-sby", "-f", "-d", workdir, "-T", a.task]
     try:
         p = subprocess.run(cmd, cwd=os.path.dirname(a.sby) or ".", env=env, stdout=subprocess.PIPE, input=script,
                            stderr=subprocess.STDOUT, text=True, timeout=a.timeout * scale)
