@@ -78,9 +78,9 @@ module albatross_controller #(
 
     localparam AW      = ADDR_WIDTH;
     localparam CH_BITS = (N_CHAN > 1) ? $clog2(N_CHAN) : 1;
-    localparam ST_W    = 12 + 8 + 4 + 3 + 32;           // {tried, act, need, rl, taken}
+    localparam ST_W    = 12 + 4 + 3 + 32;               // {tried, need, rl, taken}
     // The state RAM has at least 32 words from N_CHAN = 4 up (Yosys maps a RAM
-    // of only a few words to flip-flops; 32 x 59 bits is block RAM), a power
+    // of only a few words to flip-flops; 32 x 51 bits is block RAM), a power
     // of two above 32; fewer channels (the formal harness) keep N_CHAN words.
     localparam ST_DEPTH = (N_CHAN > 32) ? (1 << CH_BITS) : (N_CHAN >= 4) ? 32 : N_CHAN;
     localparam ST_AW    = (ST_DEPTH > 1) ? $clog2(ST_DEPTH) : 1;
@@ -155,13 +155,12 @@ module albatross_controller #(
         if (st_wr) begin
             if (wr_tkn) st_mem[st_wa][31:0]  <= st_d[31:0];
             if (wr_imp) st_mem[st_wa][34:32] <= st_d[34:32];
-            if (wr_exp) st_mem[st_wa][58:35] <= st_d[58:35];
+            if (wr_exp) st_mem[st_wa][50:35] <= st_d[50:35];
         end else begin
             st_q <= st_mem[st_ix];
         end
     end
-    wire [11:0] st_tried = st_q[58:47];
-    wire [7:0]  st_act   = st_q[46:39];
+    wire [11:0] st_tried = st_q[50:39];
     wire [3:0]  st_need  = st_q[38:35];
     wire [2:0]  st_rl    = st_q[34:32];
     wire [31:0] st_taken = st_q[31:0];
@@ -170,7 +169,6 @@ module albatross_controller #(
     wire        tr_done, tr_imp, tr_exp, tr_new;
     wire [2:0]  tr_rl, tr_xfers, tr_corrupt;
     wire [3:0]  tr_need;
-    wire [7:0]  tr_act;
     wire [11:0] tr_tried, tr_index;
     wire [31:0] status_word;
     wire        status_valid;
@@ -186,10 +184,10 @@ module albatross_controller #(
         .go_i(go), .copy_i(k_copy), .time_kind_i(k_time), .four_i(four), .active_i(active), .words_i(words),
         .src_board_i(src_board), .src_base_i(src_base), .dst_board_i(dst_board), .dst_base_i(dst_base),
         .slot_time_i(slot_time), .may_access_i(may_access), .drop_run_i(drop_run),
-        .st_rl_i(st_rl), .st_need_i(st_need), .st_act_i(st_act), .st_tried_i(st_tried), .st_taken_i(st_taken),
+        .st_rl_i(st_rl), .st_need_i(st_need), .st_tried_i(st_tried), .st_taken_i(st_taken),
         .status_i(status_word), .status_valid_i(status_valid), .index_o(tr_index),
         .done_o(tr_done), .imp_run_o(tr_imp), .exp_run_o(tr_exp), .new_o(tr_new), .rl_o(tr_rl),
-        .need_o(tr_need), .act_o(tr_act), .tried_o(tr_tried),
+        .need_o(tr_need), .tried_o(tr_tried),
         .transfers_o(tr_xfers), .corrupt_o(tr_corrupt),
         .cyc_o(r_cyc[0]), .we_o(r_we[0]), .adr_o(r_adr[0 +: AW]), .board_o(r_board[3:0]), .sel_o(r_sel[3:0]),
         .dat_o(r_wdat[31:0]), .dat_i(bus_rdat), .ack_i(r_ack[0]), .err_i(r_err[0]));
@@ -220,8 +218,7 @@ module albatross_controller #(
         st_d[31:0]  = time_o;                            // taken_at, written when New is chosen
         st_d[34:32] = tr_rl;
         st_d[38:35] = tr_need;
-        st_d[46:39] = tr_act;
-        st_d[58:47] = tr_tried;
+        st_d[50:39] = tr_tried;
     end
     assign wr_exp = !ready_q || (slot_end && tr_exp);
     assign wr_imp = !ready_q || (slot_end && tr_imp);

@@ -23,21 +23,22 @@
 //     (st_need_i); none: the slot ends.  A cut-off after a
 //     ReadLocked store and before its confirming load forgets the copy.
 //   * Export, to the destinations d in need in index order: per d, load its
-//     Actual if the copy is unknown (three-buffer read-back: an Actual equal
-//     to the buffer of a failed Actual store shows it landed: published, d
-//     leaves), then load ReadLocked (four-slot: the whole control word, with
-//     the landed check) and pick the buffer (albatross_transfer_pick; a
-//     read-back Actual of 0 leaves the copy unknown; no count);
-//     then per word k: one source load (COPY; TIME: the slot time; STATUS:
-//     status_i at index_o) and one store per d; then per d taken_at (word
-//     W, stride W + 1), four-slot the Slot byte, then Actual (published).  TIME and STATUS run the Export alone from go_i.
+//     whole control word (both kinds: Actual with ReadLocked, so no copy of
+//     Actual is kept); an Actual equal to the buffer of a failed Actual
+//     store shows it landed: published, d leaves; else pick the buffer
+//     (albatross_transfer_pick: neither Actual nor ReadLocked; four-slot
+//     from ReadLocked and the Slot bytes); then per word k: one source load
+//     (COPY; TIME: the slot time; STATUS: status_i at index_o) and one store
+//     per d; then per d taken_at (word W, stride W + 1), four-slot the Slot
+//     byte, then Actual (published).  TIME and STATUS run the Export alone
+//     from go_i.
 //   * Failures (err_i, which includes the bus master's timeout): cyc drops
 //     for one clock; then the same access again if may_access_i, else the
 //     cut-off (the slot ends).  A destination access failing K = drop_run_i
 //     (below 2: 2) times in a row drops that destination for the slot (the
 //     next access follows in the clock after the K-th failure).  Source
-//     accesses are retried until the deadline.  A failed Actual store makes
-//     the copy unknown and remembers the buffer it tried.
+//     accesses are retried until the deadline.  A failed Actual store
+//     remembers the buffer it tried (st_tried_i / tried_o).
 //   * Timing: every access begins in the clock after an edge where
 //     may_access_i is 1, in the clock after the previous ack (no idle bus
 //     clock inside a transfer); go_i's first access is on the bus in the
@@ -71,7 +72,6 @@ module albatross_transfer #(
     // the channel's state (state RAM, valid at go_i and through the slot)
     input  wire [2:0]              st_rl_i,        // ReadLocked copy / four-slot L (0 unknown)
     input  wire [3:0]              st_need_i,      // destinations that still need the current value
-    input  wire [7:0]              st_act_i,       // Actual copies (0 unknown), d at [2d +: 2]
     input  wire [11:0]             st_tried_i,     // buffers of failed Actual stores (0 none), d at [3d +: 3]
     input  wire [31:0]             st_taken_i,     // taken_at of the current value
     // STATUS words
@@ -85,7 +85,6 @@ module albatross_transfer #(
     output wire                    new_o,          // one clock: a New value is chosen now: store the global time as its taken_at
     output wire [2:0]              rl_o,           // the copy after the slot
     output wire [3:0]              need_o,         // destinations still in need after the Export
-    output wire [7:0]              act_o,          // Actual copies after the Export
     output wire [11:0]             tried_o,
     output wire [2:0]              transfers_o,    // destinations published
     output wire [2:0]              corrupt_o,      // control bytes that named no buffer
@@ -117,8 +116,7 @@ module albatross_transfer #(
                      S_SRC_SLOT = 4'd3,   // four-slot: load the control word again, pick L
                      S_SRC_WORD = 4'd4,   // load source word k
                      S_WAIT     = 4'd5,   // a word is wanted and not there (bus idle)
-                     S_DST_ACT  = 4'd8,   // read back d's Actual
-                     S_DST_RL   = 4'd9,   // load d's ReadLocked (four-slot: control word), pick
+                     S_DST_RL   = 4'd9,   // load d's control word (Actual, ReadLocked, Slots), pick
                      S_DST_WORD = 4'd10,  // store word k - 1 to d
                      S_DST_TKN  = 4'd11,  // store taken_at to d
                      S_DST_SLOT = 4'd12,  // four-slot: store d's Slot byte
@@ -136,9 +134,7 @@ module albatross_transfer #(
     reg [2:0]  rl_q;
     reg        new_q, icor_q, imp_q, exp_q;
     reg [3:0]  serve_q, need_q, pub_q, cor_q;
-    wire [3:0] known_q;               // albatross_transfer_dest's view
     wire [2:0] buf_d, tried_d;
-    wire [1:0] copy_d;
     wire       dst      = state_q[3];
     wire       ack      = ack_i && stb_q;
     wire       drop_now = retry_q && drop_q;
@@ -148,18 +144,16 @@ module albatross_transfer #(
     wire [2:0] a_byte, pick_l, pick;
     wire       a_valid, a_zero, r_valid, r_zero, a_match;
     albatross_transfer_pick u_pick (
-        .dat_i(dat_i), .four_i(four_i), .ald_i(ald_q), .rl_i(rl_q), .copy_i(copy_d),
+        .dat_i(dat_i), .four_i(four_i), .ald_i(ald_q), .rl_i(rl_q),
         .a_byte_o(a_byte), .a_valid_o(a_valid), .a_zero_o(a_zero), .r_valid_o(r_valid), .r_zero_o(r_zero),
         .a_match_o(a_match), .pick_l_o(pick_l), .pick_o(pick));
-    wire       read_act = ack && (state_q == S_DST_ACT || (four_i && state_q == S_DST_RL));
-    wire       landed   = read_act && a_valid && a_byte[2:0] == tried_d && tried_d != 3'd0;
+    wire       landed   = ack && state_q == S_DST_RL && a_valid && a_byte[2:0] == tried_d && tried_d != 3'd0;
     wire       leave    = dst && (drop_now || landed);
     wire [3:0] need_m   = need_q & ~(leave ? d_bit : 4'd0);
 
     // Order: next_d the lowest destination above d_q in need_q; first_d the
     // lowest in need_m; first_in the lowest in a starting need.
     wire [3:0] start_need = go_i ? active_i : need_now;
-    wire [3:0] st_known   = {st_act_i[7:6] != 2'd0, st_act_i[5:4] != 2'd0, st_act_i[3:2] != 2'd0, st_act_i[1:0] != 2'd0};
     wire [3:0] above    = need_q & ~((d_bit << 1) - 4'd1);
     wire       has_next = above != 4'd0;
     wire [1:0] next_d   = above[0] ? 2'd0 : above[1] ? 2'd1 : above[2] ? 2'd2 : 2'd3;
@@ -168,8 +162,8 @@ module albatross_transfer #(
 
     // ------------------------------------------------------------ steps
     wire       adv      = ack || drop_now;
-    wire       ctrl_ld  = state_q == S_DST_ACT || state_q == S_DST_RL;
-    wire       ctrl_end = adv && (state_q == S_DST_RL || (state_q == S_DST_ACT && leave));
+    wire       ctrl_ld  = state_q == S_DST_RL;
+    wire       ctrl_end = adv && ctrl_ld;
     wire       last_wd  = k_q == words_i;
     wire       want     = state_q != S_WAIT && !has_next && need_m != 4'd0 &&
                           (ctrl_end || (adv && state_q == S_DST_WORD && !last_wd));
@@ -184,7 +178,7 @@ module albatross_transfer #(
     // req: the main block below begins an access in this clock, branch by
     // branch (every begin_access call and the retry: keep it in step).
     wire       nrm      = !go_i && !(err_i && stb_q) && !(retry_q && !drop_q);
-    wire       dst_go   = (state_q == S_DST_ACT && !leave) || has_next ||
+    wire       dst_go   = has_next ||
                           (want ? (!copy_i && word_ok)
                                 : ((state_q == S_DST_WORD && last_wd) || state_q == S_DST_TKN || state_q == S_DST_SLOT));
     wire       req      = !rst_i && ((go_i && !copy_i) || (!go_i && !(err_i && stb_q) && retry_q && !drop_q) ||
@@ -217,7 +211,7 @@ module albatross_transfer #(
             serve_q  <= start_need;
             need_q   <= start_need;
             run_q    <= 8'd0;
-            begin_access((st_known[first_in] || four_i) ? S_DST_RL : S_DST_ACT, first_in);
+            begin_access(S_DST_RL, first_in);
         end
     endtask
 
@@ -259,7 +253,7 @@ module albatross_transfer #(
             end else start_export;
         end else if (err_i && stb_q) begin
             // A failed access: cyc low for a clock; count the run of a
-            // destination access; a failed Actual store: copy unknown, buffer tried.
+            // destination access; a failed Actual store: buffer tried.
             stb_q   <= 1'b0;
             retry_q <= 1'b1;
             drop_q  <= dst && run_inc == k_run;
@@ -291,8 +285,7 @@ module albatross_transfer #(
                 S_SRC_WORD: if (ack) begin_access(S_DST_WORD, first_d);     // take word k_q
                 S_WAIT: if (word_ok) begin_access(S_DST_WORD, first_d);
                         else if (!may_access_i || copy_i) finish;       // the cut-off (COPY: only entered without may_access_i)
-                S_DST_ACT: if (ack && !a_valid && !a_zero) cor_q <= cor_q | d_bit;
-                S_DST_RL: if (ack && ((!r_valid && !r_zero) || (four_i && !a_valid && !a_zero))) cor_q <= cor_q | d_bit;
+                S_DST_RL: if (ack && ((!r_valid && !r_zero) || (!a_valid && !a_zero))) cor_q <= cor_q | d_bit;
                 default: ;
             endcase
             if (landed || (ack && state_q == S_DST_FIN)) pub_q <= pub_q | d_bit;
@@ -305,9 +298,7 @@ module albatross_transfer #(
             // The next destination access (adv is 0 outside them).
             if (adv && dst) begin
                 if (need_m == 4'd0) finish;
-                else if (state_q == S_DST_ACT && !leave) begin_access(S_DST_RL, d_q);
-                else if (has_next) begin_access(ctrl_ld ? ((known_q[next_d] || four_i) ? S_DST_RL : S_DST_ACT) : state_q,
-                                                next_d);
+                else if (has_next) begin_access(state_q, next_d);
                 else if (want) begin
                     if (copy_i) begin
                         if (may_access_i) begin
@@ -350,16 +341,14 @@ module albatross_transfer #(
     // the current destination d_q, in the branch of the main block they belong to.
     wire       e_start  = (go_i && !copy_i) || (nrm && choose && need_now != 4'd0);
     wire       e_errfin = !go_i && err_i && stb_q && state_q == S_DST_FIN;
-    wire       e_act    = nrm && ack && state_q == S_DST_ACT;
     wire       e_rl     = nrm && adv && state_q == S_DST_RL;
     wire       e_fin    = nrm && ack && state_q == S_DST_FIN;
     wire       no_tried = go_i || new_q;               // a fresh value: no failed store of it
     albatross_transfer_dest u_dest (
-        .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start), .st_act_i(st_act_i),
+        .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start),
         .st_tried_i(st_tried_i), .fresh_i(no_tried), .d_i(d_q), .err_fin_i(e_errfin),
-        .clr_tried_i(e_act || (e_rl && ack && four_i) || e_fin), .set_act_i((e_act && a_valid) || e_fin),
-        .act_i(e_fin ? buf_d[1:0] : a_byte[1:0]), .set_buf_i(e_rl), .pick_i(pick),
-        .known_o(known_q), .buf_d_o(buf_d), .tried_d_o(tried_d), .copy_d_o(copy_d), .act_o(act_o), .tried_o(tried_o));
+        .clr_tried_i((e_rl && ack) || e_fin), .set_buf_i(e_rl), .pick_i(pick),
+        .buf_d_o(buf_d), .tried_d_o(tried_d), .tried_o(tried_o));
 
     // ------------------------------------------------------------ the word stored
     // word_q: the word the stores write, taken when the first store begins:
@@ -374,7 +363,7 @@ module albatross_transfer #(
     // ------------------------------------------------------------ the access
     albatross_transfer_access #(.ADDR_WIDTH(AW)) u_access (
         .dst_i(dst), .src_act_i(state_q == S_SRC_ACT), .src_rl_i(state_q == S_SRC_RL),
-        .src_word_i(state_q == S_SRC_WORD), .dst_act_i(state_q == S_DST_ACT), .dst_rl_i(state_q == S_DST_RL),
+        .src_word_i(state_q == S_SRC_WORD),
         .dst_word_i(state_q == S_DST_WORD), .dst_tkn_i(state_q == S_DST_TKN), .dst_slot_i(state_q == S_DST_SLOT),
         .dst_fin_i(state_q == S_DST_FIN), .copy_i(copy_i), .time_kind_i(time_kind_i), .four_i(four_i),
         .words_i(words_i), .k_i(k_q), .d_i(d_q), .rl_i(rl_q[1:0]), .buf_i(buf_d), .ald_i(ald_q),

@@ -15,8 +15,10 @@
 //     taken_at store writes taken_i (COPY) or slot_time_i (TIME, STATUS); the
 //     four-slot Slot store writes bit s of buffer {p, s} into Slot p's lane;
 //     the Actual store writes buf_i into the Actual lane.
-//   * The four-slot source Actual load and destination ReadLocked load take
-//     the whole control word (sel 4'hF); word accesses take 4'hF.
+//   * The four-slot source Actual load and every destination control load
+//     take the whole control word (sel 4'hF; the destination load reads
+//     Actual and ReadLocked together); word accesses take 4'hF.  The
+//     destination control load is the access with no strobe of its own.
 `default_nettype none
 
 module albatross_transfer_access #(
@@ -27,8 +29,6 @@ module albatross_transfer_access #(
     input  wire                    src_act_i,      // load the source's Actual (four-slot: control word)
     input  wire                    src_rl_i,       // store the source's ReadLocked
     input  wire                    src_word_i,     // load source word k
-    input  wire                    dst_act_i,      // read back d's Actual
-    input  wire                    dst_rl_i,       // load d's ReadLocked (four-slot: control word)
     input  wire                    dst_word_i,     // store word k - 1 to d
     input  wire                    dst_tkn_i,      // store taken_at to d
     input  wire                    dst_slot_i,     // four-slot: store d's Slot byte
@@ -98,8 +98,7 @@ module albatross_transfer_access #(
     assign board_o = src ? src_board_i : dst_board_i[4*d_i +: 4];
     assign sel_o   = src_act_i ? (four_i ? 4'hF : SEL_ACT) :
                      src_rl_i ? SEL_RL :
-                     (dst_act_i || dst_fin_i) ? SEL_ACT :
-                     dst_rl_i ? (four_i ? 4'hF : SEL_RL) :
+                     dst_fin_i ? SEL_ACT :
                      dst_slot_i ? (dbm1[1] ? SEL_S1 : SEL_S0) : 4'hF;
     assign dat_o   = ({32{src_rl_i}} & ({29'd0, ald_i} << RL_BIT)) |
                      ({32{dst_word_i && !t_val}} & word_i) | ({32{t_val}} & slot_time_i) | ({32{dst_tkn_i && copy_i}} & taken_i) |

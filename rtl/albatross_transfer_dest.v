@@ -1,47 +1,36 @@
 // albatross_transfer_dest -- the per-destination registers of the transfer
 // datapath (albatross_transfer): for each of the 4 destinations of an entry
-// its Actual copy (0: unknown; the known bit is the copy being nonzero),
-// the buffer the Export picked for it and
-// the buffer of its failed Actual store; and the view of the current
-// destination d_i (a multiplexer per field).
+// the buffer the Export picked for it and the buffer of its failed Actual
+// store; and the view of the current destination d_i (a multiplexer per
+// field).
 // Rules:
-//   * start_i loads every destination from the state RAM (st_*_i; the
-//     buffers tried cleared if fresh_i: a new value has no failed store).
+//   * start_i loads every destination's buffer tried from the state RAM
+//     (st_tried_i; cleared if fresh_i: a new value has no failed store).
 //   * Otherwise only destination d_i changes, on the enables of its events
 //     (the transfer's state machine makes them): err_fin_i (its Actual store
-//     failed: copy unknown, the buffer tried is its picked buffer);
-//     clr_tried_i (clears the buffer tried); set_act_i (the copy becomes
-//     act_i, known); set_buf_i (the picked buffer becomes pick_i).  When
+//     failed: the buffer tried is its picked buffer); clr_tried_i (clears
+//     the buffer tried); set_buf_i (the picked buffer becomes pick_i).  When
 //     several are high in one clock the later in this list wins.
 //   * Timing: registered, in the clock after the enables; reset clears the
-//     copies and the buffers tried (the picks are data).  A four-slot
-//     destination's copy is not used (the datapath ignores it): the Actual
-//     store of buffer 4 leaves it 0.
+//     buffers tried (the picks are data).
 `default_nettype none
 
 module albatross_transfer_dest (
     input  wire        clk_i,
     input  wire        rst_i,          // synchronous, active high
     input  wire        start_i,        // load all destinations from the state RAM
-    input  wire [7:0]  st_act_i,       // Actual copies, d at [2d +: 2]
     input  wire [11:0] st_tried_i,     // buffers of failed Actual stores, d at [3d +: 3]
     input  wire        fresh_i,        // with start_i: no buffer tried
     input  wire [1:0]  d_i,            // the current destination
     input  wire        err_fin_i,      // d's Actual store failed
     input  wire        clr_tried_i,    // d: no buffer tried
-    input  wire        set_act_i,      // d's copy := act_i (known)
-    input  wire [1:0]  act_i,
     input  wire        set_buf_i,      // d's picked buffer := pick_i
     input  wire [2:0]  pick_i,
-    output wire [3:0]  known_o,        // the copies known
     output wire [2:0]  buf_d_o,        // d's picked buffer
     output wire [2:0]  tried_d_o,      // d's buffer tried (0 none)
-    output wire [1:0]  copy_d_o,       // d's Actual copy (0 unknown)
-    output wire [7:0]  act_o,          // the copies (0 unknown), d at [2d +: 2]
     output wire [11:0] tried_o         // the buffers tried, d at [3d +: 3]
 );
 
-    reg  [7:0]  act_q;                 // 0: unknown
     reg  [11:0] buf_q, tried_q;
     wire [3:0]  d_bit = 4'b0001 << d_i;
     genvar      g;
@@ -50,29 +39,20 @@ module albatross_transfer_dest (
         for (g = 0; g < 4; g = g + 1) begin : g_dest
             always @(posedge clk_i) begin
                 if (rst_i) begin
-                    act_q[2*g +: 2]    <= 2'd0;
                     tried_q[3*g +: 3]  <= 3'd0;
                 end else if (start_i) begin
-                    act_q[2*g +: 2]    <= st_act_i[2*g +: 2];
                     tried_q[3*g +: 3]  <= fresh_i ? 3'd0 : st_tried_i[3*g +: 3];
                 end else if (d_bit[g]) begin
-                    if (err_fin_i) begin
-                        act_q[2*g +: 2]   <= 2'd0;
-                        tried_q[3*g +: 3] <= buf_d_o;
-                    end
+                    if (err_fin_i) tried_q[3*g +: 3] <= buf_d_o;
                     if (clr_tried_i) tried_q[3*g +: 3] <= 3'd0;
-                    if (set_act_i) act_q[2*g +: 2] <= act_i;
                     if (set_buf_i) buf_q[3*g +: 3] <= pick_i;
                 end
             end
-            assign known_o[g] = act_q[2*g +: 2] != 2'd0;
         end
     endgenerate
 
     assign buf_d_o   = d_i[1] ? (d_i[0] ? buf_q[9 +: 3] : buf_q[6 +: 3]) : (d_i[0] ? buf_q[3 +: 3] : buf_q[0 +: 3]);
     assign tried_d_o = d_i[1] ? (d_i[0] ? tried_q[9 +: 3] : tried_q[6 +: 3]) : (d_i[0] ? tried_q[3 +: 3] : tried_q[0 +: 3]);
-    assign copy_d_o  = d_i[1] ? (d_i[0] ? act_q[6 +: 2] : act_q[4 +: 2]) : (d_i[0] ? act_q[2 +: 2] : act_q[0 +: 2]);
-    assign act_o     = act_q;
     assign tried_o   = tried_q;
 
 endmodule

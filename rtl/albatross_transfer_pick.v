@@ -11,8 +11,8 @@
 //     load; a_match_o: the load shows the copy rl_i again (four-slot: c = L;
 //     three-buffer: A = the copy); pick_l_o (four-slot, the second load) is
 //     L = 1 + 2 pair(ald_i) + Slot[pair(ald_i)], from the Actual stored.
-//   * Destination (the Export): three-buffer, the last of 1..3 that is
-//     neither the Actual copy copy_i nor ReadLocked (a ReadLocked that names
+//   * Destination (the Export, on its control-word load): three-buffer, the
+//     last of 1..3 that is neither Actual nor ReadLocked (a byte that names
 //     no buffer counts as none); four-slot, p = 1 - pair(ReadLocked) (not
 //     started: p = 1; not valid: 1 - pair(Actual), or p = 1), s = 1 - Slot_p,
 //     buffer 1 + 2p + s.
@@ -23,7 +23,6 @@ module albatross_transfer_pick (
     input  wire        four_i,         // the four-slot kind
     input  wire [2:0]  ald_i,          // the source Actual loaded first (four-slot pick of L)
     input  wire [2:0]  rl_i,           // the ReadLocked copy / four-slot L (0 unknown)
-    input  wire [1:0]  copy_i,         // the destination's Actual copy (0 unknown)
     output wire [2:0]  a_byte_o,       // the Actual byte's buffer bits
     output wire        a_valid_o,      // Actual names a buffer
     output wire        a_zero_o,       // Actual is 0 (not started)
@@ -70,7 +69,8 @@ module albatross_transfer_pick (
     wire       a_match  = four_i ? cur_b == rl_i : a_byte[2:0] == rl_i;
     // Destination pick.
     wire [1:0] r_lock   = r_valid ? r_byte[1:0] : 2'd0;
-    wire [1:0] pick3    = (copy_i != 2'd3 && r_lock != 2'd3) ? 2'd3 : (copy_i != 2'd2 && r_lock != 2'd2) ? 2'd2 : 2'd1;
+    wire [1:0] a_pub    = a_valid ? a_byte[1:0] : 2'd0;
+    wire [1:0] pick3    = (a_pub != 2'd3 && r_lock != 2'd3) ? 2'd3 : (a_pub != 2'd2 && r_lock != 2'd2) ? 2'd2 : 2'd1;
     wire       pk_p     = r_valid ? !r_pair : r_zero ? 1'b1 : a_valid ? !a_pair : 1'b1;
     wire       pk_s     = !(pk_p ? dat_i[S1_BIT] : dat_i[S0_BIT]);
     wire [2:0] pick     = four_i ? {1'b0, pk_p, pk_s} + 3'd1 : {1'b0, pick3};

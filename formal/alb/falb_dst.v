@@ -40,11 +40,12 @@
 //                       completes b was acked in the same Export;
 //   dst_no_actual_write three-buffer: no store to the buffer Actual names
 //                       (the newest complete value);
-//   dst_readback_needed three-buffer: Actual is loaded (read back) only while
-//                       the producer cannot know it: before its first acked
-//                       Actual store or read-back, or after an Actual store
-//                       that was not acked;
-//   dst_one_load        four-slot: one acked control-word load per Export;
+//   dst_readback_needed three-buffer, WHOLE_LOAD = 0: Actual is loaded (read
+//                       back) only while the producer cannot know it: before
+//                       its first acked Actual store or read-back, or after
+//                       an Actual store that was not acked;
+//   dst_one_load        four-slot, or WHOLE_LOAD = 1: one acked control-word
+//                       load per Export;
 //   dst_new_once        the watched source value (carry_i: the slot's Import
 //                       read it, falb_src) is published here at most once: a
 //                       landed Actual store that changes Actual is a
@@ -62,6 +63,7 @@ module falb_dst #(
     parameter WW    = 2,    // bits of W (W = 1 .. 2**WW - 1, stride W + 1 <= 4)
     parameter BB    = 4,    // board bits of the bus address
     parameter PROTO = 1,    // 1: check the protocol rules; 0: the access shapes only (load data free)
+    parameter WHOLE_LOAD = 0, // 1: both kinds load the whole control word once per Export (the controller); 0: three-buffer reads Actual back only when unknown (albatross_export)
     parameter BOARD = 1     // this channel's board
 ) (
     input  wire              clk_i,
@@ -226,8 +228,8 @@ module falb_dst #(
             dst_no_held_write:    assert(PROTO == 0 || !(st && inb) || b != held_o);
             dst_slot_first:       assert(!(st_act && four_i) || cmp_q[byte0[2:0]]);
             dst_no_actual_write:  assert(PROTO == 0 || !(st && inb && !four_i) || b != act_q);
-            dst_readback_needed:  assert(PROTO == 0 || !(ld_ctrl && !four_i && sel_i[0]) || unk_q);
-            dst_one_load:         assert(!(ld_ctrl && four_i) || !ld_q);
+            dst_readback_needed:  assert(PROTO == 0 || WHOLE_LOAD != 0 || !(ld_ctrl && !four_i && sel_i[0]) || unk_q);
+            dst_one_load:         assert(!(ld_ctrl && (four_i || WHOLE_LOAD != 0)) || !ld_q);
             dst_new_once:         assert(PROTO == 0 || !(publish && carry_i) || news_q == 2'd0);
         end
     end

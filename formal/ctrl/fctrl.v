@@ -26,8 +26,8 @@
 // producer's and consumers' state.
 // Covers: cov_new, cov_old (a New / an Old Import read the source), cov_pub0,
 // cov_pub1 (each destination published), cov_drop, cov_retry, cov_readback
-// (a destination's Actual store whose answer was lost, read back in a later
-// slot as landed).
+// (a destination's Actual store whose answer was lost, seen landed by the
+// control-word load of a later slot).
 `default_nettype none
 
 module fctrl #(
@@ -90,12 +90,12 @@ module fctrl #(
         .ack_i(ack_i), .land_i(land_i), .op_i(p_op_i), .wb_i(p_wb_i),
         .slot_start_i(s_go), .watch_i(p_watch_i), .carry_o(s_carry),
         .ctrl_o(s_ctrl), .hit_o(s_hit), .rl_store_o(s_rl), .word_load_o(s_wl));
-    falb_dst #(.AW(AW), .WW(WW), .BB(BB), .PROTO(PROTO), .BOARD(2)) dst0 (
+    falb_dst #(.AW(AW), .WW(WW), .BB(BB), .PROTO(PROTO), .WHOLE_LOAD(1), .BOARD(2)) dst0 (
         .clk_i(clk_i), .rst_i(rst_i), .slot_start_i(s_go), .base_i(e_dst_base0), .words_i(w), .four_i(e_four),
         .cyc_i(m_cyc), .stb_i(m_stb), .we_i(m_we), .adr_i(m_adr), .sel_i(m_sel), .wdat_i(m_wdat),
         .ack_i(ack_i), .land_i(land_i), .op_i(c0_op_i), .carry_i(carry_q),
         .ctrl_o(d0_word), .hit_o(d0_hit), .ctrl_hit_o(d0_ctrl), .pub_o(d0_pub), .held_o(d0_held), .act_o(d0_act));
-    falb_dst #(.AW(AW), .WW(WW), .BB(BB), .PROTO(PROTO), .BOARD(3)) dst1 (
+    falb_dst #(.AW(AW), .WW(WW), .BB(BB), .PROTO(PROTO), .WHOLE_LOAD(1), .BOARD(3)) dst1 (
         .clk_i(clk_i), .rst_i(rst_i), .slot_start_i(s_go), .base_i(e_dst_base1), .words_i(w), .four_i(e_four),
         .cyc_i(m_cyc), .stb_i(m_stb), .we_i(m_we), .adr_i(m_adr), .sel_i(m_sel), .wdat_i(m_wdat),
         .ack_i(ack_i), .land_i(land_i), .op_i(c1_op_i), .carry_i(carry_q),

@@ -21,7 +21,7 @@ FCTRL_NEG := \
     publish_early:dst_publish_complete \
     writes_locked:dst_no_held_write \
     ignore_actual:dst_no_actual_write \
-    extra_access:dst_readback_needed \
+    extra_access:dst_one_load \
     drop_total:retry_same|drop_k \
     ignore_rl4:dst_no_held_write \
     same_slot4:dst_no_held_write \

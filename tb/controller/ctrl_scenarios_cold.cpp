@@ -2,7 +2,7 @@
 // zeroed board RAMs, before and after the CPUs run their init (docs/protocol.md
 // and docs/controller.md, "Cold start").  A source Actual of 0 is nothing new,
 // a destination ReadLocked of 0 is Buffer1 (four-slot: the Export writes pair
-// 1), a destination Actual of 0 read back is nothing published; none of them
+// 1), a destination Actual of 0 loaded is nothing published; none of them
 // counts corrupt, and every value arrives once the CPUs have started.
 #include "ctrl_bench.h"
 

@@ -18,8 +18,8 @@ void scenario_basic() {
     check(G_TIMING, !c0.empty() && c0[0].start == T0 + S_COPY + F,
           "cycle 0 COPY: first access on the bus at cycle start + E1 + FETCH_CYCLES: expected %" PRIu64
           ", got %" PRIu64, T0 + S_COPY + F, c0.empty() ? 0 : c0[0].start);
-    // first transfer after reset: the destination Actual copy is unknown, read back
-    check_slot_timing("cycle 0 COPY (new, Actual copy unknown)", c0, T0 + S_COPY, 3 + W_COPY + 1 * (W_COPY + 3) + 1);
+    // first transfer after reset: the destination's control-word load reads its Actual too (no read-back)
+    check_slot_timing("cycle 0 COPY (new, first after reset)", c0, T0 + S_COPY, 3 + W_COPY + 1 * (W_COPY + 3));
 
     std::vector<uint32_t> got;
     bool isnew = u.cons.import(s, got);

@@ -66,7 +66,7 @@ void scenario_faults() {
     CHECK_HEX(G_FAULT, "STATUS after the three faults: channel 0 {transfers, retries}", 4u << 16 | 3u, got[1]);
 
     // kind 3 on the final Actual store, then the link is down to the slot end:
-    // the store landed, so the next cycle reads it back and publishes nothing.
+    // the store landed, so the next cycle's control-word load shows it and nothing is published again.
     const uint64_t C4 = T0 + 4 * H1;
     u.prod.publish(s, value(4));
     size_t seen = 0;
@@ -91,9 +91,9 @@ void scenario_faults() {
     const uint64_t C5 = C4 + H1;
     s.run_until(C5 + TAIL);
     std::vector<Attempt> v5 = s.attempts(C5, C5 + L_COPY);
-    CHECK_EQ(G_FAULT, "next cycle: 2 accesses (source Actual load, read-back of the destination Actual)", 2,
+    CHECK_EQ(G_FAULT, "next cycle: 2 accesses (source Actual load, the destination control-word load)", 2,
              v5.size());
-    if (v5.size() >= 2) CHECK_HEX(G_FAULT, "next cycle: access 2 reads back the destination Actual",
+    if (v5.size() >= 2) CHECK_HEX(G_FAULT, "next cycle: access 2 loads the destination control word",
                                   (uint64_t)ba(1, DST_BASE), v5[1].adr);
     CHECK_EQ(G_FAULT, "next cycle: the destination Actual is unchanged", act4, s.rd(1, DST_BASE) & 0xFF);
     isnew = u.cons.import(s, got);

@@ -31,8 +31,8 @@
 //            (Import 3 + W / 1 access, Export W + 4 per destination), the
 //            control bytes after each Export, New / Old, the consumer's fixed
 //            access count, TIME on two four-slot destinations, STATUS counts;
-//            a landed Actual store that timed out is read back (the 3-bit
-//            tried buffer) and not published twice; a fourth buffer past the
+//            a landed Actual store that timed out is seen by the next
+//            control-word load (the 3-bit tried buffer) and not published twice; a fourth buffer past the
 //            RAM and SYNC with FOUR_SLOT are invalid
 //   abandon  a COPY whose Import ends without choosing (source dead) counts
 //            the channel's stored need as abandoned (group 32: the state-RAM

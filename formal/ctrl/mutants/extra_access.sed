@@ -1,5 +1,6 @@
 # target: rtl/albatross_transfer.v
-# extra_access (formal/export/mutants/extra_access.sed on the datapath): the
-# first destination's Actual is read back although its copy is known.  Must
-# fail dst_readback_needed.
-s/begin_access((st_known\[first_in\] || four_i) ? S_DST_RL : S_DST_ACT, first_in);/begin_access(four_i ? S_DST_RL : S_DST_ACT, first_in);/
+# extra_access (formal/export/mutants/extra_access.sed on the datapath): an
+# access the protocol does not need; the datapath has no read-back, so the
+# three-buffer Export loads a destination's control word a second time (the
+# flag borrows that destination's corrupt bit).  Must fail dst_one_load.
+s/                else if (has_next) begin_access(state_q, next_d);/                else if (ctrl_ld \&\& !four_i \&\& !cor_q[d_q]) begin cor_q <= cor_q | d_bit; begin_access(S_DST_RL, d_q); end\n                else if (has_next) begin_access(state_q, next_d);/

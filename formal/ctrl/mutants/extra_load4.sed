@@ -1,6 +1,6 @@
 # target: rtl/albatross_transfer.v
 # extra_load4 (formal/export/mutants/extra_load4.sed on the datapath): the
-# four-slot Export reads Actual back first when its copy is unknown, as the
-# three-buffer kind does.  Must fail dst_one_load.
-s/begin_access((st_known\[first_in\] || four_i) ? S_DST_RL : S_DST_ACT, first_in);/begin_access(st_known[first_in] ? S_DST_RL : S_DST_ACT, first_in);/
-s/((known_q\[next_d\] || four_i) ? S_DST_RL : S_DST_ACT)/(known_q[next_d] ? S_DST_RL : S_DST_ACT)/
+# four-slot Export loads a destination's control word a second time (as a
+# read-back would; the flag borrows that destination's corrupt bit).  Must
+# fail dst_one_load.
+s/                else if (has_next) begin_access(state_q, next_d);/                else if (ctrl_ld \&\& four_i \&\& !cor_q[d_q]) begin cor_q <= cor_q | d_bit; begin_access(S_DST_RL, d_q); end\n                else if (has_next) begin_access(state_q, next_d);/

@@ -1,4 +1,4 @@
 # target: rtl/albatross_transfer.v
 # forget_landed (tb/mutants/controller/forget_landed.sed on the datapath): the
-# read-back never recognises a landed Actual store.  Must fail dst_new_once.
-s/    wire       landed   = read_act \&\&/    wire       landed   = 1'b0 \&\& read_act \&\&/
+# control-word load never recognises a landed Actual store.  Must fail dst_new_once.
+s/    wire       landed   = ack \&\&/    wire       landed   = 1'b0 \&\& ack \&\&/
