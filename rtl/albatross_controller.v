@@ -23,11 +23,12 @@
 //   * Per-channel state (one RAM word per channel id, read while the entry is
 //     fetched; cleared after reset, never reset): the source ReadLocked copy
 //     (0 unknown; four-slot: L, the buffer read last), the destinations that
-//     still need the current value, each destination's Actual copy (0
-//     unknown; four-slot: not used) and the buffer of its failed Actual
-//     store (0 none), all written back when the slot ends; and the current
-//     value's taken_at, written with time_o in the clock a New value is
-//     chosen (the datapath's taken_at stores read it back from the RAM).
+//     still need the current value and the buffer of each destination's
+//     failed Actual store (0 none), all written back when the slot ends (no
+//     copy of a destination's Actual: the Export loads it with ReadLocked);
+//     and the current value's taken_at, written with time_o in the clock a
+//     New value is chosen (the datapath's taken_at stores read it back from
+//     the RAM).
 //   * The datapath's rules (order, retries, drop, cut-off) are in
 //     rtl/albatross_transfer.v.  A destination it published leaves need; at
 //     the slot's end each destination still in need counts as abandoned, and

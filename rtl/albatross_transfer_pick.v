@@ -57,7 +57,7 @@ module albatross_transfer_pick (
     wire       a_valid  = a_byte[7:3] == 5'd0 && a_byte[2:0] != 3'd0 && (four_i ? a_byte[2:0] <= 3'd4 : !a_byte[2]);
     wire       r_valid  = r_byte[7:3] == 5'd0 && r_byte[2:0] != 3'd0 && (four_i ? r_byte[2:0] <= 3'd4 : !r_byte[2]);
     // Not started (0, a zeroed RAM): no error.  Actual: nothing published
-    // (Import: nothing new; Export: copy unknown); ReadLocked: Buffer1.
+    // (Import: nothing new; Export: no buffer to avoid); ReadLocked: Buffer1.
     wire       a_zero   = a_byte == NOT_STARTED;
     wire       r_zero   = r_byte == NOT_STARTED;
     wire       a_pair   = a_byte[2] | (a_byte[1] & a_byte[0]);      // (x - 1) >> 1 for x = 1..4

@@ -51,7 +51,7 @@ ELAB_TIMEOUT = 300   # seconds for one rung's elaboration (it takes about 2)
 LADDER = [
     ("start-up CRC", "the ROM's CRC: its word step, its register and its test for zero (the pass still runs)",
      [("albatross_rom_check.v", "assign crc_ok_o = crc_q == 32'd0;", "assign crc_ok_o = 1'b1;")]),
-    ("four-slot kind", "the four-slot channels: Simpson's picks, the Slot store, the whole control-word loads",
+    ("four-slot kind", "the four-slot channels: Simpson's picks and the Import's match, the Slot store, the whole-word source loads",
      [("albatross_controller.v", ".four_i(four)", ".four_i(1'b0)")]),
     ("TIME and STATUS kinds", "the entries that publish the slot time and the (zero) STATUS words: every entry a COPY",
      [("albatross_controller.v", ".copy_i(k_copy), .time_kind_i(k_time)", ".copy_i(1'b1), .time_kind_i(1'b0)")]),
