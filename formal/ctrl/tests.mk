@@ -63,7 +63,7 @@ FSBY_TESTS_SPEC += \
     $(foreach n,$(FCTRL_NEG),$(if $(filter $(call neg_field,$(n),1),$(FCTRL_SLOW)),,$(call fctrl_neg_spec,$(n))))
 FSBY_SLOW_SPEC += formal-ctrl-cover3:ctrl:cover3:pass formal-ctrl-cover4:ctrl:cover4:pass
 # The protocol proofs that converge within the slow suite's bound (abc pdr:
-# three and three_fixed in minutes, four_fixed in about a quarter of an hour)
+# three and three_fixed in minutes, four_fixed in 15 to 25 minutes)
 # run with make test-slow too; make formal-ctrl-pdr runs every unbounded task.
 FSBY_SLOW_SPEC += formal-ctrl-pdr-three:ctrl:three:pass formal-ctrl-pdr-three_fixed:ctrl:three_fixed:pass \
                   formal-ctrl-pdr-four_fixed:ctrl:four_fixed:pass
