@@ -116,7 +116,7 @@ module albatross_transfer #(
                      S_SRC_SLOT = 4'd3,   // four-slot: load the control word again, pick L
                      S_SRC_WORD = 4'd4,   // load source word k
                      S_WAIT     = 4'd5,   // a word is wanted and not there (bus idle)
-                     S_DST_RL   = 4'd9,   // load d's control word (Actual, ReadLocked, Slots), pick
+                     S_DST_CTRL = 4'd9,   // load d's control word (Actual, ReadLocked, Slots), pick
                      S_DST_WORD = 4'd10,  // store word k - 1 to d
                      S_DST_TKN  = 4'd11,  // store taken_at to d
                      S_DST_SLOT = 4'd12,  // four-slot: store d's Slot byte
@@ -147,7 +147,8 @@ module albatross_transfer #(
         .dat_i(dat_i), .four_i(four_i), .ald_i(ald_q), .rl_i(rl_q),
         .a_byte_o(a_byte), .a_valid_o(a_valid), .a_zero_o(a_zero), .r_valid_o(r_valid), .r_zero_o(r_zero),
         .a_match_o(a_match), .pick_l_o(pick_l), .pick_o(pick));
-    wire       landed   = ack && state_q == S_DST_RL && a_valid && a_byte[2:0] == tried_d && tried_d != 3'd0;
+    wire       ctrl_ld  = state_q == S_DST_CTRL;
+    wire       landed   = ack && ctrl_ld && a_valid && a_byte[2:0] == tried_d && tried_d != 3'd0;
     wire       leave    = dst && (drop_now || landed);
     wire [3:0] need_m   = need_q & ~(leave ? d_bit : 4'd0);
 
@@ -162,7 +163,6 @@ module albatross_transfer #(
 
     // ------------------------------------------------------------ steps
     wire       adv      = ack || drop_now;
-    wire       ctrl_ld  = state_q == S_DST_RL;
     wire       ctrl_end = adv && ctrl_ld;
     wire       last_wd  = k_q == words_i;
     wire       want     = state_q != S_WAIT && !has_next && need_m != 4'd0 &&
@@ -211,7 +211,7 @@ module albatross_transfer #(
             serve_q  <= start_need;
             need_q   <= start_need;
             run_q    <= 8'd0;
-            begin_access(S_DST_RL, first_in);
+            begin_access(S_DST_CTRL, first_in);
         end
     endtask
 
@@ -285,7 +285,7 @@ module albatross_transfer #(
                 S_SRC_WORD: if (ack) begin_access(S_DST_WORD, first_d);     // take word k_q
                 S_WAIT: if (word_ok) begin_access(S_DST_WORD, first_d);
                         else if (!may_access_i || copy_i) finish;       // the cut-off (COPY: only entered without may_access_i)
-                S_DST_RL: if (ack && ((!r_valid && !r_zero) || (!a_valid && !a_zero))) cor_q <= cor_q | d_bit;
+                S_DST_CTRL: if (ack && ((!r_valid && !r_zero) || (!a_valid && !a_zero))) cor_q <= cor_q | d_bit;
                 default: ;
             endcase
             if (landed || (ack && state_q == S_DST_FIN)) pub_q <= pub_q | d_bit;
@@ -341,13 +341,13 @@ module albatross_transfer #(
     // the current destination d_q, in the branch of the main block they belong to.
     wire       e_start  = (go_i && !copy_i) || (nrm && choose && need_now != 4'd0);
     wire       e_errfin = !go_i && err_i && stb_q && state_q == S_DST_FIN;
-    wire       e_rl     = nrm && adv && state_q == S_DST_RL;
+    wire       e_ctrl   = nrm && adv && ctrl_ld;
     wire       e_fin    = nrm && ack && state_q == S_DST_FIN;
     wire       no_tried = go_i || new_q;               // a fresh value: no failed store of it
     albatross_transfer_dest u_dest (
         .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start),
         .st_tried_i(st_tried_i), .fresh_i(no_tried), .d_i(d_q), .err_fin_i(e_errfin),
-        .clr_tried_i((e_rl && ack) || e_fin), .set_buf_i(e_rl), .pick_i(pick),
+        .clr_tried_i((e_ctrl && ack) || e_fin), .set_buf_i(e_ctrl), .pick_i(pick),
         .buf_d_o(buf_d), .tried_d_o(tried_d), .tried_o(tried_o));
 
     // ------------------------------------------------------------ the word stored
