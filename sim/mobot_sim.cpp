@@ -331,15 +331,22 @@ int main(int argc, char **argv)
                 // confirming load) or its first (four-slot: actuality holds from the Import's start)
                 const uint32_t w = s->base / 4;
                 const uint64_t t_load = s->ch->four_slot && first_seen[c][w] ? first_load[c][w] : last_load[c][w];
-                const uint64_t age = t_load > arg ? t_load - arg : 0;
-                s->age.add(age);
-                if (samples)
-                    std::fprintf(samples, "%s,%d,%llu,%llu,%llu\n", s->ch->name.c_str(), c, (unsigned long long)cycle,
-                                 (unsigned long long)age,
-                                 (unsigned long long)(s->ch->copy() ? producers[s->ch->id].max_gap : 0));
+                // taken_at 0: the RAM image's value (or nothing yet), which the controller has not
+                // published: its age runs from reset through the controller's start-up (the ROM
+                // check), which the compiler's bounds do not include, so it is no age sample (the
+                // system test starts its measurements after the first cycle for the same reason).
+                // A value the controller published has taken_at >= its cycle 0 start > 0.
+                if (arg != 0) {
+                    const uint64_t age = t_load > arg ? t_load - arg : 0;
+                    s->age.add(age);
+                    if (samples)
+                        std::fprintf(samples, "%s,%d,%llu,%llu,%llu\n", s->ch->name.c_str(), c, (unsigned long long)cycle,
+                                     (unsigned long long)age,
+                                     (unsigned long long)(s->ch->copy() ? producers[s->ch->id].max_gap : 0));
+                    const uint64_t k = std::min<uint64_t>(cycle / bucket_len, n_buckets - 1);
+                    s->bucket_max[k] = std::max(s->bucket_max[k], age);
+                }
                 s->import_cycles.add(cyc);
-                const uint64_t k = std::min<uint64_t>(cycle / bucket_len, n_buckets - 1);
-                s->bucket_max[k] = std::max(s->bucket_max[k], age);
                 if (kind == EV_NEW && s->ch->kind == "time") clocks[c].new_time(cycle);  // the board's clock syncs
                 if (kind == EV_NEW) {
                     ++s->news;

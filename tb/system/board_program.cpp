@@ -33,7 +33,7 @@ int usage(const char *why)
                  "                 [--require-landed-same 1] [--producer-interval CH:CLOCKS]\n"
                  "                 [--stretch-import CH:BOARD:CLOCKS] [--dead-board B --dead-at C]\n"
                  "                 [--corrupt-entry K] [--rom FILE] [--report FILE] [--label NAME]\n"
-                 "                 [--ages FILE] [--handoff-watchdog S]\n"
+                 "                 [--ages FILE] [--handoff-watchdog S] [--cpu-start C]\n"
                  "                 [--latency-scale F] [--expect-caught-by CHECKER]... [--expect-failure TEXT]...\n", why);
     return 2;
 }
@@ -153,6 +153,7 @@ int parse_options(int argc, char **argv, Options &o)
         else if (a == "--label") o.label = v;
         else if (a == "--cycles" && num && x >= 1000) o.cycles = static_cast<uint64_t>(x);
         else if (a == "--seed" && num && x >= 0) o.seed = static_cast<uint64_t>(x);
+        else if (a == "--cpu-start" && num && x >= 0) o.cpu_start = static_cast<uint64_t>(x);
         else if (a == "--handoff-watchdog" && num && x >= 1 && x <= 3600)
             o.handoff_watchdog_s = static_cast<unsigned>(x);
         else if (a == "--fault-rate" && num && x >= 0 && x < 1) o.fault_rate = x;

@@ -21,6 +21,7 @@ struct Options {
     std::string plan_dir, rom, report, label = "system";
     std::string ages;                            // --ages FILE: every measured latency/age (CSV)
     uint64_t cycles = 400000, seed = 1, dead_at = 0;
+    uint64_t cpu_start = 0;                      // --cpu-start C: the simulated CPUs start at cycle C
     unsigned handoff_watchdog_s = 10;            // --handoff-watchdog S: CPU seconds a simulated CPU
                                                  // may run without handing control back
     double fault_rate = 0, burst = 0, latency_scale = 1;   // burst 0: independent accesses

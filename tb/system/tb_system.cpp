@@ -35,6 +35,8 @@
 //             [--rom FILE] [--report FILE] [--label NAME]
 //             [--handoff-watchdog S]              CPU seconds a simulated CPU may run without
 //                                                 handing control back (default 10, 1..3600)
+//             [--cpu-start C]                     the simulated CPUs start at cycle C (a late
+//                                                 boot: the controller may publish first)
 //             [--ages FILE]                       every measured latency / age as CSV
 //                                                 (channel,board,cycle,age; tools/fault_rates.py)
 //             [--latency-scale F] [--expect-caught-by CHECKER]...   negative tests
@@ -218,7 +220,7 @@ int main(int argc, char **argv)
         if (o.dead_board >= 0 && sim.cycle() - start == o.dead_at) sim.set_dead(1u << o.dead_board);
         for (int b = 0; b < SystemSim::kBoards; ++b) {
             SimCpu &c = sim.cpu[b];
-            if (boards[b].roles.empty() || sim.busy(b) || c.faulted) continue;
+            if (boards[b].roles.empty() || sim.busy(b) || c.faulted || n < o.cpu_start) continue;
             if (wait[b]) { --wait[b]; continue; }
             if (!c.has_request) c.resume();
             if (c.has_request) sim.issue(b);
