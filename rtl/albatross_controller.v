@@ -55,7 +55,8 @@ module albatross_controller #(
     parameter HAS_STATUS = 1,     // 1: per-channel counters and STATUS words; 0: STATUS entries send zeros
     parameter HAS_SYNC   = 1,     // 1: position-synchronised mode polls; 0: every cycle is H1 long
     parameter HAS_ROM_RECHECK = 1, // 1: the background re-check of the ROM; 0: the start-up CRC only
-    parameter HAS_ENTRY_CHECK = 1  // 1: the entry field checks at fetch ("Validation"); 0: none
+    parameter HAS_ENTRY_CHECK = 1, // 1: the entry field checks at fetch ("Validation"); 0: none
+    parameter ROM_CRC_BITS = 4    // bits of a ROM word the CRC check takes a clock: 1, 2, 4, 8, 16, 32 (smaller is smaller, start-up 32/ROM_CRC_BITS clocks a word)
 ) (
     input  wire                  clk_i,
     input  wire                  rst_i,          // synchronous, active high
@@ -120,7 +121,7 @@ module albatross_controller #(
 
     albatross_sequencer #(.NB(NB), .ADDR_WIDTH(AW), .N_CHAN(N_CHAN), .ROM_WORDS(ROM_WORDS), .ROM_FILE(ROM_FILE),
                           .TIME_BITS(TIME_BITS), .TIMEOUT(TIMEOUT), .POLL(POLL), .HAS_SYNC(HAS_SYNC),
-                          .HAS_ROM_RECHECK(HAS_ROM_RECHECK), .HAS_ENTRY_CHECK(HAS_ENTRY_CHECK)) u_seq (
+                          .HAS_ROM_RECHECK(HAS_ROM_RECHECK), .HAS_ENTRY_CHECK(HAS_ENTRY_CHECK), .CRC_BITS(ROM_CRC_BITS)) u_seq (
         .clk_i(clk_i), .rst_i(rst_i), .enable_i(ready_q && cnt_ready),
         .go_o(go), .kind_o(kind), .chan_o(chan7), .nd_o(nd), .words_o(words),
         .src_board_o(src_board), .src_base_o(src_base), .dst_board_o(dst_board), .dst_base_o(dst_base),

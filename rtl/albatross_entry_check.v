@@ -1,6 +1,6 @@
 // albatross_entry_check -- the field checks of albatross_sequencer's entry
 // fetch (docs/controller.md "Validation"): combinational,
-// one ROM word a clock.
+// one ROM word a clock of the fetch.
 // Rules (bad_o high: the entry being fetched is invalid):
 //   * FETCH clock 1 (E0): kind above 3; the SYNC flag on other than entry 0
 //     of a sync-mode ROM with kind COPY; SYNC with FOUR_SLOT (the sync-mode

@@ -12,14 +12,14 @@
 //     signatures are rtl/albatross_rom_check.v's, the ROM, its loading and
 //     the word read in each clock rtl/albatross_schedule_rom.v's (their rules).
 //   * Start-up (after enable_i): read the header (5 clocks), then one CRC
-//     pass over the image, one word a clock (its first read issued in the
-//     header's last clock, its CRC compared one clock after its last
-//     check), storing the CRC after the header and after each entry (their
-//     prefix CRCs).  A bad magic, NE outside
+//     pass over the image, a word in 32 / CRC_BITS clocks (its first read
+//     issued in the header's last clock, its CRC compared one clock after
+//     its last check), storing the CRC after the header and after each
+//     entry (their prefix CRCs).  A bad magic, NE outside
 //     1..NE_MAX, a cycle that does not fit, or a CRC other than 0 raises
 //     error_o for good: the sequencer never starts a slot or a poll.
-//   * Background check: in every clock the ROM is not fetching, one word is
-//     re-read and the CRC carried on from the stored prefix of the previous
+//   * Background check: in every clock the ROM is not fetching, a part of a
+//     word (CRC_BITS bits) is re-read and the CRC carried on from the stored prefix of the previous
 //     part; at the end of each part (header, entry) it is compared with that
 //     part's stored prefix.  The first mismatch of a part adds 1 to
 //     rom_errors and marks it bad: an entry so marked is skipped (no bus
@@ -60,7 +60,8 @@ module albatross_sequencer #(
     parameter POLL       = 16,   // sync mode: clocks from one poll's start to the next, >= 2
     parameter HAS_SYNC   = 1,    // 1: position-synchronised mode polls; 0: every cycle is H1 long
     parameter HAS_ROM_RECHECK = 1, // 1: the background re-check of the ROM; 0: the start-up CRC only
-    parameter HAS_ENTRY_CHECK = 1  // 1: the entry field checks at fetch; 0: none
+    parameter HAS_ENTRY_CHECK = 1, // 1: the entry field checks at fetch; 0: none
+    parameter CRC_BITS   = 4     // bits of a ROM word the ROM check's CRC takes in a clock (albatross_rom_check)
 ) (
     input  wire                    clk_i,
     input  wire                    rst_i,          // synchronous, active high
@@ -216,7 +217,7 @@ module albatross_sequencer #(
     // The start-up CRC and the background re-check; in the clock S of a
     // fetch it reads the fetched entry's bad mark for FETCH clock 1.
     wire pass_done, crc_ok, mism_new, bad_mark;   // pass_done: the clock after the start-up pass's last check
-    albatross_rom_check #(.ROM_WORDS(ROM_WORDS), .HAS_ROM_RECHECK(HAS_ROM_RECHECK)) u_rom_check (
+    albatross_rom_check #(.ROM_WORDS(ROM_WORDS), .HAS_ROM_RECHECK(HAS_ROM_RECHECK), .CRC_BITS(CRC_BITS)) u_rom_check (
         .clk_i(clk_i), .rst_i(rst_i), .learn_i(state_q == ST_CHECK), .bg_on_i(bg_on),
         .main_rom_i(main_rom), .last_word_i(last_word), .adr_o(bg_adr), .rom_dat_i(rom_q),
         .fetch_i(start_now), .fetch_part_i(ent_inc), .last_o(pass_done), .crc_ok_o(crc_ok),

@@ -49,7 +49,7 @@ ELAB_TIMEOUT = 300   # seconds for one rung's elaboration (it takes about 2)
 
 # (name, what is taken out, [(rtl file, the line's text, its replacement)]).
 LADDER = [
-    ("start-up CRC", "the ROM's CRC: its word step, its register and its test for zero (the pass still runs)",
+    ("start-up CRC", "the ROM's CRC: its step (4 bits a clock), its register and its test for zero (the pass still runs)",
      [("albatross_rom_check.v", "assign crc_ok_o = crc_q == 32'd0;", "assign crc_ok_o = 1'b1;")]),
     ("four-slot kind", "the four-slot channels: Simpson's picks and the Import's match, the Slot store, the whole-word source loads",
      [("albatross_controller.v", ".four_i(four)", ".four_i(1'b0)")]),

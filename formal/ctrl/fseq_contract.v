@@ -32,7 +32,8 @@ module fseq_contract #(
     parameter POLL       = 16,   // unused
     parameter HAS_SYNC        = 1,  // unused (the controller's configuration parameters, where it passes them)
     parameter HAS_ROM_RECHECK = 1,  // unused
-    parameter HAS_ENTRY_CHECK = 1   // unused
+    parameter HAS_ENTRY_CHECK = 1,  // unused
+    parameter CRC_BITS        = 4   // unused
 ) (
     input  wire                    clk_i,
     input  wire                    rst_i,

@@ -29,7 +29,9 @@
 //   slot_start        the first access is on the bus in clock S+7
 //                     (docs/controller.md "Timing": FETCH_CYCLES = 7) for the slots at
 //                     S = T0 and S = T0 + H1; T0 = 2*N_CHAN + 10 + 8*NE = 20
-//                     (counters cleared, header read, the start-up CRC pass).
+//                     (counters cleared, header read, the start-up CRC pass,
+//                     a word a clock: ROM_CRC_BITS 32, so that the unrolling
+//                     stays 56 clocks deep; the default 4 would start at 104).
 //   time_step         time_o counts clocks since reset (binds time_o to the
 //                     harness's clock count).
 //   rom_valid         the ROM was read and is valid (error_o low, no entry
@@ -62,7 +64,7 @@ module formal_controller (
 
     albatross_controller #(
         .NB(NB), .ADDR_WIDTH(AW), .N_CHAN(N_CHAN), .ROM_WORDS(12),
-        .ROM_FILE("formal/rtl/ctrl_time.hex"), .TIMEOUT(TIMEOUT), .POLL(16)
+        .ROM_FILE("formal/rtl/ctrl_time.hex"), .TIMEOUT(TIMEOUT), .POLL(16), .ROM_CRC_BITS(32)
     ) dut (
         .clk_i(clk_i), .rst_i(rst_i),
         .m_cyc_o(m_cyc_o), .m_stb_o(m_stb_o), .m_we_o(m_we_o), .m_adr_o(m_adr_o),

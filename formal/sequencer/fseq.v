@@ -84,9 +84,19 @@ module fseq (
     wire [4*F_AW-1:0]     dst_base_o;
     wire [31:0]           slot_time_o, time_o;
 
+    // The ROM check's CRC step: F_CRC_BITS (the RTL's default) in the proofs;
+    // F_WORD_CRC (the covers but the time image's, and the negatives) takes a
+    // word a clock, so that their unrolling through the start-up pass is
+    // 7 clocks a word shorter.  The k-induction proofs do not depend on it.
+`ifdef F_WORD_CRC
+    localparam CRC_BITS = 32;
+`else
+    localparam CRC_BITS = F_CRC_BITS;
+`endif
+
     albatross_sequencer #(
         .NB(F_NB), .ADDR_WIDTH(F_AW), .N_CHAN(F_NCHAN), .ROM_WORDS(F_ROM_WORDS), .ROM_FILE("fseq_rom.hex"),
-        .TIME_BITS(F_TB), .TIMEOUT(F_TIMEOUT), .POLL(F_POLL)
+        .TIME_BITS(F_TB), .TIMEOUT(F_TIMEOUT), .POLL(F_POLL), .CRC_BITS(CRC_BITS)
     ) dut (
         .clk_i(clk_i), .rst_i(rst_i), .enable_i(enable_i),
         .go_o(go_o), .kind_o(kind_o), .chan_o(chan_o), .nd_o(nd_o), .words_o(words_o),
@@ -214,6 +224,9 @@ module fseq (
         end
     end
 `ifdef F_PROBE
+`ifdef F_WORD_CRC
+    fseq_probe_tables_are_for_F_CRC_BITS u_error ();   // (gen_rom.py's F_CRCB)
+`endif
     // ------------------------------------------------------------ induction strengthening
     // Joined by sequencer.sby after flatten (white-box; the sequencer's state
     // encoding is mirrored here).  No named wire may be a plain alias of an f_*
@@ -223,11 +236,16 @@ module fseq (
                      ST_FETCH = 3'd4, ST_TRANSFER = 3'd5, ST_CYCLE_END = 3'd6;
     localparam       AW = $clog2(F_ROM_WORDS);
     localparam [AW-1:0] LAST_W = F_ROM_WORDS - 1;      // the image's last word
+    localparam       XW = AW + F_CB;                   // the ROM check's read index {word, chunk}
+    localparam integer    LAST_C_I = F_CHUNKS - 1;
+    localparam [F_CB-1:0] LAST_C   = LAST_C_I[F_CB-1:0];
+    localparam [XW-1:0]   LAST_X   = {LAST_W, LAST_C};  // the last word's last chunk
+    localparam [XW-1:0]   STEP_X   = (F_CHUNKS > 1) ? 1 : 2;   // (one chunk: the chunk bit stays 0)
     (* keep *) wire [2:0]          f_state, f_step;
     (* keep *) wire [F_TB-1:0]     f_cycle, f_start;
     (* keep *) wire [F_TB:0]       f_next_rel, f_end, f_prev_end;   // f_next_rel: rel + 1
     (* keep *) wire [7:0]          f_ne, f_ent;
-    (* keep *) wire [AW-1:0]       f_bg_adr, f_bg_dadr;
+    (* keep *) wire [XW-1:0]       f_bg_adr, f_bg_dadr;
     (* keep *) wire                f_smode, f_sync_ok, f_start_bad, f_bad, f_sflag, f_poll, f_bg_data, f_last;
     (* keep *) wire [31:0]         f_slot_time, f_crc;
     (* keep *) wire [7:0]          f_drop;
@@ -257,7 +275,7 @@ module fseq (
     wire          got5   = xfer || (fetch && f_step >= 3'd6);   // E5
     // start_q: entry ent's start, from its FETCH clock 6 on the next entry's (entry 0's after the last)
     wire [31:0]   st_want = (f_ent == 8'd2 || (xfer && e1)) ? F_S0 : xfer ? F_S1 : s_ent;
-    wire [AW-1:0] bg_nxt = f_bg_dadr == LAST_W ? {AW{1'b0}} : f_bg_dadr + 1'b1;
+    wire [XW-1:0] bg_nxt = f_bg_dadr == LAST_X ? {XW{1'b0}} : f_bg_dadr + STEP_X;
     wire [31:0]   crcb   = F_CRCB[32*f_bg_dadr +: 32];
     // the word a main read of the last clock left in rom_q: the header reads, the
     // entry's words E0, E2..E5, then the next entry's E1 (after the last entry: entry 0's)
@@ -283,7 +301,7 @@ module fseq (
     wire [F_NE:0] sig_ok;
     genvar r;
     generate for (r = 0; r <= F_NE; r = r + 1) begin : g_sig
-        assign sig_ok[r] = !(run || (f_state == ST_CHECK && {{(32-AW){1'b0}}, f_bg_dadr} > 8 * r + 3)) ||
+        assign sig_ok[r] = !(run || (f_state == ST_CHECK && {{(32-AW){1'b0}}, f_bg_dadr[XW-1:F_CB]} > 8 * r + 3)) ||
                            f_sig[33*r +: 33] == {1'b0, F_PFX[32*r +: 32]};
     end endgenerate
     always @* begin
@@ -291,7 +309,7 @@ module fseq (
             inv_reset: assert(!rst_q || (f_state == ST_HEADER && f_step == 3'd0 && !f_bg_data && f_bg_adr == 0 &&
                                          f_crc == F_CRCB[31:0] && !error_o && !started_q && !f_poll));
             if (!rst_q) begin
-                inv_bg:  assert(f_bg_adr == (f_bg_data ? bg_nxt : f_bg_dadr) && f_bg_dadr <= LAST_W);
+                inv_bg:  assert(f_bg_adr == (f_bg_data ? bg_nxt : f_bg_dadr) && f_bg_dadr <= LAST_X);
                 // (in the clock after the start-up pass's last check: the whole image's CRC)
                 inv_crc: assert(f_crc == ((f_state == ST_CHECK && f_last) ? F_CRC_ALL : crcb));
             end
@@ -317,14 +335,14 @@ module fseq (
             inv_sig: assert(&sig_ok);
             // the signature read register: the background part, or at FETCH clock 1 the entry's
             if (run && f_bg_data) begin
-                inv_sig_q: assert(f_sig_q == {1'b0, F_PFX[32*f_bg_dadr[AW-1:3] +: 32]});
+                inv_sig_q: assert(f_sig_q == {1'b0, F_PFX[32*f_bg_dadr[XW-1:F_CB+3] +: 32]});
             end
             if (run && fetch && f_step == 3'd1) begin
                 inv_sig_f: assert(f_sig_q == {1'b0, F_PFX[32*({31'd0, f_ent[0]} + 32'd1) +: 32]});
             end
             // the ROM read register: a background read, a header read, a fetch read
             if (!rst_q && f_bg_data) begin
-                inv_rom_bg: assert(f_rom_q == F_ROM[32*f_bg_dadr +: 32]);
+                inv_rom_bg: assert(f_rom_q == F_ROM[32*f_bg_dadr[XW-1:F_CB] +: 32]);
             end
             if ((hdr && !rst_q) || (fetch && main_a < F_ROM_WORDS)) begin
                 inv_rom_main: assert(f_rom_q == rom_main);
