@@ -34,9 +34,10 @@
 //     C * (4 + 8*NE) clocks.
 //   * Background (learn_i low): the CRC is carried on from the stored
 //     prefix of the previous part; at the end of each part it is compared
-//     with that part's stored prefix.  A mismatch sets the part's bad mark;
-//     mism_o is high in the clock of the first mismatch of a part (counted
-//     once).  After last_word_i the CRC restarts from CRC_SEED (only with
+//     with that part's stored prefix.  A mismatch sets the part's bad mark
+//     in the next clock (the compare ends at a register, not at the
+//     signature RAM's write enable); mism_o is high in that clock for the
+//     first mismatch of a part (counted once).  After last_word_i the CRC restarts from CRC_SEED (only with
 //     the re-check: without it no word is checked after the start-up pass).
 //   * One read port on the signatures: the background part, except in the
 //     clock fetch_i (no background read is issued then), which reads part
@@ -107,9 +108,10 @@ module albatross_rom_check #(
     // ------------------------------------------------------------ memory (never reset)
     // No collision logic on the RAM (no_rw_check: a read of the word written
     // in the same clock returns undefined data in hardware).  Only a fetch
-    // read can meet a write (a background mismatch of that part); clash_q
-    // then gives the old mark, which the part's background read of the
-    // clock before left in sig_q[32] (what a read-first RAM would return).
+    // read can meet a write (a background mismatch's mark of that part);
+    // clash_q then gives the old mark, which the part's background read
+    // left in sig_q[32] in the compare's clock, kept in mark_old_q (what a
+    // read-first RAM would return).
     (* no_rw_check, ram_style = "block" *)
     reg [32:0]         sig [0:NE_MAX]; // {part r found bad, prefix CRC after part r}
     reg [32:0]         sig_q;
@@ -149,15 +151,24 @@ module albatross_rom_check #(
     localparam         RECHECK  = HAS_ROM_RECHECK != 0;
     wire               mism     = RECHECK && p_end && !learn_i && crc_n != sig_q[31:0];
 
-    wire               wr       = (p_end && learn_i) || mism;
+    // The mismatch is a register: the mark is written a clock after the
+    // compare (its part and its old mark kept), so that no path runs from
+    // the signature RAM's output through the compare into its write enable.
+    reg                mism_q;        // part mism_part_q mismatched in the last clock ...
+    reg [RG_BITS-1:0]  mism_part_q;
+    reg                mark_old_q;    // ... its mark then (sig_q[32] of that clock)
+    wire               learn_wr = p_end && learn_i;
+    wire [RG_BITS-1:0] wr_part  = mism_q ? mism_part_q : part;
 
     always @(posedge clk_i) begin
         // A mismatch writes the mark alone (bit write enables, no data multiplexer).
-        if (p_end && learn_i) sig[part][31:0] <= crc_n;
-        if (wr)               sig[part][32]   <= !learn_i;
+        if (learn_wr)           sig[wr_part][31:0] <= crc_n;
+        if (learn_wr || mism_q) sig[wr_part][32]   <= mism_q;
         sig_q       <= sig[rd_part];
-        clash_q     <= fetch_i && wr && fetch_part == part;
-        clash_bad_q <= sig_q[32];
+        mism_part_q <= part;
+        mark_old_q  <= sig_q[32];
+        clash_q     <= fetch_i && mism_q && fetch_part == mism_part_q;
+        clash_bad_q <= mark_old_q;
     end
 
     always @(posedge clk_i) begin
@@ -166,7 +177,9 @@ module albatross_rom_check #(
             bg_adr_q  <= {XW{1'b0}};
             crc_q     <= CRC_SEED;
             last_q    <= 1'b0;
+            mism_q    <= 1'b0;
         end else begin
+            mism_q    <= mism;
             bg_data_q <= bg_issue;
             bg_dadr_q <= bg_adr_q;
             dat_last_q <= at_last;                  // one compare for the wrap and p_last
@@ -184,7 +197,7 @@ module albatross_rom_check #(
     assign adr_o    = adr_word;
     assign last_o   = last_q;
     assign crc_ok_o = crc_q == 32'd0;
-    assign mism_o   = mism && !sig_q[32];
+    assign mism_o   = mism_q && !mark_old_q;
     assign bad_o    = RECHECK && (clash_q ? clash_bad_q : sig_q[32]);
 
 endmodule

@@ -260,6 +260,7 @@ module fseq (
     (* keep *) wire [4*F_AW-1:0]   f_dbase;
     (* keep *) wire [33*(F_NE+1)-1:0] f_sig;         // the prefix signatures, part r at [33r +: 33]
     (* keep *) wire [32:0]         f_sig_q;
+    (* keep *) wire                f_mism;        // the ROM check's registered mismatch
     (* keep *) wire [31:0]         f_rom_q;       // the ROM's read register
 
     wire          run    = started_q || cycle_o;        // start-up is over
@@ -333,6 +334,8 @@ module fseq (
                 inv_error: assert(!F_VALID && error_o && !cycle_o && !started_q && !f_last && (!f_bg_data || f_bg_dadr == 0));
             end
             inv_sig: assert(&sig_ok);
+            // the unchanged ROM never mismatches its prefixes (so no bad mark is pending)
+            inv_mism: assert(!f_mism);
             // the signature read register: the background part, or at FETCH clock 1 the entry's
             if (run && f_bg_data) begin
                 inv_sig_q: assert(f_sig_q == {1'b0, F_PFX[32*f_bg_dadr[XW-1:F_CB+3] +: 32]});
