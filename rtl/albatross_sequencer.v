@@ -19,9 +19,9 @@
 //     1..NE_MAX, a cycle that does not fit, or a CRC other than 0 raises
 //     error_o for good: the sequencer never starts a slot or a poll.
 //   * Background check: in every clock the ROM is not fetching, a part of a
-//     word (CRC_BITS bits) is re-read and the CRC carried on from the stored prefix of the previous
-//     part; at the end of each part (header, entry) it is compared with that
-//     part's stored prefix.  The first mismatch of a part adds 1 to
+//     word (CRC_BITS bits) is re-read and the CRC carried on from the
+//     stored prefix of the previous part; at the end of each part (header,
+//     entry) it is compared with that part's stored prefix.  The first mismatch of a part adds 1 to
 //     rom_errors and marks it bad: an entry so marked is skipped (no bus
 //     access, and rom_errors + 1 once per cycle as for any invalid entry).
 //   * Slot timing: S = cycle start + start (E1).  The entry is fetched in

@@ -199,6 +199,7 @@ int main(int argc, char **argv)
     FaultModel fault_model(o.fault_rate, o.burst, o.seed ^ 0xFA17ull);
 
     uint64_t stall_left[NB] = {0, 0, 0, 0}, busy = 0, faults = 0, requests = 0;
+    uint64_t first_access = ~0ull;   // the controller's first bus request (the end of its start-up)
     uint32_t frozen = 0;
     auto tick = [&]() {
         uint32_t st = frozen;
@@ -215,6 +216,7 @@ int main(int argc, char **argv)
             if (m->fi_kind_i) ++faults;
         }
         busy += m->m_cyc_o;
+        if (m->m_cyc_o && first_access == ~0ull) first_access = cycle;
         m->clk_i = 1; m->eval();
 #if VM_TRACE
         dump(2 * ticks + 1);
@@ -241,7 +243,7 @@ int main(int argc, char **argv)
     for (int i = 0; i < 8; ++i) tick();
     m->rst_i = 0;
     in_reset = false;
-    cycle = 0; busy = 0; faults = 0; requests = 0;
+    cycle = 0; busy = 0; faults = 0; requests = 0; first_access = ~0ull;
 
     const uint32_t all = (1u << NB) - 1u;
     static uint64_t last_load[NB][1024];  // per core and DPRAM word: controller time of its last load
@@ -331,12 +333,15 @@ int main(int argc, char **argv)
                 // confirming load) or its first (four-slot: actuality holds from the Import's start)
                 const uint32_t w = s->base / 4;
                 const uint64_t t_load = s->ch->four_slot && first_seen[c][w] ? first_load[c][w] : last_load[c][w];
-                // taken_at 0: the RAM image's value (or nothing yet), which the controller has not
-                // published: its age runs from reset through the controller's start-up (the ROM
-                // check), which the compiler's bounds do not include, so it is no age sample (the
-                // system test starts its measurements after the first cycle for the same reason).
-                // A value the controller published has taken_at >= its cycle 0 start > 0.
-                if (arg != 0) {
+                // taken_at 0 is the RAM image's value (or nothing yet): the controller has not
+                // published (its values have taken_at >= its cycle 0 start > 0).  Before the
+                // controller's first access and one cycle after it (every destination's first
+                // slot; the system test starts its measurements there too) its age runs from
+                // reset through the controller's start-up, which the compiler's bounds do not
+                // include: no age sample.  Later it is judged like any value (age = t_load), so
+                // a destination that is never published still fails the bound.
+                const bool starting = arg == 0 && (first_access == ~0ull || t_load < first_access + plan.cycle);
+                if (!starting) {
                     const uint64_t age = t_load > arg ? t_load - arg : 0;
                     s->age.add(age);
                     if (samples)

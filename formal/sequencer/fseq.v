@@ -84,19 +84,18 @@ module fseq (
     wire [4*F_AW-1:0]     dst_base_o;
     wire [31:0]           slot_time_o, time_o;
 
-    // The ROM check's CRC step: F_CRC_BITS (the RTL's default) in the proofs;
-    // F_WORD_CRC (the covers but the time image's, and the negatives) takes a
-    // word a clock, so that their unrolling through the start-up pass is
-    // 7 clocks a word shorter.  The k-induction proofs do not depend on it.
-`ifdef F_WORD_CRC
-    localparam CRC_BITS = 32;
-`else
-    localparam CRC_BITS = F_CRC_BITS;
-`endif
-
+    // The ROM check's CRC step: the sequencer's default in the proofs (the
+    // probes' widths and gen_rom.py's F_CRCB follow F_CRC_BITS: a default
+    // other than it fails the probes' connect or the invariants); F_WORD_CRC
+    // (the covers but the time image's, and the negatives) takes a word a
+    // clock, so that their unrolling through the start-up pass is 7 clocks a
+    // word shorter.  The k-induction proofs do not depend on it.
     albatross_sequencer #(
         .NB(F_NB), .ADDR_WIDTH(F_AW), .N_CHAN(F_NCHAN), .ROM_WORDS(F_ROM_WORDS), .ROM_FILE("fseq_rom.hex"),
-        .TIME_BITS(F_TB), .TIMEOUT(F_TIMEOUT), .POLL(F_POLL), .CRC_BITS(CRC_BITS)
+        .TIME_BITS(F_TB), .TIMEOUT(F_TIMEOUT), .POLL(F_POLL)
+`ifdef F_WORD_CRC
+        , .CRC_BITS(32)
+`endif
     ) dut (
         .clk_i(clk_i), .rst_i(rst_i), .enable_i(enable_i),
         .go_o(go_o), .kind_o(kind_o), .chan_o(chan_o), .nd_o(nd_o), .words_o(words_o),
