@@ -41,6 +41,12 @@
 //   --hang B@C      board B freezes at cycle C without telling the checks
 //                   (the negative test of the liveness check)
 //   --age-scale X   check ages against X times the bound (negative test)
+//   --mute CH@B     every controller store to the control word of channel
+//                   CH's destination on board B is lost (sim/pico_boards.v
+//                   +mute_board/+mute_word): that destination is never
+//                   published, and its consumer keeps the RAM image's value
+//                   (taken_at 0); the negative test of the age check after
+//                   start-up
 //   --drift-ppm S   the boards' clocks drift against the controller's: the
 //                   named boards' TIMERs run PPM parts per million fast (> 0)
 //                   or slow (board_memmap +drift<c>=PPM); random:MAX draws
@@ -163,6 +169,10 @@ int main(int argc, char **argv)
     std::vector<std::string> vargs(argv, argv + argc);
     for (int c = 0; c < NB; ++c)
         if (o.drift_ppm[c]) vargs.push_back("+drift" + std::to_string(c) + "=" + std::to_string(o.drift_ppm[c]));
+    if (o.mute_board >= 0) {
+        vargs.push_back("+mute_board=" + std::to_string(o.mute_board));
+        vargs.push_back("+mute_word=" + std::to_string(o.mute_word));
+    }
     std::vector<const char *> vargv;
     for (const std::string &a : vargs) vargv.push_back(a.c_str());
     Verilated::commandArgs(int(vargv.size()), vargv.data());
@@ -266,11 +276,12 @@ int main(int argc, char **argv)
     uint64_t stale_events = 0, stale_before_crash = 0, fresh_events = 0, first_stale = 0, status_reads = 0;
     uint32_t status_retries = 0, status_abandoned = 0;
 
-    std::printf("%s: %d boards (%s, %s, %s, %s), %llu cycles, seed %llu, fault rate %.2f%s%s\n", o.label.c_str(), NB,
+    std::printf("%s: %d boards (%s, %s, %s, %s), %llu cycles, seed %llu, fault rate %.2f%s%s%s\n", o.label.c_str(), NB,
                 plan.board_names[0].c_str(), plan.board_names[1].c_str(), plan.board_names[2].c_str(),
                 plan.board_names[3].c_str(), (unsigned long long)o.cycles, (unsigned long long)o.seed, o.fault_rate,
                 o.crash_board >= 0 ? (", crash " + o.crash_arg).c_str() : "",
-                o.hang_board >= 0 ? (", hang " + o.hang_arg).c_str() : "");
+                o.hang_board >= 0 ? (", hang " + o.hang_arg).c_str() : "",
+                o.mute_board >= 0 ? (", stores to " + o.mute_arg + "'s control word lost").c_str() : "");
     std::fflush(stdout);
     auto bad = [&]() { return (m->trap_o & all) || (m->bus_err_o & all) || m->error_o; };
     uint64_t next_progress = o.progress ? o.cycles / o.progress : ~0ull;
@@ -545,7 +556,7 @@ int main(int argc, char **argv)
      .num("fault_rate_measured", rate_measured).num("fault_rate_tolerance", rate_tol).num("fault_rate_ok", rate_ok ? 1 : 0)
      .num("status_retries", status_retries).num("status_abandoned", status_abandoned)
      .num("bus_busy_fraction", cycle ? double(busy) / double(cycle) : 0.0)
-     .str("crash_board", crash_run ? plan.board_names[o.crash_board] : "").num("crash_cycle", double(crash_cycle))
+     .str("muted", o.mute_arg).str("crash_board", crash_run ? plan.board_names[o.crash_board] : "").num("crash_cycle", double(crash_cycle))
      .num("stale_events", double(stale_events)).num("first_stale_cycle", double(first_stale))
      .num("fresh_events", double(fresh_events));
     r.raw("series", series_report(series, plan)).num("termination_bounded_series", n_term);

@@ -17,10 +17,11 @@ const char *const kChecks[] = {"cpu", "liveness", "age", "staleness", "faults", 
 
 struct Options {
     std::string age_samples;  // --age-samples FILE: every imported age (CSV, tools/fault_rates.py)
-    std::string plan, report, ages, trace, label = "mobot-sim", expect, crash_arg, hang_arg, drift_arg;
+    std::string plan, report, ages, trace, label = "mobot-sim", expect, crash_arg, hang_arg, drift_arg, mute_arg;
     uint64_t cycles = 2000000, seed = 1, stall = 0, trace_from = 0, trace_cycles = 20000, progress = 10;
     double fault_rate = 0, age_scale = 1, burst = 0;   // burst 0: independent accesses (tb/common/fault_model.h)
     int crash_board = -1, hang_board = -1;
+    int mute_board = -1, mute_word = -1;  // --mute: the destination control word whose stores are lost
     bool require_done = false;
     bool fault_per_clock = false;       // --fault-clocking clock: the old, wrong injector (negative test)
     uint64_t crash_at = 0, hang_at = 0;

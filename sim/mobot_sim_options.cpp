@@ -30,6 +30,22 @@ bool parse_board_at(const std::string &s, const Plan &plan, int &board, uint64_t
         if (plan.board_names[b] == name) board = int(b);
     return board >= 0 && parse_u64(s.substr(p + 1).c_str(), at);
 }
+// --mute CHANNEL@BOARD: the control word of CHANNEL's destination on BOARD.
+bool parse_mute(const std::string &s, const Plan &plan, Options &o)
+{
+    const size_t p = s.find('@');
+    if (p == std::string::npos) return false;
+    const std::string chan = s.substr(0, p), board = s.substr(p + 1);
+    for (const PlanChannel &c : plan.channels)
+        if (c.name == chan)
+            for (const PlanDest &d : c.dests)
+                if (d.board >= 0 && size_t(d.board) < plan.board_names.size() && plan.board_names[d.board] == board) {
+                    o.mute_board = d.board;
+                    o.mute_word = int(d.base / 4);
+                    return true;
+                }
+    return false;
+}
 // --drift-ppm: BOARD=PPM[,BOARD=PPM...] (or / between them) or random:MAX (each board's PPM drawn
 // from the seed, uniform in [-MAX, MAX]).
 bool parse_drift(const std::string &s, const Plan &plan, Options &o)
@@ -68,7 +84,7 @@ int usage(const char *msg)
     std::fprintf(stderr, "mobot_sim: %s\n"
                  "usage: mobot_sim --plan tb_plan.txt +fw0..3=FILE +ram0..3=FILE +rom=FILE [--cycles N]\n"
                  "                 [--seed S] [--stall P] [--fault-rate R] [--burst L] [--fault-clocking access|clock]\n"
-                 "                 [--crash BOARD@CYCLE] [--hang BOARD@CYCLE]\n"
+                 "                 [--crash BOARD@CYCLE] [--hang BOARD@CYCLE] [--mute CHANNEL@BOARD]\n"
                  "                 [--trace FILE.vcd [--trace-from N] [--trace-cycles N]] [--report FILE]\n"
                  "                 [--ages FILE.csv] [--age-samples FILE.csv] [--label NAME] [--progress K] [--age-scale X] [--require-done]\n"
                  "                 [--termination-scale X]\n"
@@ -114,6 +130,7 @@ int parse_options(int argc, char **argv, Options &o, Plan &plan, std::vector<std
         else if (a == "--crash") crash_arg = v;
         else if (a == "--hang") hang_arg = v;
         else if (a == "--drift-ppm") o.drift_arg = v;
+        else if (a == "--mute") o.mute_arg = v;
         else if (a == "--clock-scale") {
             char *end = nullptr;
             o.clock_scale = std::strtod(v, &end);
@@ -165,6 +182,9 @@ int parse_options(int argc, char **argv, Options &o, Plan &plan, std::vector<std
         return usage(("--crash: expected BOARD@CYCLE with a board of the plan, got " + crash_arg).c_str());
     if (!hang_arg.empty() && !parse_board_at(hang_arg, plan, o.hang_board, o.hang_at))
         return usage(("--hang: expected BOARD@CYCLE with a board of the plan, got " + hang_arg).c_str());
+    if (!o.mute_arg.empty() && !parse_mute(o.mute_arg, plan, o))
+        return usage(("--mute: expected CHANNEL@BOARD, a channel of the plan and one of its destination boards, got " +
+                      o.mute_arg).c_str());
     if (!o.drift_arg.empty() && !parse_drift(o.drift_arg, plan, o))
         return usage(("--drift-ppm: expected BOARD=PPM[,BOARD=PPM...] with boards of the plan and |PPM| < 100000, "
                       "or random:MAX (each board drawn from the seed in [-MAX, MAX]), got " + o.drift_arg).c_str());

@@ -25,6 +25,10 @@
 // board_memmap; 0 under SYNTHESIS): timer_rd_o[c] is high in the clock a read
 // of board c's TIMER register completes, timer_o the value it returns; the
 // board's clock drift is its board_memmap's +drift<c>=PPM plusarg.
+// +mute_board=B +mute_word=W (simulation only; a negative test's fault): the
+// injector treats every controller store to word W of board B as a request
+// to a dead link (kind 2: never performed, never answered, fi_dead_o high),
+// so a destination whose control word is there is never published.
 `default_nettype none
 
 module pico_boards #(
@@ -109,8 +113,30 @@ module pico_boards #(
         .ctl_time_o(time_o), .ctl_error_o(error_o), .ctl_rom_errors_o(rom_errors_o)
     );
 
+    // The links the injector sees as dead: fi_dead_i, and (simulation only)
+    // the muted word's board while the controller requests a store to it.
+    wire [NB-1:0] dead;
+`ifndef SYNTHESIS
+    integer  mute_board, mute_word;
+    initial begin
+        if (!$value$plusargs("mute_board=%d", mute_board)) mute_board = -1;
+        if (!$value$plusargs("mute_word=%d", mute_word)) mute_word = -1;
+    end
+    wire          mute_on  = mute_board >= 0 && mute_board < NB && mute_word >= 0;
+    wire [BA-1:0] mute_adr = {mute_board[3:0], mute_word[ADDR_WIDTH-1:0]};
+    wire          mute_hit = mute_on && m_we && m_adr == mute_adr;
+    genvar        mb;
+    generate
+        for (mb = 0; mb < NB; mb = mb + 1) begin : g_mute
+            assign dead[mb] = fi_dead_i[mb] || (mute_hit && mute_board == mb);
+        end
+    endgenerate
+`else
+    assign dead = fi_dead_i;
+`endif
+
     bus_fault_injector #(.NB(NB), .ADDR_WIDTH(ADDR_WIDTH)) u_faults (
-        .clk_i(clk_i), .rst_i(rst_i), .fi_kind_i(fi_kind_i), .fi_dead_i(fi_dead_i),
+        .clk_i(clk_i), .rst_i(rst_i), .fi_kind_i(fi_kind_i), .fi_dead_i(dead),
         .fi_new_o(fi_new_o), .fi_dead_o(fi_dead_o),
         .c_cyc_i(m_cyc_o), .c_stb_i(m_stb_o), .c_we_i(m_we), .c_adr_i(m_adr), .c_sel_i(m_sel),
         .c_dat_i(m_wdat), .c_dat_o(m_rdat), .c_ack_o(m_ack_o), .c_err_o(m_err_o),
