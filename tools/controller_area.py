@@ -23,6 +23,9 @@ configures it) synthesised in the same run.  It reports:
                   25F; tools/fpga_report.py); xc7: not placed here (no open
                   place and route for 7-series in Debian or PyPI)
   parts           iCE40 LUT4 per module of the full controller (not flattened)
+  cones           iCE40 LUT4 of the full and core configurations (flattened)
+                  by the registers, block RAMs and ports they feed
+                  (tools/lut_cones.py), the largest first
 
 A configuration the controller does not have (a parameter it does not know,
 or a value outside its range: its elaboration fails, checked with Yosys
@@ -37,6 +40,7 @@ usage error.
 
 import argparse
 import concurrent.futures
+import json
 import os
 import re
 import subprocess
@@ -45,9 +49,12 @@ import threading
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fpga_report import CTRL_FILES, PNR, ROBOT_ROM, design, pnr, synth_files, tail  # noqa: E402
+from lut_cones import cones as lut_cones  # noqa: E402
 from synth_report import FAMILIES, write_json  # noqa: E402
 
 TOP = "albatross_controller"
+CONE_CONFIGS = ("full", "core")   # the configurations whose flattened iCE40 LUTs are attributed (tools/lut_cones.py)
+CONE_ROWS = 16                    # registers listed per configuration, the rest as one row
 # The robot's configuration (tools/fpga_report.py's controller).
 BASE = {"NB": 4, "ADDR_WIDTH": 10, "N_CHAN": 16, "ROM_WORDS": 1024}
 FEATURES = [("HAS_STATUS", "STATUS entries and their counters"),
@@ -120,8 +127,8 @@ def slug(name):
     return "".join(c if c.isalnum() else "_" for c in name.lower()).strip("_")
 
 
-def job_synth(key, files, top, chp, fam, stem, place):
-    r = synth_files(files, top, chp, fam, stem, netlist=place)
+def job_synth(key, files, top, chp, fam, stem, place, netlist=False):
+    r = synth_files(files, top, chp, fam, stem, netlist=place or netlist)
     if place and "error" not in r:
         r["design"] = os.path.basename(stem).rsplit("_", 1)[0]
         pnr(r, os.path.dirname(stem))
@@ -212,7 +219,7 @@ def main():
         if s in unsupported:
             continue
         jobs.append(((s, fam), CTRL_FILES, TOP, chparam(psets[s]), fam, os.path.join(a.out, f"{s}_{fam}"),
-                     s == "full" and fam in place_fams))
+                     s == "full" and fam in place_fams, fam == "ice40" and s in CONE_CONFIGS))
     say(f"{len(jobs)} syntheses ({sum(j[-1] for j in jobs)} also placed and routed), {a.jobs} at a time; "
         f"each takes about a minute or more")
 
@@ -271,6 +278,13 @@ def main():
         parts = parts_ice40(psets["full"], os.path.join(a.out, "parts_ice40"))
         if "error" in parts:
             res[("parts", "ice40")] = {"error": parts.pop("error")}
+    cones = {}
+    for s in CONE_CONFIGS if "ice40" in fams else ():
+        if "error" not in res.get((s, "ice40"), {"error": ""}):
+            with open(os.path.join(a.out, f"{s}_ice40.json")) as f:
+                rows_c = lut_cones(json.load(f), TOP)
+            cones[s] = [[k, round(v, 1)] for k, v in rows_c[:CONE_ROWS]] + \
+                [[f"({len(rows_c) - CONE_ROWS} others)", round(sum(v for _, v in rows_c[CONE_ROWS:]), 1)]]
 
     # Console tables.
     print(f"\n{'configuration':<20}" + "".join(f"{fam:>8}{'LUT':>6}{'FF':>6}{'BRAM':>5}{'/Pico':>7}" for fam in fams))
@@ -307,6 +321,9 @@ def main():
             print(f"Fmax on {fam}: {f['part']}")
         else:
             print(f"Fmax on {fam} ({f['part']}): controller {f['controller_mhz']} MHz, PicoRV32 {f['picorv32_mhz']} MHz")
+    for s, rows_c in cones.items():
+        print(f"LUTs of the {s} configuration on ice40 by the registers they feed (flattened, tools/lut_cones.py): "
+              + ", ".join(f"{k} {v}" for k, v in rows_c[:10]))
     if parts:
         print("parts on ice40 (LUT4, not flattened): "
               + ", ".join(f"{k} {v}" for k, v in sorted(parts.items(), key=lambda kv: -kv[1])))
@@ -315,7 +332,7 @@ def main():
     note = ("LUTs: SB_LUT4 / LUT4 / LUT1-6; FFs: SB_DFF* / TRELLIS_FF / FD*; BRAMs: SB_RAM40_4K / DP16KD / "
             "RAMB18E1+RAMB36E1; configurations set by the controller's parameters (tools/controller_area.py)")
     write_json(a.report, {"base": dict(BASE, ROM_FILE=ROBOT_ROM), "picorv32": {f: res[("PicoRV32", f)] for f in fams},
-                          "picorv32_luts": pico, "rows": rows, "fmax": fmax, "parts_ice40": parts,
+                          "picorv32_luts": pico, "rows": rows, "fmax": fmax, "parts_ice40": parts, "cones_ice40": cones,
                           "goals_over_picorv32": GOALS, "aims_over_picorv32": AIMS,
                           "not_supported": unsupported, "note": note})
     say(a.report)

@@ -47,7 +47,23 @@ def controller_area():
                 "LUTs are its own; the sum is above the flattened figure):\n\n"
                 + table(["part", "ice40 LUTs"], [[f"`{k}`", n(v)] for k, v in sorted(parts.items(), key=lambda kv: -kv[1])]
                         + [["sum", n(sum(parts.values()))]]))
+    cones = r.get("cones_ice40")
+    if cones:
+        cfgs = list(cones)
+        depth = max(len(v) for v in cones.values())
+        out += ("\n\nThe same on iCE40 flattened, by register: each LUT counted toward the registers, block RAMs "
+                "and ports its output reaches through LUTs and carries, split evenly where it reaches several "
+                "(`tools/lut_cones.py`; a share is what a register's logic costs, not what removing it would "
+                "save):\n\n"
+                + table([x for c in cfgs for x in (f"{c}: register", "LUTs")],
+                        [[x for c in cfgs for x in ((_reg(cones[c][i][0]), f"{cones[c][i][1]:.0f}")
+                                                     if i < len(cones[c]) else ("", ""))]
+                         for i in range(depth)]))
     return out
+
+
+def _reg(name):
+    return name if name.startswith("(") else f"`{name}`"
 
 
 def controller_growth():

@@ -221,6 +221,25 @@ $(FPGA_DIR)/badrom/rom.hex: $(FPGA_IMG)/rom.hex
 
 BENCHES += synth area
 
+# tools/lut_cones.py (make area's LUTs by register): its self-test on a
+# synthesised design and a hand-written one with a shared LUT; the negative
+# runs it on a copy that counts a shared LUT whole toward each register.
+TESTS += lut-cones lut-cones-negative
+.PHONY: test-lut-cones test-lut-cones-negative
+test-lut-cones:
+	@tools/run_test.sh lut-cones python3 tools/lut_cones.py --self-test
+
+test-lut-cones-negative:
+	@mkdir -p $(FPGA_DIR)/lut-cones-neg
+	@sed 's|share\[x\] += 1.0 / max(1, len(e))|share[x] += 1.0|' tools/lut_cones.py > $(FPGA_DIR)/lut-cones-neg/lut_cones.py
+	@! cmp -s tools/lut_cones.py $(FPGA_DIR)/lut-cones-neg/lut_cones.py || \
+	    { echo "lut-cones-negative: the sed did not apply to tools/lut_cones.py"; exit 1; }
+	@tools/run_test.sh lut-cones-negative bash -c 'if python3 $(FPGA_DIR)/lut-cones-neg/lut_cones.py --self-test \
+	    > $(FPGA_DIR)/lut-cones-neg/log 2>&1; then cat $(FPGA_DIR)/lut-cones-neg/log; \
+	    echo "expected the self-test to fail on a copy that counts a shared LUT whole toward each register, it passed"; \
+	    exit 1; fi; grep "b_q: expected 0.5 LUTs, came 1.00" $(FPGA_DIR)/lut-cones-neg/log || \
+	    { cat $(FPGA_DIR)/lut-cones-neg/log; echo "expected the failure to name b_q s half share"; exit 1; }'
+
 # The function ladder of make area (tools/controller_ladder.py) is a set of
 # literal edits of rtl/: every edit must still apply and every rung
 # elaborate (no synthesis, seconds); the negative gives it a copy of rtl/
