@@ -7,7 +7,7 @@
 //   * A control byte is valid when it names a buffer: 1..3, four-slot 1..4.
 //     0 is "not started" (a zeroed RAM: no error, a_zero_o/r_zero_o); any
 //     other value is corrupt.  pair(x) = (x - 1) >> 1 for x = 1..4.
-//   * Source (the Import): cur_b is c = 1 + 2 pair(A) + Slot[pair(A)] of this
+//   * Source (the Import): c = 1 + 2 pair(A) + Slot[pair(A)] of this
 //     load; a_match_o: the load shows the copy rl_i again (four-slot: c = L;
 //     three-buffer: A = the copy); pick_l_o (four-slot, the second load) is
 //     L = 1 + 2 pair(ald_i) + Slot[pair(ald_i)], from the Actual stored.
@@ -62,11 +62,16 @@ module albatross_transfer_pick (
     wire       r_zero   = r_byte == NOT_STARTED;
     wire       a_pair   = a_byte[2] | (a_byte[1] & a_byte[0]);      // (x - 1) >> 1 for x = 1..4
     wire       r_pair   = r_byte[2] | (r_byte[1] & r_byte[0]);
-    // Source: c of this word (first load), b from the Actual stored (second).
-    wire [2:0] cur_b    = {1'b0, a_pair, a_pair ? dat_i[S1_BIT] : dat_i[S0_BIT]} + 3'd1;
+    // Source, four-slot: c = 1 + 2 pair(A) + Slot[pair(A)] of this load equals
+    // L (1..4 = 1 + 2p + s) exactly when pair(A) = p and Slot[p] = s, so the
+    // match is decoded by L's value (a register): no adder, and no multiplexer
+    // chosen by the loaded A, follows the load (L 0, unknown: no match).
+    // pick_l: L from the Actual stored (the second load).
+    wire       c_is_l   = (rl_i == 3'd1 && !a_pair && !dat_i[S0_BIT]) || (rl_i == 3'd2 && !a_pair && dat_i[S0_BIT]) ||
+                          (rl_i == 3'd3 && a_pair && !dat_i[S1_BIT]) || (rl_i == 3'd4 && a_pair && dat_i[S1_BIT]);
     wire       p_ald    = ald_i[2] | (ald_i[1] & ald_i[0]);
     wire [2:0] pick_l   = {1'b0, p_ald, p_ald ? dat_i[S1_BIT] : dat_i[S0_BIT]} + 3'd1;
-    wire       a_match  = four_i ? cur_b == rl_i : a_byte[2:0] == rl_i;
+    wire       a_match  = four_i ? c_is_l : a_byte[2:0] == rl_i;
     // Destination pick.
     wire [1:0] r_lock   = r_valid ? r_byte[1:0] : 2'd0;
     wire [1:0] a_pub    = a_valid ? a_byte[1:0] : 2'd0;
