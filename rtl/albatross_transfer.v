@@ -151,6 +151,9 @@ module albatross_transfer #(
     wire       landed   = ack && ctrl_ld && a_valid && a_byte[2:0] == tried_d && tried_d != 3'd0;
     wire       leave    = dst && (drop_now || landed);
     wire [3:0] need_m   = need_q & ~(leave ? d_bit : 4'd0);
+    // need_m != 0, written so that the read data (through leave) meets one
+    // gate, not a mask and a 4-input OR: others in need, or d in need and staying.
+    wire       left_any = (|(need_q & ~d_bit)) || ((|(need_q & d_bit)) && !leave);
 
     // Order: next_d the lowest destination above d_q in need_q; first_d the
     // lowest in need_m; first_in the lowest in a starting need.
@@ -165,7 +168,7 @@ module albatross_transfer #(
     wire       adv      = ack || drop_now;
     wire       ctrl_end = adv && ctrl_ld;
     wire       last_wd  = k_q == words_i;
-    wire       want     = state_q != S_WAIT && !has_next && need_m != 4'd0 &&
+    wire       want     = state_q != S_WAIT && !has_next && left_any &&
                           (ctrl_end || (adv && state_q == S_DST_WORD && !last_wd));
     wire       word_ok  = !copy_i && (time_kind_i || status_valid_i);
     wire       choose   = ack && ((state_q == S_SRC_ACT && a_valid && a_match) || state_q == S_SRC_SLOT);
@@ -185,7 +188,7 @@ module albatross_transfer #(
                           (nrm && ((ack && ((state_q == S_SRC_ACT && a_valid && !a_match) || state_q == S_SRC_RL ||
                                             state_q == S_SRC_WORD)) ||
                                    (state_q == S_WAIT && word_ok) || (choose && need_now != 4'd0) ||
-                                   (adv && dst && need_m != 4'd0 && dst_go))));
+                                   (adv && dst && left_any && dst_go))));
 
     // Put an access on the bus in the next clock; when may_access_i is low the
     // slot is cut off instead, in one place after the main block (req).
@@ -297,7 +300,7 @@ module albatross_transfer #(
             end
             // The next destination access (adv is 0 outside them).
             if (adv && dst) begin
-                if (need_m == 4'd0) finish;
+                if (!left_any) finish;
                 else if (has_next) begin_access(state_q, next_d);
                 else if (want) begin
                     if (copy_i) begin
