@@ -121,8 +121,12 @@ module pico_boards #(
     initial begin
         if (!$value$plusargs("mute_board=%d", mute_board)) mute_board = -1;
         if (!$value$plusargs("mute_word=%d", mute_word)) mute_word = -1;
+        if ((mute_board >= 0 || mute_word >= 0) &&
+            (mute_board < 0 || mute_board >= NB || mute_word < 0 || mute_word >= (1 << ADDR_WIDTH)))
+            $display("pico_boards: +mute_board=%0d +mute_word=%0d name no word of a board RAM (boards 0..%0d, words 0..%0d): no store is muted",
+                     mute_board, mute_word, NB - 1, (1 << ADDR_WIDTH) - 1);
     end
-    wire          mute_on  = mute_board >= 0 && mute_board < NB && mute_word >= 0;
+    wire          mute_on  = mute_board >= 0 && mute_board < NB && mute_word >= 0 && mute_word < (1 << ADDR_WIDTH);
     wire [BA-1:0] mute_adr = {mute_board[3:0], mute_word[ADDR_WIDTH-1:0]};
     wire          mute_hit = mute_on && m_we && m_adr == mute_adr;
     genvar        mb;

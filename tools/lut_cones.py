@@ -114,6 +114,7 @@ def cones(netlist, top=None):
     return sorted(share.items(), key=lambda kv: -kv[1])
 
 
+SELF_TEST_TIMEOUT = 300   # seconds for Yosys on the test design (it takes about 1)
 SELF_TEST_V = """
 module cones_t (input wire clk, input wire [7:0] x, input wire [7:0] y, input wire [7:0] w,
                 output reg [7:0] sum_q, output reg [7:0] par_q, output wire [7:0] mix_o);
@@ -129,8 +130,13 @@ def self_test():
         src, net = os.path.join(d, "t.v"), os.path.join(d, "t.json")
         with open(src, "w") as f:
             f.write(SELF_TEST_V)
-        p = subprocess.run(["yosys", "-q", "-p", f"read_verilog {src}; synth_ice40 -top cones_t -flatten; "
-                            f"write_json {net}"], capture_output=True, text=True)
+        try:
+            p = subprocess.run(["yosys", "-q", "-p", f"read_verilog {src}; synth_ice40 -top cones_t -flatten; "
+                                f"write_json {net}"], capture_output=True, text=True, timeout=SELF_TEST_TIMEOUT)
+        except subprocess.TimeoutExpired:
+            print(f"lut_cones self-test: expected Yosys to synthesise the test design within {SELF_TEST_TIMEOUT} s, "
+                  "it did not finish")
+            return 1
         if p.returncode:
             print(f"lut_cones self-test: yosys failed: {p.stderr.strip()[-300:]}")
             return 1
