@@ -81,6 +81,7 @@ Modules (standard library only):
   description  reading and validating the TOML description
   layout       RAM layout of every board's channel instances
   plan         slot lengths, the cycle, redundancy, placement, bounds
+  modes        [[mode]]: several schedules, each planned over one RAM layout
   fourslot     the channel kinds: [layout.four_slot] of the contract, bytes, images, flag
   termination  board Import timing, D, the Import bounds, spacing the slots
   rom          the schedule ROM: encoder, hex image, verify_rom
@@ -88,7 +89,7 @@ Modules (standard library only):
   contract_gen the files generated from it (python -m albatross_schedule.contract_gen)
   cgen         generated C: board headers, set-up sources, RAM images
   report       report.json and report.txt
-  picture      timeline.svg
+  picture      timeline.svg (a lane group per mode)
   pipeline     the whole compilation (compile_system, compile_file)
   cli          the command line (main); __main__ runs it
 """

@@ -15,6 +15,7 @@ from .contract import load as _load_contract
 from .fourslot import FOUR_SLOT, LAYOUTS, THREE_BUFFER
 from .cnames import check_names as check_c_names
 from .faults import parse_faults
+from .modes import parse_modes
 from .termination import parse_board_timing
 
 CONTRACT_TIME_BITS = _load_contract().time_bits
@@ -129,8 +130,9 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
     err = Errors(loc)
 
     for key in data:
-        if key not in ("system", "bus", "channel", "board", "faults"):
-            err.general(f"unknown section [{key}] (expected [system], [bus], [faults], [board.<name>], [[channel]])")
+        if key not in ("system", "bus", "channel", "board", "faults", "mode"):
+            err.general(f"unknown section [{key}] (expected [system], [bus], [faults], [board.<name>], [[channel]], "
+                        "[[mode]])")
 
     # ---- [system]
     sysd = data.get("system")
@@ -477,6 +479,8 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
         if ch.period_clocks < 1:
             err.channel(ch.index, ch.name, "max_period_us", f"{ch.max_period_us} us is less than "
                         f"one clock at clock_hz = {clock_hz}")
+    err.raise_if_any()
+    system.modes = parse_modes(data.get("mode"), system, err, _describe, _is_int)
     err.raise_if_any()
     return system
 

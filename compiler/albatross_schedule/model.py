@@ -163,6 +163,7 @@ class System:
     timing: dict = dataclasses.field(default_factory=dict)  # board index -> BoardTiming
     faults: Optional[object] = None  # the fault hypothesis ([faults], faults.Hypothesis) or None
     drop_run: int = 2               # K: a destination is dropped after K failures in a row (ROM H2)
+    modes: list = dataclasses.field(default_factory=list)   # modes.Mode, [[mode]]; empty: one schedule
 
     @property
     def sync_mode(self) -> bool:

@@ -1,4 +1,5 @@
-"""timeline.svg: one schedule cycle, a lane for the bus and one per channel."""
+"""timeline.svg: one schedule cycle, a lane for the bus and one per channel;
+with [[mode]], one such lane group per mode, the start-up mode first."""
 
 from __future__ import annotations
 
@@ -31,7 +32,7 @@ def _lighten(hex_color: str, f: float) -> str:
     return f"#{r:02x}{g:02x}{b:02x}"
 
 
-def render_svg(system: System, plan: Plan, rep: dict) -> str:
+def render_svg(system: System, plan: Plan, rep: dict, heading: str = "") -> str:
     hz = system.clock_hz
     C = plan.cycle
     routes = {ch.index: f"{system.boards[ch.producer] if ch.producer is not None else 'controller'} "
@@ -59,7 +60,7 @@ def render_svg(system: System, plan: Plan, rep: dict) -> str:
              'patternTransform="rotate(45)"><rect width="2.2" height="6" fill="#ffffff" '
              'fill-opacity="0.55"/></pattern></defs>')
     o.append(f'<rect width="{width}" height="{height}" fill="#ffffff"/>')
-    title = (f"{system.name}: one schedule cycle = {C} clocks = {us(C, hz):g} \u00b5s "
+    title = (f"{heading}{system.name}: one schedule cycle = {C} clocks = {us(C, hz):g} \u00b5s "
              f"({system.mode}, {hz / 1e6:g} MHz)")
     o.append(f'<text x="{label_w}" y="24" font-size="16" font-weight="bold" fill="#222">{_esc(title)}</text>')
     sub = (f"{len(plan.slots)} ROM entries \u00b7 bus utilisation {100 * rep['bus_utilisation']:.1f} % "
@@ -167,5 +168,35 @@ def render_svg(system: System, plan: Plan, rep: dict) -> str:
         lx += 40 + 6.5 * len(text)
     o.append(f'<text x="{lx}" y="{ly + 11}" font-size="11" fill="#666">'
              '#n: ROM entry n \u00b7 first slot of a channel solid, redundant slots hatched</text>')
+    o.append("</svg>")
+    return "\n".join(o) + "\n"
+
+
+def render_modes_svg(system: System, plan: Plan, rep: dict) -> str:
+    """The timeline of every mode, one lane group (render_svg) under the other;
+    a system without modes: render_svg."""
+    plans = getattr(system, "mode_plans", None)
+    if not plans:
+        return render_svg(system, plan, rep)
+    groups = []
+    for i, (m, s, p, r) in enumerate(plans):
+        nxt = ", ".join(plans[j][0].name for j in m.next) or "none"
+        heading = f"mode {m.name}{' (start-up)' if i == 0 else ''}, switches to {nxt} \u2014 "
+        groups.append(render_svg(s, p, r, heading))
+    sizes = []
+    for g in groups:
+        head = g[:g.index(">")]
+        sizes.append((int(head.split(' width="')[1].split('"')[0]), int(head.split(' height="')[1].split('"')[0])))
+    width, height = max(w for w, _ in sizes), sum(h for _, h in sizes)
+    o = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" viewBox="0 0 {width} {height}">',
+         f'<rect width="{width}" height="{height}" fill="#ffffff"/>']
+    y = 0
+    for g, (_, h) in zip(groups, sizes):
+        # each group's own <svg>, placed at its offset (its hatch pattern id made its own)
+        body = g.replace('id="hatch"', f'id="hatch{y}"').replace("url(#hatch)", f"url(#hatch{y})")
+        o.append(body.replace("<svg ", f'<svg y="{y}" ', 1).rstrip("\n"))
+        if y:
+            o.append(f'<line x1="0" y1="{y}" x2="{width}" y2="{y}" stroke="#888" stroke-width="1.5"/>')
+        y += h
     o.append("</svg>")
     return "\n".join(o) + "\n"

@@ -12,7 +12,8 @@ from .description import load_description, load_toml, parse_description
 from .faults import plan_for_hypothesis
 from .layout import allocate_ram, verify_ram_layout
 from .model import Plan, ScheduleError, System
-from .picture import render_svg
+from .modes import mode_summary, plan_mode
+from .picture import render_modes_svg
 from .plan import build_plan, channel_gaps
 from .report import build_report, render_report_txt
 from .rom import encode_rom, rom_hex, verify_rom
@@ -40,15 +41,36 @@ def self_check(system: System, plan: Plan, rom: list, layout: dict):
         raise AssertionError("internal error, the plan breaks the contract: " + "; ".join(problems))
 
 
-def compile_system(system: System):
-    layout = allocate_ram(system)
+def _plan(system: System):
     # build_plan, spacing slots for bounded Imports, with retry budgets, drop run
     # and redundancy sized for the fault hypothesis (if the description has one)
-    plan = plan_for_hypothesis(system, lambda s: enforce_termination(s, build_plan))
-    rom = encode_rom(system, plan)
-    self_check(system, plan, rom, layout)
-    rep = build_report(system, plan)
-    return plan, rom, rep
+    return plan_for_hypothesis(system, lambda s: enforce_termination(s, build_plan))
+
+
+def compile_system(system: System):
+    """(system, plan, rom, report): with [[mode]], every mode planned and
+    checked over the one RAM layout, and the start-up mode's system and plan
+    (its channels carry its slots) for the outputs, the report listing every
+    mode (report["modes"]); without, the description's system."""
+    layout = allocate_ram(system)
+    if not system.modes:
+        plan = _plan(system)
+        rom = encode_rom(system, plan)
+        self_check(system, plan, rom, layout)
+        return system, plan, rom, build_report(system, plan)
+    planned = []
+    for m in system.modes:
+        ms, plan = plan_mode(system, m, _plan)
+        rom = encode_rom(ms, plan)
+        try:
+            self_check(ms, plan, rom, layout)
+        except AssertionError as e:
+            raise AssertionError(f"mode '{m.name}': {e}")
+        planned.append((ms, plan, rom, build_report(ms, plan)))
+    ms, plan, rom, rep = planned[0]
+    rep["modes"] = [mode_summary(system, system.modes, i, r) for i, (_, _, _, r) in enumerate(planned)]
+    ms.mode_plans = [(m, s, p, r) for m, (s, p, _, r) in zip(system.modes, planned)]
+    return ms, plan, rom, rep
 
 
 def generate(system: System, plan: Plan, rom: list, rep: dict) -> dict:
@@ -57,7 +79,7 @@ def generate(system: System, plan: Plan, rom: list, rep: dict) -> dict:
     files = {"rom.hex": rom_hex(rom),
              "report.json": json.dumps(rep, indent=2) + "\n",
              "report.txt": render_report_txt(rep),
-             "timeline.svg": render_svg(system, plan, rep)}
+             "timeline.svg": render_modes_svg(system, plan, rep)}
     for b, name in enumerate(system.boards):
         files[f"{name}.h"] = render_board_header(system, b, desc, plan)
         files[f"{name}.c"] = render_board_c(system, b, desc)
@@ -99,7 +121,7 @@ def compile_file(path: str, out_dir: Optional[str] = None, no_redundancy: bool =
     if no_redundancy:   # one slot per channel and cycle: the spare capacity stays idle
         for ch in system.channels:
             ch.max_slots = 1
-    plan, rom, rep = compile_system(system)
+    system, plan, rom, rep = compile_system(system)
     files = generate(system, plan, rom, rep)
     if out_dir is not None:
         write_outputs(files, out_dir)

@@ -208,6 +208,19 @@ def render_report_txt(rep: dict) -> str:
         for i in b["instances"]:
             L.append(f"    0x{i['base']:04x}  {i['bytes']:5d} B  {i['channel']} ({i['role']})")
     L.append("")
+    if rep.get("modes"):
+        L.append("Modes (the ROM image and board headers hold the start-up mode; the others are planned and "
+                 "checked here, for the controller's mode table to come)")
+        for m in rep["modes"]:
+            tag = " (start-up)" if m["start_up"] else ""
+            L.append(f"  {m['name']}{tag}: cycle {m['cycle']['clocks']} clocks = {f(m['cycle']['us'])} us, "
+                     f"{m['entries']} entries, bus utilisation {100 * m['bus_utilisation']:.1f} %, drop run "
+                     f"{m['drop_run']}; switches to {', '.join(m['next']) or 'none'}"
+                     + (f"; leaves out {', '.join(m['left_out'])}" if m["left_out"] else ""))
+            for c in m["channels"]:
+                L.append(f"    {c['name']}: guaranteed period {f(c['guaranteed_period']['us'])} / max "
+                         f"{f(c['max_period']['us'])} us, x{c['redundancy']} per cycle")
+        L.append("")
     L.append("ROM entries")
     L.append("  entry  start    end      channel")
     for e in rep["entries_list"]:

@@ -324,7 +324,7 @@ class FourSlotDescriptionTests(unittest.TestCase):
                 sysm = S.parse_description(tomllib.loads(base + f'kind = "{kind}"\n'), "k.toml")
                 ch = sysm.channels[0]
                 self.assertEqual((ch.kind, ch.layout), ("copy", layout))
-                plan, rom, rep = S.compile_system(sysm)
+                _, plan, rom, rep = S.compile_system(sysm)
                 self.assertEqual(rep["channels"][0]["channel_kind"], layout)
                 self.assertEqual(rep["boards"][0]["instances"][0]["bytes"], 4 + (4 if layout == "four_slot" else 3) * 8)
 

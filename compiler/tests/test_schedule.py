@@ -468,7 +468,7 @@ class PlanTests(unittest.TestCase):
         with open(path, "w") as f:
             f.write(text)
         system = S.load_description(path)
-        plan, rom, rep = S.compile_system(system)
+        _, plan, rom, rep = S.compile_system(system)
         return system, plan, rom, rep
 
     def test_entry_cap(self):

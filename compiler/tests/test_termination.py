@@ -172,7 +172,7 @@ class PlanBoundTests(unittest.TestCase):
             with self.subTest(example=name):
                 text = without_boards(self.read(os.path.join(REPO, "sim", name)))
                 sysm = S.parse_description(tomllib.loads(text), name, text)
-                plan, rom, rep = S.compile_system(sysm)
+                _, plan, rom, rep = S.compile_system(sysm)
                 sysm2 = S.parse_description(tomllib.loads(text), name, text)
                 S.allocate_ram(sysm2)
                 plan2 = S.plan_for_hypothesis(sysm2, S.build_plan)   # its [faults] sizes the slots

@@ -1,0 +1,166 @@
+"""Schedule modes ([[mode]] in the description): several schedules of one
+system.  A mode names the channels it refreshes and may change their
+max_period_us; the first mode is the start-up mode.  Each mode is planned
+and checked on its own, as a system of its channels, over the one RAM layout
+of the whole description (a channel keeps its places in every mode).
+
+Rules:
+  * name: an identifier, unique.  channels: the mode's channel names
+    (default: every channel).  periods: {channel: max_period_us} for channels
+    of the mode (default: the channel's own).  next: the modes it may switch
+    to (default: every other mode).
+  * Without [[mode]] the system has one schedule, exactly as before.
+  * The outputs (ROM image, board headers) hold the start-up mode, so it must
+    list every channel: the controller has no mode table yet, and a channel
+    the start-up mode left out would have no slot.  The other modes are
+    planned, checked and reported (report.json "modes", report.txt, one lane
+    group each in timeline.svg)."""
+
+from __future__ import annotations
+
+import copy
+import dataclasses
+
+from .model import IDENT_RE, ScheduleError, System
+
+MODE_KEYS = {"name", "channels", "periods", "next"}
+MAX_MODES = 16
+
+
+@dataclasses.dataclass
+class Mode:
+    name: str
+    channels: list                  # channel indices, description order
+    periods: dict                   # channel index -> max_period_us
+    next: list                      # mode indices it may switch to
+
+
+def parse_modes(raw, system: System, err, describe, is_int) -> list:
+    """The [[mode]] array of the description (raw: data.get("mode")) as Modes;
+    errors go to err (description.Errors), each naming the mode and field."""
+    if raw is None:
+        return []
+    if not isinstance(raw, list) or not all(isinstance(m, dict) for m in raw):
+        err.general("mode must be an array of tables ([[mode]])")
+        return []
+    if len(raw) > MAX_MODES:
+        err.general(f"{len(raw)} modes, at most {MAX_MODES}")
+    by_name = {ch.name: ch for ch in system.channels}
+    names = []
+
+    def fail(i, label, field, msg):
+        where = err.loc.where("mode", i, field)
+        fld = f", field '{field}'" if field else ""
+        err.messages.append(f"{where}: mode {label}{fld}: {msg}")
+
+    for i, md in enumerate(raw):
+        name = md.get("name")
+        label = f"'{name}'" if isinstance(name, str) else f"#{i + 1}"
+        for key in md:
+            if key not in MODE_KEYS:
+                fail(i, label, key, f"unknown field (expected one of {', '.join(sorted(MODE_KEYS))})")
+        if not isinstance(name, str) or not IDENT_RE.match(name):
+            fail(i, label, "name", f"{describe(name)} is not an identifier" if name is not None else "missing")
+        elif name in names:
+            fail(i, label, "name", "a mode of that name comes before it")
+        names.append(name)
+
+    modes = []
+    for i, md in enumerate(raw):
+        label = f"'{names[i]}'" if isinstance(names[i], str) else f"#{i + 1}"
+        chans = md.get("channels")
+        if chans is None:
+            idx = [ch.index for ch in system.channels]
+        elif not isinstance(chans, list) or not chans or not all(isinstance(c, str) for c in chans):
+            fail(i, label, "channels", "must be a non-empty list of channel names")
+            idx = []
+        else:
+            idx = []
+            for c in chans:
+                if c not in by_name:
+                    fail(i, label, "channels", f"no channel '{c}' in the description")
+                elif by_name[c].index in idx:
+                    fail(i, label, "channels", f"'{c}' listed twice")
+                else:
+                    idx.append(by_name[c].index)
+            idx.sort()
+        periods = {}
+        pd = md.get("periods", {})
+        if not isinstance(pd, dict):
+            fail(i, label, "periods", "must be a table {channel = max_period_us}")
+            pd = {}
+        for c, us in pd.items():
+            if c not in by_name:
+                fail(i, label, "periods", f"no channel '{c}' in the description")
+            elif by_name[c].index not in idx:
+                fail(i, label, "periods", f"'{c}' is not a channel of this mode")
+            elif not is_int(us) or us <= 0:
+                fail(i, label, "periods", f"{c}: {describe(us)} is not a positive integer (microseconds)")
+            elif us * system.clock_hz // 1_000_000 < 1:
+                fail(i, label, "periods", f"{c}: {us} us is less than one clock")
+            else:
+                periods[by_name[c].index] = us
+        nxt = md.get("next")
+        if nxt is None:
+            targets = [j for j in range(len(raw)) if j != i]
+        elif not isinstance(nxt, list) or not all(isinstance(n, str) for n in nxt):
+            fail(i, label, "next", "must be a list of mode names")
+            targets = []
+        else:
+            targets = []
+            for n in nxt:
+                if n not in names:
+                    fail(i, label, "next", f"no mode '{n}' in the description")
+                elif names.index(n) == i:
+                    fail(i, label, "next", "a mode cannot switch to itself")
+                elif names.index(n) not in targets:
+                    targets.append(names.index(n))
+        modes.append(Mode(name=names[i] if isinstance(names[i], str) else f"#{i + 1}", channels=idx,
+                          periods=periods, next=targets))
+    if modes and len(modes[0].channels) != len(system.channels):
+        missing = [ch.name for ch in system.channels if ch.index not in modes[0].channels]
+        fail(0, f"'{modes[0].name}'", "channels",
+             f"the start-up mode (the first) must list every channel for now: the ROM image and board "
+             f"headers hold the start-up mode, and the controller has no mode table yet (missing: "
+             f"{', '.join(missing)})")
+    syncs = [ch.index for ch in system.channels if ch.sync]
+    for i, m in enumerate(modes):
+        if syncs and syncs[0] not in m.channels:
+            fail(i, f"'{m.name}'", "channels", "a position-synchronised system's sync channel must be in every mode")
+    return modes
+
+
+def mode_system(system: System, mode: Mode) -> System:
+    """The system of one mode: its channels (copies, with the RAM places of the
+    whole description and the mode's periods), planned on their own."""
+    chans = []
+    for ch in system.channels:
+        if ch.index in mode.channels:
+            c = copy.deepcopy(ch)
+            if ch.index in mode.periods:
+                c.max_period_us = mode.periods[ch.index]
+                c.period_clocks = c.max_period_us * system.clock_hz // 1_000_000
+            chans.append(c)
+    return dataclasses.replace(system, channels=chans, modes=[])
+
+
+def plan_mode(system: System, mode: Mode, plan_fn):
+    """plan_fn(mode system) with every message of a failure naming the mode."""
+    ms = mode_system(system, mode)
+    try:
+        return ms, plan_fn(ms)
+    except ScheduleError as e:
+        raise ScheduleError([f"mode '{mode.name}': {m}" for m in e.messages])
+
+
+def mode_summary(system: System, modes: list, i: int, rep: dict) -> dict:
+    """report.json's entry of mode i, from that mode's own report rep."""
+    m = modes[i]
+    keep = ("cycle", "cycle_limited_by", "entries", "drop_run", "bus_utilisation", "controller_busy",
+            "schedule_fill")
+    return dict({k: rep[k] for k in keep if k in rep},
+                name=m.name, start_up=i == 0, next=[modes[j].name for j in m.next],
+                channels=[{k: c[k] for k in ("name", "id", "max_period", "guaranteed_period", "redundancy",
+                                             "age_bound", "latency") if k in c}
+                          for c in rep["channels"]],
+                left_out=[ch.name for ch in system.channels if ch.index not in m.channels])

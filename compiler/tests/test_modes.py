@@ -1,0 +1,141 @@
+"""Tests of schedule modes ([[mode]], compiler/albatross_schedule/modes.py):
+the description's modes, each mode planned and checked on its own over one
+RAM layout, the errors that name the mode, and the outputs.
+
+    python3 -m unittest discover -s compiler/tests -p test_modes.py -v
+"""
+
+import os
+import sys
+import tomllib
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from oracle import REPO  # noqa: E402
+import albatross_schedule as S  # noqa: E402
+
+ROBOT = os.path.join(REPO, "sim", "mobot3.toml")
+with open(ROBOT) as _f:
+    ROBOT_TEXT = _f.read()
+
+# cruise: the robot as it is; dock: Position and MotorCmd twice as often, no RadarMap, no Status.
+TWO_MODES = """
+[[mode]]
+name = "cruise"
+next = ["dock"]
+
+[[mode]]
+name     = "dock"
+channels = ["Position", "MotorCmd", "GlobalTime"]
+periods  = { Position = 25, MotorCmd = 25 }
+"""
+
+
+def system_of(extra: str):
+    text = ROBOT_TEXT + extra
+    return S.parse_description(tomllib.loads(text), "robot-modes.toml", text)
+
+
+def errors_of(extra: str) -> list:
+    try:
+        system_of(extra)
+    except S.ScheduleError as e:
+        return e.messages
+    return []
+
+
+class ModeDescriptionTests(unittest.TestCase):
+    def test_no_modes_is_one_schedule(self):
+        system = system_of("")
+        self.assertEqual(system.modes, [])
+        _, plan, rom, rep = S.compile_system(system)
+        self.assertNotIn("modes", rep, "a description without [[mode]] has no modes in its report")
+
+    def test_modes_parsed(self):
+        system = system_of(TWO_MODES)
+        names = [m.name for m in system.modes]
+        self.assertEqual(names, ["cruise", "dock"])
+        cruise, dock = system.modes
+        self.assertEqual(cruise.channels, [ch.index for ch in system.channels], "channels default to every channel")
+        self.assertEqual(cruise.next, [1])
+        self.assertEqual(dock.next, [0], "next defaults to every other mode")
+        by = {ch.name: ch.index for ch in system.channels}
+        self.assertEqual(dock.periods, {by["Position"]: 25, by["MotorCmd"]: 25})
+
+    def check_error(self, extra, *words):
+        msgs = errors_of(extra)
+        self.assertTrue(msgs, f"expected an error naming {words}, got none")
+        self.assertTrue(any(all(w in m for w in words) for m in msgs),
+                        f"expected an error naming {words}, got {msgs}")
+
+    def test_errors_name_the_mode_and_field(self):
+        self.check_error('[[mode]]\nname = "a"\n[[mode]]\nname = "b"\nchannels = ["Nope"]\n',
+                         "mode 'b'", "channels", "no channel 'Nope'")
+        self.check_error('[[mode]]\nname = "a"\n[[mode]]\nname = "a"\nchannels = ["Position"]\n',
+                         "mode 'a'", "name", "comes before")
+        self.check_error('[[mode]]\nname = "a"\nnext = ["zz"]\n', "mode 'a'", "next", "no mode 'zz'")
+        self.check_error('[[mode]]\nname = "a"\nnext = ["a"]\n', "mode 'a'", "next", "itself")
+        self.check_error('[[mode]]\nname = "a"\n[[mode]]\nname = "b"\nchannels = ["Position"]\n'
+                         'periods = { MotorCmd = 10 }\n', "mode 'b'", "periods", "not a channel of this mode")
+        self.check_error('[[mode]]\nname = "a"\nperiods = { Position = 0 }\n', "mode 'a'", "periods", "positive")
+        self.check_error('[[mode]]\nname = "a"\ncolour = 1\n', "mode 'a'", "colour", "unknown field")
+        self.check_error('[[mode]]\nname = "3x"\n', "name", "not an identifier")
+        data = tomllib.loads(ROBOT_TEXT)
+        data["mode"] = 1
+        with self.assertRaises(S.ScheduleError) as cm:
+            S.parse_description(data, "robot-modes.toml", ROBOT_TEXT)
+        self.assertTrue(any("array of tables" in m for m in cm.exception.messages), cm.exception.messages)
+
+    def test_start_up_mode_lists_every_channel(self):
+        self.check_error('[[mode]]\nname = "dock"\nchannels = ["Position", "MotorCmd", "GlobalTime"]\n',
+                         "mode 'dock'", "start-up mode", "RadarMap")
+
+    def test_error_line_numbers(self):
+        msgs = errors_of('[[mode]]\nname = "a"\n[[mode]]\nname = "b"\nchannels = ["Nope"]\n')
+        line = ROBOT_TEXT.count("\n") + 5
+        self.assertTrue(any(f"robot-modes.toml:{line}:" in m for m in msgs), f"expected line {line}: {msgs}")
+
+
+class ModePlanTests(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.system, cls.plan, cls.rom, cls.rep = S.compile_system(system_of(TWO_MODES))
+        _, cls.plan1, cls.rom1, cls.rep1 = S.compile_system(system_of(""))
+
+    def test_every_mode_planned_and_reported(self):
+        modes = {m["name"]: m for m in self.rep["modes"]}
+        self.assertEqual(list(modes), ["cruise", "dock"])
+        self.assertTrue(modes["cruise"]["start_up"])
+        self.assertEqual(modes["dock"]["left_out"], ["RadarMap", "Status"])
+        self.assertEqual([c["name"] for c in modes["dock"]["channels"]], ["Position", "MotorCmd", "GlobalTime"])
+        for m in modes.values():
+            for c in m["channels"]:
+                self.assertLessEqual(c["guaranteed_period"]["clocks"], c["max_period"]["clocks"],
+                                     f"mode {m['name']}, {c['name']}: guaranteed period over its max_period")
+        dock = {c["name"]: c for c in modes["dock"]["channels"]}
+        self.assertEqual(dock["Position"]["max_period"]["us"], 25, "dock's period of Position is its own")
+        self.assertLess(modes["dock"]["cycle"]["clocks"], modes["cruise"]["cycle"]["clocks"],
+                        "dock's shorter periods give a shorter cycle")
+
+    def test_outputs_hold_the_start_up_mode(self):
+        self.assertEqual(self.rom, self.rom1, "the ROM image of cruise-first is the robot's own")
+        self.assertEqual(self.plan.cycle, self.plan1.cycle)
+        files = S.generate(self.system, self.plan, self.rom, self.rep)
+        svg = files["timeline.svg"]
+        self.assertEqual(svg.count("<svg "), 3, "one outer picture and a lane group per mode")
+        self.assertIn("mode cruise (start-up), switches to dock", svg)
+        self.assertIn("mode dock, switches to cruise", svg)
+        self.assertIn("Modes (the ROM image and board headers hold the start-up mode", files["report.txt"])
+
+    def test_unplannable_mode_is_named(self):
+        # 1 us = 50 clocks: no slot of Position fits so often.
+        bad = TWO_MODES.replace("Position = 25", "Position = 1")
+        with self.assertRaises(S.ScheduleError) as cm:
+            S.compile_system(system_of(bad))
+        self.assertTrue(cm.exception.messages, "no message")
+        for m in cm.exception.messages:
+            self.assertTrue(m.startswith("mode 'dock': "), f"expected the message to name mode 'dock', got {m!r}")
+
+
+if __name__ == "__main__":
+    unittest.main()
