@@ -8,7 +8,11 @@
 //     TIME_BITS bits (higher bits set: the header, or the entry, is invalid).
 //   * ROM format (rtl/albatross_contract.toml): header H0..H3, entry k at
 //     word 4 + 8k; H3 is the check word that makes the CRC of the whole
-//     image (words 0 .. 4+8*NE-1, H3 included) 0; no per-entry checksum.  The CRC and the prefix
+//     image (words 0 .. 4+8*NE-1, H3 included) 0; no per-entry checksum.
+//     An image with modes (H2.modes > 0) runs its start-up mode: the cycle
+//     is entries 0 .. H2.start_end - 1 (else 0 .. NE - 1); its other
+//     entries and the mode descriptors are checked by the CRC only.  A
+//     start_end of 0 or above NE is an invalid header.  The CRC and the prefix
 //     signatures are rtl/albatross_rom_check.v's, the ROM, its loading and
 //     the word read in each clock rtl/albatross_schedule_rom.v's (their rules).
 //   * Start-up (after enable_i): read the header (5 clocks), then one CRC
@@ -160,6 +164,7 @@ module albatross_sequencer #(
     reg                smode_q;
     reg                sync_ok_q;     // entry 0 is a valid SYNC COPY (this cycle)
     reg [7:0]          drop_run_q;    // H2's drop run (data: read before the first slot, not reset)
+    reg [7:0]          ent_end_q;     // the entry after the cycle's last: NE, or with modes H2.start_end (data, as drop_run_q)
     reg [TB-1:0]       start_q;       // E1 of entry ent_q; from FETCH clock 6 on, of entry ent_q + 1
                                       // (of entry 0 after the last entry and after the header)
     reg                start_bad_q;   // ... did not fit in TIME_BITS
@@ -206,7 +211,8 @@ module albatross_sequencer #(
     wire [ROM_AW-1:0]  last_word = last_wide[ROM_AW-1:0];
     wire [ROM_AW-1:0]  bg_adr;        // the ROM check's next word
     wire [7:0]         ent_inc   = ent_q + 8'd1;
-    wire               last_ent  = ent_inc == ne_q;
+    wire               last_ent  = ent_inc == ent_end_q;
+    wire               h2_modes  = rom_q[ALB_ROM_H2_MODES_LSB +: ALB_ROM_H2_MODES_W] != 0;   // (H2 in header step 3)
     albatross_schedule_rom #(.ROM_WORDS(ROM_WORDS), .ROM_FILE(ROM_FILE)) u_rom (
         .clk_i(clk_i), .time_i(time_q), .header_i(state_q == ST_HEADER && !hdr_last), .start_i(start_now),
         .fetch_i(state_q == ST_FETCH), .step_i(step_q), .ent_i(ent_q), .ent_inc_i(ent_inc), .last_i(last_ent),
@@ -296,7 +302,14 @@ module albatross_sequencer #(
                             cycle_q <= rom_q[TB-1:0];
                             if (rom_q[31:TB] != 0 || rom_q[TB-1:0] == {TB{1'b0}}) err_q <= 1'b1;
                         end
-                        3'd3: drop_run_q <= rom_q[ALB_ROM_H2_DROP_RUN_LSB +: 8];   // H2
+                        3'd3: begin                                             // H2
+                            drop_run_q <= rom_q[ALB_ROM_H2_DROP_RUN_LSB +: 8];
+                            // with modes the cycle runs the start-up mode's entries only
+                            ent_end_q  <= h2_modes ? rom_q[ALB_ROM_H2_START_END_LSB +: 8] : ne_q;
+                            if (h2_modes && (rom_q[ALB_ROM_H2_START_END_LSB +: 8] == 8'd0 ||
+                                             rom_q[ALB_ROM_H2_START_END_LSB +: 8] > ne_q))
+                                err_q <= 1'b1;
+                        end
                         default: ;
                     endcase
                     if (step_q == 3'd4) begin                                   // E1 of entry 0

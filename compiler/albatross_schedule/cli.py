@@ -52,10 +52,10 @@ def main(argv=None) -> int:
               f"{len(plan.slots)} entries, bus utilisation {100 * rep['bus_utilisation']:.1f} % "
               f"-> {args.out}/ ({len(files)} files)")
         for m in rep.get("modes", []):
-            print(f"  mode {m['name']}{' (start-up, in the ROM image)' if m['start_up'] else ''}: cycle "
+            print(f"  mode {m['name']}{' (start-up)' if m['start_up'] else ''}: cycle "
                   f"{m['cycle']['clocks']} clocks, {m['entries']} entries, bus utilisation "
                   f"{100 * m['bus_utilisation']:.1f} %")
         if rep.get("modes"):
-            print("  (the other modes are planned and checked; the controller runs the start-up mode "
-                  "until it has a mode table)")
+            print("  (rom.hex holds every mode; the controller runs the start-up mode and does not switch "
+                  "modes yet)")
     return 0

@@ -133,6 +133,7 @@ class Contract:
         self.place_base = place["base"]
         self.header = self._words(rom["header"], fmt)
         self.entry = self._words(rom["entry"], fmt)
+        self.mode = self._words(rom.get("mode", []), fmt)   # D0..: a mode descriptor, in an entry's place
         lay = data["layout"]
         self.word_bytes = int(lay["word_bytes"])
         self.buffers = int(lay["buffers"])
@@ -157,7 +158,8 @@ class Contract:
         wb = self.word_bits
         if wb != 32:
             p.append(f"word_bits {wb}: the ROM words are 32 bits")
-        for group, words, n in (("header", self.header, self.header_words), ("entry", self.entry, self.entry_words)):
+        for group, words, n in (("header", self.header, self.header_words), ("entry", self.entry, self.entry_words),
+                                ("mode", self.mode, self.entry_words)):
             if len(words) != n:
                 p.append(f"rom.{group} lists {len(words)} words, {group}_words is {n}")
             for w in words:
@@ -172,7 +174,8 @@ class Contract:
                         p.append(f"{w.name}.{f.name}: {f.width} bits cannot hold a place")
                 if w.crc and [f.width for f in w.fields] != [wb]:
                     p.append(f"{w.name}: the CRC word is one {wb}-bit field")
-        if [w.crc for w in self.header + self.entry].count(True) != 1 or any(w.crc for w in self.entry):
+        if [w.crc for w in self.header + self.entry + self.mode].count(True) != 1 or \
+                any(w.crc for w in self.entry + self.mode):
             p.append("rom: exactly one CRC word, in the header")
         if self.place_board.mask & self.place_base.mask:
             p.append("rom.place: board and base overlap")
@@ -180,6 +183,9 @@ class Contract:
             self._need(p, "H0", name)
         for name in ("kind", "flags", "id", "nd", "w"):
             self._need(p, "E0", name)
+        for word, name in (("H2", "table"), ("H2", "modes"), ("H2", "start_end"), ("D0", "cycle"), ("D0", "first"),
+                           ("D0", "end"), ("D1", "drop_run"), ("D1", "next")):
+            self._need(p, word, name)
         if not p:
             if self.magic > self.field("H0", "magic").max:
                 p.append(f"magic {self.magic:#x} does not fit H0.magic")
@@ -198,7 +204,7 @@ class Contract:
         if not 0 <= self.crc_poly < (1 << wb) or not self.crc_poly & 1 or not 0 <= self.crc_seed < (1 << wb):
             p.append("crc_poly (odd) or crc_seed out of range")
         if not p:
-            for word, name in (("H1", "cycle"), ("E1", "start"), ("E2", "length")):
+            for word, name in (("H1", "cycle"), ("E1", "start"), ("E2", "length"), ("D0", "cycle")):
                 if self.field(word, name).width != self.time_bits:
                     p.append(f"{word}.{name} is not time_bits ({self.time_bits}) wide")
         offs = sorted((c.offset, c.offset + c.size) for c in self.control.values())
@@ -237,12 +243,13 @@ class Contract:
         return p
 
     def _need(self, p, word, name):
-        if not any(w.name == word and any(f.name == name for f in w.fields) for w in self.header + self.entry):
+        if not any(w.name == word and any(f.name == name for f in w.fields)
+                   for w in self.header + self.entry + self.mode):
             p.append(f"{word} has no field '{name}'")
 
     # ---- look-ups
     def word(self, name: str) -> Word:
-        for w in self.header + self.entry:
+        for w in self.header + self.entry + self.mode:
             if w.name == name:
                 return w
         raise KeyError(name)

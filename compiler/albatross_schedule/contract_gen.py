@@ -19,7 +19,7 @@ GENERATOR = "make contract (compiler/albatross_schedule/contract_gen.py)"
 VH_PATH = "rtl/albatross_contract.vh"
 C_LAYOUT_PATH = "c-driver/albatross_layout.h"
 CXX_PATH = "tb/common/albatross_contract.h"
-BLOCKS = ("rom-header", "rom-entry", "channel-layout", "four-slot-layout")
+BLOCKS = ("rom-header", "rom-entry", "rom-mode", "channel-layout", "four-slot-layout")
 
 
 def _stamp(comment: str) -> str:
@@ -33,7 +33,7 @@ def _id(*parts) -> str:
 def _fields(c: Contract):
     """Every named ROM field, places expanded: (name suffix, Field)."""
     out = []
-    for w in c.header + c.entry:
+    for w in c.header + c.entry + c.mode:
         for f in w.fields:
             out.append((_id(w.name, f.name), f))
             if f.place:
@@ -237,7 +237,7 @@ def render_cxx(c: Contract) -> str:
          "namespace alb_contract {",
          "",
          "struct Field {",
-         "    unsigned word, lsb, width;  // word: index within the header or within an entry",
+         "    unsigned word, lsb, width;  // word: index within the header, an entry or a mode descriptor",
          "    constexpr uint32_t max() const { return width >= 32 ? 0xFFFFFFFFu : (1u << width) - 1u; }",
          "    constexpr uint32_t put(uint32_t v) const { return (v & max()) << lsb; }",
          "    constexpr uint32_t get(uint32_t w) const { return (w >> lsb) & max(); }",
@@ -325,6 +325,8 @@ def render_markdown_block(c: Contract, name: str) -> str:
         L = _md_rom(c, c.header)
     elif name == "rom-entry":
         L = _md_rom(c, c.entry)
+    elif name == "rom-mode":
+        L = _md_rom(c, c.mode)
     elif name == "channel-layout":
         L = ["| offset | size | contents | written only by |", "|---|---|---|---|"]
         L += [f"| {o} | {s} | {t} | {w} |" for o, s, t, w in layout_rows(c)]

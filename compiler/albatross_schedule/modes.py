@@ -10,11 +10,11 @@ Rules:
     of the mode (default: the channel's own).  next: the modes it may switch
     to (default: every other mode).
   * Without [[mode]] the system has one schedule, exactly as before.
-  * The outputs (ROM image, board headers) hold the start-up mode, so it must
-    list every channel: the controller has no mode table yet, and a channel
-    the start-up mode left out would have no slot.  The other modes are
-    planned, checked and reported (report.json "modes", report.txt, one lane
-    group each in timeline.svg)."""
+  * The ROM image holds every mode (rom.encode_rom_modes: the entries of
+    each mode, then a descriptor per mode); the controller runs the start-up
+    mode.  The board headers hold the start-up mode, so it must list every
+    channel.  Modes need the time-rigid time mode.  report.json "modes",
+    report.txt and timeline.svg (a lane group each) show every mode."""
 
 from __future__ import annotations
 
@@ -123,10 +123,10 @@ def parse_modes(raw, system: System, err, describe, is_int) -> list:
              f"the start-up mode (the first) must list every channel for now: the ROM image and board "
              f"headers hold the start-up mode, and the controller has no mode table yet (missing: "
              f"{', '.join(missing)})")
-    syncs = [ch.index for ch in system.channels if ch.sync]
-    for i, m in enumerate(modes):
-        if syncs and syncs[0] not in m.channels:
-            fail(i, f"'{m.name}'", "channels", "a position-synchronised system's sync channel must be in every mode")
+    if modes and system.sync_mode:
+        fail(0, f"'{modes[0].name}'", None, "modes need the time-rigid time mode ([system] mode)")
+    if len(modes) == 1:
+        fail(0, f"'{modes[0].name}'", None, "one mode is the description without [[mode]]: declare two or more")
     return modes
 
 

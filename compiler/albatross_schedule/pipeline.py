@@ -16,7 +16,7 @@ from .modes import mode_summary, plan_mode
 from .picture import render_modes_svg
 from .plan import build_plan, channel_gaps
 from .report import build_report, render_report_txt
-from .rom import encode_rom, rom_hex, verify_rom
+from .rom import MAX_ENTRIES, encode_rom, encode_rom_modes, rom_hex, verify_rom
 from .termination import enforce as enforce_termination, violations
 
 
@@ -49,9 +49,10 @@ def _plan(system: System):
 
 def compile_system(system: System):
     """(system, plan, rom, report): with [[mode]], every mode planned and
-    checked over the one RAM layout, and the start-up mode's system and plan
-    (its channels carry its slots) for the outputs, the report listing every
-    mode (report["modes"]); without, the description's system."""
+    checked over the one RAM layout, the image of all modes (rom), and the
+    start-up mode's system and plan (its channels carry its slots) for the
+    other outputs, the report listing every mode (report["modes"]); without,
+    the description's system."""
     layout = allocate_ram(system)
     if not system.modes:
         plan = _plan(system)
@@ -67,7 +68,17 @@ def compile_system(system: System):
         except AssertionError as e:
             raise AssertionError(f"mode '{m.name}': {e}")
         planned.append((ms, plan, rom, build_report(ms, plan)))
-    ms, plan, rom, rep = planned[0]
+    total = sum(len(p.slots) for _, p, _, _ in planned) + len(planned)
+    if total > MAX_ENTRIES:
+        raise ScheduleError(f"{system.source}: the modes need {total} ROM entries (their slots and a descriptor "
+                            f"each), at most {MAX_ENTRIES}: " + ", ".join(
+                                f"{m.name} {len(p.slots)}" for m, (_, p, _, _) in zip(system.modes, planned)))
+    rom = encode_rom_modes([(s, p, m.next) for m, (s, p, _, _) in zip(system.modes, planned)])
+    problems, _ = verify_rom(rom, n_chan=system.bus.n_chan, n_boards=len(system.boards),
+                             ram_words=[r // 4 for r in system.ram_bytes], sync_expected=system.sync_mode)
+    if problems:
+        raise AssertionError("internal error, the image of the modes breaks the contract: " + "; ".join(problems))
+    ms, plan, _, rep = planned[0]
     rep["modes"] = [mode_summary(system, system.modes, i, r) for i, (_, _, _, r) in enumerate(planned)]
     ms.mode_plans = [(m, s, p, r) for m, (s, p, _, r) in zip(system.modes, planned)]
     return ms, plan, rom, rep

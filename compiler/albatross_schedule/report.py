@@ -209,8 +209,8 @@ def render_report_txt(rep: dict) -> str:
             L.append(f"    0x{i['base']:04x}  {i['bytes']:5d} B  {i['channel']} ({i['role']})")
     L.append("")
     if rep.get("modes"):
-        L.append("Modes (the ROM image and board headers hold the start-up mode; the others are planned and "
-                 "checked here, for the controller's mode table to come)")
+        L.append("Modes (the ROM image holds every mode, the board headers the start-up mode's bounds; the "
+                 "controller runs the start-up mode and does not switch modes yet)")
         for m in rep["modes"]:
             tag = " (start-up)" if m["start_up"] else ""
             L.append(f"  {m['name']}{tag}: cycle {m['cycle']['clocks']} clocks = {f(m['cycle']['us'])} us, "

@@ -74,6 +74,33 @@ def encode_rom(system: System, plan: Plan) -> list:
     return words
 
 
+def encode_rom_modes(planned) -> list:
+    """The image of several modes.  planned: [(system, plan, next mode
+    indices)] per mode, the start-up mode first.  Every mode's entries in
+    mode order, then one descriptor per mode in the places of the last
+    entries (H2.table + m); the header is the start-up mode's, with H2's
+    table, modes and start_end."""
+    system0, plan0, _ = planned[0]
+    ranges, n = [], 0
+    for _, plan, _ in planned:
+        ranges.append((n, n + len(plan.slots)))
+        n += len(plan.slots)
+    words = _pack(C.header, {("H0", "magic"): ROM_MAGIC, ("H0", "ne"): n + len(planned),
+                             ("H0", "flags"): HFLAG_SYNC_MODE if system0.sync_mode else 0,
+                             ("H1", "cycle"): plan0.cycle, ("H2", "drop_run"): system0.drop_run,
+                             ("H2", "table"): n, ("H2", "modes"): len(planned),
+                             ("H2", "start_end"): ranges[0][1]})
+    for _, plan, _ in planned:
+        for s in plan.slots:
+            words += encode_entry(s)
+    for (system, plan, nxt), (first, end) in zip(planned, ranges):
+        words += _pack(C.mode, {("D0", "cycle"): plan.cycle, ("D0", "first"): first, ("D0", "end"): end,
+                                ("D1", "drop_run"): system.drop_run,
+                                ("D1", "next"): sum(1 << j for j in nxt)})
+    words[C.crc_index] = C.check_word(words)
+    return words
+
+
 def rom_hex(words) -> str:
     return "".join(f"{w:08x}\n" for w in words)
 
@@ -129,18 +156,24 @@ def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None
     if len(words) != C.entry_address(ne):
         problems.append(f"ROM has {len(words)} words, header says {ne} entries = {C.entry_address(ne)} words")
     cycle = get(hdr, "H1", "cycle")
-    prev_end = 0
+    ranges, p2 = mode_ranges(words, ne, cycle, drop_run)
+    problems += p2
     copy, time, status = KIND_CODE["copy"], KIND_CODE["time"], KIND_CODE["status"]
     src = C.src_field
-    for k in range(ne):
+    mode_of = {k: (m, c) for m, (first, end, c) in enumerate(ranges) for k in range(first, end)}
+    prev_end, prev_mode = 0, None
+    for k in sorted(mode_of):
         e = words[C.entry_address(k): C.entry_address(k + 1)]
         if len(e) < nw:
             break
-        tag = f"entry {k}"
+        mode, cycle = mode_of[k]
+        if mode != prev_mode:
+            prev_end, prev_mode = 0, mode
+        tag = f"entry {k}" + (f" (mode {mode})" if len(ranges) > 1 else "")
         kind, flags = get(e, "E0", "kind"), get(e, "E0", "flags")
         cid, nd, w = get(e, "E0", "id"), get(e, "E0", "nd"), get(e, "E0", "w")
         start, length = get(e, "E1", "start"), get(e, "E2", "length")
-        ent = {"kind": KIND_NAME.get(kind, kind), "flags": flags, "id": cid, "nd": nd, "w": w,
+        ent = {"mode": mode, "kind": KIND_NAME.get(kind, kind), "flags": flags, "id": cid, "nd": nd, "w": w,
                "start": start, "length": length, "src": C.unplace(src.get(e[src.index])),
                "dst": [C.unplace(f.get(e[f.index])) for f in C.dest_fields][:nd]}
         entries.append(ent)
@@ -193,3 +226,49 @@ def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None
             problems.append(f"{tag}: ends at {start + length}, after the cycle ({cycle})")
         prev_end = start + length
     return problems, entries
+
+
+def mode_ranges(words, ne, cycle, drop_run):
+    """[(first entry, end, cycle)] per mode of an image (one range, 0..NE,
+    without modes) and the problems of its mode descriptors."""
+    def get(ws, word, field):
+        f = C.field(word, field)
+        return f.get(ws[f.index])
+
+    hdr = words[:C.header_words]
+    modes, table, start_end = get(hdr, "H2", "modes"), get(hdr, "H2", "table"), get(hdr, "H2", "start_end")
+    if modes == 0:
+        if table or start_end:
+            return [(0, ne, cycle)], ["H2 table and start_end are 0 in an image without modes"]
+        return [(0, ne, cycle)], []
+    problems, ranges = [], []
+    if modes < 2 or table + modes != ne:
+        problems.append(f"H2: {modes} modes with their descriptors at entries {table}.. must be 2 or more and "
+                        f"end at NE ({ne})")
+        return [(0, min(ne, start_end) if start_end else ne, cycle)], problems
+    nxt_end = 0
+    for m in range(modes):
+        d = words[C.entry_address(table + m): C.entry_address(table + m + 1)]
+        if len(d) < C.entry_words:
+            problems.append(f"mode {m}: descriptor past the end of the image")
+            break
+        first, end, mcycle = get(d, "D0", "first"), get(d, "D0", "end"), get(d, "D0", "cycle")
+        mdrop, nxt = get(d, "D1", "drop_run"), get(d, "D1", "next")
+        tag = f"mode {m} (descriptor at entry {table + m})"
+        if first != nxt_end or not first < end <= table:
+            problems.append(f"{tag}: entries {first}..{end - 1}, expected a range from {nxt_end} ending by {table}")
+        if m == 0 and (end != start_end or mcycle != cycle or mdrop != drop_run):
+            problems.append(f"{tag}: the start-up mode's end, cycle and drop run must be H2.start_end, H1 and "
+                            "H2.drop_run")
+        if mdrop < 2:
+            problems.append(f"{tag}: drop run {mdrop}, the compiler writes 2..255")
+        if nxt >> modes or nxt & (1 << m):
+            problems.append(f"{tag}: next {nxt:#06x} names a mode that does not exist or the mode itself")
+        problems += [f"{tag}: {w.name} (reserved) is not 0" for w in C.mode if w.reserved and d[w.index] != 0]
+        problems += [f"{tag}: {w.name}: bits outside its fields are not 0" for w in C.mode
+                     if not w.reserved and d[w.index] & ~sum(f.mask for f in w.fields) & 0xFFFFFFFF]
+        ranges.append((first, end, mcycle))
+        nxt_end = end
+    if nxt_end != table:
+        problems.append(f"the modes' entries end at {nxt_end}, H2.table is {table}")
+    return ranges, problems

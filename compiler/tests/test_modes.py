@@ -13,6 +13,7 @@ import unittest
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from oracle import REPO  # noqa: E402
 import albatross_schedule as S  # noqa: E402
+from albatross_schedule import contract  # noqa: E402
 
 ROBOT = os.path.join(REPO, "sim", "mobot3.toml")
 with open(ROBOT) as _f:
@@ -73,8 +74,9 @@ class ModeDescriptionTests(unittest.TestCase):
                          "mode 'b'", "channels", "no channel 'Nope'")
         self.check_error('[[mode]]\nname = "a"\n[[mode]]\nname = "a"\nchannels = ["Position"]\n',
                          "mode 'a'", "name", "comes before")
-        self.check_error('[[mode]]\nname = "a"\nnext = ["zz"]\n', "mode 'a'", "next", "no mode 'zz'")
-        self.check_error('[[mode]]\nname = "a"\nnext = ["a"]\n', "mode 'a'", "next", "itself")
+        self.check_error('[[mode]]\nname = "a"\nnext = ["zz"]\n[[mode]]\nname = "b"\n', "mode 'a'", "next",
+                         "no mode 'zz'")
+        self.check_error('[[mode]]\nname = "a"\nnext = ["a"]\n[[mode]]\nname = "b"\n', "mode 'a'", "next", "itself")
         self.check_error('[[mode]]\nname = "a"\n[[mode]]\nname = "b"\nchannels = ["Position"]\n'
                          'periods = { MotorCmd = 10 }\n', "mode 'b'", "periods", "not a channel of this mode")
         self.check_error('[[mode]]\nname = "a"\nperiods = { Position = 0 }\n', "mode 'a'", "periods", "positive")
@@ -85,6 +87,14 @@ class ModeDescriptionTests(unittest.TestCase):
         with self.assertRaises(S.ScheduleError) as cm:
             S.parse_description(data, "robot-modes.toml", ROBOT_TEXT)
         self.assertTrue(any("array of tables" in m for m in cm.exception.messages), cm.exception.messages)
+
+    def test_modes_need_two_and_time_rigid(self):
+        self.check_error('[[mode]]\nname = "a"\n', "mode 'a'", "two or more")
+        text = ROBOT_TEXT.replace('mode         = "time-rigid"', 'mode         = "position-synchronised"')
+        text = text.replace('name          = "Position"', 'name          = "Position"\nsync          = true')
+        with self.assertRaises(S.ScheduleError) as cm:
+            S.parse_description(tomllib.loads(text + TWO_MODES), "robot-modes.toml", text + TWO_MODES)
+        self.assertTrue(any("time-rigid" in m for m in cm.exception.messages), cm.exception.messages)
 
     def test_start_up_mode_lists_every_channel(self):
         self.check_error('[[mode]]\nname = "dock"\nchannels = ["Position", "MotorCmd", "GlobalTime"]\n',
@@ -117,15 +127,53 @@ class ModePlanTests(unittest.TestCase):
         self.assertLess(modes["dock"]["cycle"]["clocks"], modes["cruise"]["cycle"]["clocks"],
                         "dock's shorter periods give a shorter cycle")
 
-    def test_outputs_hold_the_start_up_mode(self):
-        self.assertEqual(self.rom, self.rom1, "the ROM image of cruise-first is the robot's own")
+    def test_rom_holds_every_mode(self):
+        # Decoded with literal bit positions (docs/controller.md), not the compiler's contract module.
+        rom, one = self.rom, self.rom1
+        ne, h2 = (rom[0] >> 8) & 0xFF, rom[2]
+        modes = {m["name"]: m for m in self.rep["modes"]}
+        e0, e1 = modes["cruise"]["entries"], modes["dock"]["entries"]
+        self.assertEqual(((h2 >> 16) & 0xF, (h2 >> 8) & 0xFF, h2 >> 24, h2 & 0xFF),
+                         (2, e0 + e1, e0, self.rep["drop_run"]), "H2: modes, table, start_end, drop run")
+        self.assertEqual(ne, e0 + e1 + 2, "NE counts every mode's entries and the two descriptors")
+        self.assertEqual(len(rom), 4 + 8 * ne)
+        self.assertEqual(rom[1], one[1], "H1: the start-up mode's cycle")
+        self.assertEqual(rom[4:4 + 8 * e0], one[4:4 + 8 * e0], "the start-up mode's entries are the robot's own")
+        for m, (first, end, cyc, nxt) in enumerate([(0, e0, modes["cruise"]["cycle"]["clocks"], 0b10),
+                                                    (e0, e0 + e1, modes["dock"]["cycle"]["clocks"], 0b01)]):
+            d = rom[4 + 8 * (e0 + e1 + m):]
+            self.assertEqual((d[0] & 0xFFFF, (d[0] >> 16) & 0xFF, d[0] >> 24), (cyc, first, end),
+                             f"mode {m}: D0 = cycle, first, end")
+            self.assertEqual(d[1] >> 16, nxt, f"mode {m}: D1.next")
+            self.assertEqual(d[2:8], [0] * 6, f"mode {m}: D2..D7 reserved")
+        crc = S.rom_crc(rom)
+        self.assertEqual(crc, 0, "the CRC covers every mode and descriptor")
+        problems, entries = S.verify_rom(rom)
+        self.assertEqual(problems, [])
+        self.assertEqual(sum(1 for e in entries if e["mode"] == 1), e1)
+
+    def test_verify_rom_catches_bad_descriptors(self):
+        e0 = self.rep["modes"][0]["entries"]
+        e1 = self.rep["modes"][1]["entries"]
+        d1 = 4 + 8 * (e0 + e1 + 1)           # mode 1's descriptor
+        cases = [(d1 + 1, lambda w: w | (1 << 17), "names a mode that does not exist or the mode itself"),
+                 (d1, lambda w: (w & ~(0xFF << 16)) | ((e0 + 1) << 16), "expected a range from"),
+                 (d1 + 3, lambda w: 1, "D3 (reserved) is not 0")]
+        for at, change, words in cases:
+            bad = list(self.rom)
+            bad[at] = change(bad[at])
+            bad[3] = contract.load().check_word(bad)
+            problems, _ = S.verify_rom(bad)
+            self.assertTrue(any(words in p for p in problems), f"expected a problem '{words}', got {problems}")
+
+    def test_outputs(self):
         self.assertEqual(self.plan.cycle, self.plan1.cycle)
         files = S.generate(self.system, self.plan, self.rom, self.rep)
         svg = files["timeline.svg"]
         self.assertEqual(svg.count("<svg "), 3, "one outer picture and a lane group per mode")
         self.assertIn("mode cruise (start-up), switches to dock", svg)
         self.assertIn("mode dock, switches to cruise", svg)
-        self.assertIn("Modes (the ROM image and board headers hold the start-up mode", files["report.txt"])
+        self.assertIn("Modes (the ROM image holds every mode", files["report.txt"])
 
     def test_unplannable_mode_is_named(self):
         # 1 us = 50 clocks: no slot of Position fits so often.

@@ -248,6 +248,7 @@ module fseq (
     (* keep *) wire                f_smode, f_sync_ok, f_start_bad, f_bad, f_sflag, f_poll, f_bg_data, f_last;
     (* keep *) wire [31:0]         f_slot_time, f_crc;
     (* keep *) wire [7:0]          f_drop;
+    (* keep *) wire [7:0]          f_ent_end;     // the cycle's entry end (no modes: NE)
     (* keep *) wire [1:0]          f_kind;
     (* keep *) wire [6:0]          f_chan;
     (* keep *) wire [2:0]          f_nd;
@@ -294,7 +295,8 @@ module fseq (
         endcase
     end
     wire [31:0]   rom_main = F_ROM[32*main_a[AW-1:0] +: 32];
-    wire          hdr_ok = f_ne == F_NE && f_smode == F_SMODE && f_cycle == F_H1[F_TB-1:0] && f_drop == F_DROP;
+    wire          hdr_ok = f_ne == F_NE && f_smode == F_SMODE && f_cycle == F_H1[F_TB-1:0] && f_drop == F_DROP &&
+                          f_ent_end == F_NE;
     wire [F_TB:0] pe_want = (f_ent == 8'd0 && !xfer) ? {(F_TB+1){1'b0}} :
                             ((f_ent == 8'd0 && xfer) || (e1 && !xfer)) ? D0[F_TB:0] : D1[F_TB:0];
     // a part's signature is stored once the start-up pass has checked its last word
@@ -323,7 +325,7 @@ module fseq (
                 inv_header: assert(f_step <= 3'd4 && !error_o && !f_last && (rst_q || (!f_bg_data && f_bg_dadr == 0)) &&
                                    (f_step < 3'd2 || (f_ne == F_NE && f_smode == F_SMODE)) &&
                                    (f_step < 3'd3 || f_cycle == F_H1[F_TB-1:0]) &&
-                                   (f_step < 3'd4 || f_drop == F_DROP));
+                                   (f_step < 3'd4 || (f_drop == F_DROP && f_ent_end == F_NE)));
             end
             if (f_state == ST_CHECK) begin
                 inv_check: assert(hdr_ok && !error_o && f_start == F_S0[F_TB-1:0] && !f_start_bad &&

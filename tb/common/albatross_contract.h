@@ -8,7 +8,7 @@
 namespace alb_contract {
 
 struct Field {
-    unsigned word, lsb, width;  // word: index within the header or within an entry
+    unsigned word, lsb, width;  // word: index within the header, an entry or a mode descriptor
     constexpr uint32_t max() const { return width >= 32 ? 0xFFFFFFFFu : (1u << width) - 1u; }
     constexpr uint32_t put(uint32_t v) const { return (v & max()) << lsb; }
     constexpr uint32_t get(uint32_t w) const { return (w >> lsb) & max(); }
@@ -25,6 +25,9 @@ constexpr Field H0_NE{0, 8, 8};
 constexpr Field H0_FLAGS{0, 0, 8};
 constexpr Field H1_CYCLE{1, 0, 16};
 constexpr Field H2_DROP_RUN{2, 0, 8};
+constexpr Field H2_TABLE{2, 8, 8};
+constexpr Field H2_MODES{2, 16, 4};
+constexpr Field H2_START_END{2, 24, 8};
 constexpr Field H3_CRC{3, 0, 32};
 constexpr Field E0_KIND{0, 28, 4};
 constexpr Field E0_FLAGS{0, 24, 4};
@@ -48,6 +51,11 @@ constexpr Field E5_DST2_BASE{5, 0, 12};
 constexpr Field E5_DST3{5, 16, 16};
 constexpr Field E5_DST3_BOARD{5, 28, 4};
 constexpr Field E5_DST3_BASE{5, 16, 12};
+constexpr Field D0_CYCLE{0, 0, 16};
+constexpr Field D0_FIRST{0, 16, 8};
+constexpr Field D0_END{0, 24, 8};
+constexpr Field D1_DROP_RUN{1, 0, 8};
+constexpr Field D1_NEXT{1, 16, 16};
 constexpr Field PLACE_BOARD{0, 12, 4};
 constexpr Field PLACE_BASE{0, 0, 12};
 // destination places of an entry, in order

@@ -1,9 +1,14 @@
 #!/usr/bin/env python3
 """Test ROM for tb_sequencer.v in the new format (no per-entry checksum, H3 =
 the check word: the CRC of the whole image, H3 included, is 0): three entries (COPY, TIME,
-STATUS) in a cycle of 400 clocks.  Usage: make_rom.py OUT.hex [--bad-start0]
+STATUS) in a cycle of 400 clocks.  Usage: make_rom.py OUT.hex [--bad-start0 | --modes | --modes-bad]
 (--bad-start0: entry 0's start has bit 12 set, above the bench's TIME_BITS = 12:
-the entry is invalid and must be skipped every cycle)."""
+the entry is invalid and must be skipped every cycle.  --modes: the three
+entries are the start-up mode of an image with two modes; a second mode
+of two COPY entries (channel ids 3) follows, then the two mode descriptors:
+the sequencer must run the three entries only.  --modes-bad: the same with
+H2.start_end beyond H2.table, an invalid header).  Bit positions are
+docs/controller.md's, written here as literals."""
 import sys
 
 POLY, SEED = 0x000000AF, 0xFFFFFFFF
@@ -28,7 +33,16 @@ def entry(kind, cid, nd, w, start, length, src, dsts):
 ents = [entry(1, 0, 2, 4, 0x100A if '--bad-start0' in sys.argv[2:] else 10, 100, (0 << 12) | 16, [(1 << 12) | 16, (2 << 12) | 16]),
         entry(2, 1, 1, 1, 120, 60, 0, [(3 << 12) | 64]),
         entry(3, 2, 1, 2 * 4 + 1, 200, 150, 0, [(2 << 12) | 128])]
-rom = [(0xA1BA << 16) | (len(ents) << 8), 400, 0, 0] + sum(ents, [])
+h2 = 0
+if '--modes' in sys.argv[2:] or '--modes-bad' in sys.argv[2:]:
+    # mode 1: two COPYs of channel 3 in a 300-clock cycle; descriptors D0 = {end, first, cycle}, D1 = {next, K}
+    ents += [entry(1, 3, 1, 1, 20, 60, (0 << 12) | 200, [(1 << 12) | 200]),
+             entry(1, 3, 1, 1, 150, 60, (0 << 12) | 200, [(1 << 12) | 200])]
+    ents += [[(3 << 24) | (0 << 16) | 400, (0b10 << 16) | 2, 0, 0, 0, 0, 0, 0],
+             [(5 << 24) | (3 << 16) | 300, (0b01 << 16) | 2, 0, 0, 0, 0, 0, 0]]
+    start_end = 6 if '--modes-bad' in sys.argv[2:] else 3
+    h2 = (start_end << 24) | (2 << 16) | (5 << 8) | 2          # start_end, modes 2, table 5, drop run 2
+rom = [(0xA1BA << 16) | (len(ents) << 8), 400, h2, 0] + sum(ents, [])
 # H3: the CRC is linear in it; try each bit's effect and solve (32 unknowns,
 # by elimination over GF(2)), so that the image's CRC becomes 0.
 def check_word(ws):

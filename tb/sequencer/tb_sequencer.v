@@ -5,7 +5,11 @@
 // is upset: the background check counts it and the entry is skipped.
 // +bad_start0 (make_rom.py --bad-start0): entry 0's start does not fit
 // TIME_BITS: entry 0 never goes, it counts in rom_errors every cycle, and
-// the other entries keep their times.
+// the other entries keep their times.  +modes (make_rom.py --modes): the
+// three entries are the start-up mode of an image with two modes: the same
+// checks (an entry of the other mode that went would be "unexpected"), and
+// the upset hits a mode descriptor.  +modes_bad (--modes-bad): an invalid
+// H2: error_o and no go.
 `timescale 1ns/1ps
 `default_nettype none
 module tb_sequencer;
@@ -62,6 +66,14 @@ module tb_sequencer;
     initial begin
         wait (!rst);
         repeat (3000) @(posedge clk);
+        if ($test$plusargs("modes_bad")) begin
+            if (!error || gos != 0) begin
+                $display("FAIL modes header: expected error_o and no go for start_end beyond the table, came error %0d, gos %0d",
+                         error, gos); errors = errors + 1; end
+            $display("modes header with start_end beyond the table: error %0d, gos %0d", error, gos);
+            if (errors == 0) $display("PASS tb_sequencer");
+            $finish;
+        end
         if ($test$plusargs("bad_start0")) begin
             if (error || e0_gos != 0 || rerr < cycles - 1 || gos < 10)
                 begin $display("FAIL bad entry-0 start: expected no go of entry 0, rom_errors >= cycles - 1 = %0d, gos >= 10; came error %0d, entry-0 gos %0d, rom_errors %0d, gos %0d",
@@ -71,7 +83,8 @@ module tb_sequencer;
             $finish;
         end
         if (error || rerr != 0 || gos < 15) begin $display("FAIL error %0d rom_errors %0d gos %0d", error, rerr, gos); errors = errors + 1; end
-        dut.u_rom.rom[4 + 8 + 3] = 32'h00001234;     // upset entry 1 (E3, unused by TIME)
+        if ($test$plusargs("modes")) dut.u_rom.rom[4 + 8 * 5 + 2] = 32'h00001234;   // upset mode 0's descriptor (D2)
+        else dut.u_rom.rom[4 + 8 + 3] = 32'h00001234;     // upset entry 1 (E3, unused by TIME)
         gos = 0;
         repeat (3000) @(posedge clk);
         if (rerr == 0) begin $display("FAIL upset not counted"); errors = errors + 1; end

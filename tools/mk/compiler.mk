@@ -77,6 +77,12 @@ $(BUILD)/schedule/%/rom.hex: sim/%.toml $(SCHEDULE_SRC)
 	$(SCHEDULE) $< -o $(@D)
 $(BUILD)/schedule/%/rom.hex: compiler/examples/%.toml $(SCHEDULE_SRC)
 	$(SCHEDULE) $< -o $(@D)
+# The robot with two modes: sim/mobot3_modes.toml's [[mode]] tables appended to
+# its description (cruise, the robot as it is, first).
+$(BUILD)/schedule/mobot3-modes/rom.hex: sim/mobot3.toml sim/mobot3_modes.toml $(SCHEDULE_SRC)
+	@mkdir -p $(@D)
+	cat sim/mobot3.toml sim/mobot3_modes.toml > $(@D)/mobot3-modes.toml
+	$(SCHEDULE) $(@D)/mobot3-modes.toml -o $(@D) -q
 # Compiled schedules are kept when make reaches them only through another
 # file (tb_plan.txt).  Named by this pattern: a bare .SECONDARY: would cover every
 # file, and make would then take a missing description for a deleted

@@ -25,8 +25,10 @@ PARTS     := albatross_sequencer albatross_schedule_rom albatross_rom_check alba
 # The modules albatross_sequencer instantiates.
 SEQ_SUB   := rtl/albatross_schedule_rom.v rtl/albatross_rom_check.v rtl/albatross_entry_check.v
 
-TESTS += parts-lint sequencer sequencer-bad-start0 sequencer-negative-slot_late
-.PHONY: test-parts-lint test-sequencer test-sequencer-bad-start0 test-sequencer-negative-slot_late
+TESTS += parts-lint sequencer sequencer-bad-start0 sequencer-negative-slot_late \
+         sequencer-modes sequencer-modes-bad sequencer-modes-negative
+.PHONY: test-parts-lint test-sequencer test-sequencer-bad-start0 test-sequencer-negative-slot_late \
+        test-sequencer-modes test-sequencer-modes-bad test-sequencer-modes-negative
 
 test-parts-lint: $(addprefix rtl/,$(addsuffix .v,$(PARTS))) $(RTL_INC)
 	@mkdir -p $(PARTS_DIR)
@@ -63,3 +65,26 @@ test-sequencer-bad-start0: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py 
 	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/seq-bad0/tb tb/sequencer/tb_sequencer.v rtl/albatross_sequencer.v \
 	        $(SEQ_SUB); \
 	    cd $(PARTS_DIR)/seq-bad0 && vvp -n tb +bad_start0 | grep -v readmemh | tee tb.log; grep -q "^PASS" tb.log'
+
+# An image with two modes (make_rom.py --modes): the sequencer runs the
+# start-up mode's entries only, and the background check covers the mode
+# descriptors; --modes-bad: H2.start_end beyond the table is an invalid
+# header.  The negative: a sequencer that ends the cycle at NE (all entries)
+# runs the other mode's entries, which the bench must catch.
+SEQ_MODES = set -e; mkdir -p $(PARTS_DIR)/$(1); $(PYTHON) tb/sequencer/make_rom.py $(PARTS_DIR)/$(1)/seq_rom.hex $(2); \
+	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/$(1)/tb tb/sequencer/tb_sequencer.v $(3) $(SEQ_SUB); \
+	    cd $(PARTS_DIR)/$(1) && vvp -n tb $(4) | grep -v readmemh > tb.log || true; cat tb.log
+test-sequencer-modes: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v $(SEQ_SUB) $(RTL_INC)
+	@tools/run_test.sh sequencer-modes bash -c '$(call SEQ_MODES,seq-modes,--modes,rtl/albatross_sequencer.v,+modes); \
+	    grep -q "^PASS" tb.log'
+test-sequencer-modes-bad: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v $(SEQ_SUB) $(RTL_INC)
+	@tools/run_test.sh sequencer-modes-bad bash -c '$(call SEQ_MODES,seq-modes-bad,--modes-bad,rtl/albatross_sequencer.v,+modes_bad); \
+	    grep -q "^PASS" tb.log'
+test-sequencer-modes-negative: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v $(SEQ_SUB) $(RTL_INC)
+	@mkdir -p $(PARTS_DIR)/seq-modes-neg
+	@sed 's/last_ent  = ent_inc == ent_end_q;/last_ent  = ent_inc == ne_q;/' rtl/albatross_sequencer.v > $(PARTS_DIR)/seq-modes-neg/albatross_sequencer.v
+	@tools/run_test.sh sequencer-modes-negative bash -c 'if cmp -s $(PARTS_DIR)/seq-modes-neg/albatross_sequencer.v rtl/albatross_sequencer.v; then \
+	        echo "the edit (cycle end at NE) did not apply to rtl/albatross_sequencer.v"; exit 1; fi; \
+	    $(call SEQ_MODES,seq-modes-neg,--modes,$(PARTS_DIR)/seq-modes-neg/albatross_sequencer.v,+modes); \
+	    if grep -q "^PASS" tb.log; then echo "the bench passed a sequencer that runs every mode'"'"'s entries"; exit 1; fi; \
+	    grep -q "^FAIL" tb.log && echo "caught: $$(grep -m1 "^FAIL" tb.log)"'

@@ -140,6 +140,18 @@ test-$(call neg_field,$(1),1): $(PB_BIN) $(PB_FW) $(PB_SCHED)/tb_plan.txt
 endef
 $(foreach s,$(PB_SCENARIOS),$(eval $(call pb_scenario,$(s))))
 
+# The robot on the image of its two modes (build/schedule/mobot3-modes): the
+# controller runs the start-up mode, cruise, which is the robot as it is, so
+# every check of pico-boards holds; the firmware is built against that plan.
+PB_MODES := $(BUILD)/schedule/mobot3-modes
+TESTS += pico-boards-modes
+.PHONY: test-pico-boards-modes
+test-pico-boards-modes: $(PB_BIN) $(foreach b,$(PB_BOARDS),$(PB_DIR)/mobot3-modes/fw/$(b).hex) $(PB_MODES)/tb_plan.txt
+	@tools/run_test.sh pico-boards-modes $(PB_BIN) \
+	    $(call pb_args,$(PB_MODES),$(PB_DIR)/mobot3-modes/fw,$(PB_DIR)/mobot3-modes/fw/radar.hex,$(PB_DIR)/mobot3-modes/fw/navigation.hex) \
+	    --cycles $(PB_CYCLES) --seed $(SEED) --stall 2048 --require-done --label pico-boards-modes \
+	    --report $(REPORTS)/pico_boards_modes.json
+
 # Firmware mutants (sim/mutants/NAME.sed): NAME:BOARD:FILE, where
 # FILE (sim/firmware/mobot_<board>.c, sim/firmware/mobot_check.h or
 # c-driver/albatross.c) is the file the script edits; the board's program is
