@@ -18,6 +18,7 @@ localparam ALB_ROM_H0_MAGIC_LSB      = 16, ALB_ROM_H0_MAGIC_W      = 16;
 localparam ALB_ROM_H0_NE_LSB         =  8, ALB_ROM_H0_NE_W         =  8;
 localparam ALB_ROM_H0_FLAGS_LSB      =  0, ALB_ROM_H0_FLAGS_W      =  8;
 localparam ALB_ROM_H1_CYCLE_LSB      =  0, ALB_ROM_H1_CYCLE_W      = 16;
+localparam ALB_ROM_H1_NEXT_LSB       = 16, ALB_ROM_H1_NEXT_W       = 16;
 localparam ALB_ROM_H2_DROP_RUN_LSB   =  0, ALB_ROM_H2_DROP_RUN_W   =  8;
 localparam ALB_ROM_H2_TABLE_LSB      =  8, ALB_ROM_H2_TABLE_W      =  8;
 localparam ALB_ROM_H2_MODES_LSB      = 16, ALB_ROM_H2_MODES_W      =  4;

@@ -37,7 +37,8 @@
 //     New twice.
 //   * Optional parts (parameters HAS_*, default 1): the counters and STATUS
 //     words, the sync-mode poll, the background ROM re-check, the entry field
-//     checks.  With all four 0 this is the core configuration.
+//     checks, the schedule modes' switches.  With all five 0 this is the
+//     core configuration.
 //   * No bus access is ever made while the ROM is invalid (error_o): the
 //     sequencer then never starts a slot or a poll.
 // Adding a channel kind touches the datapath and the sequencer's decode.
@@ -56,6 +57,7 @@ module albatross_controller #(
     parameter HAS_SYNC   = 1,     // 1: position-synchronised mode polls; 0: every cycle is H1 long
     parameter HAS_ROM_RECHECK = 1, // 1: the background re-check of the ROM; 0: the start-up CRC only
     parameter HAS_ENTRY_CHECK = 1, // 1: the entry field checks at fetch ("Validation"); 0: none
+    parameter HAS_MODES  = 1,     // 1: schedule modes switch on request; 0: an image's start-up mode runs for good
     parameter ROM_CRC_BITS = 4    // bits of a ROM word the CRC check takes a clock: 1, 2, 4, 8, 16, 32 (smaller is smaller, start-up 32/ROM_CRC_BITS clocks a word)
 ) (
     input  wire                  clk_i,
@@ -109,7 +111,9 @@ module albatross_controller #(
     wire [3:0]    src_board, poll_board;
     wire [AW-1:0] src_base, poll_adr;
     wire [15:0]   dst_board, cycles;
-    wire [7:0]    drop_run;     // ROM H2: the Export engine's drop run K
+    wire [7:0]    drop_run;     // the running mode's drop run K (ROM H2 or its mode descriptor)
+    wire [3:0]    mode;
+    wire          mode_reject;
     wire [4*AW-1:0] dst_base;
     wire [31:0]   slot_time;
     wire [31:0]   bus_rdat;
@@ -121,7 +125,8 @@ module albatross_controller #(
 
     albatross_sequencer #(.NB(NB), .ADDR_WIDTH(AW), .N_CHAN(N_CHAN), .ROM_WORDS(ROM_WORDS), .ROM_FILE(ROM_FILE),
                           .TIME_BITS(TIME_BITS), .TIMEOUT(TIMEOUT), .POLL(POLL), .HAS_SYNC(HAS_SYNC),
-                          .HAS_ROM_RECHECK(HAS_ROM_RECHECK), .HAS_ENTRY_CHECK(HAS_ENTRY_CHECK), .CRC_BITS(ROM_CRC_BITS)) u_seq (
+                          .HAS_ROM_RECHECK(HAS_ROM_RECHECK), .HAS_ENTRY_CHECK(HAS_ENTRY_CHECK), .CRC_BITS(ROM_CRC_BITS),
+                          .HAS_MODES(HAS_MODES)) u_seq (
         .clk_i(clk_i), .rst_i(rst_i), .enable_i(ready_q && cnt_ready),
         .go_o(go), .kind_o(kind), .chan_o(chan7), .nd_o(nd), .words_o(words),
         .src_board_o(src_board), .src_base_o(src_base), .dst_board_o(dst_board), .dst_base_o(dst_base),
@@ -129,7 +134,7 @@ module albatross_controller #(
         .poll_cyc_o(poll_cyc), .poll_board_o(poll_board), .poll_adr_o(poll_adr), .poll_dat_i(bus_rdat),
         .poll_ack_i(r_ack[1]), .poll_err_i(r_err[1]), .sync_rl_i(sync_rl_q),
         .time_o(time_o), .cycle_o(cycle_start), .error_o(error_o), .rom_errors_o(rom_errors_o), .cycles_o(cycles),
-        .drop_run_o(drop_run));
+        .drop_run_o(drop_run), .mode_req_i(1'b0), .mode_req_mode_i(4'd0), .mode_o(mode), .mode_reject_o(mode_reject));
 
     wire [CH_BITS-1:0] chan   = chan7[CH_BITS-1:0];
     wire [3:0]         active = (nd == 3'd1) ? 4'b0001 : (nd == 3'd2) ? 4'b0011 : (nd == 3'd3) ? 4'b0111 : 4'b1111;
@@ -266,7 +271,7 @@ module albatross_controller #(
     endgenerate
 
     // Signals kept for waveforms and proofs only.
-    wire unused = &{1'b0, fails_total, overlap, cycle_start, cnt_busy};
+    wire unused = &{1'b0, fails_total, overlap, cycle_start, cnt_busy, mode, mode_reject};
 
 endmodule
 

@@ -8,8 +8,10 @@
 //     header (header_i: step_i 0..3 read H0, H1, H2 and entry 0's E1), the
 //     clock S of a fetch (start_i: E0 of entry ent_i) and the fetch
 //     (fetch_i, step_i 1..5: E2, E3, E4, E5, then E1 of the next entry, of
-//     entry 0 after the last, last_i).  In every other clock the word is the
-//     background check's (bg_adr_i, rtl/albatross_rom_check.v).
+//     entry first_i, the mode's first, after the last, last_i) and the mode
+//     table's reads (mode_rd_i at mode_adr_i: only while no other main read
+//     runs).  In every other clock the word is the background check's
+//     (bg_adr_i, rtl/albatross_rom_check.v).
 //   * Addresses: entry k's word j is 4 + 8k + j = {k, 3'b100} + j (mod
 //     2^ROM_AW): E0, E2, E3 are {k, 1jj}; E4, E5 and the next E1 are
 //     {k + 1, 0jj / 101}, k + 1 from the sequencer (ent_inc_i): no adder.
@@ -30,6 +32,9 @@ module albatross_schedule_rom #(
     input  wire [7:0]        ent_i,       // the entry fetched
     input  wire [7:0]        ent_inc_i,   // ent_i + 1
     input  wire              last_i,      // ent_i is the last entry
+    input  wire [7:0]        first_i,     // the mode's first entry (after the last)
+    input  wire              mode_rd_i,   // a read of the mode table (rtl/albatross_mode_switch.v)
+    input  wire [$clog2(ROM_WORDS)-1:0] mode_adr_i,
     input  wire [$clog2(ROM_WORDS)-1:0] bg_adr_i,    // the background check's word
     output wire              main_o,      // a main read in this clock (the check's word waits)
     output wire [31:0]       dat_o
@@ -59,10 +64,11 @@ module albatross_schedule_rom #(
 
     // ------------------------------------------------------------ address
     wire              fetch_rom = fetch_i && step_i <= 3'd5;
-    wire              main_rom  = header_i || start_i || fetch_rom;
+    wire              main_rom  = header_i || start_i || fetch_rom || mode_rd_i;
     wire              adr_inc   = fetch_i && step_i >= 3'd3;             // E4, E5, next E1
     /* verilator lint_off UNUSEDSIGNAL */
     wire [7:0]        ent_sel   = adr_inc ? ent_inc_i : ent_i;
+    wire [7:0]        ent_wrap  = first_i;
     wire              adr_wrap  = fetch_i && step_i >= 3'd5 && last_i;  // last entry: word 5
     /* verilator lint_on UNUSEDSIGNAL */
     reg  [2:0]        adr_lo;
@@ -79,7 +85,8 @@ module albatross_schedule_rom #(
     end
     reg [ROM_AW-1:0] main_adr;
     always @* begin
-        main_adr = {adr_wrap ? {(ROM_AW-3){1'b0}} : ent_sel[ROM_AW-4:0], adr_lo};
+        main_adr = {adr_wrap ? ent_wrap[ROM_AW-4:0] : ent_sel[ROM_AW-4:0], adr_lo};
+        if (mode_rd_i) main_adr = mode_adr_i;
         if (header_i)
             case (step_i)
                 3'd0:    main_adr = {ROM_AW{1'b0}};

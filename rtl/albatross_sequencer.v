@@ -9,10 +9,15 @@
 //   * ROM format (rtl/albatross_contract.toml): header H0..H3, entry k at
 //     word 4 + 8k; H3 is the check word that makes the CRC of the whole
 //     image (words 0 .. 4+8*NE-1, H3 included) 0; no per-entry checksum.
-//     An image with modes (H2.modes > 0) runs its start-up mode: the cycle
-//     is entries 0 .. H2.start_end - 1 (else 0 .. NE - 1); its other
-//     entries and the mode descriptors are checked by the CRC only.  A
-//     start_end of 0 or above NE is an invalid header.  The CRC and the prefix
+//     An image with modes (H2.modes > 0) starts in mode 0: the cycle is
+//     entries 0 .. H2.start_end - 1 (else 0 .. NE - 1).  A start_end of 0
+//     or above NE is an invalid header.
+//   * Mode switch (rtl/albatross_mode_switch.v): a request (mode_req_i) is
+//     loaded in ST_CYCLE_END from the mode's descriptor; at the next cycle
+//     boundary, and only there, the cycle takes the new mode's entries,
+//     cycle length and drop run, and its first entry starts the new cycle.
+//     A boundary waits for a load that has begun (6 clocks; the compiler
+//     leaves them free at the end of every cycle of an image with modes).  The CRC and the prefix
 //     signatures are rtl/albatross_rom_check.v's, the ROM, its loading and
 //     the word read in each clock rtl/albatross_schedule_rom.v's (their rules).
 //   * Start-up (after enable_i): read the header (5 clocks), then one CRC
@@ -65,7 +70,8 @@ module albatross_sequencer #(
     parameter HAS_SYNC   = 1,    // 1: position-synchronised mode polls; 0: every cycle is H1 long
     parameter HAS_ROM_RECHECK = 1, // 1: the background re-check of the ROM; 0: the start-up CRC only
     parameter HAS_ENTRY_CHECK = 1, // 1: the entry field checks at fetch; 0: none
-    parameter CRC_BITS   = 4     // bits of a ROM word the ROM check's CRC takes in a clock (albatross_rom_check)
+    parameter CRC_BITS   = 4,    // bits of a ROM word the ROM check's CRC takes in a clock (albatross_rom_check)
+    parameter HAS_MODES  = 1     // 1: mode switches on request (albatross_mode_switch); 0: the start-up mode only
 ) (
     input  wire                    clk_i,
     input  wire                    rst_i,          // synchronous, active high
@@ -101,7 +107,12 @@ module albatross_sequencer #(
     output wire                    error_o,        // the ROM is invalid: idle for good
     output wire [15:0]             rom_errors_o,   // skipped entries and background mismatches
     output wire [15:0]             cycles_o,
-    output wire [7:0]              drop_run_o      // ROM H2: the drop run K, read with the header
+    output wire [7:0]              drop_run_o,     // the running mode's drop run K (H2, or its descriptor)
+    // schedule modes (rtl/albatross_mode_switch.v; images without modes: none)
+    input  wire                    mode_req_i,     // one clock: a request for mode mode_req_mode_i
+    input  wire [3:0]              mode_req_mode_i,
+    output wire [3:0]              mode_o,         // the running mode
+    output wire                    mode_reject_o   // one clock: a request was rejected
 );
 
 `include "albatross_contract.vh"
@@ -159,12 +170,9 @@ module albatross_sequencer #(
     reg [2:0]          step_q;        // clock within ST_HEADER, ST_FETCH
     reg [31:0]         time_q;
     reg [TB:0]         next_rel_q;    // rel + 1: the time within the cycle of the next clock (rel wraps at 2^TB)
-    reg [TB-1:0]       cycle_q;       // H1
     reg [7:0]          ne_q;
     reg                smode_q;
     reg                sync_ok_q;     // entry 0 is a valid SYNC COPY (this cycle)
-    reg [7:0]          drop_run_q;    // H2's drop run (data: read before the first slot, not reset)
-    reg [7:0]          ent_end_q;     // the entry after the cycle's last: NE, or with modes H2.start_end (data, as drop_run_q)
     reg [TB-1:0]       start_q;       // E1 of entry ent_q; from FETCH clock 6 on, of entry ent_q + 1
                                       // (of entry 0 after the last entry and after the header)
     reg                start_bad_q;   // ... did not fit in TIME_BITS
@@ -211,13 +219,33 @@ module albatross_sequencer #(
     wire [ROM_AW-1:0]  last_word = last_wide[ROM_AW-1:0];
     wire [ROM_AW-1:0]  bg_adr;        // the ROM check's next word
     wire [7:0]         ent_inc   = ent_q + 8'd1;
-    wire               last_ent  = ent_inc == ent_end_q;
+    wire               last_ent  = ent_inc == m_end;
     wire               h2_modes  = rom_q[ALB_ROM_H2_MODES_LSB +: ALB_ROM_H2_MODES_W] != 0;   // (H2 in header step 3)
     albatross_schedule_rom #(.ROM_WORDS(ROM_WORDS), .ROM_FILE(ROM_FILE)) u_rom (
         .clk_i(clk_i), .time_i(time_q), .header_i(state_q == ST_HEADER && !hdr_last), .start_i(start_now),
         .fetch_i(state_q == ST_FETCH), .step_i(step_q), .ent_i(ent_q), .ent_inc_i(ent_inc), .last_i(last_ent),
+        .first_i(m_first), .mode_rd_i(mode_rd), .mode_adr_i(mode_adr),
         .bg_adr_i(bg_adr),
         .main_o(main_rom), .dat_o(rom_q));
+
+    // ------------------------------------------------------------ the running schedule and its modes
+    // The cycle's entries (m_first .. m_end - 1), its length and drop run come
+    // from the header and change at a mode switch, at a cycle boundary only
+    // (rtl/albatross_mode_switch.v); a request is loaded while the sequencer
+    // waits for the cycle end, and the boundary waits for a load that has
+    // begun (mode_hold).
+    wire               mode_rd, mode_e1, mode_hold;
+    wire               new_cycle;     // the cycle boundary (control, below)
+    wire [ROM_AW-1:0]  mode_adr;
+    wire [7:0]         m_first, m_end, m_next_first, m_drop;
+    wire [TB-1:0]      cycle_q;       // the running mode's cycle length (H1, or its descriptor's)
+    albatross_mode_switch #(.ROM_AW(ROM_AW), .TIME_BITS(TB), .HAS_MODES(HAS_MODES)) u_mode (
+        .clk_i(clk_i), .rst_i(rst_i), .hdr1_i(state_q == ST_HEADER && step_q == 3'd2),
+        .hdr2_i(state_q == ST_HEADER && step_q == 3'd3), .ne_i(ne_q), .rom_i(rom_q),
+        .req_i(mode_req_i), .req_mode_i(mode_req_mode_i), .idle_i(state_q == ST_CYCLE_END), .switch_i(new_cycle),
+        .read_o(mode_rd), .read_adr_o(mode_adr), .e1_o(mode_e1), .hold_o(mode_hold),
+        .reject_o(mode_reject_o), .mode_o(mode_o), .first_o(m_first), .end_o(m_end), .next_first_o(m_next_first),
+        .cycle_o(cycle_q), .drop_o(m_drop));
 
     // ------------------------------------------------------------ ROM check
     // The start-up CRC and the background re-check; in the clock S of a
@@ -251,8 +279,8 @@ module albatross_sequencer #(
                       poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 2] != sync_rl_i;
     wire entry_over = (state_q == ST_FETCH && step_q == 3'd6 && (bad_q || kind_q == ALB_KIND_IDLE[1:0])) ||
                       (state_q == ST_TRANSFER && slot_done_i);
-    wire new_cycle  = (state_q == ST_CYCLE_END && (cycle_end || poll_hit)) ||
-                      (entry_over && last_ent && cycle_end) ||       // the last slot ends at H1 - 1
+    assign new_cycle = (state_q == ST_CYCLE_END && (cycle_end || poll_hit) && !mode_hold) ||
+                      (entry_over && last_ent && cycle_end && !mode_hold) ||   // the last slot ends at H1 - 1
                       (state_q == ST_CHECK && pass_done && crc_ok);
     // go and the deadline check are registered, decided a clock ahead, so that
     // the transfer's decisions start at registers: go_q in FETCH clock 5 from
@@ -299,13 +327,11 @@ module albatross_sequencer #(
                                 err_q <= 1'b1;
                         end
                         3'd2: begin                                             // H1
-                            cycle_q <= rom_q[TB-1:0];
-                            if (rom_q[31:TB] != 0 || rom_q[TB-1:0] == {TB{1'b0}}) err_q <= 1'b1;
+                            // (H1's upper half is the start-up mode's next mask: rtl/albatross_mode_switch.v)
+                            if ((rom_q[ALB_ROM_H1_CYCLE_LSB +: 16] >> TB) != 16'd0 || rom_q[TB-1:0] == {TB{1'b0}})
+                                err_q <= 1'b1;
                         end
                         3'd3: begin                                             // H2
-                            drop_run_q <= rom_q[ALB_ROM_H2_DROP_RUN_LSB +: 8];
-                            // with modes the cycle runs the start-up mode's entries only
-                            ent_end_q  <= h2_modes ? rom_q[ALB_ROM_H2_START_END_LSB +: 8] : ne_q;
                             if (h2_modes && (rom_q[ALB_ROM_H2_START_END_LSB +: 8] == 8'd0 ||
                                              rom_q[ALB_ROM_H2_START_END_LSB +: 8] > ne_q))
                                 err_q <= 1'b1;
@@ -372,6 +398,10 @@ module albatross_sequencer #(
                     endcase
                 end
                 ST_CYCLE_END: begin
+                    if (mode_e1) begin                                      // E1 of the new mode's first entry
+                        start_q     <= rom_q[TB-1:0];
+                        start_bad_q <= rom_q[31:TB] != 0;
+                    end
                     pc_q <= (pc_q == POLL_LAST) ? {PC_BITS{1'b0}} : pc_q + 1'b1;
                     if (HAS_SYNC != 0 && smode_q && sync_ok_q && pc_q == POLL_LAST) poll_q <= 1'b1;
                     if (poll_q && (poll_ack_i || poll_err_i)) poll_q <= 1'b0;
@@ -385,7 +415,7 @@ module albatross_sequencer #(
             end
             if (new_cycle) begin
                 next_rel_q  <= {{TB{1'b0}}, 1'b1};
-                ent_q       <= 8'd0;
+                ent_q       <= m_next_first;
                 prev_end_q  <= {(TB+1){1'b0}};
                 poll_q      <= 1'b0;
                 state_q     <= ST_WAIT;
@@ -416,7 +446,7 @@ module albatross_sequencer #(
     assign error_o      = err_q;
     assign rom_errors_o = rerr_q;
     assign cycles_o     = cycles_q;
-    assign drop_run_o   = drop_run_q;
+    assign drop_run_o   = m_drop;
 
 endmodule
 

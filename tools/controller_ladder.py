@@ -6,7 +6,7 @@ the core configuration synthesised again with one function more taken out at eac
                                [--report JSON] [--area JSON] [--jobs N] [--check]
 
 Rung 0 is the core configuration of `make area` (HAS_STATUS, HAS_SYNC,
-HAS_ROM_RECHECK and HAS_ENTRY_CHECK 0; NB 4, ADDR_WIDTH 10, N_CHAN 16, the
+HAS_ROM_RECHECK, HAS_ENTRY_CHECK and HAS_MODES 0; NB 4, ADDR_WIDTH 10, N_CHAN 16, the
 robot's ROM image).  Each later rung takes one more function out of a copy
 of rtl/ by a literal edit of one line (LADDER below: each edit must match
 exactly once, or the tool stops naming the rung), so rung k has none of the

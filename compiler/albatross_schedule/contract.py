@@ -184,7 +184,7 @@ class Contract:
         for name in ("kind", "flags", "id", "nd", "w"):
             self._need(p, "E0", name)
         for word, name in (("H2", "table"), ("H2", "modes"), ("H2", "start_end"), ("D0", "cycle"), ("D0", "first"),
-                           ("D0", "end"), ("D1", "drop_run"), ("D1", "next")):
+                           ("D0", "end"), ("D1", "drop_run"), ("D1", "next"), ("H1", "next")):
             self._need(p, word, name)
         if not p:
             if self.magic > self.field("H0", "magic").max:

@@ -87,16 +87,15 @@ def encode_rom_modes(planned) -> list:
         n += len(plan.slots)
     words = _pack(C.header, {("H0", "magic"): ROM_MAGIC, ("H0", "ne"): n + len(planned),
                              ("H0", "flags"): HFLAG_SYNC_MODE if system0.sync_mode else 0,
-                             ("H1", "cycle"): plan0.cycle, ("H2", "drop_run"): system0.drop_run,
-                             ("H2", "table"): n, ("H2", "modes"): len(planned),
+                             ("H1", "cycle"): plan0.cycle, ("H1", "next"): sum(1 << j for j in planned[0][2]),
+                             ("H2", "drop_run"): system0.drop_run, ("H2", "table"): n, ("H2", "modes"): len(planned),
                              ("H2", "start_end"): ranges[0][1]})
     for _, plan, _ in planned:
         for s in plan.slots:
             words += encode_entry(s)
     for (system, plan, nxt), (first, end) in zip(planned, ranges):
         words += _pack(C.mode, {("D0", "cycle"): plan.cycle, ("D0", "first"): first, ("D0", "end"): end,
-                                ("D1", "drop_run"): system.drop_run,
-                                ("D1", "next"): sum(1 << j for j in nxt)})
+                                ("D1", "drop_run"): system.drop_run, ("D1", "next"): sum(1 << j for j in nxt)})
     words[C.crc_index] = C.check_word(words)
     return words
 
@@ -238,8 +237,8 @@ def mode_ranges(words, ne, cycle, drop_run):
     hdr = words[:C.header_words]
     modes, table, start_end = get(hdr, "H2", "modes"), get(hdr, "H2", "table"), get(hdr, "H2", "start_end")
     if modes == 0:
-        if table or start_end:
-            return [(0, ne, cycle)], ["H2 table and start_end are 0 in an image without modes"]
+        if table or start_end or get(hdr, "H1", "next"):
+            return [(0, ne, cycle)], ["H1 next, H2 table and start_end are 0 in an image without modes"]
         return [(0, ne, cycle)], []
     problems, ranges = [], []
     if modes < 2 or table + modes != ne:
@@ -264,6 +263,8 @@ def mode_ranges(words, ne, cycle, drop_run):
             problems.append(f"{tag}: drop run {mdrop}, the compiler writes 2..255")
         if nxt >> modes or nxt & (1 << m):
             problems.append(f"{tag}: next {nxt:#06x} names a mode that does not exist or the mode itself")
+        if m == 0 and nxt != get(hdr, "H1", "next"):
+            problems.append(f"{tag}: the start-up mode's next must be H1.next")
         problems += [f"{tag}: {w.name} (reserved) is not 0" for w in C.mode if w.reserved and d[w.index] != 0]
         problems += [f"{tag}: {w.name}: bits outside its fields are not 0" for w in C.mode
                      if not w.reserved and d[w.index] & ~sum(f.mask for f in w.fields) & 0xFFFFFFFF]

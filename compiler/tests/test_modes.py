@@ -137,8 +137,9 @@ class ModePlanTests(unittest.TestCase):
                          (2, e0 + e1, e0, self.rep["drop_run"]), "H2: modes, table, start_end, drop run")
         self.assertEqual(ne, e0 + e1 + 2, "NE counts every mode's entries and the two descriptors")
         self.assertEqual(len(rom), 4 + 8 * ne)
-        self.assertEqual(rom[1], one[1], "H1: the start-up mode's cycle")
+        self.assertEqual(rom[1], one[1] | (0b10 << 16), "H1: the start-up mode's cycle and next (dock)")
         self.assertEqual(rom[4:4 + 8 * e0], one[4:4 + 8 * e0], "the start-up mode's entries are the robot's own")
+        self.assertEqual(one[1] >> 16, 0, "H1.next is 0 without modes")
         for m, (first, end, cyc, nxt) in enumerate([(0, e0, modes["cruise"]["cycle"]["clocks"], 0b10),
                                                     (e0, e0 + e1, modes["dock"]["cycle"]["clocks"], 0b01)]):
             d = rom[4 + 8 * (e0 + e1 + m):]

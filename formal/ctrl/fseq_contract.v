@@ -66,8 +66,16 @@ module fseq_contract #(
     output wire                    error_o,
     output wire [15:0]             rom_errors_o,
     output wire [15:0]             cycles_o,
-    output wire [7:0]              drop_run_o
+    output wire [7:0]              drop_run_o,
+    /* verilator lint_off UNUSEDSIGNAL */
+    input  wire                    mode_req_i,     // (modes: not modelled; the controller ties them off)
+    input  wire [3:0]              mode_req_mode_i,
+    /* verilator lint_on UNUSEDSIGNAL */
+    output wire [3:0]              mode_o,
+    output wire                    mode_reject_o
 );
+    assign mode_o        = 4'd0;
+    assign mode_reject_o = 1'b0;
     localparam AW = ADDR_WIDTH;
     // the entry (free constants; the harness joins its observers to them)
 `ifdef F_FIXED

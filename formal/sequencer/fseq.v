@@ -105,7 +105,7 @@ module fseq (
         .poll_cyc_o(poll_cyc_o), .poll_board_o(poll_board_o), .poll_adr_o(poll_adr_o),
         .poll_dat_i(poll_dat_i), .poll_ack_i(poll_ack_i), .poll_err_i(poll_err_i), .sync_rl_i(sync_rl_i),
         .time_o(time_o), .cycle_o(cycle_o), .error_o(error_o), .rom_errors_o(rom_errors_o),
-        .cycles_o(cycles_o)
+        .cycles_o(cycles_o), .mode_req_i(1'b0), .mode_req_mode_i(4'd0), .mode_o(), .mode_reject_o()
     );
 
 `ifdef FORMAL
@@ -249,6 +249,12 @@ module fseq (
     (* keep *) wire [31:0]         f_slot_time, f_crc;
     (* keep *) wire [7:0]          f_drop;
     (* keep *) wire [7:0]          f_ent_end;     // the cycle's entry end (no modes: NE)
+    (* keep *) wire                f_mpend;       // the mode switch: a request pending (never: no request comes)
+    (* keep *) wire [2:0]          f_mstep;       // ... and its load step
+    (* keep *) wire [7:0]          f_mfirst;      // the cycle's first entry (no modes: 0)
+    (* keep *) wire [3:0]          f_mmodes;      // the image's modes (these images: none)
+    (* keep *) wire [F_TB-1:0]     f_rcycle;      // the running mode's cycle, drop run, end and first entry
+    (* keep *) wire [7:0]          f_rdrop, f_rend, f_rfirst;    // (f_cycle .. f_mfirst: the loaded mode's)
     (* keep *) wire [1:0]          f_kind;
     (* keep *) wire [6:0]          f_chan;
     (* keep *) wire [2:0]          f_nd;
@@ -296,7 +302,7 @@ module fseq (
     end
     wire [31:0]   rom_main = F_ROM[32*main_a[AW-1:0] +: 32];
     wire          hdr_ok = f_ne == F_NE && f_smode == F_SMODE && f_cycle == F_H1[F_TB-1:0] && f_drop == F_DROP &&
-                          f_ent_end == F_NE;
+                          f_ent_end == F_NE && f_mfirst == 8'd0 && f_mmodes == 4'd0;
     wire [F_TB:0] pe_want = (f_ent == 8'd0 && !xfer) ? {(F_TB+1){1'b0}} :
                             ((f_ent == 8'd0 && xfer) || (e1 && !xfer)) ? D0[F_TB:0] : D1[F_TB:0];
     // a part's signature is stored once the start-up pass has checked its last word
@@ -316,6 +322,15 @@ module fseq (
                 inv_crc: assert(f_crc == ((f_state == ST_CHECK && f_last) ? F_CRC_ALL : crcb));
             end
             inv_poll:    assert(!f_poll || (f_state == ST_CYCLE_END && f_smode && f_sync_ok));
+            // the mode switch: mode 0 loaded by the header, taken at the first
+            // boundary; no request comes, so no load ever runs after it
+            if (run) begin
+                inv_nomode:  assert(!f_mpend && f_mstep == 3'd0 && f_rcycle == f_cycle && f_rdrop == f_drop &&
+                                    f_rend == f_ent_end && f_rfirst == f_mfirst);
+            end else begin
+                inv_mode0:   assert((f_state == ST_HEADER && f_step <= 3'd3) ? (!f_mpend && f_mstep == 3'd0)
+                                                                          : (f_mpend && f_mstep == 3'd5));
+            end
             inv_sync:    assert(!f_sync_ok || (F_SYNC0 && f_sync_brd == F_SRCB0 && f_sync_base == F_SRCA0));
             if (!run) begin
                 inv_start: assert(!started_q && !cycle_o && !busy_q && !hit_q &&
@@ -325,7 +340,8 @@ module fseq (
                 inv_header: assert(f_step <= 3'd4 && !error_o && !f_last && (rst_q || (!f_bg_data && f_bg_dadr == 0)) &&
                                    (f_step < 3'd2 || (f_ne == F_NE && f_smode == F_SMODE)) &&
                                    (f_step < 3'd3 || f_cycle == F_H1[F_TB-1:0]) &&
-                                   (f_step < 3'd4 || (f_drop == F_DROP && f_ent_end == F_NE)));
+                                   (f_step < 3'd4 || (f_drop == F_DROP && f_ent_end == F_NE && f_mfirst == 8'd0 &&
+                                                      f_mmodes == 4'd0)));
             end
             if (f_state == ST_CHECK) begin
                 inv_check: assert(hdr_ok && !error_o && f_start == F_S0[F_TB-1:0] && !f_start_bad &&

@@ -24,6 +24,7 @@ constexpr Field H0_MAGIC{0, 16, 16};
 constexpr Field H0_NE{0, 8, 8};
 constexpr Field H0_FLAGS{0, 0, 8};
 constexpr Field H1_CYCLE{1, 0, 16};
+constexpr Field H1_NEXT{1, 16, 16};
 constexpr Field H2_DROP_RUN{2, 0, 8};
 constexpr Field H2_TABLE{2, 8, 8};
 constexpr Field H2_MODES{2, 16, 4};

@@ -7,7 +7,7 @@ the entry is invalid and must be skipped every cycle.  --modes: the three
 entries are the start-up mode of an image with two modes; a second mode
 of two COPY entries (channel ids 3) follows, then the two mode descriptors:
 the sequencer must run the three entries only.  --modes-bad: the same with
-H2.start_end beyond H2.table, an invalid header).  Bit positions are
+H2.start_end beyond NE, an invalid header).  Bit positions are
 docs/controller.md's, written here as literals."""
 import sys
 
@@ -40,9 +40,10 @@ if '--modes' in sys.argv[2:] or '--modes-bad' in sys.argv[2:]:
              entry(1, 3, 1, 1, 150, 60, (0 << 12) | 200, [(1 << 12) | 200])]
     ents += [[(3 << 24) | (0 << 16) | 400, (0b10 << 16) | 2, 0, 0, 0, 0, 0, 0],
              [(5 << 24) | (3 << 16) | 300, (0b01 << 16) | 2, 0, 0, 0, 0, 0, 0]]
-    start_end = 6 if '--modes-bad' in sys.argv[2:] else 3
+    start_end = 8 if '--modes-bad' in sys.argv[2:] else 3         # --modes-bad: beyond NE = 7
     h2 = (start_end << 24) | (2 << 16) | (5 << 8) | 2          # start_end, modes 2, table 5, drop run 2
-rom = [(0xA1BA << 16) | (len(ents) << 8), 400, h2, 0] + sum(ents, [])
+h1 = 400 | ((0b10 << 16) if h2 else 0)                          # H1.next: mode 0 may switch to mode 1
+rom = [(0xA1BA << 16) | (len(ents) << 8), h1, h2, 0] + sum(ents, [])
 # H3: the CRC is linear in it; try each bit's effect and solve (32 unknowns,
 # by elimination over GF(2)), so that the image's CRC becomes 0.
 def check_word(ws):

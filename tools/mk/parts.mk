@@ -20,15 +20,17 @@
 # Outputs in build/parts/.
 
 PARTS_DIR := $(BUILD)/parts
-PARTS     := albatross_sequencer albatross_schedule_rom albatross_rom_check albatross_entry_check \
+PARTS     := albatross_sequencer albatross_schedule_rom albatross_rom_check albatross_entry_check albatross_mode_switch \
              albatross_bus_master albatross_counters
 # The modules albatross_sequencer instantiates.
-SEQ_SUB   := rtl/albatross_schedule_rom.v rtl/albatross_rom_check.v rtl/albatross_entry_check.v
+SEQ_SUB   := rtl/albatross_schedule_rom.v rtl/albatross_rom_check.v rtl/albatross_entry_check.v rtl/albatross_mode_switch.v
 
 TESTS += parts-lint sequencer sequencer-bad-start0 sequencer-negative-slot_late \
-         sequencer-modes sequencer-modes-bad sequencer-modes-negative
+         sequencer-modes sequencer-modes-bad sequencer-modes-negative sequencer-modes-switch \
+         sequencer-modes-switch-negative
 .PHONY: test-parts-lint test-sequencer test-sequencer-bad-start0 test-sequencer-negative-slot_late \
-        test-sequencer-modes test-sequencer-modes-bad test-sequencer-modes-negative
+        test-sequencer-modes test-sequencer-modes-bad test-sequencer-modes-negative test-sequencer-modes-switch \
+        test-sequencer-modes-switch-negative
 
 test-parts-lint: $(addprefix rtl/,$(addsuffix .v,$(PARTS))) $(RTL_INC)
 	@mkdir -p $(PARTS_DIR)
@@ -68,23 +70,37 @@ test-sequencer-bad-start0: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py 
 
 # An image with two modes (make_rom.py --modes): the sequencer runs the
 # start-up mode's entries only, and the background check covers the mode
-# descriptors; --modes-bad: H2.start_end beyond the table is an invalid
-# header.  The negative: a sequencer that ends the cycle at NE (all entries)
+# descriptors; --modes-bad: H2.start_end beyond NE is an invalid header.  The negative: a sequencer that ends the cycle at NE (all entries)
 # runs the other mode's entries, which the bench must catch.
 SEQ_MODES = set -e; mkdir -p $(PARTS_DIR)/$(1); $(PYTHON) tb/sequencer/make_rom.py $(PARTS_DIR)/$(1)/seq_rom.hex $(2); \
-	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/$(1)/tb tb/sequencer/tb_sequencer.v $(3) $(SEQ_SUB); \
+	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/$(1)/tb tb/sequencer/tb_sequencer.v $(3); \
 	    cd $(PARTS_DIR)/$(1) && vvp -n tb $(4) | grep -v readmemh > tb.log || true; cat tb.log
 test-sequencer-modes: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v $(SEQ_SUB) $(RTL_INC)
-	@tools/run_test.sh sequencer-modes bash -c '$(call SEQ_MODES,seq-modes,--modes,rtl/albatross_sequencer.v,+modes); \
+	@tools/run_test.sh sequencer-modes bash -c '$(call SEQ_MODES,seq-modes,--modes,rtl/albatross_sequencer.v $(SEQ_SUB),+modes); \
+	    grep -q "^PASS" tb.log'
+test-sequencer-modes-switch: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v $(SEQ_SUB) $(RTL_INC)
+	@tools/run_test.sh sequencer-modes-switch bash -c '$(call SEQ_MODES,seq-modes-switch,--modes,rtl/albatross_sequencer.v $(SEQ_SUB),+modes_switch); \
 	    grep -q "^PASS" tb.log'
 test-sequencer-modes-bad: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v $(SEQ_SUB) $(RTL_INC)
-	@tools/run_test.sh sequencer-modes-bad bash -c '$(call SEQ_MODES,seq-modes-bad,--modes-bad,rtl/albatross_sequencer.v,+modes_bad); \
+	@tools/run_test.sh sequencer-modes-bad bash -c '$(call SEQ_MODES,seq-modes-bad,--modes-bad,rtl/albatross_sequencer.v $(SEQ_SUB),+modes_bad); \
 	    grep -q "^PASS" tb.log'
 test-sequencer-modes-negative: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v $(SEQ_SUB) $(RTL_INC)
 	@mkdir -p $(PARTS_DIR)/seq-modes-neg
-	@sed 's/last_ent  = ent_inc == ent_end_q;/last_ent  = ent_inc == ne_q;/' rtl/albatross_sequencer.v > $(PARTS_DIR)/seq-modes-neg/albatross_sequencer.v
+	@sed 's/last_ent  = ent_inc == m_end;/last_ent  = ent_inc == ne_q;/' rtl/albatross_sequencer.v > $(PARTS_DIR)/seq-modes-neg/albatross_sequencer.v
 	@tools/run_test.sh sequencer-modes-negative bash -c 'if cmp -s $(PARTS_DIR)/seq-modes-neg/albatross_sequencer.v rtl/albatross_sequencer.v; then \
 	        echo "the edit (cycle end at NE) did not apply to rtl/albatross_sequencer.v"; exit 1; fi; \
-	    $(call SEQ_MODES,seq-modes-neg,--modes,$(PARTS_DIR)/seq-modes-neg/albatross_sequencer.v,+modes); \
+	    $(call SEQ_MODES,seq-modes-neg,--modes,$(PARTS_DIR)/seq-modes-neg/albatross_sequencer.v $(SEQ_SUB),+modes); \
 	    if grep -q "^PASS" tb.log; then echo "the bench passed a sequencer that runs every mode'"'"'s entries"; exit 1; fi; \
+	    grep -q "^FAIL" tb.log && echo "caught: $$(grep -m1 "^FAIL" tb.log)"'
+# The negative of the switch: a mode switch that takes effect as soon as
+# the mode is loaded, before the cycle boundary, must fail the bench.
+test-sequencer-modes-switch-negative: tb/sequencer/tb_sequencer.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v $(SEQ_SUB) $(RTL_INC)
+	@mkdir -p $(PARTS_DIR)/seq-switch-neg
+	@sed 's/default: if (switch_i) begin               \/\/ L_READY: the boundary/default: if (1'"'"'b1) begin/' \
+	    rtl/albatross_mode_switch.v > $(PARTS_DIR)/seq-switch-neg/albatross_mode_switch.v
+	@tools/run_test.sh sequencer-modes-switch-negative bash -c 'if cmp -s $(PARTS_DIR)/seq-switch-neg/albatross_mode_switch.v \
+	        rtl/albatross_mode_switch.v; then echo "the edit (switch before the boundary) did not apply to rtl/albatross_mode_switch.v"; exit 1; fi; \
+	    $(call SEQ_MODES,seq-switch-neg,--modes,rtl/albatross_sequencer.v $(filter-out rtl/albatross_mode_switch.v,$(SEQ_SUB)) \
+	        $(PARTS_DIR)/seq-switch-neg/albatross_mode_switch.v,+modes_switch); \
+	    if grep -q "^PASS" tb.log; then echo "the bench passed a mode switch before the cycle boundary"; exit 1; fi; \
 	    grep -q "^FAIL" tb.log && echo "caught: $$(grep -m1 "^FAIL" tb.log)"'

@@ -1,0 +1,170 @@
+// albatross_mode_switch -- the schedule modes of albatross_sequencer
+// (docs/controller.md "Modes"): which mode runs, a pending request, and the
+// reads of the requested mode's descriptor before the cycle boundary.
+// Rules:
+//   * The running schedule: entries first_o .. end_o - 1, cycle length
+//     cycle_o, drop run drop_o, and the modes it may switch to.  They are
+//     registers that take a loaded mode's values at a cycle boundary
+//     (switch_i) and change nowhere else.  The header is the load of mode 0
+//     (hdr1_i: rom_i = H1, hdr2_i: rom_i = H2): the cycle and next mask of
+//     H1, the drop run of H2, entries 0 .. NE - 1 (ne_i), or with H2.modes =
+//     M > 0 entries 0 .. H2.start_end - 1; the first cycle's boundary takes
+//     them.  The header and descriptor words keep each of these fields at
+//     the same bits, so a loaded value has one source, the ROM word.  With
+//     M = 0 no request is ever taken.
+//   * req_i (one clock, req_mode_i): a request.  One for a mode the running
+//     mode may switch to (its next mask) becomes pending, replacing a
+//     pending one whose load has not begun; one for the running mode, or
+//     while a load runs, is ignored; any other (a mode >= M, or a switch
+//     the description does not allow) is rejected: reject_o in the clock
+//     after, and the running mode goes on.
+//   * The load runs in clocks with idle_i (the sequencer waits for the cycle
+//     end), a ROM read a clock (read_o, read_adr_o; its word in rom_i the
+//     clock after): the requested mode's D1 (its drop run and next mask), D0
+//     (its cycle and entries), then E1 of its first entry (e1_o high while rom_i holds it: the
+//     sequencer's next start).  Then it waits, loaded, for the boundary:
+//     the sequencer starts no cycle while hold_o (pending, not loaded), and
+//     at the boundary (switch_i) the new mode's values replace the running
+//     ones (next_first_o gives the first entry of the cycle that starts).
+//     A load takes 6 clocks (hold_o low from the 6th).
+//   * HAS_MODES 0: the start-up mode runs for good: no request is taken and
+//     the mode table is never read (the entries, cycle and drop run still
+//     come from the header).
+//   * Reset clears the mode (0), the pending request and the load.
+`default_nettype none
+
+module albatross_mode_switch #(
+    parameter ROM_AW    = 10,  // ROM word-address bits
+    parameter TIME_BITS = 16,  // bits of a cycle length
+    parameter HAS_MODES = 1    // 1: mode switches; 0: mode 0 runs for good (no request is taken, no table read)
+) (
+    input  wire              clk_i,
+    input  wire              rst_i,          // synchronous, active high
+    input  wire              hdr1_i,         // rom_i holds H1
+    input  wire              hdr2_i,         // rom_i holds H2
+    input  wire [7:0]        ne_i,           // H0.NE (from hdr2_i on)
+    input  wire [31:0]       rom_i,          // the ROM word read in the previous clock
+    input  wire              req_i,          // a mode request (one clock)
+    input  wire [3:0]        req_mode_i,
+    input  wire              idle_i,         // the sequencer waits for the cycle end: the ROM port is free
+    input  wire              switch_i,       // the cycle boundary (new_cycle)
+    output wire              read_o,         // a read of the mode table this clock
+    output wire [ROM_AW-1:0] read_adr_o,
+    output wire              e1_o,           // rom_i holds E1 of the new mode's first entry
+    output wire              hold_o,         // a request is pending and not loaded: no cycle start yet
+    output wire              reject_o,       // one clock: a request was rejected
+    output wire [3:0]        mode_o,         // the running mode
+    output wire [7:0]        first_o,        // the running mode's entries first_o .. end_o - 1
+    output wire [7:0]        end_o,
+    output wire [7:0]        next_first_o,   // the first entry of a cycle that starts in this clock
+    output wire [TIME_BITS-1:0] cycle_o,     // the running mode's cycle length
+    output wire [7:0]        drop_o          // the running mode's drop run K
+);
+
+`include "albatross_contract.vh"
+
+    localparam TB = TIME_BITS;
+    localparam [2:0] L_IDLE = 3'd0, L_D1 = 3'd1, L_D0 = 3'd2, L_E1 = 3'd3, L_E1_DATA = 3'd4, L_READY = 3'd5;
+
+    generate
+        if (ALB_ROM_H1_CYCLE_LSB != ALB_ROM_D0_CYCLE_LSB || ALB_ROM_H1_NEXT_LSB != ALB_ROM_D1_NEXT_LSB ||
+            ALB_ROM_H2_DROP_RUN_LSB != ALB_ROM_D1_DROP_RUN_LSB || ALB_ROM_H2_START_END_LSB != ALB_ROM_D0_END_LSB)
+        begin : g_contract_check
+            albatross_mode_switch_contract_mismatch u_error ();
+        end
+    endgenerate
+
+    reg [3:0]    modes_q, mode_q, idx_q;
+    reg [7:0]    table_q;
+    reg          pend_q, reject_q, e1_q;
+    reg [2:0]    step_q;
+    // the loaded mode (n_*) and the running one
+    reg [TB-1:0] n_cycle_q, cycle_q;
+    reg [7:0]    n_first_q, n_end_q, n_drop_q, first_q, end_q, drop_q;
+    reg [15:0]   n_next_q, next_q;            // the modes it may switch to
+
+    localparam  MODES   = HAS_MODES != 0;
+    wire        taken   = MODES && req_i && modes_q != 4'd0 && step_q == L_IDLE && req_mode_i != mode_q;
+    wire        allowed = next_q[req_mode_i] && req_mode_i < modes_q;
+    wire        commit  = switch_i && step_q == L_READY;
+    wire        h2modes = rom_i[ALB_ROM_H2_MODES_LSB +: 4] != 4'd0;
+    // rom_i holds: H1 or D0 (cycle), H1 or D1 (next), H2 or D1 (drop run), H2 or D0 (end, first)
+    wire        ld_d1   = step_q == L_D0 && idle_i;
+    wire        ld_d0   = step_q == L_E1;
+    // Descriptor idx takes the place of entry table + idx: D0 at {desc, 100}, D1 at {desc, 101}.
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [7:0]         desc   = table_q + {4'd0, idx_q};
+    wire [ROM_AW+10:0] d_adr  = {{ROM_AW{1'b0}}, desc, step_q == L_D1 ? 3'b101 : 3'b100};
+    wire [ROM_AW+10:0] e1_adr = {{ROM_AW{1'b0}}, n_first_q, 3'b101};
+    /* verilator lint_on UNUSEDSIGNAL */
+
+    always @(posedge clk_i) begin
+        if (hdr1_i || ld_d0) n_cycle_q <= rom_i[ALB_ROM_D0_CYCLE_LSB +: TB];
+        if (hdr1_i || ld_d1) n_next_q  <= rom_i[ALB_ROM_D1_NEXT_LSB +: 16];
+        if (hdr2_i || ld_d1) n_drop_q  <= rom_i[ALB_ROM_D1_DROP_RUN_LSB +: 8];
+        if (hdr2_i || ld_d0) n_end_q   <= (hdr2_i && !h2modes) ? ne_i : rom_i[ALB_ROM_D0_END_LSB +: 8];
+        if (hdr2_i)     n_first_q <= 8'd0;
+        else if (ld_d0) n_first_q <= rom_i[ALB_ROM_D0_FIRST_LSB +: 8];
+        if (commit) begin
+            cycle_q <= n_cycle_q;
+            next_q  <= n_next_q;
+            drop_q  <= n_drop_q;
+            end_q   <= n_end_q;
+            first_q <= n_first_q;
+        end
+    end
+
+    always @(posedge clk_i) begin
+        reject_q <= 1'b0;
+        e1_q     <= 1'b0;
+        if (rst_i) begin
+            mode_q  <= 4'd0;
+            modes_q <= 4'd0;
+            pend_q  <= 1'b0;
+            step_q  <= L_IDLE;
+        end else if (hdr2_i) begin                 // mode 0 loaded: the first boundary takes it
+            modes_q <= rom_i[ALB_ROM_H2_MODES_LSB +: 4];
+            table_q <= rom_i[ALB_ROM_H2_TABLE_LSB +: 8];
+            idx_q   <= 4'd0;
+            pend_q  <= 1'b1;
+            step_q  <= L_READY;
+        end else begin
+            if (taken) begin
+                if (allowed) begin
+                    pend_q <= 1'b1;
+                    idx_q  <= req_mode_i;
+                end else reject_q <= 1'b1;
+            end
+            case (step_q)
+                L_IDLE: if (pend_q && idle_i && !taken) step_q <= L_D1;
+                L_D1:   if (idle_i) step_q <= L_D0;        // D1 read now, in rom_i next clock
+                L_D0:   if (idle_i) step_q <= L_E1;        // D0 read now; rom_i = D1 (ld_d1)
+                L_E1:   step_q <= L_E1_DATA;               // rom_i = D0 (ld_d0)
+                L_E1_DATA: begin                           // E1 read now
+                    e1_q   <= 1'b1;
+                    step_q <= L_READY;
+                end
+                default: if (switch_i) begin               // L_READY: the boundary
+                    mode_q <= idx_q;
+                    pend_q <= 1'b0;
+                    step_q <= L_IDLE;
+                end
+            endcase
+        end
+    end
+
+    assign read_o       = MODES && ((idle_i && (step_q == L_D1 || step_q == L_D0)) || step_q == L_E1_DATA);
+    assign read_adr_o   = step_q == L_E1_DATA ? e1_adr[ROM_AW-1:0] : d_adr[ROM_AW-1:0];
+    assign e1_o         = MODES && e1_q;
+    assign hold_o       = pend_q && step_q != L_READY;
+    assign reject_o     = reject_q;
+    assign mode_o       = MODES ? mode_q : 4'd0;
+    assign first_o      = MODES ? first_q : 8'd0;
+    assign end_o        = end_q;
+    assign next_first_o = MODES ? (commit ? n_first_q : first_q) : 8'd0;
+    assign cycle_o      = cycle_q;
+    assign drop_o       = drop_q;
+
+endmodule
+
+`default_nettype wire
