@@ -61,6 +61,8 @@ localparam [3:0] ALB_KIND_STATUS = 4'd3;
 localparam ALB_ROM_HFLAG_SYNC_MODE = 0;
 localparam ALB_ROM_EFLAG_SYNC = 0;
 localparam ALB_ROM_EFLAG_FOUR_SLOT = 1;
+localparam ALB_ROM_EFLAG_REQUEST = 2;
+localparam ALB_ROM_EFLAG_MODE = 3;
 // channel layout: byte offsets from the channel base; buffer index values
 localparam ALB_CH_OFF_ACTUAL     = 0;
 localparam ALB_CH_OFF_READLOCKED = 1;

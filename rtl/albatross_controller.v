@@ -103,7 +103,10 @@ module albatross_controller #(
     endfunction
 
     // ------------------------------------------------------------ sequencer
-    wire          go, may_access, sync_entry, poll_cyc, cycle_start, four;
+    wire          go, may_access, sync_entry, poll_cyc, cycle_start, four, request, mode_info;
+    wire [31:0]   mode_since;
+    wire          tr_mode_req;
+    wire [3:0]    tr_mode_req_mode;
     wire [1:0]    kind;
     wire [6:0]    chan7;
     wire [2:0]    nd;
@@ -130,14 +133,17 @@ module albatross_controller #(
         .clk_i(clk_i), .rst_i(rst_i), .enable_i(ready_q && cnt_ready),
         .go_o(go), .kind_o(kind), .chan_o(chan7), .nd_o(nd), .words_o(words),
         .src_board_o(src_board), .src_base_o(src_base), .dst_board_o(dst_board), .dst_base_o(dst_base),
-        .slot_time_o(slot_time), .sync_entry_o(sync_entry), .four_o(four), .may_access_o(may_access), .slot_done_i(slot_end),
+        .slot_time_o(slot_time), .sync_entry_o(sync_entry), .four_o(four), .request_o(request), .mode_info_o(mode_info),
+        .may_access_o(may_access), .slot_done_i(slot_end),
         .poll_cyc_o(poll_cyc), .poll_board_o(poll_board), .poll_adr_o(poll_adr), .poll_dat_i(bus_rdat),
         .poll_ack_i(r_ack[1]), .poll_err_i(r_err[1]), .sync_rl_i(sync_rl_q),
         .time_o(time_o), .cycle_o(cycle_start), .error_o(error_o), .rom_errors_o(rom_errors_o), .cycles_o(cycles),
-        .drop_run_o(drop_run), .mode_req_i(1'b0), .mode_req_mode_i(4'd0), .mode_o(mode), .mode_reject_o(mode_reject));
+        .drop_run_o(drop_run), .mode_req_i(tr_mode_req), .mode_req_mode_i(tr_mode_req_mode), .mode_o(mode),
+        .mode_since_o(mode_since),
+        .mode_reject_o(mode_reject));
 
     wire [CH_BITS-1:0] chan   = chan7[CH_BITS-1:0];
-    wire [3:0]         active = (nd == 3'd1) ? 4'b0001 : (nd == 3'd2) ? 4'b0011 : (nd == 3'd3) ? 4'b0111 : 4'b1111;
+    wire [3:0]         active = {nd[2], nd >= 3'd3, nd >= 3'd2, nd != 3'd0};   // destinations 0..ND-1 (ND 0: a REQUEST COPY)
     wire               k_copy = kind == ALB_KIND_COPY[1:0];
     wire               k_time = kind == ALB_KIND_TIME[1:0];
 
@@ -173,6 +179,10 @@ module albatross_controller #(
     wire [31:0] st_taken = st_q[31:0];
 
     // ------------------------------------------------------------ transfer datapath
+    // A MODE entry (a STATUS of W 2) publishes {the running mode, the time its
+    // first cycle began} instead of the counters' words.
+    wire [31:0] tr_status;
+    wire        tr_status_valid;
     wire        tr_done, tr_imp, tr_exp, tr_new;
     wire [2:0]  tr_rl, tr_xfers, tr_corrupt;
     wire [3:0]  tr_need;
@@ -188,14 +198,15 @@ module albatross_controller #(
 
     albatross_transfer #(.ADDR_WIDTH(AW)) u_transfer (
         .clk_i(clk_i), .rst_i(rst_i),
-        .go_i(go), .copy_i(k_copy), .time_kind_i(k_time), .four_i(four), .active_i(active), .words_i(words),
+        .go_i(go), .copy_i(k_copy), .time_kind_i(k_time), .four_i(four), .request_i(request), .active_i(active),
+        .words_i(words),
         .src_board_i(src_board), .src_base_i(src_base), .dst_board_i(dst_board), .dst_base_i(dst_base),
         .slot_time_i(slot_time), .may_access_i(may_access), .drop_run_i(drop_run),
         .st_rl_i(st_rl), .st_need_i(st_need), .st_tried_i(st_tried), .st_taken_i(st_taken),
-        .status_i(status_word), .status_valid_i(status_valid), .index_o(tr_index),
+        .status_i(tr_status), .status_valid_i(tr_status_valid), .index_o(tr_index),
         .done_o(tr_done), .imp_run_o(tr_imp), .exp_run_o(tr_exp), .new_o(tr_new), .rl_o(tr_rl),
         .need_o(tr_need), .tried_o(tr_tried),
-        .transfers_o(tr_xfers), .corrupt_o(tr_corrupt),
+        .transfers_o(tr_xfers), .corrupt_o(tr_corrupt), .mode_req_o(tr_mode_req), .mode_req_mode_o(tr_mode_req_mode),
         .cyc_o(r_cyc[0]), .we_o(r_we[0]), .adr_o(r_adr[0 +: AW]), .board_o(r_board[3:0]), .sel_o(r_sel[3:0]),
         .dat_o(r_wdat[31:0]), .dat_i(bus_rdat), .ack_i(r_ack[0]), .err_i(r_err[0]));
 
@@ -249,7 +260,9 @@ module albatross_controller #(
     // need after the slot: the state RAM's copy if the Export did not run.
     wire [3:0] need_end = tr_exp ? tr_need : st_need;
     wire [2:0] abandons = popcount4(need_end & active);
-    wire [2:0] corrupts = slot_end ? tr_corrupt : 3'd0;
+    // A rejected mode request (the clock of its REQUEST slot's end) counts as
+    // a corrupt value of the request channel.
+    wire [2:0] corrupts = slot_end ? tr_corrupt + {2'd0, mode_reject} : 3'd0;
     generate
         if (HAS_STATUS != 0) begin : g_counters
             albatross_counters #(.N_CHAN(N_CHAN), .INDEX_WIDTH(12)) u_counters (
@@ -271,7 +284,9 @@ module albatross_controller #(
     endgenerate
 
     // Signals kept for waveforms and proofs only.
-    wire unused = &{1'b0, fails_total, overlap, cycle_start, cnt_busy, mode, mode_reject};
+    assign tr_status       = !mode_info ? status_word : tr_index[0] ? mode_since : {28'd0, mode};
+    assign tr_status_valid = mode_info || status_valid;
+    wire unused = &{1'b0, fails_total, overlap, cycle_start, cnt_busy};
 
 endmodule
 

@@ -5,15 +5,17 @@
 //   * FETCH clock 1 (E0): kind above 3; the SYNC flag on other than entry 0
 //     of a sync-mode ROM with kind COPY; SYNC with FOUR_SLOT (the sync-mode
 //     poll compares Actual with a three-buffer ReadLocked copy); a non-IDLE entry with ND outside
-//     1..4 or a channel id >= N_CHAN; COPY with W = 0, TIME with W != 1,
-//     STATUS with W != 2*N_CHAN+1; or the background check's bad mark.
+//     1..4 (a REQUEST COPY: ND not 0) or a channel id >= N_CHAN; REQUEST
+//     on another kind or with SYNC; MODE on other than a STATUS with W = 2;
+//     COPY with W = 0, TIME with W != 1, STATUS with W != 2*N_CHAN+1 (MODE:
+//     2); or the background check's bad mark.
 //   * Clock 2 (E2, length): E1 did not fit (start_bad_i), the length does
 //     not fit in TIME_BITS or is below MIN_LEN, or the slot starts before
 //     the previous slot's end.
 //   * Clock 3: the slot ends after the cycle (end_i > H1; end_i is the
 //     register clock 2 wrote, so no adder stands between the ROM's output
 //     and this compare).
-//   * Clocks 3..5 (E3..E5): a place (source of a COPY, destinations 1..ND)
+//   * Clocks 3..5 (E3..E5): a place (source of a COPY, destinations 0..ND-1)
 //     with board >= NB or base + 3*(W or W+1) past 2^ADDR_WIDTH (FOUR_SLOT,
 //     on any kind: 4 buffers, base + 4*(W or W+1)).
 `default_nettype none
@@ -52,6 +54,8 @@ module albatross_entry_check #(
     localparam [11:0]  W_STATUS   = W_STATUS_I[11:0];   // W of a STATUS entry
     localparam         EFLAG_SYNC = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_SYNC; // E0's SYNC flag
     localparam         EFLAG_FOUR = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_FOUR_SLOT; // E0's FOUR_SLOT flag
+    localparam         EFLAG_REQUEST = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_REQUEST; // E0's REQUEST flag
+    localparam         EFLAG_MODE = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_MODE; // E0's MODE flag
 
     // x < k for a constant k, as logic: Yosys maps a relational operator to
     // a carry chain with a LUT per bit even when one side is constant.
@@ -76,13 +80,17 @@ module albatross_entry_check #(
     wire [7:0]  e0_id   = rom_i[ALB_ROM_E0_ID_LSB +: 8];
     wire [11:0] e0_w    = rom_i[ALB_ROM_E0_W_LSB +: 12];
     wire        e0_idle = e0_kind == ALB_KIND_IDLE;
+    wire        e0_req  = rom_i[EFLAG_REQUEST];
     wire        e0_bad  = e0_kind[3:2] != 2'd0 ||
-                          (rom_i[EFLAG_SYNC] && !(ent0_i && smode_i && e0_kind == ALB_KIND_COPY && !rom_i[EFLAG_FOUR])) ||
-                          (!e0_idle && (e0_nd == 4'd0 || !below({28'd0, e0_nd}, 32'd5) ||
+                          (rom_i[EFLAG_SYNC] && !(ent0_i && smode_i && e0_kind == ALB_KIND_COPY && !rom_i[EFLAG_FOUR] &&
+                                                   !e0_req)) ||
+                          (e0_req && (e0_kind != ALB_KIND_COPY || e0_nd != 4'd0)) ||
+                          (!e0_idle && ((e0_nd == 4'd0 && !e0_req) || !below({28'd0, e0_nd}, 32'd5) ||
                                         !below({24'd0, e0_id}, N_CHAN))) ||
                           (e0_kind == ALB_KIND_COPY && e0_w == 12'd0) ||
                           (e0_kind == ALB_KIND_TIME && e0_w != 12'd1) ||
-                          (e0_kind == ALB_KIND_STATUS && e0_w != W_STATUS);
+                          (rom_i[EFLAG_MODE] && (e0_kind != ALB_KIND_STATUS || e0_w != 12'd2)) ||
+                          (e0_kind == ALB_KIND_STATUS && e0_w != W_STATUS && !rom_i[EFLAG_MODE]);
     wire        e2_bad  = start_bad_i || rom_i[31:TB] != 0 || below({{(32-TB){1'b0}}, rom_i[TB-1:0]}, MIN_LEN) ||
                           {1'b0, start_i} < prev_end_i;
     wire        end_bad = end_i > {1'b0, cycle_i};
@@ -111,7 +119,7 @@ module albatross_entry_check #(
             3'd1:    bad_o = (CHK && e0_bad) || bad_mark_i;
             3'd2:    bad_o = CHK && e2_bad;
             3'd3:    bad_o = CHK && (end_bad || (kind_i == ALB_KIND_COPY[1:0] && !lo_ok));
-            3'd4:    bad_o = CHK && (!lo_ok || (nd_i >= 3'd2 && !hi_ok));
+            3'd4:    bad_o = CHK && ((nd_i != 3'd0 && !lo_ok) || (nd_i >= 3'd2 && !hi_ok));
             3'd5:    bad_o = CHK && ((nd_i >= 3'd3 && !lo_ok) || (nd_i == 3'd4 && !hi_ok));
             default: bad_o = 1'b0;
         endcase

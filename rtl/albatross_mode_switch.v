@@ -53,6 +53,7 @@ module albatross_mode_switch #(
     output wire              e1_o,           // rom_i holds E1 of the new mode's first entry
     output wire              hold_o,         // a request is pending and not loaded: no cycle start yet
     output wire              reject_o,       // one clock: a request was rejected
+    output wire              commit_o,       // this boundary takes the loaded mode (switch_i with it loaded)
     output wire [3:0]        mode_o,         // the running mode
     output wire [7:0]        first_o,        // the running mode's entries first_o .. end_o - 1
     output wire [7:0]        end_o,
@@ -158,6 +159,7 @@ module albatross_mode_switch #(
     assign e1_o         = MODES && e1_q;
     assign hold_o       = pend_q && step_q != L_READY;
     assign reject_o     = reject_q;
+    assign commit_o     = commit;
     assign mode_o       = MODES ? mode_q : 4'd0;
     assign first_o      = MODES ? first_q : 8'd0;
     assign end_o        = end_q;

@@ -89,6 +89,8 @@ module albatross_sequencer #(
     output wire [31:0]             slot_time_o,    // S, the slot's nominal start
     output wire                    sync_entry_o,   // the entry is the SYNC COPY (entry 0, sync mode)
     output wire                    four_o,         // E0 flag FOUR_SLOT: the channel is of the four-slot kind
+    output wire                    request_o,      // E0 flag REQUEST: a COPY whose New value is a mode request
+    output wire                    mode_info_o,    // E0 flag MODE: a STATUS of {mode_o, mode_since_o}
     output wire                    may_access_o,   // an access begun next clock ends before D
     input  wire                    slot_done_i,    // one clock: the transfer is over
     // sync-mode poll: a Wishbone B4 classic read of the SYNC source's control word
@@ -112,6 +114,7 @@ module albatross_sequencer #(
     input  wire                    mode_req_i,     // one clock: a request for mode mode_req_mode_i
     input  wire [3:0]              mode_req_mode_i,
     output wire [3:0]              mode_o,         // the running mode
+    output wire [31:0]             mode_since_o,   // time_o in the first clock of the first cycle in it
     output wire                    mode_reject_o   // one clock: a request was rejected
 );
 
@@ -132,6 +135,8 @@ module albatross_sequencer #(
     localparam                HFLAG_SYNC  = ALB_ROM_H0_FLAGS_LSB + ALB_ROM_HFLAG_SYNC_MODE;
     localparam                EFLAG_SYNC  = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_SYNC;
     localparam                EFLAG_FOUR  = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_FOUR_SLOT;
+    localparam                EFLAG_REQ   = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_REQUEST;
+    localparam                EFLAG_MODE  = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_MODE;
 
     generate
         if (NB < 1 || NB > 16 || ADDR_WIDTH < 3 || ADDR_WIDTH > ALB_ROM_PLACE_BASE_W || N_CHAN < 1 ||
@@ -183,6 +188,10 @@ module albatross_sequencer #(
     reg [1:0]          kind_q;
     reg                sflag_q;
     reg                four_q;        // E0 flag FOUR_SLOT
+    reg                req_q;         // E0 flag REQUEST
+    reg                minfo_q;       // E0 flag MODE
+    reg                switched_q;    // the boundary of the last clock took a loaded mode
+    reg [31:0]         since_q;       // the first clock of the running mode's first cycle
     reg [6:0]          chan_q;
     reg [2:0]          nd_q;
     reg [11:0]         w_q;
@@ -234,7 +243,13 @@ module albatross_sequencer #(
     // (rtl/albatross_mode_switch.v); a request is loaded while the sequencer
     // waits for the cycle end, and the boundary waits for a load that has
     // begun (mode_hold).
-    wire               mode_rd, mode_e1, mode_hold;
+    wire               mode_rd, mode_e1, mode_hold, mode_commit;
+    // since: time_o in the first clock of a cycle whose boundary took a loaded
+    // mode (the start-up's first cycle too: the header's load of mode 0)
+    always @(posedge clk_i) begin
+        switched_q <= !rst_i && mode_commit;
+        if (switched_q) since_q <= time_q;
+    end
     wire               new_cycle;     // the cycle boundary (control, below)
     wire [ROM_AW-1:0]  mode_adr;
     wire [7:0]         m_first, m_end, m_next_first, m_drop;
@@ -244,7 +259,8 @@ module albatross_sequencer #(
         .hdr2_i(state_q == ST_HEADER && step_q == 3'd3), .ne_i(ne_q), .rom_i(rom_q),
         .req_i(mode_req_i), .req_mode_i(mode_req_mode_i), .idle_i(state_q == ST_CYCLE_END), .switch_i(new_cycle),
         .read_o(mode_rd), .read_adr_o(mode_adr), .e1_o(mode_e1), .hold_o(mode_hold),
-        .reject_o(mode_reject_o), .mode_o(mode_o), .first_o(m_first), .end_o(m_end), .next_first_o(m_next_first),
+        .reject_o(mode_reject_o), .commit_o(mode_commit), .mode_o(mode_o), .first_o(m_first), .end_o(m_end),
+        .next_first_o(m_next_first),
         .cycle_o(cycle_q), .drop_o(m_drop));
 
     // ------------------------------------------------------------ ROM check
@@ -367,6 +383,8 @@ module albatross_sequencer #(
                             nd_q    <= e0_nd;
                             w_q     <= e0_w;
                             four_q  <= rom_q[EFLAG_FOUR];
+                            req_q   <= HAS_MODES != 0 && rom_q[EFLAG_REQ];
+                            minfo_q <= HAS_MODES != 0 && rom_q[EFLAG_MODE];
                             e3_q    <= rom_q[EFLAG_FOUR] ? {e0_w, 2'b00} : {2'b00, e0_w} + {1'b0, e0_w, 1'b0};
                         end
                         3'd2: end_q <= e2_end;                                  // E2
@@ -437,6 +455,9 @@ module albatross_sequencer #(
     assign slot_time_o  = slot_time_q;
     assign sync_entry_o = sflag_q;
     assign four_o       = four_q;
+    assign request_o    = req_q;
+    assign mode_info_o  = minfo_q;
+    assign mode_since_o = since_q;
     assign may_access_o = (state_q == ST_TRANSFER || go_now) && in_time_q;   // c + 1 + MARGIN <= D (D >= MIN_LEN > MARGIN)
     assign poll_cyc_o   = poll_q;
     assign poll_board_o = sync_brd_q;

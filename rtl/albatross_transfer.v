@@ -22,6 +22,11 @@
 //     if New (new_o: taken_at := the time now), else those still in need
 //     (st_need_i); none: the slot ends.  A cut-off after a
 //     ReadLocked store and before its confirming load forgets the copy.
+//   * REQUEST (request_i, a COPY with no destination): a New value's word 0
+//     is loaded (buffer rl, k = 0) and, in the clock of its ack, offered
+//     as a mode request (mode_req_o, mode_req_mode_o: its low 4 bits, 15 if
+//     a higher bit is set); then the slot ends.  An Old value ends the slot
+//     at once.
 //   * Export, to the destinations d in need in index order: per d, load its
 //     whole control word (both kinds: Actual with ReadLocked, so no copy of
 //     Actual is kept); an Actual equal to the buffer of a failed Actual
@@ -60,6 +65,7 @@ module albatross_transfer #(
     input  wire                    copy_i,         // kind COPY
     input  wire                    time_kind_i,    // kind TIME (else STATUS, when not COPY)
     input  wire                    four_i,         // the four-slot kind
+    input  wire                    request_i,      // a REQUEST COPY: its New value is a mode request
     input  wire [3:0]              active_i,       // the destinations of the entry
     input  wire [11:0]             words_i,        // W
     input  wire [3:0]              src_board_i,
@@ -88,6 +94,8 @@ module albatross_transfer #(
     output wire [11:0]             tried_o,
     output wire [2:0]              transfers_o,    // destinations published
     output wire [2:0]              corrupt_o,      // control bytes that named no buffer
+    output wire                    mode_req_o,     // one clock: a mode request (REQUEST entries)
+    output wire [3:0]              mode_req_mode_o,
     // requester port (cyc = stb)
     output wire                    cyc_o,
     output wire                    we_o,
@@ -173,6 +181,7 @@ module albatross_transfer #(
     wire       word_ok  = !copy_i && (time_kind_i || status_valid_i);
     wire       choose   = ack && ((state_q == S_SRC_ACT && a_valid && a_match) || state_q == S_SRC_SLOT);
     wire [3:0] need_now = (new_q ? 4'hF : st_need_i) & active_i;
+    wire       req_load = request_i && new_q;         // a New request value: load its word 0
     wire [7:0] k_run    = drop_run_i[7:1] == 7'd0 ? 8'd2 : drop_run_i;
     wire [7:0] run_inc  = run_q + 8'd1;
     // Cut off between the ReadLocked store and its confirming load: forget.
@@ -186,8 +195,8 @@ module albatross_transfer #(
                                 : ((state_q == S_DST_WORD && last_wd) || state_q == S_DST_TKN || state_q == S_DST_SLOT));
     wire       req      = !rst_i && ((go_i && !copy_i) || (!go_i && !(err_i && stb_q) && retry_q && !drop_q) ||
                           (nrm && ((ack && ((state_q == S_SRC_ACT && a_valid && !a_match) || state_q == S_SRC_RL ||
-                                            state_q == S_SRC_WORD)) ||
-                                   (state_q == S_WAIT && word_ok) || (choose && need_now != 4'd0) ||
+                                            (state_q == S_SRC_WORD && !request_i))) ||
+                                   (state_q == S_WAIT && word_ok) || (choose && (need_now != 4'd0 || req_load)) ||
                                    (adv && dst && left_any && dst_go))));
 
     // Put an access on the bus in the next clock; when may_access_i is low the
@@ -285,7 +294,10 @@ module albatross_transfer #(
                     begin_access(four_i ? S_SRC_SLOT : S_SRC_ACT, 2'd0);
                 end
                 S_SRC_SLOT: if (ack) rl_q <= pick_l;
-                S_SRC_WORD: if (ack) begin_access(S_DST_WORD, first_d);     // take word k_q
+                S_SRC_WORD: if (ack) begin
+                    if (request_i) finish;                              // the mode request (mode_req_o)
+                    else begin_access(S_DST_WORD, first_d);             // take word k_q
+                end
                 S_WAIT: if (word_ok) begin_access(S_DST_WORD, first_d);
                         else if (!may_access_i || copy_i) finish;       // the cut-off (COPY: only entered without may_access_i)
                 S_DST_CTRL: if (ack && ((!r_valid && !r_zero) || (!a_valid && !a_zero))) cor_q <= cor_q | d_bit;
@@ -295,7 +307,8 @@ module albatross_transfer #(
             // The value is chosen: New (taken_at now) or Old.
             if (choose) begin
                 serve_q  <= need_now;
-                if (need_now == 4'd0) finish;
+                if (req_load) begin_access(S_SRC_WORD, 2'd0);          // word 0 (k_q is 0 from go_i)
+                else if (need_now == 4'd0) finish;
                 else start_export;
             end
             // The next destination access (adv is 0 outside them).
@@ -360,8 +373,8 @@ module albatross_transfer #(
     wire take_en = (nrm && ack && state_q == S_SRC_WORD) ||
                    (nrm && word_ok && (state_q == S_WAIT || (adv && dst && want)));
     always @(posedge clk_i) if (take_en) word_q <= copy_i ? dat_i : status_i;
-    // k_q: the index of the next word to take; 0 when an Export starts.
-    always @(posedge clk_i) if (e_start) k_q <= 12'd0; else if (take_en) k_q <= k_q + 12'd1;
+    // k_q: the index of the next word to take; 0 from go_i and when an Export starts.
+    always @(posedge clk_i) if (e_start || go_i) k_q <= 12'd0; else if (take_en) k_q <= k_q + 12'd1;
 
     // ------------------------------------------------------------ the access
     albatross_transfer_access #(.ADDR_WIDTH(AW)) u_access (
@@ -386,6 +399,8 @@ module albatross_transfer #(
     assign need_o      = serve_q & ~pub_q;
     assign transfers_o = exp_q ? popcount4(pub_q) : 3'd0;
     assign corrupt_o   = {2'd0, icor_q} + popcount4(cor_q);
+    assign mode_req_o      = nrm && ack && state_q == S_SRC_WORD && request_i && !early_q;
+    assign mode_req_mode_o = (|dat_i[31:4]) ? 4'hF : dat_i[3:0];
 
 endmodule
 

@@ -64,7 +64,22 @@ def render_board_header(system: System, b: int, desc_name: str, plan: Plan) -> s
     w = max(len(c.name) for c in system.channels)
     for ch in system.channels:
         L.append(f"#define ALB_{ch.name.upper() + '_ID':<{w + 3}} {ch.id}u")
-    if any(ch.kind == "status" for ch, _, _ in insts):
+    plans = getattr(system, "mode_plans", None)
+    if plans:
+        L.append("")
+        L.append("/* Schedule modes: the value a mode_request channel publishes to ask for each. */")
+        wm = max(len(m.name) for m, _, _, _ in plans)
+        for i, (m, _, _, _) in enumerate(plans):
+            L.append(f"#define ALB_MODE_{m.name.upper():<{wm}} {i}u")
+    if any(ch.mode_info for ch, _, _ in insts):
+        L.append("")
+        L.append("/* The running mode (a mode channel's value): its number (ALB_MODE_*) and the")
+        L.append(" * global time at which the first cycle in it began. */")
+        L.append("#ifndef ALB_MODE_T_DEFINED")
+        L.append("#define ALB_MODE_T_DEFINED")
+        L.append("typedef struct { uint32_t mode; uint32_t since; } alb_mode_t;")
+        L.append("#endif")
+    if any(ch.kind == "status" and not ch.mode_info for ch, _, _ in insts):
         L.append("")
         L.append("/* STATUS words (w = <Status>_msg.value.word): word 0 = {rom_errors, cycles},")
         L.append(" * then per channel id {transfers, retries} and {abandoned, corrupt}. */")
@@ -83,7 +98,7 @@ def render_board_header(system: System, b: int, desc_name: str, plan: Plan) -> s
                  f"{'producer' if role == 'source' else 'consumer'}. */")
         if ch.ctype is None and ch.kind == "copy":
             L.append(f"typedef struct {{ uint8_t bytes[{ch.size}]; }} {T};")
-        elif ch.ctype is None and ch.kind == "status":
+        elif ch.ctype is None and ch.kind == "status" and not ch.mode_info:
             L.append(f"typedef struct {{ uint32_t word[{ch.words}]; }} {T};")
         payload = ch.size if role == "source" else ch.dst_size
         L.append(f"#define ALB_{N}_BASE   0x{base:04x}u  /* byte offset in this board's RAM */")

@@ -56,6 +56,6 @@ def main(argv=None) -> int:
                   f"{m['cycle']['clocks']} clocks, {m['entries']} entries, bus utilisation "
                   f"{100 * m['bus_utilisation']:.1f} %")
         if rep.get("modes"):
-            print("  (rom.hex holds every mode; the controller runs the start-up mode and does not switch "
-                  "modes yet)")
+            print("  (rom.hex holds every mode; the controller starts in the first and switches at a cycle "
+                  "boundary when the mode_request channel asks)")
     return 0

@@ -8,14 +8,14 @@ import re
 import tomllib
 
 from .model import (BUS_DEFAULTS, BUS_MINIMUM, CHANNEL_KEYS, CTYPE_RE, DEFAULT_RAM_BYTES, HEADER_RE,
-                    IDENT_RE, MODE_RIGID, MODE_SYNC, SYSTEM_KEYS, Bus, Channel,
+                    IDENT_RE, MODE_KIND, MODE_RIGID, MODE_SYNC, REQUEST_KIND, SYSTEM_KEYS, Bus, Channel,
                     ScheduleError, System)
 from .rom import BOARD_BITS, MAX_BOARDS, MAX_CHAN_IDS, MAX_DESTS, MAX_ENTRIES, MAX_WORDS
 from .contract import load as _load_contract
 from .fourslot import FOUR_SLOT, LAYOUTS, THREE_BUFFER
 from .cnames import check_names as check_c_names
 from .faults import parse_faults
-from .modes import parse_modes
+from .modes import check_request_channel, parse_modes
 from .termination import parse_board_timing
 
 CONTRACT_TIME_BITS = _load_contract().time_bits
@@ -265,6 +265,7 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
     channels = []
     names = {}
     n_sync = 0
+    n_req = 0
     status_words = 1 + 2 * bus.n_chan
     for i, cd in enumerate(chans):
         if not isinstance(cd, dict):
@@ -297,12 +298,16 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
 
         kind = cd.get("kind", "copy")
         layout = THREE_BUFFER
+        request = kind == REQUEST_KIND   # a copy channel the controller reads: the mode requests
+        mode_info = kind == MODE_KIND    # a channel the controller writes: the running mode
         if kind in LAYOUTS:         # a copy channel of that kind ("copy" = "three_buffer")
             kind, layout = "copy", kind
+        elif request or mode_info:  # the controller reads a copy / writes a status-like channel
+            kind = "copy" if request else "status"
         elif kind not in ("copy", "time", "status"):
             err.channel(i, label, "kind", f"{_describe(kind)}: expected \"copy\" (= \"{THREE_BUFFER}\"), "
                         f"\"{FOUR_SLOT}\" (a copy channel with the wait-free four-slot layout), "
-                        "\"time\" or \"status\"")
+                        f"\"time\", \"status\", \"{REQUEST_KIND}\" or \"{MODE_KIND}\"")
             kind, ok = "copy", False
 
         fs = cd.get("four_slot")    # the wait-free kind for any channel (time, status, copy)
@@ -359,12 +364,15 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
                     err.channel(i, label, fld, f"a {kind} channel has no {fld}: the controller "
                                 f"generates its value ({'W = 1' if kind == 'time' else f'W = 1 + 2*n_chan = {status_words}'})")
                     ok = False
-            words = 1 if kind == "time" else status_words
+            words = 1 if kind == "time" else 2 if mode_info else status_words
             size = 4 * words
 
         consumers = []
         cons = cd.get("consumers")
-        if cons is None:
+        if request:
+            n_req += 1
+            ok = check_request_channel(cd, i, label, size, layout == FOUR_SLOT, n_req, err) and ok
+        elif cons is None:
             err.channel(i, label, "consumers", "missing (a list of 1..4 boards)")
             ok = False
         else:
@@ -453,7 +461,8 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
             channels.append(Channel(index=i, name=cname, kind=kind, ctype=ctype, size=size,
                                     words=words, producer=producer, consumers=consumers,
                                     max_period_us=mp, sync=sync, priority=prio,
-                                    max_slots=max_slots, layout=layout, max_import_passes=mip))
+                                    max_slots=1 if request else max_slots, layout=layout,
+                                    max_import_passes=mip, request=request, mode_info=mode_info))
 
     if len(chans) > bus.n_chan:
         err.general(f"too many channels: {len(chans)} channels but the controller has "

@@ -10,6 +10,8 @@ from typing import Optional
 from .contract import load as load_contract
 
 MODE_RIGID = "time-rigid"
+REQUEST_KIND = "mode_request"      # [[channel]] kind: the board's mode requests, read by the controller
+MODE_KIND = "mode"                 # [[channel]] kind: the running mode, published by the controller
 MODE_SYNC = "position-synchronised"
 DEFAULT_RAM_BYTES = 4096
 
@@ -23,11 +25,12 @@ BUS_DEFAULTS = {
     "n_chan": 16,
     "poll_cycles": 16,
     "time_bits": 16,
+    "mode_switch_cycles": 6,
 }
 BUS_MINIMUM = {
     "access_cycles": 1, "first_access_extra": 0, "fetch_cycles": 1,
     "timeout_cycles": 1, "retries_per_slot": 0, "guard_cycles": 0,
-    "n_chan": 1, "poll_cycles": 1, "time_bits": 4,
+    "n_chan": 1, "poll_cycles": 1, "time_bits": 4, "mode_switch_cycles": 1,
 }
 
 SYSTEM_KEYS = {"name", "clock_hz", "boards", "ram_bytes", "mode", "types_header"}
@@ -77,6 +80,7 @@ class Bus:
     n_chan: int = 16
     poll_cycles: int = 16
     time_bits: int = 16             # the controller's TIME_BITS: time within a cycle
+    mode_switch_cycles: int = 6     # with modes: idle clocks at every cycle's end (the mode table's reads)
 
     @property
     def retry_budget(self) -> int:
@@ -113,6 +117,8 @@ class Channel:
     layout: str = "three_buffer"    # channel kind: three_buffer | four_slot (copy, time, status)
     max_import_passes: Optional[int] = None   # three-buffer consumers: passes per Import at most
     retries: Optional[int] = None   # this channel's slot retry budget (None: [bus] retries_per_slot)
+    request: bool = False           # a mode_request channel: a copy with no consumer, read by the controller
+    mode_info: bool = False         # a mode channel: a status-like channel of {mode, since}, W = 2
     # filled by the plan
     src_base: Optional[int] = None  # byte offset in the producer's RAM
     dst_bases: list = dataclasses.field(default_factory=list)
@@ -130,6 +136,8 @@ class Channel:
             return self.ctype
         if self.kind == "time":
             return "uint32_t"
+        if self.mode_info:
+            return "alb_mode_t"
         return f"{self.name}_t"
 
     @property
@@ -164,6 +172,7 @@ class System:
     faults: Optional[object] = None  # the fault hypothesis ([faults], faults.Hypothesis) or None
     drop_run: int = 2               # K: a destination is dropped after K failures in a row (ROM H2)
     modes: list = dataclasses.field(default_factory=list)   # modes.Mode, [[mode]]; empty: one schedule
+    mode_window: int = 0            # clocks kept idle at the end of every cycle for a mode switch
 
     @property
     def sync_mode(self) -> bool:

@@ -6,10 +6,16 @@ of the whole description (a channel keeps its places in every mode).
 
 Rules:
   * name: an identifier, unique.  channels: the mode's channel names
-    (default: every channel).  periods: {channel: max_period_us} for channels
+    (default: every channel; the mode_request channel is added to every
+    mode that may switch: the controller reads the requests there, once a
+    cycle).  periods: {channel: max_period_us} for channels
     of the mode (default: the channel's own).  next: the modes it may switch
     to (default: every other mode).
   * Without [[mode]] the system has one schedule, exactly as before.
+    [[mode]] needs one channel of kind mode_request (a word published by
+    one board: the number of the mode it asks for), and that kind needs
+    [[mode]].  Every mode keeps [bus] mode_switch_cycles idle at the end of
+    its cycle, for the controller's reads of the next mode.
   * The ROM image holds every mode (rom.encode_rom_modes: the entries of
     each mode, then a descriptor per mode); the controller runs the start-up
     mode.  The board headers hold the start-up mode, so it must list every
@@ -21,9 +27,13 @@ from __future__ import annotations
 import copy
 import dataclasses
 
-from .model import IDENT_RE, ScheduleError, System
+from .model import IDENT_RE, REQUEST_KIND, ScheduleError, System
 
 MODE_KEYS = {"name", "channels", "periods", "next"}
+# The suffixes of a channel's generated macros (cgen.py): a mode name equal to
+# one would make ALB_MODE_<NAME> the macro of a channel named "Mode".
+MACRO_SUFFIXES = ("ID", "BASE", "SIZE", "WORDS", "KIND", "PERIOD_CLOCKS", "LATENCY_CLOCKS", "AGE_CLOCKS",
+                  "MAX_AGE_CLOCKS", "IMPORT_MAX_PASSES", "IMPORT_MAX_ACCESSES", "T_DEFINED")
 MAX_MODES = 16
 
 
@@ -38,7 +48,14 @@ class Mode:
 def parse_modes(raw, system: System, err, describe, is_int) -> list:
     """The [[mode]] array of the description (raw: data.get("mode")) as Modes;
     errors go to err (description.Errors), each naming the mode and field."""
+    requests = [ch for ch in system.channels if ch.request]
+    infos = [ch for ch in system.channels if ch.mode_info]
     if raw is None:
+        if requests:
+            err.channel(requests[0].index, requests[0].name, "kind", "a mode_request channel needs [[mode]] "
+                        "(two or more modes to switch between)")
+        if infos:
+            err.channel(infos[0].index, infos[0].name, "kind", "a mode channel needs [[mode]]")
         return []
     if not isinstance(raw, list) or not all(isinstance(m, dict) for m in raw):
         err.general("mode must be an array of tables ([[mode]])")
@@ -63,6 +80,9 @@ def parse_modes(raw, system: System, err, describe, is_int) -> list:
             fail(i, label, "name", f"{describe(name)} is not an identifier" if name is not None else "missing")
         elif name in names:
             fail(i, label, "name", "a mode of that name comes before it")
+        elif name.upper() in MACRO_SUFFIXES or name.upper().endswith("_AT_TARGET_CLOCKS"):
+            fail(i, label, "name", f"ALB_MODE_{name.upper()} would be the name of a generated macro of a channel "
+                 "named Mode: choose another name")
         names.append(name)
 
     modes = []
@@ -123,11 +143,45 @@ def parse_modes(raw, system: System, err, describe, is_int) -> list:
              f"the start-up mode (the first) must list every channel for now: the ROM image and board "
              f"headers hold the start-up mode, and the controller has no mode table yet (missing: "
              f"{', '.join(missing)})")
+    if modes and not requests:
+        err.general("[[mode]] needs a channel of kind \"mode_request\": the board whose requests switch the "
+                    "modes publishes it (docs/compiler.md \"Modes\")")
+    for m in modes:                 # every mode reads the requests (a mode without next: none to read)
+        if requests and m.next and requests[0].index not in m.channels:
+            m.channels = sorted(m.channels + [requests[0].index])
+    for m in modes:                 # the running mode is published in every mode
+        for ch in infos:
+            if ch.index not in m.channels:
+                m.channels = sorted(m.channels + [ch.index])
     if modes and system.sync_mode:
         fail(0, f"'{modes[0].name}'", None, "modes need the time-rigid time mode ([system] mode)")
     if len(modes) == 1:
         fail(0, f"'{modes[0].name}'", None, "one mode is the description without [[mode]]: declare two or more")
     return modes
+
+
+def check_request_channel(cd: dict, i: int, label, size: int, four: bool, n_req: int, err) -> bool:
+    """The rules of a mode_request [[channel]] cd (the i-th, the n_req-th of
+    its kind): no consumers, one word, three-buffer, one slot a cycle, only
+    one such channel.  Errors to err; False if any."""
+    ok = True
+
+    def bad(field, msg):
+        nonlocal ok
+        err.channel(i, label, field, msg)
+        ok = False
+
+    if cd.get("consumers") is not None:
+        bad("consumers", f"a {REQUEST_KIND} channel has no consumers: the controller reads it")
+    if size > 4:
+        bad("size", f"{size} bytes: a mode request is one word (size 4 or less)")
+    if four:
+        bad("four_slot", f"a {REQUEST_KIND} channel is three-buffer")
+    if cd.get("max_slots", 1) != 1:
+        bad("max_slots", "the controller reads the mode requests once a cycle (1)")
+    if n_req > 1:
+        bad("kind", f"more than one {REQUEST_KIND} channel")
+    return ok
 
 
 def mode_system(system: System, mode: Mode) -> System:
@@ -141,7 +195,7 @@ def mode_system(system: System, mode: Mode) -> System:
                 c.max_period_us = mode.periods[ch.index]
                 c.period_clocks = c.max_period_us * system.clock_hz // 1_000_000
             chans.append(c)
-    return dataclasses.replace(system, channels=chans, modes=[])
+    return dataclasses.replace(system, channels=chans, modes=[], mode_window=system.bus.mode_switch_cycles)
 
 
 def plan_mode(system: System, mode: Mode, plan_fn):

@@ -301,12 +301,14 @@ def build_plan(system: System) -> Plan:
                             f"of {cycle} clocks does not fit time_bits = {tb} (time within a cycle is "
                             f"{tb} bits in the controller, TIME_BITS; longest cycle {(1 << tb) - 1} clocks): "
                             f"shorten max_period_us or raise [bus] time_bits (at most {CONTRACT.time_bits})")
-    cap = cycle - (bus.poll_cycles if system.sync_mode else 0)
+    cap = cycle - (bus.poll_cycles if system.sync_mode else 0) - system.mode_window
     need = sum(ch.slot_len for ch in system.channels)
     if need > cap:
         detail = ", ".join(f"{ch.name} {ch.slot_len}" for ch in system.channels)
         poll = (f", of which {bus.poll_cycles} stay idle for the position poll ([bus] poll_cycles)"
-                if system.sync_mode else "")
+                if system.sync_mode else "") + \
+               (f", of which {system.mode_window} stay idle for a mode switch ([bus] mode_switch_cycles)"
+                if system.mode_window else "")
         raise ScheduleError(
             f"{system.source}: infeasible plan: one slot per channel needs {need} clocks per cycle but "
             f"only {max(cap, 0)} are available: the cycle is {cycle} clocks "

@@ -210,7 +210,7 @@ def render_report_txt(rep: dict) -> str:
     L.append("")
     if rep.get("modes"):
         L.append("Modes (the ROM image holds every mode, the board headers the start-up mode's bounds; the "
-                 "controller runs the start-up mode and does not switch modes yet)")
+                 "controller switches at a cycle boundary when the mode_request channel asks)")
         for m in rep["modes"]:
             tag = " (start-up)" if m["start_up"] else ""
             L.append(f"  {m['name']}{tag}: cycle {m['cycle']['clocks']} clocks = {f(m['cycle']['us'])} us, "

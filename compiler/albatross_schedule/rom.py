@@ -26,6 +26,8 @@ KIND_NAME = {v: k for k, v in KIND_CODE.items()}
 FLAG_SYNC = C.flag("entry", "sync")
 FLAG_FOUR_SLOT = flag_four_slot()            # every entry of a four-slot channel (COPY, TIME, STATUS)
 HFLAG_SYNC_MODE = C.flag("header", "sync_mode")
+FLAG_REQUEST = C.flag("entry", "request")
+FLAG_MODE = C.flag("entry", "mode")
 
 
 def rom_crc(words) -> int:
@@ -52,7 +54,8 @@ def _pack(words, values) -> list:
 
 def encode_entry(slot: Slot) -> list:
     ch = slot.channel
-    flags = (FLAG_SYNC if slot.sync else 0) | (FLAG_FOUR_SLOT if ch.layout == FOUR_SLOT else 0)
+    flags = (FLAG_SYNC if slot.sync else 0) | (FLAG_FOUR_SLOT if ch.layout == FOUR_SLOT else 0) | \
+        (FLAG_REQUEST if ch.request else 0) | (FLAG_MODE if ch.mode_info else 0)
     v = {("E0", "kind"): KIND_CODE[ch.kind], ("E0", "flags"): flags,
          ("E0", "id"): ch.id, ("E0", "nd"): len(ch.consumers), ("E0", "w"): ch.words,
          ("E1", "start"): slot.start, ("E2", "length"): slot.length}
@@ -195,15 +198,19 @@ def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None
             problems.append(f"{tag}: SYNC flag outside entry 0 of a position-synchronised ROM")
         if sync_mode and k == 0 and not (flags & FLAG_SYNC and kind == copy and start == 0):
             problems.append(f"{tag}: a position-synchronised ROM starts with a SYNC COPY at 0")
+        if flags & FLAG_REQUEST and (kind != copy or nd != 0 or flags & (FLAG_SYNC | FLAG_FOUR_SLOT)):
+            problems.append(f"{tag}: REQUEST on other than a three-buffer COPY with ND 0")
         if kind == KIND_CODE["idle"]:
             continue
-        if not 1 <= nd <= MAX_DESTS:
+        if not 1 <= nd <= MAX_DESTS and not (nd == 0 and flags & FLAG_REQUEST):
             problems.append(f"{tag}: ND {nd} outside 1..{MAX_DESTS}")
         if cid >= n_chan:
             problems.append(f"{tag}: channel id {cid} >= N_CHAN {n_chan}")
         if kind == time and w != 1:
             problems.append(f"{tag}: TIME with W = {w}, expected 1")
-        if kind == status and w != 1 + 2 * n_chan:
+        if flags & FLAG_MODE and (kind != status or w != 2):
+            problems.append(f"{tag}: MODE on other than a STATUS entry with W = 2")
+        if kind == status and w != 1 + 2 * n_chan and not flags & FLAG_MODE:
             problems.append(f"{tag}: STATUS with W = {w}, expected {1 + 2 * n_chan}")
         exts = [(ent["dst"][i], w + C.taken_at_words) for i in range(min(nd, MAX_DESTS))]
         if kind == copy:

@@ -93,10 +93,11 @@ class FourSlotExampleTests(unittest.TestCase):
                                                   self.ram_words())[0] if f"entry {k}" in x and "FOUR" in x], [])
 
     def test_flag_misplaced_is_caught(self):
-        """Negative: a reserved flag bit on a TIME entry fails both checkers."""
+        """Negative: a flag bit that a TIME entry must not carry (REQUEST, MODE: E0.flags has no
+        reserved bit left) fails both checkers."""
         _, entries = decode(self.rom)
         k = next(i for i, e in enumerate(entries) if e["kind"] == 2)
-        for bit, what in ((8, "reserved"),):
+        for bit, what in ((4, "REQUEST on other than"), (8, "MODE on other than")):
             with self.subTest(bit=bit):
                 bad = list(self.rom)
                 bad[4 + 8 * k] |= bit << 24

@@ -19,8 +19,17 @@ ROBOT = os.path.join(REPO, "sim", "mobot3.toml")
 with open(ROBOT) as _f:
     ROBOT_TEXT = _f.read()
 
+# The navigation board's mode requests.
+REQ_CHANNEL = """
+[[channel]]
+name          = "ModeRequest"
+kind          = "mode_request"
+producer      = "navigation"
+size          = 4
+max_period_us = 1000
+"""
 # cruise: the robot as it is; dock: Position and MotorCmd twice as often, no RadarMap, no Status.
-TWO_MODES = """
+TWO_MODES = REQ_CHANNEL + """
 [[mode]]
 name = "cruise"
 next = ["dock"]
@@ -46,6 +55,13 @@ def errors_of(extra: str) -> list:
 
 
 class ModeDescriptionTests(unittest.TestCase):
+    def test_request_channel_and_modes_go_together(self):
+        self.check_error(REQ_CHANNEL, "ModeRequest", "needs [[mode]]")
+        self.check_error(TWO_MODES.replace(REQ_CHANNEL, ""), "needs a channel of kind \"mode_request\"")
+        self.check_error(TWO_MODES.replace('producer      = "navigation"', 'producer = "navigation"\nconsumers = ["motor"]'),
+                         "ModeRequest", "consumers", "the controller reads it")
+        self.check_error(TWO_MODES.replace("size          = 4", "size          = 8"), "ModeRequest", "one word")
+
     def test_no_modes_is_one_schedule(self):
         system = system_of("")
         self.assertEqual(system.modes, [])
@@ -58,6 +74,8 @@ class ModeDescriptionTests(unittest.TestCase):
         self.assertEqual(names, ["cruise", "dock"])
         cruise, dock = system.modes
         self.assertEqual(cruise.channels, [ch.index for ch in system.channels], "channels default to every channel")
+        req = next(ch.index for ch in system.channels if ch.request)
+        self.assertIn(req, dock.channels, "the mode_request channel is in every mode that may switch")
         self.assertEqual(cruise.next, [1])
         self.assertEqual(dock.next, [0], "next defaults to every other mode")
         by = {ch.name: ch.index for ch in system.channels}
@@ -82,6 +100,7 @@ class ModeDescriptionTests(unittest.TestCase):
         self.check_error('[[mode]]\nname = "a"\nperiods = { Position = 0 }\n', "mode 'a'", "periods", "positive")
         self.check_error('[[mode]]\nname = "a"\ncolour = 1\n', "mode 'a'", "colour", "unknown field")
         self.check_error('[[mode]]\nname = "3x"\n', "name", "not an identifier")
+        self.check_error('[[mode]]\nname = "base"\n', "mode 'base'", "name", "generated macro")
         data = tomllib.loads(ROBOT_TEXT)
         data["mode"] = 1
         with self.assertRaises(S.ScheduleError) as cm:
@@ -117,7 +136,8 @@ class ModePlanTests(unittest.TestCase):
         self.assertEqual(list(modes), ["cruise", "dock"])
         self.assertTrue(modes["cruise"]["start_up"])
         self.assertEqual(modes["dock"]["left_out"], ["RadarMap", "Status"])
-        self.assertEqual([c["name"] for c in modes["dock"]["channels"]], ["Position", "MotorCmd", "GlobalTime"])
+        self.assertEqual([c["name"] for c in modes["dock"]["channels"]],
+                         ["Position", "MotorCmd", "GlobalTime", "ModeRequest"])
         for m in modes.values():
             for c in m["channels"]:
                 self.assertLessEqual(c["guaranteed_period"]["clocks"], c["max_period"]["clocks"],
@@ -138,8 +158,16 @@ class ModePlanTests(unittest.TestCase):
         self.assertEqual(ne, e0 + e1 + 2, "NE counts every mode's entries and the two descriptors")
         self.assertEqual(len(rom), 4 + 8 * ne)
         self.assertEqual(rom[1], one[1] | (0b10 << 16), "H1: the start-up mode's cycle and next (dock)")
-        self.assertEqual(rom[4:4 + 8 * e0], one[4:4 + 8 * e0], "the start-up mode's entries are the robot's own")
         self.assertEqual(one[1] >> 16, 0, "H1.next is 0 without modes")
+        for m, (first, end) in enumerate([(0, e0), (e0, e0 + e1)]):
+            reqs = [k for k in range(first, end) if rom[4 + 8 * k] >> 26 & 1]     # E0 flag bit 2: REQUEST
+            self.assertEqual(len(reqs), 1, f"mode {m}: one REQUEST entry a cycle, got {len(reqs)}")
+            e = rom[4 + 8 * reqs[0]]
+            self.assertEqual((e >> 28, e >> 12 & 0xF), (1, 0), f"mode {m}: the REQUEST entry is a COPY with ND 0")
+            cyc = rom[4 + 8 * (e0 + e1 + m)] & 0xFFFF
+            last = max(rom[4 + 8 * k + 1] + rom[4 + 8 * k + 2] for k in range(first, end))
+            self.assertLessEqual(last, cyc - 6, f"mode {m}: the last slot ends {cyc - last} clocks before the cycle "
+                                                f"end, expected the mode switch's 6 at least")
         for m, (first, end, cyc, nxt) in enumerate([(0, e0, modes["cruise"]["cycle"]["clocks"], 0b10),
                                                     (e0, e0 + e1, modes["dock"]["cycle"]["clocks"], 0b01)]):
             d = rom[4 + 8 * (e0 + e1 + m):]
@@ -175,6 +203,9 @@ class ModePlanTests(unittest.TestCase):
         self.assertIn("mode cruise (start-up), switches to dock", svg)
         self.assertIn("mode dock, switches to cruise", svg)
         self.assertIn("Modes (the ROM image holds every mode", files["report.txt"])
+        for b in self.system.boards:
+            self.assertIn("#define ALB_MODE_CRUISE 0u", files[f"{b}.h"])
+            self.assertIn("#define ALB_MODE_DOCK   1u", files[f"{b}.h"])
 
     def test_unplannable_mode_is_named(self):
         # 1 us = 50 clocks: no slot of Position fits so often.

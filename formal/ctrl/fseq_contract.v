@@ -33,7 +33,8 @@ module fseq_contract #(
     parameter HAS_SYNC        = 1,  // unused (the controller's configuration parameters, where it passes them)
     parameter HAS_ROM_RECHECK = 1,  // unused
     parameter HAS_ENTRY_CHECK = 1,  // unused
-    parameter CRC_BITS        = 4   // unused
+    parameter CRC_BITS        = 4,  // unused
+    parameter HAS_MODES       = 1   // unused (no mode request: no REQUEST entry)
 ) (
     input  wire                    clk_i,
     input  wire                    rst_i,
@@ -50,6 +51,9 @@ module fseq_contract #(
     output wire [31:0]             slot_time_o,
     output wire                    sync_entry_o,
     output wire                    four_o,
+    output wire                    request_o,      // (modes: not modelled, no REQUEST entry)
+    output wire                    mode_info_o,    // (no MODE entry)
+    output wire [31:0]             mode_since_o,
     output wire                    may_access_o,
     input  wire                    slot_done_i,
     output wire                    poll_cyc_o,
@@ -74,6 +78,9 @@ module fseq_contract #(
     output wire [3:0]              mode_o,
     output wire                    mode_reject_o
 );
+    assign request_o     = 1'b0;
+    assign mode_info_o   = 1'b0;
+    assign mode_since_o  = 32'd0;
     assign mode_o        = 4'd0;
     assign mode_reject_o = 1'b0;
     localparam AW = ADDR_WIDTH;

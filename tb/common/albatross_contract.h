@@ -69,6 +69,8 @@ constexpr unsigned KIND_STATUS = 3;
 constexpr unsigned HFLAG_SYNC_MODE = 1u << 0;  // in H0.flags
 constexpr unsigned EFLAG_SYNC = 1u << 0;  // in E0.flags
 constexpr unsigned EFLAG_FOUR_SLOT = 1u << 1;  // in E0.flags
+constexpr unsigned EFLAG_REQUEST = 1u << 2;  // in E0.flags
+constexpr unsigned EFLAG_MODE = 1u << 3;  // in E0.flags
 
 // CRC of n ROM words (the check word ROM_CRC_WORD too): 0 for a valid image.
 inline uint32_t rom_crc(const uint32_t *w, int n) {

@@ -361,3 +361,5 @@ void scenario_dead();
 void scenario_droprun();
 void scenario_sync();
 void scenario_abandon();
+// ctrl_scenarios_modes.cpp
+void scenario_modes();

@@ -43,6 +43,11 @@
 //            copy in pair 1), no corrupt count in STATUS, and every value
 //            arrives once the CPUs have run their init (group 2; negative
 //            controller-negative-cold)
+//   modes    an image with two modes and a REQUEST channel: a request
+//            switches at the next cycle boundary, the new mode's first entry
+//            starts the new cycle, a request for an unknown mode is ignored
+//            and counted in STATUS, and a request switches back (groups 1,
+//            2, 4; ctrl_scenarios_modes.cpp)
 // Each check prints what it expected and what it got.  Exit status 0 if all
 // pass, else 64 + a bit mask of the failed groups (1 timing, 2 data, 4 rom,
 // 8 faults, 16 dead, 32 abandon).  --inject=timing makes the timing checker expect one
@@ -51,7 +56,7 @@
 //          --scenario=NAME (default: all)
 // Files: ctrl_bench.h/.cpp (checks, ROM builder, model wrapper, CPU protocol),
 //        ctrl_scenarios_data.cpp (basic, corrupt, four), ctrl_scenarios_faults.cpp (faults, dead,
-//        droprun, sync, abandon), ctrl_scenarios_cold.cpp (cold).
+//        droprun, sync, abandon), ctrl_scenarios_cold.cpp (cold), ctrl_scenarios_modes.cpp (modes).
 #include "ctrl_bench.h"
 
 // ------------------------------------------------------------------ main
@@ -71,7 +76,7 @@ int main(int argc, char **argv) {
             }
         }
         else {
-            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|droprun|sync|four|abandon|cold]\n",
+            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|droprun|sync|four|abandon|cold|modes]\n",
                          argv[0]);
             return 2;
         }
@@ -80,7 +85,8 @@ int main(int argc, char **argv) {
     struct { const char *name; void (*fn)(); } sc[] = {
         {"basic", scenario_basic}, {"corrupt", scenario_corrupt}, {"faults", scenario_faults}, {"dead", scenario_dead},
         {"droprun", scenario_droprun},
-        {"sync", scenario_sync}, {"four", scenario_four}, {"abandon", scenario_abandon}, {"cold", scenario_cold}};
+        {"sync", scenario_sync}, {"four", scenario_four}, {"abandon", scenario_abandon}, {"cold", scenario_cold},
+        {"modes", scenario_modes}};
     for (auto &x : sc)
         if (only.empty() || only == x.name) x.fn();
     std::printf("test_controller: %u checks, %u failed%s\n", g_checks, g_fails,

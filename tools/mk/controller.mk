@@ -26,7 +26,7 @@ CTRL_DIR := $(BUILD)/ctrl
 CTRL_BIN := $(CTRL_DIR)/obj/Vtb_system
 CTRL_CPP := tb/controller/test_controller.cpp tb/controller/ctrl_bench.cpp \
             tb/controller/ctrl_scenarios_data.cpp tb/controller/ctrl_scenarios_faults.cpp \
-            tb/controller/ctrl_scenarios_cold.cpp
+            tb/controller/ctrl_scenarios_cold.cpp tb/controller/ctrl_scenarios_modes.cpp
 CTRL_SRC := tb/system/tb_system.v tb/common/bus_fault_injector.v $(CORE_soc_system) $(CTRL_CPP) tb/controller/ctrl_bench.h \
             $(RTL_INC) tb/common/albatross_contract.h
 
@@ -70,7 +70,7 @@ $(CTRL_DIR)/mutant-$(1)/obj/Vtb_system: $(CTRL_SRC) $(CTRL_DIR)/mutant-$(1)/src/
 	    --Mdir $(CTRL_DIR)/mutant-$(1)/obj -y $(CTRL_DIR)/mutant-$(1)/src $(VLIB) tb/system/tb_system.v $(abspath $(CTRL_CPP)) \
 	    > $(CTRL_DIR)/mutant-$(1)/build.log 2>&1 || { cat $(CTRL_DIR)/mutant-$(1)/build.log; exit 1; }
 endef
-$(foreach m,stale_need cold_zero_corrupt,$(eval $(call ctrl_mutant_model,$(m))))
+$(foreach m,stale_need cold_zero_corrupt no_request,$(eval $(call ctrl_mutant_model,$(m))))
 CTRL_MUT_DIR := $(CTRL_DIR)/mutant-stale_need
 
 TESTS += controller-abandon controller-negative-stale_need
@@ -129,3 +129,20 @@ test-controller-negative-cold: $(CTRL_NEG_COLD)/obj/Vtb_system
 	        echo "the controller with the old zero rule fails scenario cold, as it must (exit 66)"; \
 	    else echo "expected exit 66 with a corrupt count and the four-slot pair caught, came exit $$rc"; \
 	        tail -n 5 $(CTRL_NEG_COLD)/run.log; exit 1; fi'
+
+# Schedule modes (docs/controller.md "Modes"): scenario modes alone, and its
+# negative: a transfer that never offers a REQUEST entry's value as a mode
+# request (tb/mutants/controller/no_request.sed) fails it.
+CTRL_NEG_REQ := $(CTRL_DIR)/mutant-no_request
+TESTS += controller-modes controller-negative-no_request
+.PHONY: test-controller-modes test-controller-negative-no_request
+test-controller-modes: $(CTRL_BIN)
+	@tools/run_test.sh controller-modes $(CTRL_BIN) --dir=$(CTRL_DIR)/modes --scenario=modes
+
+test-controller-negative-no_request: $(CTRL_NEG_REQ)/obj/Vtb_system
+	@tools/run_test.sh controller-negative-no_request bash -c '$< --dir=$(CTRL_NEG_REQ)/run --scenario=modes \
+	    > $(CTRL_NEG_REQ)/run.log 2>&1; rc=$$?; \
+	    grep -m 3 "^FAIL" $(CTRL_NEG_REQ)/run.log | sed "s/^FAIL/  caught:/"; \
+	    if [ $$rc -ge 64 ] && grep -q "^FAIL modes: cycle 2 (mode 1) carries channel 4" $(CTRL_NEG_REQ)/run.log; then \
+	        echo "the controller that drops mode requests fails scenario modes, as it must (exit $$rc)"; \
+	    else echo "expected scenario modes to fail at the switch, came exit $$rc"; tail -n 5 $(CTRL_NEG_REQ)/run.log; exit 1; fi'
