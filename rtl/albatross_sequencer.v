@@ -97,9 +97,7 @@ module albatross_sequencer #(
     output wire                    poll_cyc_o,
     output wire [3:0]              poll_board_o,
     output wire [ADDR_WIDTH-1:0]   poll_adr_o,
-    /* verilator lint_off UNUSEDSIGNAL */
     input  wire [31:0]             poll_dat_i,     // only the Actual byte is read
-    /* verilator lint_on UNUSEDSIGNAL */
     input  wire                    poll_ack_i,
     input  wire                    poll_err_i,
     input  wire [1:0]              sync_rl_i,      // the SYNC channel's ReadLocked copy (0: unknown)
@@ -126,17 +124,10 @@ module albatross_sequencer #(
     localparam NE_MAX  = (NE_FIT > 255) ? 255 : NE_FIT;
     localparam ROM_AW  = $clog2(ROM_WORDS);
     localparam TB      = TIME_BITS;
-    localparam PC_BITS = $clog2(POLL);
-    localparam integer        POLL_LAST_I = POLL - 1;
-    localparam [PC_BITS-1:0]  POLL_LAST   = POLL_LAST_I[PC_BITS-1:0];
     localparam integer        MIN_LEN_I   = FETCH_CYCLES + MARGIN;
     localparam [TB:0]         MARGIN_T    = MARGIN[TB:0];
     localparam [7:0]          NE_MAX8     = NE_MAX[7:0];
     localparam                HFLAG_SYNC  = ALB_ROM_H0_FLAGS_LSB + ALB_ROM_HFLAG_SYNC_MODE;
-    localparam                EFLAG_SYNC  = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_SYNC;
-    localparam                EFLAG_FOUR  = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_FOUR_SLOT;
-    localparam                EFLAG_REQ   = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_REQUEST;
-    localparam                EFLAG_MODE  = ALB_ROM_E0_FLAGS_LSB + ALB_ROM_EFLAG_MODE;
 
     generate
         if (NB < 1 || NB > 16 || ADDR_WIDTH < 3 || ADDR_WIDTH > ALB_ROM_PLACE_BASE_W || N_CHAN < 1 ||
@@ -177,7 +168,6 @@ module albatross_sequencer #(
     reg [TB:0]         next_rel_q;    // rel + 1: the time within the cycle of the next clock (rel wraps at 2^TB)
     reg [7:0]          ne_q;
     reg                smode_q;
-    reg                sync_ok_q;     // entry 0 is a valid SYNC COPY (this cycle)
     reg [TB-1:0]       start_q;       // E1 of entry ent_q; from FETCH clock 6 on, of entry ent_q + 1
                                       // (of entry 0 after the last entry and after the header)
     reg                start_bad_q;   // ... did not fit in TIME_BITS
@@ -185,30 +175,13 @@ module albatross_sequencer #(
     reg [TB:0]         prev_end_q;    // the previous valid slot's end
     reg [7:0]          ent_q;
     reg                bad_q;         // the entry being fetched is invalid
-    reg [1:0]          kind_q;
-    reg                sflag_q;
-    reg                four_q;        // E0 flag FOUR_SLOT
-    reg                req_q;         // E0 flag REQUEST
-    reg                minfo_q;       // E0 flag MODE
     reg                switched_q;    // the boundary of the last clock took a loaded mode
     reg [31:0]         since_q;       // the first clock of the running mode's first cycle
-    reg [6:0]          chan_q;
-    reg [2:0]          nd_q;
-    reg [11:0]         w_q;
-    reg [13:0]         e3_q;          // 3 * W (four-slot: 4 * W)
-    reg [3:0]          sbrd_q;
-    reg [ADDR_WIDTH-1:0] sbase_q;
-    reg [15:0]         dbrd_q;
-    reg [4*ADDR_WIDTH-1:0] dbase_q;
-    reg [3:0]          sync_brd_q;
-    reg [ADDR_WIDTH-1:0] sync_base_q;
     reg [31:0]         slot_time_q;
     reg                err_q;
     reg [15:0]         rerr_q;
     reg [15:0]         cycles_q;
     reg                cycle_q1;      // cycle_o
-    reg [PC_BITS-1:0]  pc_q;
-    reg                poll_q;
 
     // ------------------------------------------------------------ ROM and its read port
     wire               start_now = state_q == ST_WAIT && next_rel_q > {1'b0, start_q};   // rel >= start: clock S (late only after an overrun)
@@ -274,30 +247,50 @@ module albatross_sequencer #(
         .mism_o(mism_new), .bad_o(bad_mark));
 
     // ------------------------------------------------------------ field checks at fetch
-    wire [1:0]  e0_kind = rom_q[ALB_ROM_E0_KIND_LSB +: 2];   // (rules: rtl/albatross_entry_check.v)
-    wire [2:0]  e0_nd   = rom_q[ALB_ROM_E0_ND_LSB +: 3];
-    wire [6:0]  e0_id   = rom_q[ALB_ROM_E0_ID_LSB +: 7];
-    wire [11:0] e0_w    = rom_q[ALB_ROM_E0_W_LSB +: 12];
+    // The entry's fields, taken in the fetch clocks (rtl/albatross_entry_fields.v).
+    wire [1:0]          kind;
+    wire                sflag, four, request, mode_info;
+    wire [6:0]          chan;
+    wire [2:0]          nd;
+    wire [11:0]         words;
+    wire [13:0]         span;          // 3 * W (four-slot: 4 * W)
+    wire [3:0]          sbrd;
+    wire [ADDR_WIDTH-1:0] sbase;
+    wire [15:0]         dbrd;
+    wire [4*ADDR_WIDTH-1:0] dbase;
+    albatross_entry_fields #(.ADDR_WIDTH(ADDR_WIDTH), .HAS_MODES(HAS_MODES)) u_fields (
+        .clk_i(clk_i), .fetch_i(state_q == ST_FETCH), .step_i(step_q), .rom_i(rom_q),
+        .kind_o(kind), .sync_o(sflag), .four_o(four), .request_o(request), .mode_info_o(mode_info),
+        .chan_o(chan), .nd_o(nd), .words_o(words), .span_o(span), .src_board_o(sbrd), .src_base_o(sbase),
+        .dst_board_o(dbrd), .dst_base_o(dbase));
     wire [TB:0] e2_end  = {1'b0, start_q} + {1'b0, rom_q[TB-1:0]};
     wire        bad_now;
     albatross_entry_check #(.NB(NB), .ADDR_WIDTH(ADDR_WIDTH), .N_CHAN(N_CHAN), .TIME_BITS(TB),
                             .MIN_LEN(MIN_LEN_I), .HAS_ENTRY_CHECK(HAS_ENTRY_CHECK)) u_entry_check (
         .step_i(step_q), .rom_i(rom_q), .ent0_i(ent_q == 8'd0), .smode_i(smode_q), .bad_mark_i(bad_mark),
-        .kind_i(kind_q), .four_i(four_q), .nd_i(nd_q), .e3_i(e3_q), .start_i(start_q), .start_bad_i(start_bad_q),
+        .kind_i(kind), .four_i(four), .nd_i(nd), .e3_i(span), .start_i(start_q), .start_bad_i(start_bad_q),
         .cycle_i(cycle_q), .prev_end_i(prev_end_q), .end_i(end_q), .bad_o(bad_now));
 
     // ------------------------------------------------------------ control
     // rel is kept as rel + 1 (next_rel_q): each compare below reads a
     // register, with no incrementer in front of it.
     wire cycle_end  = next_rel_q >= {1'b0, cycle_q};  // rel >= H1 - 1 (late only if a slot overran: recover)
-    wire poll_hit   = poll_q && poll_ack_i && poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 8] != 8'd0 &&
-                      poll_dat_i[8*ALB_CH_OFF_ACTUAL + 2 +: 6] == 6'd0 &&
-                      poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 2] != sync_rl_i;
-    wire entry_over = (state_q == ST_FETCH && step_q == 3'd6 && (bad_q || kind_q == ALB_KIND_IDLE[1:0])) ||
+    wire poll_hit;     // a poll shows a new position (u_poll, below)
+    wire entry_over = (state_q == ST_FETCH && step_q == 3'd6 && (bad_q || kind == ALB_KIND_IDLE[1:0])) ||
                       (state_q == ST_TRANSFER && slot_done_i);
     assign new_cycle = (state_q == ST_CYCLE_END && (cycle_end || poll_hit) && !mode_hold) ||
                       (entry_over && last_ent && cycle_end && !mode_hold) ||   // the last slot ends at H1 - 1
                       (state_q == ST_CHECK && pass_done && crc_ok);
+    // The sync-mode poll (rtl/albatross_sync_poll.v): entry 0's place, taken
+    // in its fetch's last clock, is loaded every POLL clocks while the
+    // sequencer waits for the cycle end.
+    albatross_sync_poll #(.ADDR_WIDTH(ADDR_WIDTH), .POLL(POLL), .HAS_SYNC(HAS_SYNC)) u_poll (
+        .clk_i(clk_i), .rst_i(rst_i),
+        .capture_i(state_q == ST_FETCH && !(step_q >= 3'd1 && step_q <= 3'd5) && ent_q == 8'd0),
+        .sync_i(!bad_q && sflag), .board_i(sbrd), .base_i(sbase), .smode_i(smode_q),
+        .wait_i(state_q == ST_CYCLE_END), .entry_over_i(entry_over), .new_cycle_i(new_cycle),
+        .poll_dat_i(poll_dat_i), .poll_ack_i(poll_ack_i), .poll_err_i(poll_err_i), .sync_rl_i(sync_rl_i),
+        .poll_cyc_o(poll_cyc_o), .poll_board_o(poll_board_o), .poll_adr_o(poll_adr_o), .hit_o(poll_hit));
     // go and the deadline check are registered, decided a clock ahead, so that
     // the transfer's decisions start at registers: go_q in FETCH clock 5 from
     // the entry's kind (go = go_q and not bad_q: the entry's checks are all
@@ -308,7 +301,7 @@ module albatross_sequencer #(
     reg         go_q, in_time_q;
     wire        go_now   = go_q && !bad_q;
     always @(posedge clk_i) begin
-        go_q      <= !rst_i && state_q == ST_FETCH && step_q == 3'd5 && kind_q != ALB_KIND_IDLE[1:0];
+        go_q      <= !rst_i && state_q == ST_FETCH && step_q == 3'd5 && kind != ALB_KIND_IDLE[1:0];
         in_time_q <= {1'b0, next_rel_q[TB-1:0]} < end_q - MARGIN_T;
     end
     // Saturating counters: the carry out of the increment says the count is at its top.
@@ -325,8 +318,6 @@ module albatross_sequencer #(
             err_q     <= 1'b0;
             rerr_q    <= 16'd0;
             cycles_q  <= 16'd0;
-            poll_q    <= 1'b0;
-            sync_ok_q <= 1'b0;
         end else begin
             time_q    <= time_q + 32'd1;
             next_rel_q <= {1'b0, next_rel_q[TB-1:0]} + 1'b1;
@@ -376,41 +367,12 @@ module albatross_sequencer #(
                     step_q <= step_q + 3'd1;
                     if (bad_now) bad_q <= 1'b1;
                     case (step_q)
-                        3'd1: begin                                             // E0
-                            kind_q  <= e0_kind;
-                            sflag_q <= rom_q[EFLAG_SYNC];
-                            chan_q  <= e0_id;
-                            nd_q    <= e0_nd;
-                            w_q     <= e0_w;
-                            four_q  <= rom_q[EFLAG_FOUR];
-                            req_q   <= HAS_MODES != 0 && rom_q[EFLAG_REQ];
-                            minfo_q <= HAS_MODES != 0 && rom_q[EFLAG_MODE];
-                            e3_q    <= rom_q[EFLAG_FOUR] ? {e0_w, 2'b00} : {2'b00, e0_w} + {1'b0, e0_w, 1'b0};
-                        end
+                        3'd1, 3'd3, 3'd4, 3'd5: ;                               // E0, E3, E4, E5: u_fields
                         3'd2: end_q <= e2_end;                                  // E2
-                        3'd3: begin                                             // E3
-                            sbrd_q  <= rom_q[ALB_ROM_E3_SRC_BOARD_LSB +: 4];
-                            sbase_q <= rom_q[ALB_ROM_E3_SRC_BASE_LSB +: ADDR_WIDTH];
-                        end
-                        3'd4: begin                                             // E4
-                            dbrd_q[7:0] <= {rom_q[ALB_ROM_E4_DST1_BOARD_LSB +: 4], rom_q[ALB_ROM_E4_DST0_BOARD_LSB +: 4]};
-                            dbase_q[2*ADDR_WIDTH-1:0] <= {rom_q[ALB_ROM_E4_DST1_BASE_LSB +: ADDR_WIDTH],
-                                                          rom_q[ALB_ROM_E4_DST0_BASE_LSB +: ADDR_WIDTH]};
-                        end
-                        3'd5: begin                                             // E5
-                            dbrd_q[15:8] <= {rom_q[ALB_ROM_E5_DST3_BOARD_LSB +: 4], rom_q[ALB_ROM_E5_DST2_BOARD_LSB +: 4]};
-                            dbase_q[4*ADDR_WIDTH-1:2*ADDR_WIDTH] <= {rom_q[ALB_ROM_E5_DST3_BASE_LSB +: ADDR_WIDTH],
-                                                                     rom_q[ALB_ROM_E5_DST2_BASE_LSB +: ADDR_WIDTH]};
-                        end
                         default: begin                                          // E1 of the next entry
                             start_q      <= rom_q[TB-1:0];             // (entry_check is done with it)
                             start_bad_q  <= rom_q[31:TB] != 0;
                             if (!bad_q) prev_end_q <= end_q;
-                            if (ent_q == 8'd0) begin
-                                sync_ok_q   <= !bad_q && sflag_q;
-                                sync_brd_q  <= sbrd_q;
-                                sync_base_q <= sbase_q;
-                            end
                             if (go_now) state_q <= ST_TRANSFER;
                         end
                     endcase
@@ -420,22 +382,17 @@ module albatross_sequencer #(
                         start_q     <= rom_q[TB-1:0];
                         start_bad_q <= rom_q[31:TB] != 0;
                     end
-                    pc_q <= (pc_q == POLL_LAST) ? {PC_BITS{1'b0}} : pc_q + 1'b1;
-                    if (HAS_SYNC != 0 && smode_q && sync_ok_q && pc_q == POLL_LAST) poll_q <= 1'b1;
-                    if (poll_q && (poll_ack_i || poll_err_i)) poll_q <= 1'b0;
                 end
                 default: ;
             endcase
             if (entry_over) begin
                 ent_q       <= ent_inc;
                 state_q     <= last_ent ? ST_CYCLE_END : ST_WAIT;
-                pc_q        <= POLL_LAST;
             end
             if (new_cycle) begin
                 next_rel_q  <= {{TB{1'b0}}, 1'b1};
                 ent_q       <= m_next_first;
                 prev_end_q  <= {(TB+1){1'b0}};
-                poll_q      <= 1'b0;
                 state_q     <= ST_WAIT;
                 cycle_q1    <= 1'b1;
                 if (!cyc_inc[16]) cycles_q <= cyc_inc[15:0];
@@ -444,24 +401,21 @@ module albatross_sequencer #(
     end
 
     assign go_o         = go_now;
-    assign kind_o       = kind_q;
-    assign chan_o       = chan_q;
-    assign nd_o         = nd_q;
-    assign words_o      = w_q;
-    assign src_board_o  = sbrd_q;
-    assign src_base_o   = sbase_q;
-    assign dst_board_o  = dbrd_q;
-    assign dst_base_o   = dbase_q;
+    assign kind_o       = kind;
+    assign chan_o       = chan;
+    assign nd_o         = nd;
+    assign words_o      = words;
+    assign src_board_o  = sbrd;
+    assign src_base_o   = sbase;
+    assign dst_board_o  = dbrd;
+    assign dst_base_o   = dbase;
     assign slot_time_o  = slot_time_q;
-    assign sync_entry_o = sflag_q;
-    assign four_o       = four_q;
-    assign request_o    = req_q;
-    assign mode_info_o  = minfo_q;
+    assign sync_entry_o = sflag;
+    assign four_o       = four;
+    assign request_o    = request;
+    assign mode_info_o  = mode_info;
     assign mode_since_o = since_q;
     assign may_access_o = (state_q == ST_TRANSFER || go_now) && in_time_q;   // c + 1 + MARGIN <= D (D >= MIN_LEN > MARGIN)
-    assign poll_cyc_o   = poll_q;
-    assign poll_board_o = sync_brd_q;
-    assign poll_adr_o   = sync_base_q;
     assign time_o       = time_q;
     assign cycle_o      = cycle_q1;
     assign error_o      = err_q;

@@ -12,7 +12,7 @@ FSBY_TESTS_SPEC += \
     formal-sequencer-negative-start_bad_crc:sequencer:neg_start_bad_crc:idle_on_error
 FSBY_MUTANTS += sequencer:slot_late sequencer:deadline_late sequencer:start_bad_crc
 FSBY_RTL_sequencer := rtl/albatross_sequencer.v rtl/albatross_schedule_rom.v rtl/albatross_rom_check.v \
-                      rtl/albatross_entry_check.v rtl/albatross_mode_switch.v
+                      rtl/albatross_entry_check.v rtl/albatross_mode_switch.v rtl/albatross_entry_fields.v rtl/albatross_sync_poll.v
 
 # The ROM images of the proofs and their decoded fields, written by gen_rom.py with the
 # schedule compiler's encoder and CRC (sequencer.sby reads them from this folder).
