@@ -207,13 +207,30 @@ def plan_mode(system: System, mode: Mode, plan_fn):
         raise ScheduleError([f"mode '{mode.name}': {m}" for m in e.messages])
 
 
+def switch_latency(system: System, rep: dict):
+    """The worst time from a request's publication to the start of the first
+    cycle of the mode it asks for, in clocks, while mode rep runs (None: the
+    mode reads no requests).  The controller samples the request channel once
+    a cycle, at its slot's start + [bus] sample_offset (fault-free: a retried
+    read is later, which only shortens the wait); a value published just
+    after that sample is read a cycle later, and the switch follows at the
+    end of that cycle: 2 C - sample."""
+    req = next((ch.name for ch in system.channels if ch.request), None)
+    starts = [e["start"] for e in rep["entries_list"] if e["channel"] == req]
+    if not starts:
+        return None
+    return 2 * rep["cycle"]["clocks"] - (min(starts) + system.bus.sample_offset)
+
+
 def mode_summary(system: System, modes: list, i: int, rep: dict) -> dict:
     """report.json's entry of mode i, from that mode's own report rep."""
     m = modes[i]
+    lat = switch_latency(system, rep)
     keep = ("cycle", "cycle_limited_by", "entries", "drop_run", "bus_utilisation", "controller_busy",
             "schedule_fill")
     return dict({k: rep[k] for k in keep if k in rep},
                 name=m.name, start_up=i == 0, next=[modes[j].name for j in m.next],
+                switch_latency=None if lat is None else {"clocks": lat, "us": round(lat * 1e6 / system.clock_hz, 3)},
                 channels=[{k: c[k] for k in ("name", "id", "max_period", "guaranteed_period", "redundancy",
                                              "age_bound", "latency") if k in c}
                           for c in rep["channels"]],

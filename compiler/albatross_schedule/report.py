@@ -216,7 +216,9 @@ def render_report_txt(rep: dict) -> str:
             L.append(f"  {m['name']}{tag}: cycle {m['cycle']['clocks']} clocks = {f(m['cycle']['us'])} us, "
                      f"{m['entries']} entries, bus utilisation {100 * m['bus_utilisation']:.1f} %, drop run "
                      f"{m['drop_run']}; switches to {', '.join(m['next']) or 'none'}"
-                     + (f"; leaves out {', '.join(m['left_out'])}" if m["left_out"] else ""))
+                     + (f"; leaves out {', '.join(m['left_out'])}" if m["left_out"] else "")
+                     + (f"; a request switches within {f(m['switch_latency']['us'])} us"
+                        if m.get("switch_latency") else ""))
             for c in m["channels"]:
                 L.append(f"    {c['name']}: guaranteed period {f(c['guaranteed_period']['us'])} / max "
                          f"{f(c['max_period']['us'])} us, x{c['redundancy']} per cycle")

@@ -142,6 +142,15 @@ class ModePlanTests(unittest.TestCase):
             for c in m["channels"]:
                 self.assertLessEqual(c["guaranteed_period"]["clocks"], c["max_period"]["clocks"],
                                      f"mode {m['name']}, {c['name']}: guaranteed period over its max_period")
+        # the switch latency: 2 C - (the request slot's start + the sample offset)
+        cruise = modes["cruise"]
+        start = min(e["start"] for e in self.rep["entries_list"] if e["channel"] == "ModeRequest")
+        bus = self.rep["bus"]
+        self.assertEqual(cruise["switch_latency"]["clocks"],
+                         2 * cruise["cycle"]["clocks"] - (start + bus["fetch_cycles"] + bus["access_cycles"]))
+        for m in modes.values():
+            self.assertLess(m["switch_latency"]["clocks"], 2 * m["cycle"]["clocks"], m["name"])
+            self.assertGreater(m["switch_latency"]["clocks"], m["cycle"]["clocks"] - 1, m["name"])
         dock = {c["name"]: c for c in modes["dock"]["channels"]}
         self.assertEqual(dock["Position"]["max_period"]["us"], 25, "dock's period of Position is its own")
         self.assertLess(modes["dock"]["cycle"]["clocks"], modes["cruise"]["cycle"]["clocks"],
