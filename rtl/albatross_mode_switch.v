@@ -90,8 +90,8 @@ module albatross_mode_switch #(
     wire        commit  = switch_i && step_q == L_READY;
     wire        h2modes = rom_i[ALB_ROM_H2_MODES_LSB +: 4] != 4'd0;
     // rom_i holds: H1 or D0 (cycle), H1 or D1 (next), H2 or D1 (drop run), H2 or D0 (end, first)
-    wire        ld_d1   = step_q == L_D0 && idle_i;
-    wire        ld_d0   = step_q == L_E1;
+    wire        ld_d1   = MODES && step_q == L_D0 && idle_i;
+    wire        ld_d0   = MODES && step_q == L_E1;
     // Descriptor idx takes the place of entry table + idx: D0 at {desc, 100}, D1 at {desc, 101}.
     /* verilator lint_off UNUSEDSIGNAL */
     wire [7:0]         desc   = table_q + {4'd0, idx_q};
@@ -137,7 +137,7 @@ module albatross_mode_switch #(
                 end else reject_q <= 1'b1;
             end
             case (step_q)
-                L_IDLE: if (pend_q && idle_i && !taken) step_q <= L_D1;
+                L_IDLE: if (MODES && pend_q && idle_i && !taken) step_q <= L_D1;
                 L_D1:   if (idle_i) step_q <= L_D0;        // D1 read now, in rom_i next clock
                 L_D0:   if (idle_i) step_q <= L_E1;        // D0 read now; rom_i = D1 (ld_d1)
                 L_E1:   step_q <= L_E1_DATA;               // rom_i = D0 (ld_d0)
