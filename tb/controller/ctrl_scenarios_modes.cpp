@@ -13,7 +13,9 @@
 // request for a mode the image does not have is ignored (mode 1 runs on) and
 // counted as a corrupt value of channel 3 in STATUS; the MODE channel shows
 // {0, the first cycle's start} in mode 0 and {1, the switch's boundary} in
-// mode 1; a request back to mode 0 switches back; no ROM error.
+// mode 1; a value not published again is not New twice in the mode's later
+// cycles (the channel keeps its state); a request back to mode 0 switches
+// back; no ROM error.
 #include "ctrl_bench.h"
 
 namespace {
@@ -110,6 +112,11 @@ void scenario_modes() {
     // An unknown mode: ignored, counted; mode 1 runs on.
     const uint64_t C4 = B + 2 * H1_1;
     s.run_until(C4 + 200);
+    // Two more cycles of mode 1 with no new value: channel 4 keeps its state
+    // (its ReadLocked copy), so its value is not New twice.
+    isnew = cons1.import(s, got);
+    CHECK_EQ(G_DATA, "modes: channel 4's value, unchanged over two more cycles of mode 1, is Old (not New twice)", 0,
+             isnew);
     req.publish(s, {7});
     prod1.publish(s, value(8));
     s.run_until(C4 + 2 * H1_1 + 260);

@@ -45,9 +45,11 @@
 //            controller-negative-cold)
 //   modes    an image with two modes and a REQUEST channel: a request
 //            switches at the next cycle boundary, the new mode's first entry
-//            starts the new cycle, a request for an unknown mode is ignored
-//            and counted in STATUS, and a request switches back (groups 1,
-//            2, 4; ctrl_scenarios_modes.cpp)
+//            starts the new cycle, a channel keeps its state (an unchanged
+//            value is not New twice), a request for an unknown mode is
+//            ignored and counted in STATUS, and a request switches back
+//            (groups 1, 2, 4; ctrl_scenarios_modes.cpp; negatives
+//            controller-negative-no_request, -forget_state)
 // Each check prints what it expected and what it got.  Exit status 0 if all
 // pass, else 64 + a bit mask of the failed groups (1 timing, 2 data, 4 rom,
 // 8 faults, 16 dead, 32 abandon).  --inject=timing makes the timing checker expect one

@@ -70,7 +70,7 @@ $(CTRL_DIR)/mutant-$(1)/obj/Vtb_system: $(CTRL_SRC) $(CTRL_DIR)/mutant-$(1)/src/
 	    --Mdir $(CTRL_DIR)/mutant-$(1)/obj -y $(CTRL_DIR)/mutant-$(1)/src $(VLIB) tb/system/tb_system.v $(abspath $(CTRL_CPP)) \
 	    > $(CTRL_DIR)/mutant-$(1)/build.log 2>&1 || { cat $(CTRL_DIR)/mutant-$(1)/build.log; exit 1; }
 endef
-$(foreach m,stale_need cold_zero_corrupt no_request,$(eval $(call ctrl_mutant_model,$(m))))
+$(foreach m,stale_need cold_zero_corrupt no_request forget_state,$(eval $(call ctrl_mutant_model,$(m))))
 CTRL_MUT_DIR := $(CTRL_DIR)/mutant-stale_need
 
 TESTS += controller-abandon controller-negative-stale_need
@@ -146,3 +146,17 @@ test-controller-negative-no_request: $(CTRL_NEG_REQ)/obj/Vtb_system
 	    if [ $$rc -ge 64 ] && grep -q "^FAIL modes: cycle 2 (mode 1) carries channel 4" $(CTRL_NEG_REQ)/run.log; then \
 	        echo "the controller that drops mode requests fails scenario modes, as it must (exit $$rc)"; \
 	    else echo "expected scenario modes to fail at the switch, came exit $$rc"; tail -n 5 $(CTRL_NEG_REQ)/run.log; exit 1; fi'
+
+# A controller that forgets a channel's state outside mode 0
+# (tb/mutants/controller/forget_state.sed) fails scenario modes: the value
+# of channel 4, unchanged, is New twice.
+CTRL_NEG_FORGET := $(CTRL_DIR)/mutant-forget_state
+TESTS += controller-negative-forget_state
+.PHONY: test-controller-negative-forget_state
+test-controller-negative-forget_state: $(CTRL_NEG_FORGET)/obj/Vtb_system
+	@tools/run_test.sh controller-negative-forget_state bash -c '$< --dir=$(CTRL_NEG_FORGET)/run --scenario=modes \
+	    > $(CTRL_NEG_FORGET)/run.log 2>&1; rc=$$?; \
+	    grep -m 3 "^FAIL" $(CTRL_NEG_FORGET)/run.log | sed "s/^FAIL/  caught:/"; \
+	    if [ $$rc -ge 64 ] && grep -q "^FAIL modes: channel 4.s value, unchanged over two more cycles" $(CTRL_NEG_FORGET)/run.log; then \
+	        echo "the controller that forgets a channel'"'"'s state fails scenario modes, as it must (exit $$rc)"; \
+	    else echo "expected the value New twice, came exit $$rc"; tail -n 5 $(CTRL_NEG_FORGET)/run.log; exit 1; fi'
