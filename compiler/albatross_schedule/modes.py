@@ -137,12 +137,6 @@ def parse_modes(raw, system: System, err, describe, is_int) -> list:
                     targets.append(names.index(n))
         modes.append(Mode(name=names[i] if isinstance(names[i], str) else f"#{i + 1}", channels=idx,
                           periods=periods, next=targets))
-    if modes and len(modes[0].channels) != len(system.channels):
-        missing = [ch.name for ch in system.channels if ch.index not in modes[0].channels]
-        fail(0, f"'{modes[0].name}'", "channels",
-             f"the start-up mode (the first) must list every channel for now: the ROM image and board "
-             f"headers hold the start-up mode, and the controller has no mode table yet (missing: "
-             f"{', '.join(missing)})")
     if modes and not requests:
         err.general("[[mode]] needs a channel of kind \"mode_request\": the board whose requests switch the "
                     "modes publishes it (docs/compiler.md \"Modes\")")
@@ -153,6 +147,11 @@ def parse_modes(raw, system: System, err, describe, is_int) -> list:
         for ch in infos:
             if ch.index not in m.channels:
                 m.channels = sorted(m.channels + [ch.index])
+    if modes and len(modes[0].channels) != len(system.channels):
+        missing = [ch.name for ch in system.channels if ch.index not in modes[0].channels]
+        fail(0, f"'{modes[0].name}'", "channels",
+             f"the start-up mode (the first) must list every channel: the board headers give the "
+             f"start-up mode's bounds (missing: {', '.join(missing)})")
     if modes and system.sync_mode:
         fail(0, f"'{modes[0].name}'", None, "modes need the time-rigid time mode ([system] mode)")
     if len(modes) == 1:

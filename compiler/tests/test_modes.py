@@ -115,6 +115,12 @@ class ModeDescriptionTests(unittest.TestCase):
             S.parse_description(tomllib.loads(text + TWO_MODES), "robot-modes.toml", text + TWO_MODES)
         self.assertTrue(any("time-rigid" in m for m in cm.exception.messages), cm.exception.messages)
 
+    def test_start_up_mode_gets_the_mode_channels(self):
+        # a start-up mode that lists the user's channels by name gets the mode_request channel added
+        names = '["RadarMap", "Position", "MotorCmd", "GlobalTime", "Status"]'
+        system = system_of(TWO_MODES.replace('name = "cruise"\n', f'name = "cruise"\nchannels = {names}\n'))
+        self.assertEqual(len(system.modes[0].channels), len(system.channels))
+
     def test_start_up_mode_lists_every_channel(self):
         self.check_error('[[mode]]\nname = "dock"\nchannels = ["Position", "MotorCmd", "GlobalTime"]\n',
                          "mode 'dock'", "start-up mode", "RadarMap")

@@ -140,9 +140,10 @@ test-$(call neg_field,$(1),1): $(PB_BIN) $(PB_FW) $(PB_SCHED)/tb_plan.txt
 endef
 $(foreach s,$(PB_SCENARIOS),$(eval $(call pb_scenario,$(s))))
 
-# The robot on the image of its two modes (build/schedule/mobot3-modes): the
-# controller runs the start-up mode, cruise, which is the robot as it is, so
-# every check of pico-boards holds; the firmware is built against that plan.
+# The robot on the image of its two modes (build/schedule/mobot3-modes): its
+# firmware asks for no switch, so the run stays in the start-up mode, cruise,
+# the robot as it is, and every check of pico-boards holds; the firmware is
+# built against that plan.
 PB_MODES := $(BUILD)/schedule/mobot3-modes
 TESTS += pico-boards-modes
 .PHONY: test-pico-boards-modes
