@@ -14,7 +14,7 @@
 //             [--age-samples FILE.csv]  every imported age (channel,board,cycle,age,producer_gap)
 //             [--age-scale X] [--require-done] [--expect-caught-by CHECK]
 //             [--drift-ppm BOARD=PPM[,/BOARD=PPM...]|random:MAX] [--clock-scale X]
-//             [--termination-scale X]
+//             [--termination-scale X] [--min-switches N] [--switch-scale X]
 //
 // The cores report every Import and Export as board events (EVENT/ARG,
 // sim/firmware/mobot_check.h).  The harness watches every core's DPRAM port: it
@@ -41,6 +41,10 @@
 //   --hang B@C      board B freezes at cycle C without telling the checks
 //                   (the negative test of the liveness check)
 //   --age-scale X   check ages against X times the bound (negative test)
+//   --min-switches N  a description with schedule modes: fail (check mode)
+//                   on fewer than N switches
+//   --switch-scale X  check switch latencies against X times the compiler's
+//                   switch_latency (negative test)
 //   --mute CH@B     every controller store to the control word of channel
 //                   CH's destination on board B is lost (sim/pico_boards.v
 //                   +mute_board/+mute_word): that destination is never
@@ -85,6 +89,14 @@
 //              lies within the board's lag and lead bounds of the
 //              controller's time at its TIMER read, and the rate is known
 //              after four windows (sim/mobot_sim_clock.cpp)
+//   mode       a description with schedule modes (sim/mobot_sim_modes.cpp):
+//              every switch follows a request, within the compiler's
+//              switch_latency of the mode it leaves (runs without faults),
+//              and reaches navigation as Mode {mode, the switch's time};
+//              every Mode value imported names a switch; at least
+//              --min-switches switches.  The other checks judge each age by
+//              the bound of the mode in force, and staleness expects
+//              RadarMap stale in each long stay of a mode without it
 //   termination    every three-buffer Import the compiler bounded (report.txt
 //              beside the plan: [board] timing in the description) whose
 //              loop kept within the compiler's T and V makes at most its
@@ -163,7 +175,9 @@ int main(int argc, char **argv)
     bool seen_event[NB] = {false, false, false, false};
     const uint64_t n_buckets = std::min<uint64_t>(800, o.cycles);
     const uint64_t bucket_len = (o.cycles + n_buckets - 1) / n_buckets;
-    for (Series &s : series) s.bucket_max.assign(n_buckets, 0);
+    for (Series &s : series) s.bucket_max.assign(n_buckets, 0), s.bucket_bound.assign(n_buckets, 0);
+    ModeTrack modes;  // schedule modes (sim/mobot_sim_modes.cpp)
+    modes.plan = &plan;
 
     // The boards' clock drift: board_memmap's +drift<c>=PPM plusargs.
     std::vector<std::string> vargs(argv, argv + argc);
@@ -268,12 +282,13 @@ int main(int argc, char **argv)
     uint32_t crash_words = 0, crash_need = 0, crash_seq = 0;
     uint64_t crash_cycle = 0;
     const Producer *crash_prod = nullptr;
-    for (auto &p : producers)
-        if (p.second.ch->src_board == o.crash_board) crash_prod = &p.second;
+    for (auto &p : producers)  // (not the mode request: it is not a data channel)
+        if (p.second.ch->src_board == o.crash_board && p.second.ch->id != plan.mode_request) crash_prod = &p.second;
     if (o.crash_board >= 0 && !crash_prod)
         return usage(("--crash: board " + plan.board_names[o.crash_board] + " produces no copy channel").c_str());
     LocalClock clocks[NB];
     uint64_t stale_events = 0, stale_before_crash = 0, fresh_events = 0, first_stale = 0, status_reads = 0;
+    uint64_t stale_in_mode = 0;  // stale reports while the mode in force carries no such channel
     uint32_t status_retries = 0, status_abandoned = 0;
 
     std::printf("%s: %d boards (%s, %s, %s, %s), %llu cycles, seed %llu, fault rate %.2f%s%s%s\n", o.label.c_str(), NB,
@@ -289,6 +304,7 @@ int main(int argc, char **argv)
         if (o.hang_board >= 0 && cycle >= o.hang_at) frozen |= 1u << o.hang_board;
         tick();
         const uint64_t now = m->time_o;
+        modes.observe(m->mode_o, now, cycle);
         for (int c = 0; c < NB; ++c) {
             if (clear_first[c]) std::fill(first_seen[c], first_seen[c] + 1024, false), clear_first[c] = false;
             if (((m->done_o >> c) & 1u) && !done_at[c]) done_at[c] = cycle;
@@ -310,7 +326,9 @@ int main(int argc, char **argv)
                     if (p.ch->src_board != c) continue;
                     const uint32_t first = p.ch->src_base / 4, buf_first = first + 1;
                     if (adr == first && (sel & 1u)) {
+                        if (p.ch->id == plan.mode_request) modes.request(now);
                         if (p.stores) p.max_gap = std::max(p.max_gap, cycle - p.last_store);
+                        else p.first_store = cycle;
                         p.last_store = cycle;
                         ++p.stores;
                     } else if (crash_phase == 2 && &p == crash_prod && adr >= buf_first &&
@@ -361,8 +379,28 @@ int main(int argc, char **argv)
                                      (unsigned long long)(s->ch->copy() ? producers[s->ch->id].max_gap : 0));
                     const uint64_t k = std::min<uint64_t>(cycle / bucket_len, n_buckets - 1);
                     s->bucket_max[k] = std::max(s->bucket_max[k], age);
+                    // the bound in force at the load: the mode's, the producer's longest gap so
+                    // far (the one still open included: a gap that holds the value's age)
+                    uint64_t gap = 0, bound = 0;
+                    if (s->ch->copy()) {
+                        const Producer &p = producers[s->ch->id];
+                        gap = std::max({p.max_gap, p.first_store, cycle - p.last_store});  // (reset to the first too)
+                    }
+                    if (modes.bound_at(*s->ch, gap, t_load, bound)) {
+                        s->bucket_bound[k] = std::max(s->bucket_bound[k], bound);
+                        if (!(crash_prod && crash_prod->ch == s->ch))
+                            s->worst_pm = std::max(s->worst_pm, bound ? 1000 * age / bound : 0);
+                        if (double(age) > o.age_scale * double(bound) && !(crash_prod && crash_prod->ch == s->ch)) {
+                            if (!s->over_bound++ || age * s->worst_over_bound > s->worst_over * bound)
+                                s->worst_over = age, s->worst_over_bound = bound;
+                        }
+                    } else {
+                        ++s->unjudged;
+                    }
                 }
                 s->import_cycles.add(cyc);
+                if (s->last_import) s->max_import_gap = std::max(s->max_import_gap, cycle - s->last_import);
+                s->last_import = cycle;
                 if (kind == EV_NEW && s->ch->kind == "time") clocks[c].new_time(cycle);  // the board's clock syncs
                 if (kind == EV_NEW) {
                     ++s->news;
@@ -382,9 +420,16 @@ int main(int argc, char **argv)
                     ++it->second.exports;
                     it->second.export_cycles.add(cyc);
                 }
+            } else if (kind == EV_MODE) {
+                modes.published(int(id), arg);
             } else if (kind == EV_STALE) {
                 if (!stale_events++) first_stale = cycle;
-                if (crash_phase != 3) ++stale_before_crash;
+                // stale as planned: a mode without the channel was in force within the
+                // consumer's view of it (two of its Import gaps and a cycle before now)
+                const Series *ss = find_series(c, id);
+                const uint64_t look = ss ? 2 * ss->max_import_gap + 2 * plan.cycle : 0;
+                if (ss && modes.absent_during(int(id), now > look ? now - look : 0, now)) ++stale_in_mode;
+                else if (crash_phase != 3) ++stale_before_crash;
             } else if (kind == EV_FRESH) {
                 ++fresh_events;
             } else if (kind == EV_CLOCK) {  // id: alb_clock_state, ARG: the estimate at the last TIMER read
@@ -396,12 +441,8 @@ int main(int argc, char **argv)
             }
         }
         if (cycle >= next_progress) {
-            uint64_t worst_pm = 0;  // worst age / bound so far, per mille (not the crashed producer's channel)
-            for (const Series &s : series)
-                if (s.age.n && !(crash_prod && crash_prod->ch == s.ch)) {
-                    const uint64_t b = age_bound(s);
-                    worst_pm = std::max(worst_pm, b ? 1000 * s.age.max / b : 0);
-                }
+            uint64_t worst_pm = 0;  // worst age / bound in force so far, per mille (not the crashed producer's channel)
+            for (const Series &s : series) worst_pm = std::max(worst_pm, s.worst_pm);
             std::printf("  [%3llu%%] cycle %9llu  exports", (unsigned long long)(100 * cycle / o.cycles),
                         (unsigned long long)cycle);
             for (auto &p : producers) std::printf(" %s %llu", p.second.ch->name.c_str(), (unsigned long long)p.second.exports);
@@ -418,11 +459,8 @@ int main(int argc, char **argv)
     // ---- bounds and checks ----
     for (Series &s : series) {
         const PlanChannel &c = *s.ch;
-        s.bound = age_bound(s);
-        const double limit = o.age_scale * double(s.bound);
-        // ages of a crashed producer's channel grow without bound: not checked
-        if (!(crash_prod && crash_prod->ch == &c))
-            for (uint64_t v : s.bucket_max) if (double(v) > limit) ++s.over_bound;
+        s.bound = age_bound(s);  // the start-up mode's (each sample was judged by the one in force)
+        (void)c;
     }
     std::map<std::string, std::string> failed;  // check -> first failure
     auto fail = [&](const char *check, const std::string &msg) { if (!failed.count(check)) failed[check] = msg; };
@@ -466,9 +504,10 @@ int main(int argc, char **argv)
     if (check_ages)
         for (const Series &s : series)
             if (s.over_bound) {
-                std::snprintf(b, sizeof b, "expected every age of %s at %s <= %.0f clocks, got %llu over it (worst %llu)",
-                              s.ch->name.c_str(), plan.board_names[s.board].c_str(), o.age_scale * double(s.bound),
-                              (unsigned long long)s.over_bound, (unsigned long long)s.age.max);
+                std::snprintf(b, sizeof b, "expected every age of %s at %s <= %.4g x its bound in force, got %llu over "
+                              "it (worst %llu clocks against %llu)", s.ch->name.c_str(), plan.board_names[s.board].c_str(),
+                              o.age_scale, (unsigned long long)s.over_bound, (unsigned long long)s.worst_over,
+                              (unsigned long long)s.worst_over_bound);
                 fail("age", b);
             }
     if (crash_run) {
@@ -522,6 +561,50 @@ int main(int argc, char **argv)
                       crash_run ? "before the crash" : "without a crash", (unsigned long long)stale_before_crash);
         fail("staleness", b);
     }
+    // Modes: a mode without RadarMap long enough for navigation's threshold
+    // (MOBOT_RADAR_SCAN_CLOCKS and the latency, about 20,500 clocks) is seen
+    // stale; every switch came from a request within the compiler's
+    // switch_latency of the mode it left, and reached the boards as Mode with
+    // its time (sim/mobot_sim_modes.cpp).
+    uint64_t long_absences = 0;
+    if (const PlanChannel *radar = plan.by_name("RadarMap"); radar && !plan.modes.empty())
+        for (size_t k = 0; k < modes.switches.size(); ++k) {
+            const ModeSwitch &sw = modes.switches[k];
+            const uint64_t end = k + 1 < modes.switches.size() ? modes.switches[k + 1].time : uint64_t(m->time_o);
+            if (!plan.modes[sw.to].carries(radar->id) && end - sw.time > 50000) ++long_absences;
+        }
+    if (long_absences && stale_in_mode < long_absences && !cpu_failed) {
+        std::snprintf(b, sizeof b, "expected navigation to report RadarMap stale in each of the %llu long runs of a mode "
+                      "without it, it did %llu times", (unsigned long long)long_absences, (unsigned long long)stale_in_mode);
+        fail("staleness", b);
+    }
+    if (modes.switches.size() < o.min_switches) {
+        std::snprintf(b, sizeof b, "expected at least %llu mode switches, got %zu", (unsigned long long)o.min_switches,
+                      modes.switches.size());
+        fail("mode", b);
+    }
+    for (const ModeSwitch &sw : modes.switches) {
+        const bool near_end = sw.cycle + 4 * plan.cycle > cycle;  // its Mode may not be imported yet
+        if (!sw.requested)
+            std::snprintf(b, sizeof b, "expected each mode switch to follow a request, the one to %s at time %llu "
+                          "did not", plan.modes[sw.to].name.c_str(), (unsigned long long)sw.time);
+        else if (check_ages && double(sw.latency) > o.switch_scale * double(sw.bound))
+            std::snprintf(b, sizeof b, "expected each switch within %.4g x the compiler's switch_latency, the one to "
+                          "%s at time %llu took %llu clocks from the request against %llu", o.switch_scale,
+                          plan.modes[sw.to].name.c_str(), (unsigned long long)sw.time, (unsigned long long)sw.latency,
+                          (unsigned long long)sw.bound);
+        else if (!sw.published && !near_end && !cpu_failed)
+            std::snprintf(b, sizeof b, "expected navigation to import Mode {%s, %llu} after the switch, it did not",
+                          plan.modes[sw.to].name.c_str(), (unsigned long long)sw.time);
+        else
+            continue;
+        fail("mode", b);
+    }
+    if (modes.bad_since) {
+        std::snprintf(b, sizeof b, "expected every Mode value imported to name a switch (mode and its time), %llu did not",
+                      (unsigned long long)modes.bad_since);
+        fail("mode", b);
+    }
     // The injected rate per access against the nominal one (tb/common/fault_model.h).
     const double rate_measured = requests ? double(faults) / double(requests) : 0;
     const double rate_tol = fault_model.tolerance(requests);
@@ -558,7 +641,23 @@ int main(int argc, char **argv)
      .num("bus_busy_fraction", cycle ? double(busy) / double(cycle) : 0.0)
      .str("muted", o.mute_arg).str("crash_board", crash_run ? plan.board_names[o.crash_board] : "").num("crash_cycle", double(crash_cycle))
      .num("stale_events", double(stale_events)).num("first_stale_cycle", double(first_stale))
-     .num("fresh_events", double(fresh_events));
+     .num("fresh_events", double(fresh_events)).num("stale_in_mode", double(stale_in_mode));
+    if (!plan.modes.empty()) {
+        r.raw("mode_switches", modes.report("    "));
+        uint64_t worst = 0, worst_bound = 0;
+        for (const ModeSwitch &sw : modes.switches)
+            if (sw.requested && sw.latency * std::max<uint64_t>(worst_bound, 1) >= worst * std::max<uint64_t>(sw.bound, 1))
+                worst = sw.latency, worst_bound = sw.bound;
+        std::printf("  modes: %zu switches", modes.switches.size());
+        for (const ModeSwitch &sw : modes.switches)
+            std::printf("%s %s at %.3f ms (%llu clocks after the request, bound %llu)", &sw == &modes.switches[0] ? ":" : ",",
+                        plan.modes[sw.to].name.c_str(), 1e3 * double(sw.time) / plan.clock_hz,
+                        (unsigned long long)sw.latency, (unsigned long long)sw.bound);
+        std::printf("\n  modes: worst switch latency %llu clocks against the bound %llu (%.2f); RadarMap stale %llu "
+                    "times in a mode without it\n", (unsigned long long)worst, (unsigned long long)worst_bound,
+                    worst_bound ? double(worst) / double(worst_bound) : 0.0, (unsigned long long)stale_in_mode);
+        r.num("switch_latency_worst", double(worst)).num("switch_latency_bound", double(worst_bound));
+    }
     r.raw("series", series_report(series, plan)).num("termination_bounded_series", n_term);
     if (n_term) print_termination(series, plan, o);
     else std::printf("  Import termination: no bounds (the description has no [board] timing): not checked\n");

@@ -12,8 +12,8 @@
 #include "report.h"
 
 const int NB = 4;
-enum : uint32_t { EV_NEW = 1, EV_OLD, EV_ERROR, EV_BEGIN, EV_EXPORT, EV_STALE, EV_FRESH, EV_STATUS, EV_CLOCK };
-const char *const kChecks[] = {"cpu", "liveness", "age", "staleness", "faults", "clock", "termination"};
+enum : uint32_t { EV_NEW = 1, EV_OLD, EV_ERROR, EV_BEGIN, EV_EXPORT, EV_STALE, EV_FRESH, EV_STATUS, EV_CLOCK, EV_MODE };
+const char *const kChecks[] = {"cpu", "liveness", "age", "staleness", "faults", "clock", "termination", "mode"};
 
 struct Options {
     std::string age_samples;  // --age-samples FILE: every imported age (CSV, tools/fault_rates.py)
@@ -23,6 +23,8 @@ struct Options {
     int crash_board = -1, hang_board = -1;
     int mute_board = -1, mute_word = -1;  // --mute: the destination control word whose stores are lost
     bool require_done = false;
+    uint64_t min_switches = 0;          // --min-switches N: fail on fewer mode switches (check mode)
+    double switch_scale = 1;            // --switch-scale: check switch latencies against X times the bound
     bool fault_per_clock = false;       // --fault-clocking clock: the old, wrong injector (negative test)
     uint64_t crash_at = 0, hang_at = 0;
     long drift_ppm[NB] = {0, 0, 0, 0};  // --drift-ppm: each board's clock against the controller's
@@ -75,7 +77,12 @@ struct Series {  // one channel at one consumer
     uint32_t base = 0;  // byte offset of the instance in the consumer's RAM
     Stat age, import_cycles;
     uint64_t news = 0, olds = 0, news_after_crash = 0, over_bound = 0, bound = 0;
+    uint64_t worst_over = 0, worst_over_bound = 0;  // the sample furthest over its bound: age, bound
+    uint64_t unjudged = 0;             // samples no bound applies to (a mode without the channel, settling)
+    uint64_t worst_pm = 0;             // the worst judged age / bound, per mille
+    uint64_t last_import = 0, max_import_gap = 0;  // the consumer's Imports of it: the longest gap (cycles)
     std::vector<uint64_t> bucket_max;  // worst age per time bucket (picture)
+    std::vector<uint64_t> bucket_bound;  // the largest bound a sample in the bucket was judged by (0: none)
     Termination term;
 };
 
@@ -97,6 +104,37 @@ struct Producer {  // a copy channel's producer
     const PlanChannel *ch = nullptr;
     Stat export_cycles;
     uint64_t exports = 0, stores = 0, last_store = 0, max_gap = 0;
+    uint64_t first_store = 0;  // the cycle of its first store (the gap from reset)
+};
+
+// Schedule modes (sim/mobot_sim_modes.cpp): the controller's running mode
+// over time (its probe mode_o), each switch with the request that caused it,
+// the Mode values the boards imported, and the age bound in force.
+struct ModeSwitch {
+    uint64_t time = 0, cycle = 0;      // controller time and run cycle of the first clock in the new mode
+    int from = 0, to = 0;
+    bool requested = false;            // a ModeRequest store came before it (since the switch before)
+    uint64_t latency = 0, bound = 0;   // its last store -> time; the compiler's switch_latency of 'from'
+    bool published = false;            // a board imported Mode {to, since} ...
+    uint64_t since = 0;                // ... with this since
+};
+struct ModeTrack {
+    const Plan *plan = nullptr;
+    int mode = 0;                          // the mode in force now
+    std::vector<ModeSwitch> switches;
+    bool request_seen = false;             // a ModeRequest store since the last switch
+    uint64_t request_time = 0;             // controller time of its last one
+    uint64_t mode_events = 0, bad_since = 0;  // Mode values imported; those naming no switch
+    void observe(int m, uint64_t now, uint64_t cycle);       // every clock: the probe
+    void request(uint64_t now);                              // ModeRequest's producer stored Actual
+    void published(int m, uint32_t since);                   // MOBOT_EV_MODE
+    // The age bound at controller time t of channel id (a copy's producer gap
+    // added); false: not judged (the mode in force, or the one before within
+    // its settling, carries no such channel).
+    bool bound_at(const PlanChannel &c, uint64_t gap, uint64_t t, uint64_t &bound) const;
+    // Some mode in force during [t0, t1] carries no channel id.
+    bool absent_during(int id, uint64_t t0, uint64_t t1) const;
+    std::string report(const std::string &indent) const;    // the JSON array of switches
 };
 
 // The command line (sim/mobot_sim_options.cpp): fills o, loads plan, splits

@@ -160,10 +160,11 @@ bool write_ages(const std::string &path, const std::vector<Series> &series, cons
     FILE *f = std::fopen(path.c_str(), "w");
     if (!f) { std::fprintf(stderr, "cannot write %s\n", path.c_str()); return false; }
     std::fprintf(f, "# mobot_sim ages: bucket_start_cycle, then per series the worst age in the bucket "
-                    "(clocks; empty: no Import)\n# crash_cycle %llu first_stale %llu\ncycle", (unsigned long long)crash_cycle,
-                 (unsigned long long)first_stale);
+                    "(clocks; empty: no Import) and the largest bound in force its samples were judged by "
+                    "(empty: none, a mode without the channel)\n# crash_cycle %llu first_stale %llu\ncycle",
+                 (unsigned long long)crash_cycle, (unsigned long long)first_stale);
     for (const Series &s : series)
-        std::fprintf(f, ",%s@%s(bound=%llu)", s.ch->name.c_str(), plan.board_names[s.board].c_str(),
+        std::fprintf(f, ",%s@%s(bound=%llu),bound", s.ch->name.c_str(), plan.board_names[s.board].c_str(),
                      (unsigned long long)s.bound);
     std::fprintf(f, "\n");
     const uint64_t used = std::min<uint64_t>(n_buckets, (cycle + bucket_len - 1) / bucket_len);
@@ -171,6 +172,8 @@ bool write_ages(const std::string &path, const std::vector<Series> &series, cons
         std::fprintf(f, "%llu", (unsigned long long)(k * bucket_len));
         for (const Series &s : series) {
             if (s.bucket_max[k]) std::fprintf(f, ",%llu", (unsigned long long)s.bucket_max[k]);
+            else std::fprintf(f, ",");
+            if (s.bucket_bound[k]) std::fprintf(f, ",%llu", (unsigned long long)s.bucket_bound[k]);
             else std::fprintf(f, ",");
         }
         std::fprintf(f, "\n");

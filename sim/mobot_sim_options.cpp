@@ -87,9 +87,9 @@ int usage(const char *msg)
                  "                 [--crash BOARD@CYCLE] [--hang BOARD@CYCLE] [--mute CHANNEL@BOARD]\n"
                  "                 [--trace FILE.vcd [--trace-from N] [--trace-cycles N]] [--report FILE]\n"
                  "                 [--ages FILE.csv] [--age-samples FILE.csv] [--label NAME] [--progress K] [--age-scale X] [--require-done]\n"
-                 "                 [--termination-scale X]\n"
+                 "                 [--termination-scale X] [--min-switches N] [--switch-scale X]\n"
                  "                 [--drift-ppm BOARD=PPM[,BOARD=PPM...]|random:MAX] [--clock-scale X]\n"
-                 "                 [--expect-caught-by cpu|liveness|age|staleness|faults|clock|termination]\n", msg);
+                 "                 [--expect-caught-by cpu|liveness|age|staleness|faults|clock|termination|mode]\n", msg);
     return 2;
 }
 
@@ -135,6 +135,10 @@ int parse_options(int argc, char **argv, Options &o, Plan &plan, std::vector<std
             char *end = nullptr;
             o.clock_scale = std::strtod(v, &end);
             if (*end || !(o.clock_scale > 0)) return usage("--clock-scale: expected a number > 0");
+        } else if (a == "--switch-scale") {
+            char *end = nullptr;
+            o.switch_scale = std::strtod(v, &end);
+            if (*end || !(o.switch_scale > 0)) return usage("--switch-scale: expected a number > 0");
         } else if (a == "--termination-scale") {
             char *end = nullptr;
             o.term_scale = std::strtod(v, &end);
@@ -156,6 +160,7 @@ int parse_options(int argc, char **argv, Options &o, Plan &plan, std::vector<std
             if (a == "--cycles" && n > 0) o.cycles = n;
             else if (a == "--seed") o.seed = n;
             else if (a == "--stall") o.stall = n;
+            else if (a == "--min-switches") o.min_switches = n;
             else if (a == "--trace-from") o.trace_from = n;
             else if (a == "--trace-cycles" && n > 0) o.trace_cycles = n;
             else if (a == "--progress" && n <= 100) o.progress = n;

@@ -2,12 +2,17 @@
 """plot_ages.py AGES.csv REPORT.json OUT.svg -- each channel's data age over time.
 
 AGES.csv (sim/mobot_sim.cpp --ages) has one row per time bucket: its first
-cycle, then per series (a channel at one consumer) the worst age seen by an
-Import in that bucket, in controller clocks (empty: no Import).  The header
-names each series "Channel@consumer(bound=N)".  REPORT.json gives the clock,
-the crash and the first stale report.  One panel per series: the worst age
-(us) against time (ms), the guaranteed bound dashed; ages above 3x the bound
-are clipped to the panel's top and drawn red.  Standard library only.
+cycle, then per series (a channel at one consumer) two columns: the worst age
+seen by an Import in that bucket, in controller clocks (empty: no Import),
+and the largest bound in force its ages were judged by (empty: none, a
+schedule mode without the channel).  The header names each series
+"Channel@consumer(bound=N),bound" (N: the start-up mode's bound).
+REPORT.json gives the clock, the crash, the first stale report and the mode
+switches.  One panel per series: the worst age (us) against time (ms), the
+bound in force dashed; ages above it drawn red, ages no bound applies to
+grey; ages above 3x the start-up bound are clipped to the panel's top.  A
+description with schedule modes gets its modes as bands behind the panels
+and a line at every switch.  Standard library only.
 """
 import csv
 import json
@@ -32,17 +37,34 @@ def read(ages_path, report_path):
     if len(rows) < 2 or rows[0][0] != "cycle":
         fail(f"{ages_path}: no header row 'cycle,...' or no data")
     series = []
-    for name in rows[0][1:]:
+    names = rows[0][1:]
+    if len(names) % 2:
+        fail(f"{ages_path}: expected two columns per series (age, bound), got {len(names)} columns")
+    for name, second in zip(names[::2], names[1::2]):
         m = re.fullmatch(r"(.+)@(.+)\(bound=(\d+)\)", name)
-        if not m:
-            fail(f"{ages_path}: cannot read series name {name!r}")
+        if not m or second != "bound":
+            fail(f"{ages_path}: cannot read series name {name!r},{second!r}")
         series.append({"channel": m[1], "consumer": m[2], "bound": int(m[3]), "points": []})
     for r in rows[1:]:
         t = int(r[0])
-        for s, v in zip(series, r[1:]):
+        for k, s in enumerate(series):
+            v, b = (r[1 + 2 * k: 3 + 2 * k] + ["", ""])[:2]
             if v:
-                s["points"].append((t, int(v)))
+                s["points"].append((t, int(v), int(b) if b else None))
     return report, series
+
+
+def mode_bands(report, t_end):
+    """[(first cycle, end cycle, mode name)] from the report's mode switches."""
+    switches = report.get("mode_switches") or []
+    if not switches:
+        return []
+    bands, start, name = [], 0, switches[0]["from"]
+    for sw in switches:
+        bands.append((start, int(sw["cycle"]), name))
+        start, name = int(sw["cycle"]), sw["to"]
+    bands.append((start, t_end, name))
+    return bands
 
 
 def main():
@@ -56,7 +78,11 @@ def main():
     us = 1e6 / hz
     plot_w = W - LEFT - RIGHT
     height = TOP + len(series) * (PANEL_H + GAP) + 30
-    x = lambda t: LEFT + plot_w * t / t_end
+    x = lambda t: LEFT + plot_w * min(t, t_end) / t_end
+    bands = mode_bands(report, t_end)
+    shades = {}
+    for _, _, name in bands:
+        shades.setdefault(name, ["none", "#e8eefc", "#fcefdc", "#e6f5e6", "#f5e6f5"][len(shades) % 5])
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{height}" '
            f'font-family="sans-serif" font-size="11">',
            f'<rect width="{W}" height="{height}" fill="white"/>',
@@ -66,14 +92,24 @@ def main():
            f'{t_end * 1e3 / hz:.1f} ms, fault rate {report.get("fault_rate", 0)}, '
            f'{report.get("faults_injected", 0)} faults injected'
            + (f', {report["crash_board"]} crashes at {crash * 1e3 / hz:.2f} ms' if crash else "")
-           + '; dashed: bound</text>']
+           + (f', {len(bands) - 1} mode switches' if bands else "") + '</text>']
     for i, s in enumerate(series):
         top = TOP + i * (PANEL_H + GAP)
         bottom = top + PANEL_H
-        worst = max((v for _, v in s["points"]), default=0)
+        worst = max((v for _, v, _ in s["points"]), default=0)
         ymax = max(1.25 * s["bound"], min(worst, 3 * s["bound"]) * 1.05, 1)
         y = lambda v: bottom - PANEL_H * min(v, ymax) / ymax
         out.append(f'<rect x="{LEFT}" y="{top}" width="{plot_w}" height="{PANEL_H}" fill="#fafafa" stroke="#ccc"/>')
+        for t0, t1, name in bands:
+            if shades[name] != "none":
+                out.append(f'<rect x="{x(t0):.1f}" y="{top}" width="{x(t1) - x(t0):.1f}" height="{PANEL_H}" '
+                           f'fill="{shades[name]}"/>')
+            if i == 0 and x(t1) - x(t0) > 30:
+                out.append(f'<text x="{(x(t0) + x(t1)) / 2:.1f}" y="{top - 4}" text-anchor="middle" '
+                           f'fill="#555" font-size="9">{name}</text>')
+        for t0, _, _ in bands[1:]:
+            out.append(f'<line x1="{x(t0):.1f}" x2="{x(t0):.1f}" y1="{top}" y2="{bottom}" stroke="#73c" '
+                       f'stroke-width="0.8"/>')
         out.append(f'<text x="{LEFT - 8}" y="{top + 14}" text-anchor="end" font-weight="bold">'
                    f'{s["channel"]}</text>')
         out.append(f'<text x="{LEFT - 8}" y="{top + 28}" text-anchor="end" fill="#555">at {s["consumer"]}</text>')
@@ -82,13 +118,22 @@ def main():
         out.append(f'<text x="{LEFT - 8}" y="{top + 56}" text-anchor="end" fill="#555">'
                    f'bound {s["bound"] * us:.1f} us</text>')
         out.append(f'<text x="{LEFT + 3}" y="{top + 10}" fill="#999" font-size="9">{ymax * us:.0f} us</text>')
-        out.append(f'<line x1="{LEFT}" x2="{LEFT + plot_w}" y1="{y(s["bound"]):.1f}" y2="{y(s["bound"]):.1f}" '
-                   f'stroke="#2a7" stroke-dasharray="5,3"/>')
+        # the bound in force: a step line over the buckets that had one
+        bucket = t_end / max(1, len(s["points"]))
+        run = []
+        for t, _, b in s["points"] + [(None, None, None)]:
+            if b is not None:
+                run += [f'{x(t):.1f},{y(b):.1f}', f'{x(t + bucket):.1f},{y(b):.1f}']
+            elif run:
+                out.append(f'<polyline points="{" ".join(run)}" fill="none" stroke="#2a7" stroke-dasharray="5,3"/>')
+                run = []
         if s["points"]:
-            pts = " ".join(f'{x(t):.1f},{y(v):.1f}' for t, v in s["points"])
+            pts = " ".join(f'{x(t):.1f},{y(v):.1f}' for t, v, _ in s["points"])
             out.append(f'<polyline points="{pts}" fill="none" stroke="#1f5fb4" stroke-width="1"/>')
-            for t, v in s["points"]:
-                if v > s["bound"]:
+            for t, v, b in s["points"]:
+                if b is None:
+                    out.append(f'<circle cx="{x(t):.1f}" cy="{y(v):.1f}" r="1.2" fill="#999"/>')
+                elif v > b:
                     out.append(f'<circle cx="{x(t):.1f}" cy="{y(v):.1f}" r="1.6" fill="#d22"/>')
         for t, colour in ((crash, "#d22"), (stale, "#e90")):
             if t:
@@ -97,7 +142,11 @@ def main():
     for k in range(6):
         t = t_end * k / 5
         out.append(f'<text x="{x(t):.1f}" y="{base}" text-anchor="middle" fill="#555">{t * 1e3 / hz:.1f} ms</text>')
-    legend = '<tspan fill="#1f5fb4">worst age</tspan>, <tspan fill="#d22">above the bound</tspan>'
+    legend = ('<tspan fill="#1f5fb4">worst age</tspan>, <tspan fill="#2a7">- - bound in force</tspan>, '
+              '<tspan fill="#d22">above it</tspan>')
+    if bands:
+        legend += (', <tspan fill="#999">no bound (a mode without the channel, or settling after a switch)</tspan>, '
+                   '<tspan fill="#73c">| mode switch</tspan> (bands: ' + ", ".join(shades) + ")")
     if crash:
         legend += ', <tspan fill="#d22">| crash</tspan>'
     if stale:

@@ -54,6 +54,20 @@
                                 the cycles field: abandoned summed)           */
 #define MOBOT_EV_CLOCK   9u  /* the global-time estimate alb_clock_now() (the
                                 id field: alb_clock_state)                    */
+#define MOBOT_EV_MODE   10u  /* a New Mode value (the id field: the mode; ARG:
+                                the time its first cycle began)               */
+
+/* Schedule modes (a description with the modes cruise and dock,
+ * sim/mobot3_modes.toml): navigation asks for dock after about
+ * MOBOT_CRUISE_CLOCKS in cruise and for cruise after about MOBOT_DOCK_CLOCKS
+ * in dock (controller clocks from the mode's start, as Mode publishes it;
+ * each stay drawn up to MOBOT_MODE_SPREAD_CLOCKS longer, so the requests fall
+ * at varied places of the cycle), and asks again if the mode has not changed
+ * MOBOT_MODE_RETRY_CLOCKS after a request. */
+#define MOBOT_CRUISE_CLOCKS     300000u  /* 6 ms */
+#define MOBOT_DOCK_CLOCKS       200000u  /* 4 ms */
+#define MOBOT_MODE_SPREAD_CLOCKS 131072u /* 2.6 ms, a power of two */
+#define MOBOT_MODE_RETRY_CLOCKS  20000u  /* 400 us: far above a switch's latency */
 
 #define MOBOT_CODE(chk, id, seq) ((uint32_t)(chk) | ((uint32_t)(id) << 4) | ((uint32_t)(seq) << 12))
 

@@ -19,6 +19,15 @@
  * two (status STALE) means the radar stopped: navigation reports
  * MOBOT_EV_STALE (and MOBOT_EV_FRESH when fresh maps come back) and keeps
  * driving on the last one.  Before the first New map the status is NEVER.
+ *
+ * Schedule modes: built against a description with the modes cruise and dock
+ * (ALB_MODE_DOCK defined, sim/mobot3_modes.toml), navigation also imports
+ * Mode (reporting every New one as MOBOT_EV_MODE) and exports ModeRequest:
+ * dock after a stay in cruise, cruise after a stay in dock (mobot_check.h:
+ * MOBOT_CRUISE_CLOCKS, MOBOT_DOCK_CLOCKS, each plus a pseudo-random part),
+ * again after MOBOT_MODE_RETRY_CLOCKS if the mode did not change.  In
+ * dock the controller carries no RadarMap and no Status: the map goes STALE
+ * and comes back FRESH in cruise, as after a radar crash.
  */
 #include "albatross.h"
 #include "navigation.h"
@@ -49,6 +58,10 @@ int main(void)
     alb_sample_t smp;
     uint32_t seq = 0u, code, reported = 0u, stale = 0u, now;
     int r;
+#ifdef ALB_MODE_DOCK
+    static Mode_msg md;            /* the running mode (the RAM image's: cruise, since 0) */
+    uint32_t want = ALB_MODE_CRUISE, asked_at = 0u, asks = 0u, switches = 0u, stay = MOBOT_CRUISE_CLOCKS;
+#endif
 
 #ifdef MOBOT_COLD_START
     r = alb_navigation_init_all(BOARD_DPRAM_BASE);     /* a zeroed RAM, no image */
@@ -86,6 +99,26 @@ int main(void)
             return (int)MOBOT_CODE(1, ALB_STATUS_ID, 0u);
         if (r == ALB_NEW)
             nav_status_event(&st.value);
+#ifdef ALB_MODE_DOCK
+        r = mobot_import(&alb_ch_Mode, ALB_MODE_ID, &md, &md.taken_at);
+        if (r != ALB_NEW && r != ALB_OLD)
+            return (int)MOBOT_CODE(1, ALB_MODE_ID, 0u);
+        if (r == ALB_NEW) {
+            mobot_event(MOBOT_EV_MODE, md.value.mode, 0u, md.value.since);
+            stay = (md.value.mode == ALB_MODE_DOCK ? MOBOT_DOCK_CLOCKS : MOBOT_CRUISE_CLOCKS) +
+                   (mobot_mix(++switches) & (MOBOT_MODE_SPREAD_CLOCKS - 1u));
+        }
+        /* signed: now (read before these Imports) may be older than since */
+        if (want == md.value.mode && (int32_t)(now - md.value.since) >= (int32_t)stay)
+            want = md.value.mode == ALB_MODE_DOCK ? ALB_MODE_CRUISE : ALB_MODE_DOCK;
+        if (want != md.value.mode && (asks == 0u || (int32_t)(now - asked_at) >= (int32_t)MOBOT_MODE_RETRY_CLOCKS)) {
+            if (mobot_export(&alb_ch_ModeRequest, ALB_MODEREQUEST_ID, &want, ++asks) != ALB_OK)
+                return (int)MOBOT_CODE(7, ALB_MODEREQUEST_ID, asks);
+            asked_at = now;
+        } else if (want == md.value.mode) {
+            asks = 0u;
+        }
+#endif
         motor_make(&cmd, ++seq);
         if (mobot_export(&alb_ch_MotorCmd, ALB_MOTORCMD_ID, &cmd, seq) != ALB_OK)
             return (int)MOBOT_CODE(7, ALB_MOTORCMD_ID, seq);

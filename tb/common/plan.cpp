@@ -52,6 +52,24 @@ bool Plan::load(const std::string &path, std::string &error)
                 if (x.id == id) c = &x;
             ok = ok && c && index == static_cast<int>(c->dests.size());
             if (ok) c->dests.push_back(d);
+        } else if (what == "mode") {
+            int index = -1;
+            PlanMode m;
+            ok = static_cast<bool>(s >> index >> m.name >> m.cycle >> m.switch_latency) &&
+                 index == static_cast<int>(modes.size()) && m.cycle > 0;
+            if (ok) modes.push_back(m);
+        } else if (what == "mode_request") {
+            ok = static_cast<bool>(s >> mode_request) && mode_request >= 0;
+        } else if (what == "mode_channel") {
+            int index = -1, id = -1;
+            uint64_t period = 0, bound = 0;
+            ok = static_cast<bool>(s >> index >> id >> period >> bound) && index >= 0 &&
+                 index < static_cast<int>(modes.size()) && id >= 0 && id < 64 && bound > 0;
+            if (ok) {
+                std::vector<uint64_t> &b = modes[index].bound;
+                if (b.size() <= static_cast<size_t>(id)) b.resize(id + 1, 0);
+                b[id] = bound;
+            }
         } else {
             ok = false;
         }

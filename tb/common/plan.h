@@ -9,6 +9,10 @@
 //   channel <id> <name> <copy|time|status> <size> <words> <src_board> <src_base>
 //           <period> <latency> <latency_with_retries> <sync> <slots> [<four_slot>]
 //   dest <id> <index> <board> <base>
+//   mode <index> <name> <cycle_clocks> <switch_latency>    (a description with modes)
+//   mode_request <id>                         the channel whose values ask for a mode
+//   mode_channel <mode> <id> <period> <bound_with_retries> a channel the mode carries: its
+//                                             guaranteed period and latency (copy) or age bound
 //
 // Sizes and bases in bytes, times in controller clocks; src_board is -1 for
 // channels the controller produces.
@@ -43,6 +47,14 @@ struct PlanChannel {
     uint32_t taken_at_offset() const { return alb_contract::taken_at_offset(words); }
 };
 
+// One schedule mode (docs/compiler.md "Modes"); index 0 is the start-up mode.
+struct PlanMode {
+    std::string name;
+    uint64_t cycle = 0, switch_latency = 0;  // its cycle; worst request -> first cycle of the next
+    std::vector<uint64_t> bound;             // by channel id: latency/age bound with retries, 0 = absent
+    bool carries(int id) const { return id >= 0 && id < int(bound.size()) && bound[id] != 0; }
+};
+
 struct Plan {
     int boards = 0, n_chan = 0;
     uint64_t cycle = 0;
@@ -51,6 +63,8 @@ struct Plan {
     double clock_hz = 50e6;                // controller clock (from the description)
     std::vector<std::string> board_names;  // by index
     std::vector<PlanChannel> channels;
+    std::vector<PlanMode> modes;           // empty: one schedule, no modes
+    int mode_request = -1;                 // the mode_request channel's id (-1: none)
 
     // Reads tb_plan.txt; on error returns false with a message naming the line.
     bool load(const std::string &path, std::string &error);

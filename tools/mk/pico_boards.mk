@@ -28,7 +28,7 @@ PB_BOARDS   := radar odometry navigation motor
 PB_CYCLES   ?= 1500000
 PB_RTL      := sim/pico_boards.v tb/common/bus_fault_injector.v $(CORE_soc_system)
 PB_VFLAGS   := -Wall --timescale 1ns/1ps $(VLIB) --top-module pico_boards tb/pico/picorv32.vlt
-PB_SRC      := sim/mobot_sim.cpp sim/mobot_sim_options.cpp sim/mobot_sim_ages.cpp sim/mobot_sim_clock.cpp \
+PB_SRC      := sim/mobot_sim.cpp sim/mobot_sim_options.cpp sim/mobot_sim_ages.cpp sim/mobot_sim_clock.cpp sim/mobot_sim_modes.cpp \
                sim/mobot_sim_report.cpp tb/common/plan.cpp
 PB_HDR      := sim/mobot_sim.h tb/common/fault_model.h tb/common/report.h tb/common/plan.h tb/common/albatross_contract.h
 
@@ -140,18 +140,32 @@ test-$(call neg_field,$(1),1): $(PB_BIN) $(PB_FW) $(PB_SCHED)/tb_plan.txt
 endef
 $(foreach s,$(PB_SCENARIOS),$(eval $(call pb_scenario,$(s))))
 
-# The robot on the image of its two modes (build/schedule/mobot3-modes): its
-# firmware asks for no switch, so the run stays in the start-up mode, cruise,
-# the robot as it is, and every check of pico-boards holds; the firmware is
-# built against that plan.
+# The robot on the image of its two modes (build/schedule/mobot3-modes,
+# cruise and dock): navigation asks for dock and back (its firmware built
+# against that plan), every check of pico-boards holds with each age judged
+# by the bound of the mode in force, RadarMap goes stale in dock, and check
+# "mode" wants at least three switches, each within the compiler's
+# switch_latency and published as Mode (sim/mobot_sim_modes.cpp).
+# pico-boards-modes-faults does it at 5 % faults (the age and latency checks
+# are off under faults, as in pico-boards-faults); the negatives judge the
+# same run against half the compiler's switch latency (check mode must fail)
+# and half the age bounds in force (check age must fail).
 PB_MODES := $(BUILD)/schedule/mobot3-modes
-TESTS += pico-boards-modes
-.PHONY: test-pico-boards-modes
-test-pico-boards-modes: $(PB_BIN) $(foreach b,$(PB_BOARDS),$(PB_DIR)/mobot3-modes/fw/$(b).hex) $(PB_MODES)/tb_plan.txt
-	@tools/run_test.sh pico-boards-modes $(PB_BIN) \
+PB_MODES_SCENARIOS := \
+  pico-boards-modes:--min-switches,3 \
+  pico-boards-modes-faults:--min-switches,3,--fault-rate,0.05 \
+  pico-boards-modes-negative-latency:--min-switches,3,--switch-scale,0.5,--expect-caught-by,mode \
+  pico-boards-modes-negative-age:--min-switches,3,--age-scale,0.5,--expect-caught-by,age
+define pb_modes_scenario
+TESTS += $(call neg_field,$(1),1)
+.PHONY: test-$(call neg_field,$(1),1)
+test-$(call neg_field,$(1),1): $(PB_BIN) $(foreach b,$(PB_BOARDS),$(PB_DIR)/mobot3-modes/fw/$(b).hex) $(PB_MODES)/tb_plan.txt
+	@tools/run_test.sh $(call neg_field,$(1),1) $(PB_BIN) \
 	    $(call pb_args,$(PB_MODES),$(PB_DIR)/mobot3-modes/fw,$(PB_DIR)/mobot3-modes/fw/radar.hex,$(PB_DIR)/mobot3-modes/fw/navigation.hex) \
-	    --cycles $(PB_CYCLES) --seed $(SEED) --stall 2048 --require-done --label pico-boards-modes \
-	    --report $(REPORTS)/pico_boards_modes.json
+	    --cycles $(PB_CYCLES) --seed $(SEED) --stall 2048 --require-done --label $(call neg_field,$(1),1) \
+	    $(subst $(comma), ,$(call neg_field,$(1),2)) --report $(REPORTS)/$(subst -,_,$(call neg_field,$(1),1)).json
+endef
+$(foreach s,$(PB_MODES_SCENARIOS),$(eval $(call pb_modes_scenario,$(s))))
 
 # Firmware mutants (sim/mutants/NAME.sed): NAME:BOARD:FILE, where
 # FILE (sim/firmware/mobot_<board>.c, sim/firmware/mobot_check.h or

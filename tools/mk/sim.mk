@@ -14,14 +14,20 @@
 # controller's time; DRIFT makes board clocks drift (mobot_sim --drift-ppm).
 # SIM_DESC must describe the boards radar, odometry, navigation and motor and
 # the channels of sim/mobot3.toml (the firmware uses them), for
-# example sim/mobot3_possync.toml.
+# example sim/mobot3.toml (one schedule) or sim/mobot3_possync.toml.  The
+# default has the modes cruise and dock: the report lists every switch with
+# its latency against the compiler's, and ages.svg shows the modes as bands.
 
 SIM_DIR      := $(BUILD)/sim
 ifneq ($(filter command line environment,$(origin SIM_DESC)),)
 override SIM_DESC := $(call caller_path,$(SIM_DESC))
 MAKEOVERRIDES += SIM_DESC=$(SIM_DESC)
 endif
-SIM_DESC     ?= sim/mobot3.toml
+# The default: the robot with its two schedule modes (sim/mobot3.toml and
+# sim/mobot3_modes.toml, joined by tools/mk/compiler.mk): navigation asks for
+# dock and back while it runs (sim/firmware/mobot_navigation.c).
+SIM_MODES_DESC := $(BUILD)/schedule/mobot3-modes/mobot3-modes.toml
+SIM_DESC     ?= $(SIM_MODES_DESC)
 SIM_NAME     := $(basename $(notdir $(SIM_DESC)))
 SIM_SCHED    := $(BUILD)/schedule/$(SIM_NAME)
 SIM_FWDIR    := $(PB_DIR)/$(SIM_NAME)/fw-clock
@@ -39,8 +45,10 @@ SIM_BIN      := $(PB_DIR)/$(if $(filter 1,$(TRACE)),obj-trace,obj)/Vpico_boards
 # A description outside sim/ and compiler/examples/ (those have a pattern rule).
 ifeq ($(call example_desc,$(SIM_DESC)),)
 ifneq ($(abspath $(SIM_DESC)),$(abspath $(SCHEDULE_DESC)))
+ifneq ($(abspath $(SIM_DESC)),$(abspath $(SIM_MODES_DESC)))
 $(SIM_SCHED)/rom.hex: $(SIM_DESC) $(SCHEDULE_SRC)
 	$(SCHEDULE) $(SIM_DESC) -o $(@D)
+endif
 endif
 endif
 
