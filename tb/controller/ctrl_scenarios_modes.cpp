@@ -15,7 +15,9 @@
 // {0, the first cycle's start} in mode 0 and {1, the switch's boundary} in
 // mode 1; a value not published again is not New twice in the mode's later
 // cycles (the channel keeps its state); a request back to mode 0 switches
-// back; no ROM error.
+// back, and channel 0's value, delivered before the first switch and not
+// published since, is Old there with its taken_at (its state kept over both
+// switches), until a new value arrives New; no ROM error.
 #include "ctrl_bench.h"
 
 namespace {
@@ -130,14 +132,31 @@ void scenario_modes() {
     CHECK_EQ(G_DATA, "modes: STATUS corrupt count of the request channel (the rejected request)", 1,
              got[2 + 2 * REQ_CH] & 0xFFFF);
 
-    // Back to mode 0.
+    // Back to mode 0.  Channel 0 still holds value(1), delivered in cycle 1
+    // before the switch to mode 1 and not published since: its state is kept
+    // over both switches, so back in mode 0 it is Old, with the same taken_at.
+    isnew = u.cons.import(s, got);
+    check(G_DATA, isnew && got[0] == value(1)[0],
+          "modes: channel 0's value(1), delivered in mode 0 before the switch, is New once (word 0 0x%08x)", got[0]);
+    const uint32_t taken1 = got[W_COPY];
     req.publish(s, {0});
-    u.prod.publish(s, value(3));
     const uint64_t now = s.now;
     s.run_until(now + 3 * H1_1 + 2 * H1_0);
+    isnew = mode.import(s, got);
+    check(G_DATA, isnew && got[0] == 0, "modes: a request for mode 0 switches back: expected MODE New {0, ..}, got %s{%u, %u}",
+          isnew ? "New " : "Old ", got[0], got[1]);
+    isnew = u.cons.import(s, got);
+    check(G_DATA, !isnew && got[W_COPY] == taken1,
+          "modes: channel 0's value, unchanged over the switches to mode 1 and back, is Old with taken_at %u: got "
+          "%s with taken_at %u (a channel's state forgotten at a switch)", taken1, isnew ? "New" : "Old", got[W_COPY]);
+    u.prod.publish(s, value(3));
+    const uint64_t later = s.now;
+    s.run_until(later + 2 * H1_0);
     bool back = false;
-    for (const Attempt &a : s.attempts(now, s.now))
+    for (const Attempt &a : s.attempts(later, s.now))
         if ((a.adr >> AW) == 1 && (a.adr & AMASK) >= DST_BASE && (a.adr & AMASK) < DST_BASE + DSTW) back = true;
-    check(G_DATA, back, "modes: a request for mode 0 switches back (channel 0's COPY runs again)");
+    isnew = u.cons.import(s, got);
+    check(G_DATA, back && isnew && got[0] == value(3)[0],
+          "modes: back in mode 0, channel 0's COPY runs again: its new value(3) arrives New");
     CHECK_EQ(G_ROM, "modes: rom_errors_o", 0, s.top->rom_errors_o);
 }

@@ -70,7 +70,7 @@ $(CTRL_DIR)/mutant-$(1)/obj/Vtb_system: $(CTRL_SRC) $(CTRL_DIR)/mutant-$(1)/src/
 	    --Mdir $(CTRL_DIR)/mutant-$(1)/obj -y $(CTRL_DIR)/mutant-$(1)/src $(VLIB) tb/system/tb_system.v $(abspath $(CTRL_CPP)) \
 	    > $(CTRL_DIR)/mutant-$(1)/build.log 2>&1 || { cat $(CTRL_DIR)/mutant-$(1)/build.log; exit 1; }
 endef
-$(foreach m,stale_need cold_zero_corrupt no_request forget_state,$(eval $(call ctrl_mutant_model,$(m))))
+$(foreach m,stale_need cold_zero_corrupt no_request forget_state forget_switch,$(eval $(call ctrl_mutant_model,$(m))))
 CTRL_MUT_DIR := $(CTRL_DIR)/mutant-stale_need
 
 TESTS += controller-abandon controller-negative-stale_need
@@ -131,32 +131,33 @@ test-controller-negative-cold: $(CTRL_NEG_COLD)/obj/Vtb_system
 	        tail -n 5 $(CTRL_NEG_COLD)/run.log; exit 1; fi'
 
 # Schedule modes (docs/controller.md "Modes"): scenario modes alone, and its
-# negative: a transfer that never offers a REQUEST entry's value as a mode
-# request (tb/mutants/controller/no_request.sed) fails it.
-CTRL_NEG_REQ := $(CTRL_DIR)/mutant-no_request
-TESTS += controller-modes controller-negative-no_request
-.PHONY: test-controller-modes test-controller-negative-no_request
+# negatives, each a controller mutant (tb/mutants/controller/NAME.sed) that
+# must fail it with a named check:
+#   no_request     a transfer that never offers a REQUEST entry's value as a
+#                  mode request: mode 1 never runs
+#   forget_state   a channel's state forgotten outside mode 0: channel 4's
+#                  value, unchanged, is New twice within mode 1
+#   forget_switch  every channel's state forgotten in a mode's first 100
+#                  clocks: channel 0's value, unchanged over the switches to
+#                  mode 1 and back, is New twice
+TESTS += controller-modes
+.PHONY: test-controller-modes
 test-controller-modes: $(CTRL_BIN)
 	@tools/run_test.sh controller-modes $(CTRL_BIN) --dir=$(CTRL_DIR)/modes --scenario=modes
-
-test-controller-negative-no_request: $(CTRL_NEG_REQ)/obj/Vtb_system
-	@tools/run_test.sh controller-negative-no_request bash -c '$< --dir=$(CTRL_NEG_REQ)/run --scenario=modes \
-	    > $(CTRL_NEG_REQ)/run.log 2>&1; rc=$$?; \
-	    grep -m 3 "^FAIL" $(CTRL_NEG_REQ)/run.log | sed "s/^FAIL/  caught:/"; \
-	    if [ $$rc -ge 64 ] && grep -q "^FAIL modes: cycle 2 (mode 1) carries channel 4" $(CTRL_NEG_REQ)/run.log; then \
-	        echo "the controller that drops mode requests fails scenario modes, as it must (exit $$rc)"; \
-	    else echo "expected scenario modes to fail at the switch, came exit $$rc"; tail -n 5 $(CTRL_NEG_REQ)/run.log; exit 1; fi'
-
-# A controller that forgets a channel's state outside mode 0
-# (tb/mutants/controller/forget_state.sed) fails scenario modes: the value
-# of channel 4, unchanged, is New twice.
-CTRL_NEG_FORGET := $(CTRL_DIR)/mutant-forget_state
-TESTS += controller-negative-forget_state
-.PHONY: test-controller-negative-forget_state
-test-controller-negative-forget_state: $(CTRL_NEG_FORGET)/obj/Vtb_system
-	@tools/run_test.sh controller-negative-forget_state bash -c '$< --dir=$(CTRL_NEG_FORGET)/run --scenario=modes \
-	    > $(CTRL_NEG_FORGET)/run.log 2>&1; rc=$$?; \
-	    grep -m 3 "^FAIL" $(CTRL_NEG_FORGET)/run.log | sed "s/^FAIL/  caught:/"; \
-	    if [ $$rc -ge 64 ] && grep -q "^FAIL modes: channel 4.s value, unchanged over two more cycles" $(CTRL_NEG_FORGET)/run.log; then \
-	        echo "the controller that forgets a channel'"'"'s state fails scenario modes, as it must (exit $$rc)"; \
-	    else echo "expected the value New twice, came exit $$rc"; tail -n 5 $(CTRL_NEG_FORGET)/run.log; exit 1; fi'
+# $(1) the mutant, $(2) the start of the FAIL line it must produce (a grep
+# pattern, no comma), $(3) what the mutant is (no quote).
+define ctrl_modes_negative
+TESTS += controller-negative-$(1)
+.PHONY: test-controller-negative-$(1)
+test-controller-negative-$(1): $(CTRL_DIR)/mutant-$(1)/obj/Vtb_system
+	@tools/run_test.sh controller-negative-$(1) bash -c '$$< --dir=$(CTRL_DIR)/mutant-$(1)/run --scenario=modes \
+	    > $(CTRL_DIR)/mutant-$(1)/run.log 2>&1; rc=$$$$?; \
+	    grep -m 3 "^FAIL" $(CTRL_DIR)/mutant-$(1)/run.log | sed "s/^FAIL/  caught:/"; \
+	    if [ $$$$rc -ge 64 ] && grep -q "^FAIL modes: $(2)" $(CTRL_DIR)/mutant-$(1)/run.log; then \
+	        echo "$(3) fails scenario modes, as it must (exit $$$$rc)"; \
+	    else echo "expected scenario modes to fail with: $(2), came exit $$$$rc"; \
+	        tail -n 5 $(CTRL_DIR)/mutant-$(1)/run.log; exit 1; fi'
+endef
+$(eval $(call ctrl_modes_negative,no_request,cycle 2 (mode 1) carries channel 4,the controller that drops mode requests))
+$(eval $(call ctrl_modes_negative,forget_state,channel 4.s value. unchanged over two more cycles,the controller that forgets the state of a channel outside mode 0))
+$(eval $(call ctrl_modes_negative,forget_switch,channel 0.s value. unchanged over the switches,the controller that forgets the state of every channel at a switch))
