@@ -23,13 +23,14 @@ std::string series_report(const std::vector<Series> &series, const Plan &plan)
         std::printf("  %-11s %-11s %7llu %7llu %9llu %9.0f %9llu %9llu %6.3f %11.0f\n", s.ch->name.c_str(),
                     plan.board_names[s.board].c_str(), (unsigned long long)s.news, (unsigned long long)s.olds,
                     (unsigned long long)s.age.min, s.age.mean(), (unsigned long long)s.age.max,
-                    (unsigned long long)s.bound, s.bound ? double(s.age.max) / double(s.bound) : 0.0,
+                    (unsigned long long)s.bound, double(s.worst_pm) / 1000.0,
                     s.import_cycles.mean());
         JsonReport e;
         e.str("channel", s.ch->name).str("kind", s.ch->kind).str("consumer", plan.board_names[s.board])
          .num("new", double(s.news)).num("old", double(s.olds)).num("bound", double(s.bound))
          .num("latency_bound", double(s.ch->latency_retry)).num("period", double(s.ch->period))
-         .num("over_bound_buckets", double(s.over_bound)).num("new_after_crash", double(s.news_after_crash)).raw("age", s.age.json())
+         .num("over_bound_samples", double(s.over_bound))
+         .num("worst_ratio", double(s.worst_pm) / 1000.0).num("unjudged_samples", double(s.unjudged)).num("new_after_crash", double(s.news_after_crash)).raw("age", s.age.json())
          .raw("import_cycles", s.import_cycles.json()).raw("termination", termination_json(s.term));
         append(js, e);
     }

@@ -249,13 +249,15 @@ def robot_scenarios():
     rows = []
     for name, what in (("pico_boards", "fault-free"), ("pico_boards_faults", "bus faults"),
                        ("pico_boards_crash", "radar crashes inside an Export"),
-                       ("serv_boards", "motor board on SERV")):
+                       ("serv_boards", "motor board on SERV"),
+                       ("pico_boards_modes", "two modes, navigation switches"),
+                       ("pico_boards_modes_faults", "two modes, switching, bus faults")):
         r = load(name + ".json")
         if not r:
             kept = old_rows(what)
             rows += kept or [[what, f"_not measured yet: `make test` writes `{REPORTS}/{name}.json`_"] + [""] * 5]
             continue
-        worst = max((e["age"]["max"] / e["bound"] for e in r["series"]
+        worst = max((e.get("worst_ratio", e["age"]["max"] / (e["bound"] or 1)) for e in r["series"]
                      if e["bound"] and not (r.get("crash_board") and e["channel"] == "RadarMap")), default=0)
         stale = (f"after {n(r['first_stale_cycle'] - r['crash_cycle'])} clocks" if r.get("crash_board")
                  and r["stale_events"] else n(r["stale_events"]))

@@ -22,7 +22,7 @@ DOCS_DIR      := $(BUILD)/docs
 DOCS_PICTURES := docs/img/timeline.svg $(BUILD)/schedule/mobot3/timeline.svg \
                  docs/img/ages.svg $(DOCS_DIR)/sim/ages.svg
 # make sim pinned to its defaults, whatever the caller's SEED, FAULT_RATE, ...
-DOCS_SIM_ARGS := SIM_DESC=sim/mobot3.toml SIM_CYCLES=2000000 FAULT_RATE=0 BURST= CRASH= STALL=0 SEED=1 TRACE=0 \
+DOCS_SIM_ARGS := SIM_DESC=$(BUILD)/schedule/mobot3-modes/mobot3-modes.toml SIM_CYCLES=2000000 FAULT_RATE=0 BURST= CRASH= STALL=0 SEED=1 TRACE=0 \
                  SIM_DIR=$(DOCS_DIR)/sim REPORTS=$(DOCS_DIR)/sim
 
 .PHONY: docs-pictures-build docs-pictures test-docs-pictures test-docs-pictures-negative
