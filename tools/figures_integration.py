@@ -234,8 +234,14 @@ def sim_excerpt():
         a = s["age"]
         lines.append("  %-11s %-11s %7d %7d %9d %9.0f %9d %9d %6.3f %11.0f" % (
             s["channel"], s["consumer"], s["new"], s["old"], a["min"], a["mean"], a["max"], s["bound"],
-            a["max"] / s["bound"] if s["bound"] else 0.0, s["import_cycles"]["mean"]))
-    return "\n".join(lines + ["  ...", "```"])
+            s.get("worst_ratio", a["max"] / s["bound"] if s["bound"] else 0.0), s["import_cycles"]["mean"]))
+    lines.append("  ...")
+    if r.get("mode_switches"):
+        lines.append("  modes: %d switches, worst switch latency %d clocks against the bound %d (%.2f); RadarMap "
+                     "stale %d times in a mode without it" % (
+                         len(r["mode_switches"]), r["switch_latency_worst"], r["switch_latency_bound"],
+                         r["switch_latency_worst"] / max(1, r["switch_latency_bound"]), r["stale_in_mode"]))
+    return "\n".join(lines + ["```"])
 
 
 SECTIONS["sim-excerpt"] = sim_excerpt
