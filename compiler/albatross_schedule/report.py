@@ -34,6 +34,7 @@ def build_report(system: System, plan: Plan) -> dict:
         entry = {
             "name": ch.name, "id": ch.id, "kind": ch.kind, "channel_kind": ch.layout, "type": ch.type_name,
             **({"mode_request": True} if ch.request else {}),
+            **({"mode_info": True} if ch.mode_info else {}),
             "size": ch.size, "words": ch.words,
             "producer": ({"board": system.boards[ch.producer], "board_index": ch.producer,
                           "base": ch.src_base, "ram_bytes": src_bytes} if ch.producer is not None else None),
@@ -123,6 +124,7 @@ def build_report(system: System, plan: Plan) -> dict:
             "channel_kind": "three_buffer (the paper's channel) or four_slot (wait-free Import; 4 buffers, "
                             "E0 flag four_slot on every entry)",
             "mode_request": "true on the mode_request channel (the controller reads its value as a mode request)",
+            "mode_info": "true on the mode channel (the controller publishes {running mode, time its first cycle began})",
             "termination": "per consumer: D = shortest time between two publishes to it (slot i+1 start + "
                            "fetch + access*(E-1) - slot i end), T / V = its Import loop (controller clocks); "
                            "three-buffer: unbounded if D <= T, else max_passes = ReadLocked stores per Import = "

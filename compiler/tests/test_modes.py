@@ -137,6 +137,16 @@ class ModePlanTests(unittest.TestCase):
         cls.system, cls.plan, cls.rom, cls.rep = S.compile_system(system_of(TWO_MODES))
         _, cls.plan1, cls.rom1, cls.rep1 = S.compile_system(system_of(""))
 
+    def test_modes_under_a_fault_hypothesis(self):
+        # The mode_request channel has no destination: the fault plan gives it
+        # the default retry budget (it crashed the planner once: no delivery
+        # curve to plan from).
+        system = system_of(TWO_MODES + "\n[faults]\nrate = 0.2\nprobability = 0.999999999\n")
+        _, plan, rom, rep = S.compile_system(system)
+        self.assertEqual([m["name"] for m in rep["modes"]], ["cruise", "dock"])
+        req = [c for c in rep["channels"] if c.get("mode_request")]
+        self.assertEqual(len(req), 1, "the report marks the mode_request channel")
+
     def test_every_mode_planned_and_reported(self):
         modes = {m["name"]: m for m in self.rep["modes"]}
         self.assertEqual(list(modes), ["cruise", "dock"])

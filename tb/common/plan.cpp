@@ -60,15 +60,18 @@ bool Plan::load(const std::string &path, std::string &error)
             if (ok) modes.push_back(m);
         } else if (what == "mode_request") {
             ok = static_cast<bool>(s >> mode_request) && mode_request >= 0;
+        } else if (what == "mode_info") {
+            ok = static_cast<bool>(s >> mode_info) && mode_info >= 0;
         } else if (what == "mode_channel") {
             int index = -1, id = -1;
-            uint64_t period = 0, bound = 0;
-            ok = static_cast<bool>(s >> index >> id >> period >> bound) && index >= 0 &&
-                 index < static_cast<int>(modes.size()) && id >= 0 && id < 64 && bound > 0;
+            uint64_t period = 0, bound_ff = 0, bound = 0;
+            ok = static_cast<bool>(s >> index >> id >> period >> bound_ff >> bound) && index >= 0 &&
+                 index < static_cast<int>(modes.size()) && id >= 0 && id < 64 && bound > 0 && bound_ff > 0;
             if (ok) {
-                std::vector<uint64_t> &b = modes[index].bound;
-                if (b.size() <= static_cast<size_t>(id)) b.resize(id + 1, 0);
-                b[id] = bound;
+                PlanMode &m = modes[index];
+                if (m.bound.size() <= static_cast<size_t>(id)) m.bound.resize(id + 1, 0), m.bound_ff.resize(id + 1, 0);
+                m.bound[id] = bound;
+                m.bound_ff[id] = bound_ff;
             }
         } else {
             ok = false;

@@ -11,8 +11,10 @@
 //   dest <id> <index> <board> <base>
 //   mode <index> <name> <cycle_clocks> <switch_latency>    (a description with modes)
 //   mode_request <id>                         the channel whose values ask for a mode
-//   mode_channel <mode> <id> <period> <bound_with_retries> a channel the mode carries: its
-//                                             guaranteed period and latency (copy) or age bound
+//   mode_info <id>                            the channel the controller publishes {mode, since} on
+//   mode_channel <mode> <id> <period> <bound> <bound_with_retries>   a channel the mode
+//                                             carries: its guaranteed period and latency (copy)
+//                                             or age bound, fault-free and with retries
 //
 // Sizes and bases in bytes, times in controller clocks; src_board is -1 for
 // channels the controller produces.
@@ -52,6 +54,7 @@ struct PlanMode {
     std::string name;
     uint64_t cycle = 0, switch_latency = 0;  // its cycle; worst request -> first cycle of the next
     std::vector<uint64_t> bound;             // by channel id: latency/age bound with retries, 0 = absent
+    std::vector<uint64_t> bound_ff;          // ... fault-free
     bool carries(int id) const { return id >= 0 && id < int(bound.size()) && bound[id] != 0; }
 };
 
@@ -65,6 +68,7 @@ struct Plan {
     std::vector<PlanChannel> channels;
     std::vector<PlanMode> modes;           // empty: one schedule, no modes
     int mode_request = -1;                 // the mode_request channel's id (-1: none)
+    int mode_info = -1;                    // the mode channel's id: {mode, since} (-1: none)
 
     // Reads tb_plan.txt; on error returns false with a message naming the line.
     bool load(const std::string &path, std::string &error);

@@ -34,12 +34,13 @@ def main():
             out.append(f"dest {c['id']} {i} {d['board_index']} {d['base']}")
     ids = {c["name"]: c["id"] for c in r["channels"]}
     out += [f"mode_request {c['id']}" for c in r["channels"] if c.get("mode_request")]
+    out += [f"mode_info {c['id']}" for c in r["channels"] if c.get("mode_info")]
     for k, m in enumerate(r.get("modes") or []):
         out.append(f"mode {k} {m['name']} {m['cycle']['clocks']} {m['switch_latency']['clocks']}")
         for c in m["channels"]:
             bound = c["latency"] if c.get("age_bound") is None else c["age_bound"]
             out.append(f"mode_channel {k} {ids[c['name']]} {c['guaranteed_period']['clocks']} "
-                       f"{bound['with_retries']['clocks']}")
+                       f"{bound['fault_free']['clocks']} {bound['with_retries']['clocks']}")
     with open(sys.argv[2], "w") as f:
         f.write("\n".join(out) + "\n")
 

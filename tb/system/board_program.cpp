@@ -5,6 +5,7 @@
 #include <cstring>
 #include <fstream>
 #include "alb_port.h"   // the faulty producer writes a control byte itself
+#include "system_modes.h"
 
 namespace tbsys {
 
@@ -72,9 +73,16 @@ void board_program(SimCpu &cpu)
                 if (now() < r.next_due) continue;
                 ++r.seq;
                 channel_value(c.id, r.seq, buf, c.size);
+                const bool request = g_modes && g_modes->active() && c.id == g_plan->mode_request;
+                if (request) {   // a mode request: the mode's number (system_modes.h)
+                    const uint32_t mode = g_modes->pick(b.rng);
+                    std::memcpy(buf, &mode, sizeof mode);
+                    g_modes->requested(mode);
+                }
                 int rc = alb_export(&r.ch, buf);
                 if (rc == ALB_OK) g_chk->exported(r.chan, r.seq);
-                r.next_due = now() + r.interval_lo + b.rng() % (r.interval_hi - r.interval_lo + 1);
+                r.next_due = now() + (request ? g_modes->interval(b.rng)
+                                              : r.interval_lo + b.rng() % (r.interval_hi - r.interval_lo + 1));
             } else {
                 uint64_t begin = now();
                 // A four-slot value is aged from the Import's start (its first
@@ -97,6 +105,11 @@ void board_program(SimCpu &cpu)
                     g_status.abandoned = std::max(g_status.abandoned, ab);
                     g_status.corrupt = std::max(g_status.corrupt, co);
                     g_status.rom_errors = std::max<uint64_t>(g_status.rom_errors, w[0] >> 16);
+                }
+                if (g_modes && c.id == g_plan->mode_info && rc == ALB_NEW) {
+                    uint32_t w[2];
+                    std::memcpy(w, buf, sizeof w);
+                    g_modes->mode_imported(b.board, w[0], w[1]);
                 }
                 if (r.time_channel && rc == ALB_NEW) {
                     std::memcpy(&b.global_time, buf, 4);

@@ -385,15 +385,19 @@ void SystemChecker::measure(Instance &in, const DestPub &p, const DestPub &prev,
         // Latency of every source value this publication reaches.
         for (; d.pending <= p.seq && d.pending < s.publish_cycle.size(); ++d.pending) {
             if (s.publish_cycle[d.pending] < latency_from_) continue;
-            uint64_t lat = cycle - s.publish_cycle[d.pending];
+            uint64_t lat = cycle - s.publish_cycle[d.pending], bound = c.latency, bound_retry = c.latency_retry;
+            if (bound_fn_ && !bound_fn_(in.chan, s.publish_cycle[d.pending], cycle, bound, bound_retry)) {
+                ++st.across_switch;
+                continue;
+            }
             if (ages_)
                 std::fprintf(ages_, "%s,%d,%llu,%llu\n", c.name.c_str(), in.board, static_cast<unsigned long long>(cycle),
                              static_cast<unsigned long long>(lat));
             st.latency_max = std::max(st.latency_max, lat);
             st.latency_sum += lat;
             ++st.latency_n;
-            if (lat > c.latency_retry) ++st.over_retry_bound;
-            if (lat > c.latency) {
+            if (lat > bound_retry) ++st.over_retry_bound;
+            if (lat > bound) {
                 ++st.latency_over;
                 if (latency_checked_) {
                     std::snprintf(m, sizeof m, "%s to board %d: value %llu published at cycle %llu arrived at cycle %llu: "
@@ -401,7 +405,7 @@ void SystemChecker::measure(Instance &in, const DestPub &p, const DestPub &prev,
                                   c.name.c_str(), in.board, static_cast<unsigned long long>(d.pending),
                                   static_cast<unsigned long long>(s.publish_cycle[d.pending]),
                                   static_cast<unsigned long long>(cycle), static_cast<unsigned long long>(lat),
-                                  static_cast<unsigned long long>(c.latency));
+                                  static_cast<unsigned long long>(bound));
                     violation(LATENCY, m);
                 }
             }
@@ -411,19 +415,24 @@ void SystemChecker::measure(Instance &in, const DestPub &p, const DestPub &prev,
         // this one replaced it.
         const uint64_t last_taken = prev.taken_at + time_offset_;
         uint64_t age = !prev_is_image && last_taken >= latency_from_ ? cycle - last_taken : 0;
+        uint64_t bound = c.latency, bound_retry = c.latency_retry;
+        if (age && bound_fn_ && !bound_fn_(in.chan, last_taken, cycle, bound, bound_retry)) {
+            ++st.across_switch;
+            return;
+        }
         if (ages_ && !prev_is_image && last_taken >= latency_from_)
             std::fprintf(ages_, "%s,%d,%llu,%llu\n", c.name.c_str(), in.board, static_cast<unsigned long long>(cycle),
                          static_cast<unsigned long long>(age));
         st.latency_max = std::max(st.latency_max, age);
         st.latency_sum += age;
         ++st.latency_n;
-        if (age > c.latency_retry) ++st.over_retry_bound;
-        if (age > c.latency) {
+        if (age > bound_retry) ++st.over_retry_bound;
+        if (age > bound) {
             ++st.latency_over;
             if (latency_checked_) {
                 std::snprintf(m, sizeof m, "%s to board %d: published at cycle %llu aged %llu, expected at most %llu",
                               c.name.c_str(), in.board, static_cast<unsigned long long>(cycle),
-                              static_cast<unsigned long long>(age), static_cast<unsigned long long>(c.latency));
+                              static_cast<unsigned long long>(age), static_cast<unsigned long long>(bound));
                 violation(LATENCY, m);
             }
         }

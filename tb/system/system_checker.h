@@ -48,6 +48,7 @@
 #pragma once
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -84,6 +85,12 @@ public:
     void imported(int channel, int dest, int rc, const uint8_t *payload, uint64_t begin, uint64_t end,
                   uint32_t consumer_time);
     void set_latency_is_checked(bool on) { latency_checked_ = on; }
+    // Schedule modes: the bounds (fault-free, with retries) of channel chan for
+    // a value from cycle 'from' (a copy's publication; a time/status value's
+    // take) measured at cycle 'to'; false: not judged (a switch in between).
+    // Without it every value is judged by the plan's bounds.
+    using BoundFn = std::function<bool(int chan, uint64_t from, uint64_t to, uint64_t &bound, uint64_t &bound_retry)>;
+    void set_bound_fn(BoundFn f) { bound_fn_ = std::move(f); }
     // Values published before this cycle are not measured (the controller's
     // first cycle after reset follows its scan of the ROM).
     void set_latency_from(uint64_t cycle) { latency_from_ = cycle; }
@@ -103,6 +110,7 @@ public:
         uint64_t publications = 0, imports = 0, imports_new = 0;
         uint64_t latency_max = 0, latency_sum = 0, latency_n = 0, latency_over = 0;
         uint64_t over_retry_bound = 0;                      // beyond the with-retries bound too
+        uint64_t across_switch = 0;                         // measured across a mode switch: not judged
         uint64_t max_age_seen = 0, last_age_seen = 0;       // by the consumer, via taken_at
         uint64_t max_taken_minus_publish = 0;               // time/position correlation
         uint64_t landed_unanswered = 0;                     // Actual stores performed, answer lost (err or
@@ -176,6 +184,7 @@ private:
     SystemSim &sim_;
     uint64_t time_offset_;             // cycle = controller time + time_offset
     bool latency_checked_ = true;
+    BoundFn bound_fn_;
     uint64_t latency_from_ = ~0ull;
     std::FILE *ages_ = nullptr;
     std::vector<Instance> inst_;

@@ -61,6 +61,7 @@
 #include "system_checker.h"
 #include "system_sim.h"
 #include "board_program.h"
+#include "system_modes.h"
 
 using namespace tbsys;
 
@@ -142,7 +143,16 @@ int main(int argc, char **argv)
         std::fprintf(ages, "channel,board,cycle,age\n");
         chk.set_ages_file(ages);
     }
-    chk.set_latency_is_checked(o.fault_rate == 0 && o.land_actual == 0 && o.dead_board < 0 && o.corrupt_entry < 0 && o.corrupt_channel < 0);
+    const bool fault_free = o.fault_rate == 0 && o.land_actual == 0 && o.dead_board < 0 && o.corrupt_entry < 0 &&
+                            o.corrupt_channel < 0;
+    chk.set_latency_is_checked(fault_free);
+    // Schedule modes: requests at random times, every switch judged (system_modes.h).
+    ModeWatch modes(plan, sim);
+    g_modes = &modes;
+    if (modes.active())
+        chk.set_bound_fn([&modes](int chan, uint64_t from, uint64_t to, uint64_t &b, uint64_t &br) {
+            return modes.bound(chan, from, to, b, br);
+        });
 
     std::mt19937_64 rng(o.seed);
     std::vector<BoardCtx> boards(SystemSim::kBoards);
@@ -166,7 +176,7 @@ int main(int argc, char **argv)
             r.chan = static_cast<int>(i);
             r.dest = static_cast<int>(d);
             r.time_channel = c.kind == "time";
-            r.status_channel = c.kind == "status";
+            r.status_channel = c.kind == "status" && c.id != plan.mode_info;
             boards[c.dests[d].board].roles.push_back(r);
         }
     }
@@ -235,6 +245,7 @@ int main(int argc, char **argv)
                 sim.force_fault(o.land_kind == 13 ? (sim.forced_faults % 2 ? 1u : 3u) : static_cast<unsigned>(o.land_kind));
         }
         unsigned done = sim.tick();
+        modes.tick();
         // One draw per access begun (per clock: the old injector's driving).
         if (sim.fault_drawn || o.fault_per_clock) sim.set_fault(faults.next());
         if (sim.bus_event.done && sim.cycle() >= o.trace_from && sim.cycle() <= o.trace_to) {
@@ -340,8 +351,13 @@ int main(int argc, char **argv)
             failures.push_back("STATUS: the corrupted ROM entry was not counted in rom_errors");
         if (o.corrupt_channel >= 0 && g_status.corrupt == 0)
             failures.push_back("STATUS: the out-of-range Actual was not counted as corrupt");
-        if (o.corrupt_channel < 0 && g_status.corrupt)
+        if (o.corrupt_channel < 0 && g_status.corrupt && !modes.active())   // (modes: rejected requests, below)
             failures.push_back("STATUS: corrupt control bytes counted where none were written");
+    }
+    if (modes.active()) {
+        modes.settle();
+        modes.finish(fault_free, g_status.corrupt, failures);
+        std::printf("  modes: %s\n", modes.json().c_str());
     }
     if (o.corrupt_channel >= 0 && !g_corrupted) failures.push_back("the faulty producer never ran");
     if (o.corrupt_entry >= 0 && sim.rom_errors() == 0)
@@ -487,6 +503,7 @@ int main(int argc, char **argv)
             .num("violations_total", static_cast<double>(chk.total())).raw("violations", viol)
             .num("scenario_failures", static_cast<double>(failures.size())).raw("channels", chans)
             .raw("transfers", transfers)
+            .raw("modes", modes.active() ? modes.json() : "null")
             .num("seconds", sec);
         rep.write(o.report);
     }

@@ -64,7 +64,8 @@ module tb_system #(
     // controller status
     output wire [31:0]                time_o,       // global time
     output wire                       error_o,      // invalid ROM header
-    output wire [15:0]                rom_errors_o  // invalid entries skipped (counter)
+    output wire [15:0]                rom_errors_o, // invalid entries skipped (counter)
+    output wire [3:0]                 mode_o        // the controller's running schedule mode (a probe)
 );
 
     localparam BOARD_BITS = 4;   // board field of a bus address
@@ -154,6 +155,14 @@ module tb_system #(
         .ctl_error_o      (error_o),
         .ctl_rom_errors_o (rom_errors_o)
     );
+
+    // The running mode, read inside the controller (simulation only: the IP
+    // has no port for it); the harness times every switch with it.
+`ifndef SYNTHESIS
+    assign mode_o = u_sys.u_ctrl.mode;
+`else
+    assign mode_o = 4'd0;
+`endif
 
     bus_fault_injector #(
         .NB         (NB),

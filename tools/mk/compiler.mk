@@ -83,6 +83,11 @@ $(BUILD)/schedule/mobot3-modes/rom.hex: sim/mobot3.toml sim/mobot3_modes.toml $(
 	@mkdir -p $(@D)
 	cat sim/mobot3.toml sim/mobot3_modes.toml > $(@D)/mobot3-modes.toml
 	$(SCHEDULE) $(@D)/mobot3-modes.toml -o $(@D) -q
+# ... and planned for 20 % independent faults (the system test at its planned rate).
+$(BUILD)/schedule/mobot3-modes-f20/rom.hex: sim/mobot3.toml sim/mobot3_modes.toml $(SCHEDULE_SRC)
+	@mkdir -p $(@D)
+	cat sim/mobot3.toml sim/mobot3_modes.toml > $(@D)/mobot3-modes.toml
+	$(SCHEDULE) $(@D)/mobot3-modes.toml -o $(@D) -q --faults 0.2
 # Compiled schedules are kept when make reaches them only through another
 # file (tb_plan.txt).  Named by this pattern: a bare .SECONDARY: would cover every
 # file, and make would then take a missing description for a deleted

@@ -10,7 +10,8 @@ SYS_HDR     := $(wildcard tb/system/*.h) $(wildcard tb/common/*.h) tb/common/por
 SYS_CYCLES  ?= 400000
 
 # The harness is compiled once; only system_sim.cpp sees the Verilated model.
-SYS_COMMON  := tb/system/tb_system.cpp tb/system/board_program.cpp tb/system/system_checker.cpp tb/common/plan.cpp \
+SYS_COMMON  := tb/system/tb_system.cpp tb/system/board_program.cpp tb/system/system_checker.cpp tb/system/system_modes.cpp \
+               tb/common/plan.cpp \
                tb/common/sim_cpu.cpp tb/common/ref_ram.cpp tb/common/protocol_checker.cpp
 SYS_OBJS    := $(patsubst %.cpp,$(SYS_DIR)/obj/%.o,$(notdir $(SYS_COMMON))) $(SYS_DIR)/obj/driver.o
 $(SYS_DIR)/obj/%.o: tb/system/%.cpp $(SYS_HDR)
@@ -132,6 +133,26 @@ test-system-faults-30-planned: $(SYS_BIN) $(BUILD)/schedule/mobot3-f30/tb_plan.t
 	@$(call sys_run,faults-30-planned) --plan $(BUILD)/schedule/mobot3-f30 --fault-rate 0.3
 test-system-faults-50-planned: $(SYS_BIN) $(BUILD)/schedule/mobot3-f50p2/tb_plan.txt
 	@$(call sys_run,faults-50-planned) --plan $(BUILD)/schedule/mobot3-f50p2 --fault-rate 0.5
+
+# Schedule modes (tb/system/system_modes.h): the robot with its modes cruise
+# and dock (sim/mobot3_modes.toml); the ModeRequest producer asks for a random
+# mode (1 in 16 an undeclared one) every 2 to 10 cycles.  Every checker
+# holds across every switch; each switch falls on a cycle boundary, follows
+# its request within the compiler's switch_latency (fault-free) and is
+# published as Mode; latencies measured across a switch are counted, not
+# judged.  Fault-free, and at 20 % on the image planned for 20 %.  Negative:
+# a controller whose running mode changes before the boundary
+# (tb/mutants/controller/early_switch.sed).
+SYS_MODES     := $(BUILD)/schedule/mobot3-modes
+SYS_MODES_F20 := $(BUILD)/schedule/mobot3-modes-f20
+TESTS += system-modes system-modes-faults-20-planned system-negative-modes-early
+test-system-modes: $(SYS_BIN) $(SYS_MODES)/tb_plan.txt
+	@$(call sys_run,modes) --plan $(SYS_MODES)
+test-system-modes-faults-20-planned: $(SYS_BIN) $(SYS_MODES_F20)/tb_plan.txt
+	@$(call sys_run,modes-faults-20-planned) --plan $(SYS_MODES_F20) --fault-rate 0.2
+test-system-negative-modes-early: $(SYS_DIR)/mutant-early_switch/tb_system $(SYS_MODES)/tb_plan.txt
+	@tools/run_test.sh system-negative-modes-early $< --plan $(SYS_MODES) --seed $(SEED) --cycles 300000 \
+	    --label system-negative-modes-early --expect-failure "on a cycle boundary" --expect-failure "which names no switch"
 
 # Negative of the rate check: the old injector's driving (the Gilbert chain
 # advanced every clock, not every access) at a nominal 20 % in bursts of 10

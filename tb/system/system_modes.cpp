@@ -1,0 +1,170 @@
+// system_modes.cpp -- see system_modes.h.
+#include "system_modes.h"
+#include <algorithm>
+#include <cstdio>
+extern "C" {
+#include "albatross_layout.h"
+}
+
+namespace tbsys {
+
+ModeWatch *g_modes = nullptr;
+
+namespace {
+std::string name_of(const Plan &plan, int m)
+{
+    return m >= 0 && m < static_cast<int>(plan.modes.size()) ? plan.modes[m].name : "undeclared mode " + std::to_string(m);
+}
+}  // namespace
+
+ModeWatch::ModeWatch(const Plan &plan, SystemSim &sim) : plan_(plan), sim_(sim)
+{
+    for (const PlanMode &m : plan.modes) c_max_ = std::max(c_max_, m.cycle);
+    for (const PlanChannel &c : plan.channels)
+        if (c.id == plan.mode_request) {
+            req_board_ = c.src_board;
+            req_actual_ = c.src_base + ALB_OFF_ACTUAL;
+        }
+    if (active()) last_actual_ = sim_.ref[req_board_].byte(req_actual_);
+}
+
+uint32_t ModeWatch::pick(std::mt19937_64 &rng)
+{
+    const uint32_t n = static_cast<uint32_t>(plan_.modes.size()), r = static_cast<uint32_t>(rng() % 16);
+    return r == 0 ? 15u - static_cast<uint32_t>(rng() % (16 - n)) : r % n;   // 1 in 16: undeclared
+}
+
+uint64_t ModeWatch::interval(std::mt19937_64 &rng) const
+{
+    return 2 * c_max_ + rng() % (8 * c_max_);   // at least two cycles: every request is read
+}
+
+void ModeWatch::tick()
+{
+    if (!active()) return;
+    const uint8_t a = sim_.ref[req_board_].byte(req_actual_);
+    if (a != last_actual_) {   // the producer's Actual store: the request is there
+        last_actual_ = a;
+        stores_.push_back({pending_, sim_.time()});
+        if (pending_ >= plan_.modes.size()) ++undeclared;
+    }
+    const int m = static_cast<int>(sim_.mode());
+    if (m == mode_) return;
+    Switch s;
+    s.cycle = sim_.cycle();
+    s.time = sim_.time();
+    s.from = mode_;
+    s.to = m;
+    for (auto it = stores_.rbegin(); it != stores_.rend(); ++it)
+        if (it->mode == static_cast<uint32_t>(m)) {
+            s.requested = true;
+            s.request = it->time;
+            break;
+        }
+    s.bound = mode_ < static_cast<int>(plan_.modes.size()) ? plan_.modes[mode_].switch_latency : 0;
+    switches_.push_back(s);
+    stores_.clear();   // a request is acted on once
+    mode_ = m;
+}
+
+void ModeWatch::mode_imported(int board, uint32_t mode, uint32_t since)
+{
+    ++mode_values_;
+    bool ok = false;
+    if (mode == 0 && (switches_.empty() || since < switches_[0].time)) {
+        if (!have_t0_) have_t0_ = true, t0_ = since;
+        ok = since == t0_;
+    }
+    for (const Switch &s : switches_) ok = ok || (s.to == static_cast<int>(mode) && s.time == since);
+    if (!ok && !bad_values_++) {
+        char b[200];
+        std::snprintf(b, sizeof b, "modes: board %d imported Mode {%u, %u}, which names no switch (%zu so far)", board,
+                      mode, since, switches_.size());
+        first_bad_ = b;
+    }
+}
+
+bool ModeWatch::bound(int chan, uint64_t from, uint64_t to, uint64_t &b, uint64_t &b_retry) const
+{
+    const int id = plan_.channels[chan].id;
+    int m = 0;
+    for (const Switch &s : switches_) {
+        if (s.cycle + c_max_ >= from && s.cycle <= to) return false;   // across a switch (or just after one)
+        if (s.cycle <= from) m = s.to;
+    }
+    if (m >= static_cast<int>(plan_.modes.size()) || !plan_.modes[m].carries(id)) return false;
+    b = plan_.modes[m].bound_ff[id];
+    b_retry = plan_.modes[m].bound[id];
+    return true;
+}
+
+void ModeWatch::settle()
+{
+    for (Switch &s : switches_)
+        if (s.requested) s.latency = s.time - (have_t0_ && t0_ > s.request ? t0_ : s.request);
+}
+
+void ModeWatch::finish(bool judge_latency, uint64_t status_corrupt, std::vector<std::string> &failures) const
+{
+    char b[300];
+    uint32_t prev = t0_;
+    for (size_t k = 0; k < switches_.size(); ++k) {
+        const Switch &s = switches_[k];
+        const uint64_t c = s.from < static_cast<int>(plan_.modes.size()) ? plan_.modes[s.from].cycle : 1;
+        if (!plan_.sync_mode && (k || have_t0_) && (s.time - prev) % c != 0) {
+            std::snprintf(b, sizeof b, "modes: expected the switch to %s at time %u on a cycle boundary of %s "
+                          "(%u + a multiple of %llu), it is %llu clocks into a cycle",
+                          name_of(plan_, s.to).c_str(), s.time, name_of(plan_, s.from).c_str(), prev,
+                          static_cast<unsigned long long>(c), static_cast<unsigned long long>((s.time - prev) % c));
+            failures.push_back(b);
+        }
+        prev = s.time;
+        if (!s.requested) {
+            std::snprintf(b, sizeof b, "modes: expected the switch to %s at time %u to follow a request for it, none "
+                          "was stored", name_of(plan_, s.to).c_str(), s.time);
+            failures.push_back(b);
+        } else if (judge_latency && s.latency > s.bound) {
+            std::snprintf(b, sizeof b, "modes: expected the switch to %s at time %u within the compiler's "
+                          "switch_latency %llu of the request, it took %llu clocks", name_of(plan_, s.to).c_str(),
+                          s.time, static_cast<unsigned long long>(s.bound), static_cast<unsigned long long>(s.latency));
+            failures.push_back(b);
+        }
+    }
+    if (bad_values_) failures.push_back(first_bad_);
+    if (mode_values_ == 0) failures.push_back("modes: no board imported a Mode value");
+    if (status_corrupt > undeclared) {
+        std::snprintf(b, sizeof b, "modes: STATUS counts %llu corrupt values, expected at most one per request for an "
+                      "undeclared mode (%llu)", static_cast<unsigned long long>(status_corrupt),
+                      static_cast<unsigned long long>(undeclared));
+        failures.push_back(b);
+    }
+    if (judge_latency && undeclared >= 2 && status_corrupt == 0) {
+        std::snprintf(b, sizeof b, "modes: expected STATUS to count the %llu requests for undeclared modes, it "
+                      "counts none", static_cast<unsigned long long>(undeclared));
+        failures.push_back(b);
+    }
+}
+
+std::string ModeWatch::json() const
+{
+    uint64_t worst = 0, worst_bound = 0;   // the switch nearest its bound
+    for (const Switch &s : switches_)
+        if (s.requested && s.latency * std::max<uint64_t>(worst_bound, 1) >= worst * std::max<uint64_t>(s.bound, 1))
+            worst = s.latency, worst_bound = s.bound;
+    std::string j = "{\"switches\": [";
+    char b[240];
+    for (size_t k = 0; k < switches_.size(); ++k) {
+        const Switch &s = switches_[k];
+        std::snprintf(b, sizeof b, "%s{\"time\": %u, \"from\": \"%s\", \"to\": \"%s\", \"latency\": %llu, \"bound\": %llu}",
+                      k ? ", " : "", s.time, name_of(plan_, s.from).c_str(), name_of(plan_, s.to).c_str(),
+                      static_cast<unsigned long long>(s.latency), static_cast<unsigned long long>(s.bound));
+        j += b;
+    }
+    std::snprintf(b, sizeof b, "], \"switch_latency_worst\": %llu, \"switch_latency_bound\": %llu, "
+                  "\"undeclared_requests\": %llu, \"mode_values_imported\": %llu}",
+                  static_cast<unsigned long long>(worst), static_cast<unsigned long long>(worst_bound),
+                  static_cast<unsigned long long>(undeclared), static_cast<unsigned long long>(mode_values_));
+    return j + b;
+}
+
+}  // namespace tbsys

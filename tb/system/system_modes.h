@@ -1,0 +1,77 @@
+// system_modes.h -- schedule modes in tb_system (a plan with [[mode]]
+// tables, docs/compiler.md "Modes"): the mode_request channel's producer asks
+// for a random mode at random times (a declared one, or now and then one the
+// image does not have), and ModeWatch follows the controller's running mode
+// (the probe mode_o of tb/system/tb_system.v) to judge every switch:
+//   boundary   each switch falls on a cycle boundary of the mode it leaves:
+//              its time minus the previous switch's (the start-up mode: the
+//              time its first cycle began, as Mode publishes it) is a whole
+//              number of that mode's cycles (time-rigid plans);
+//   request    each switch to mode m follows a store of a request for m,
+//              within the compiler's switch_latency of the mode it leaves
+//              (judged in fault-free runs; measured always);
+//   published  every Mode value a board imports is {the start-up mode, its
+//              first cycle} or {m, the time of a switch to m};
+//   rejected   STATUS counts at most one corrupt value per request for an
+//              undeclared mode, and at least one when such requests were made
+//              on a fault-free bus.
+// It also gives SystemChecker the bounds of the mode in force: a latency or
+// age measured across a switch is not judged (counted as across_switch).
+#pragma once
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+#include "plan.h"
+#include "system_sim.h"
+
+namespace tbsys {
+
+class ModeWatch {
+public:
+    ModeWatch(const Plan &plan, SystemSim &sim);
+    bool active() const { return !plan_.modes.empty() && plan_.mode_request >= 0; }
+    // The request producer: the mode to ask for next, and the wait after it.
+    uint32_t pick(std::mt19937_64 &rng);
+    uint64_t interval(std::mt19937_64 &rng) const;
+    void requested(uint32_t mode) { pending_ = mode; }     // just before its Export
+    void tick();                                           // after every sim.tick()
+    void mode_imported(int board, uint32_t mode, uint32_t since);
+    bool bound(int chan, uint64_t from, uint64_t to, uint64_t &b, uint64_t &b_retry) const;
+    // The checks above; judge_latency: a fault-free run.
+    void finish(bool judge_latency, uint64_t status_corrupt, std::vector<std::string> &failures) const;
+    std::string json() const;                              // the report's "modes" object
+    // Latencies run from the request, or from the start-up mode's first cycle
+    // for a request stored during the controller's start-up.
+    void settle();                                         // after the run, before finish and json
+    uint64_t undeclared = 0;                               // requests stored for undeclared modes
+
+private:
+    struct Switch {
+        uint64_t cycle = 0;
+        uint32_t time = 0;
+        int from = 0, to = 0;
+        bool requested = false;
+        uint32_t request = 0;              // the time of the last request for 'to'
+        uint64_t latency = 0, bound = 0;   // request (or the first cycle, if later) -> time; switch_latency of 'from'
+    };
+    struct Stored { uint32_t mode, time; };
+    const Plan &plan_;
+    SystemSim &sim_;
+    int req_board_ = 0;
+    uint32_t req_actual_ = 0;              // the request source's Actual byte address
+    uint8_t last_actual_ = 0;
+    uint32_t pending_ = 0;
+    int mode_ = 0;
+    uint64_t c_max_ = 0;
+    std::vector<Stored> stores_;           // request values stored (their Actual store)
+    std::vector<Switch> switches_;     // (latency: set by settle)
+    bool have_t0_ = false;
+    uint32_t t0_ = 0;                      // the start-up mode's first cycle (from Mode)
+    uint64_t mode_values_ = 0, bad_values_ = 0;
+    std::string first_bad_;
+};
+
+extern ModeWatch *g_modes;
+
+}  // namespace tbsys
