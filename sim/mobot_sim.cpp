@@ -561,50 +561,9 @@ int main(int argc, char **argv)
                       crash_run ? "before the crash" : "without a crash", (unsigned long long)stale_before_crash);
         fail("staleness", b);
     }
-    // Modes: a mode without RadarMap long enough for navigation's threshold
-    // (MOBOT_RADAR_SCAN_CLOCKS and the latency, about 20,500 clocks) is seen
-    // stale; every switch came from a request within the compiler's
-    // switch_latency of the mode it left, and reached the boards as Mode with
-    // its time (sim/mobot_sim_modes.cpp).
-    uint64_t long_absences = 0;
-    if (const PlanChannel *radar = plan.by_name("RadarMap"); radar && !plan.modes.empty())
-        for (size_t k = 0; k < modes.switches.size(); ++k) {
-            const ModeSwitch &sw = modes.switches[k];
-            const uint64_t end = k + 1 < modes.switches.size() ? modes.switches[k + 1].time : uint64_t(m->time_o);
-            if (!plan.modes[sw.to].carries(radar->id) && end - sw.time > 50000) ++long_absences;
-        }
-    if (long_absences && stale_in_mode < long_absences && !cpu_failed) {
-        std::snprintf(b, sizeof b, "expected navigation to report RadarMap stale in each of the %llu long runs of a mode "
-                      "without it, it did %llu times", (unsigned long long)long_absences, (unsigned long long)stale_in_mode);
-        fail("staleness", b);
-    }
-    if (modes.switches.size() < o.min_switches) {
-        std::snprintf(b, sizeof b, "expected at least %llu mode switches, got %zu", (unsigned long long)o.min_switches,
-                      modes.switches.size());
-        fail("mode", b);
-    }
-    for (const ModeSwitch &sw : modes.switches) {
-        const bool near_end = sw.cycle + 4 * plan.cycle > cycle;  // its Mode may not be imported yet
-        if (!sw.requested)
-            std::snprintf(b, sizeof b, "expected each mode switch to follow a request, the one to %s at time %llu "
-                          "did not", plan.modes[sw.to].name.c_str(), (unsigned long long)sw.time);
-        else if (check_ages && double(sw.latency) > o.switch_scale * double(sw.bound))
-            std::snprintf(b, sizeof b, "expected each switch within %.4g x the compiler's switch_latency, the one to "
-                          "%s at time %llu took %llu clocks from the request against %llu", o.switch_scale,
-                          plan.modes[sw.to].name.c_str(), (unsigned long long)sw.time, (unsigned long long)sw.latency,
-                          (unsigned long long)sw.bound);
-        else if (!sw.published && !near_end && !cpu_failed)
-            std::snprintf(b, sizeof b, "expected navigation to import Mode {%s, %llu} after the switch, it did not",
-                          plan.modes[sw.to].name.c_str(), (unsigned long long)sw.time);
-        else
-            continue;
-        fail("mode", b);
-    }
-    if (modes.bad_since) {
-        std::snprintf(b, sizeof b, "expected every Mode value imported to name a switch (mode and its time), %llu did not",
-                      (unsigned long long)modes.bad_since);
-        fail("mode", b);
-    }
+    // Schedule modes: check mode and the modes' part of staleness (sim/mobot_sim_modes.cpp).
+    for (const auto &f : modes.verdict(o, cycle, m->time_o, check_ages, cpu_failed, stale_in_mode))
+        fail(f.first.c_str(), f.second);
     // The injected rate per access against the nominal one (tb/common/fault_model.h).
     const double rate_measured = requests ? double(faults) / double(requests) : 0;
     const double rate_tol = fault_model.tolerance(requests);
@@ -642,21 +601,11 @@ int main(int argc, char **argv)
      .str("muted", o.mute_arg).str("crash_board", crash_run ? plan.board_names[o.crash_board] : "").num("crash_cycle", double(crash_cycle))
      .num("stale_events", double(stale_events)).num("first_stale_cycle", double(first_stale))
      .num("fresh_events", double(fresh_events)).num("stale_in_mode", double(stale_in_mode));
-    if (!plan.modes.empty()) {
-        r.raw("mode_switches", modes.report("    "));
+    if (!plan.modes.empty()) {  // the switches, printed and in the report
         uint64_t worst = 0, worst_bound = 0;
-        for (const ModeSwitch &sw : modes.switches)
-            if (sw.requested && sw.latency * std::max<uint64_t>(worst_bound, 1) >= worst * std::max<uint64_t>(sw.bound, 1))
-                worst = sw.latency, worst_bound = sw.bound;
-        std::printf("  modes: %zu switches", modes.switches.size());
-        for (const ModeSwitch &sw : modes.switches)
-            std::printf("%s %s at %.3f ms (%llu clocks after the request, bound %llu)", &sw == &modes.switches[0] ? ":" : ",",
-                        plan.modes[sw.to].name.c_str(), 1e3 * double(sw.time) / plan.clock_hz,
-                        (unsigned long long)sw.latency, (unsigned long long)sw.bound);
-        std::printf("\n  modes: worst switch latency %llu clocks against the bound %llu (%.2f); RadarMap stale %llu "
-                    "times in a mode without it\n", (unsigned long long)worst, (unsigned long long)worst_bound,
-                    worst_bound ? double(worst) / double(worst_bound) : 0.0, (unsigned long long)stale_in_mode);
-        r.num("switch_latency_worst", double(worst)).num("switch_latency_bound", double(worst_bound));
+        modes.summary(stale_in_mode, worst, worst_bound);
+        r.raw("mode_switches", modes.report("    "))
+         .num("switch_latency_worst", double(worst)).num("switch_latency_bound", double(worst_bound));
     }
     r.raw("series", series_report(series, plan)).num("termination_bounded_series", n_term);
     if (n_term) print_termination(series, plan, o);

@@ -135,6 +135,13 @@ struct ModeTrack {
     // Some mode in force during [t0, t1] carries no channel id.
     bool absent_during(int id, uint64_t t0, uint64_t t1) const;
     std::string report(const std::string &indent) const;    // the JSON array of switches
+    // The failures (check, message) of check "mode" and of the modes' part of
+    // "staleness" at the end of a run; judge_latency: a fault-free run.
+    std::vector<std::pair<std::string, std::string>> verdict(const Options &o, uint64_t cycle, uint64_t time_now,
+                                                             bool judge_latency, bool cpu_failed,
+                                                             uint64_t stale_in_mode) const;
+    // The console lines; the switch nearest its bound (latency, bound).
+    void summary(uint64_t stale_in_mode, uint64_t &worst, uint64_t &worst_bound) const;
 };
 
 // The command line (sim/mobot_sim_options.cpp): fills o, loads plan, splits

@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 #include "mobot_sim.h"
 
 void ModeTrack::observe(int m, uint64_t now, uint64_t cycle)
@@ -106,4 +108,75 @@ std::string ModeTrack::report(const std::string &indent) const
         j += b;
     }
     return j + "]";
+}
+
+// A mode without RadarMap long enough for navigation's threshold
+// (MOBOT_RADAR_SCAN_CLOCKS and the latency, about 20,500 clocks) is seen
+// stale; every switch came from a request within the compiler's
+// switch_latency of the mode it left, and reached the boards as Mode with
+// its time.
+std::vector<std::pair<std::string, std::string>> ModeTrack::verdict(const Options &o, uint64_t cycle, uint64_t time_now,
+                                                                    bool judge_latency, bool cpu_failed,
+                                                                    uint64_t stale_in_mode) const
+{
+    std::vector<std::pair<std::string, std::string>> out;
+    char b[512];
+    auto name = [&](int m) { return m < int(plan->modes.size()) ? plan->modes[m].name : "mode" + std::to_string(m); };
+    uint64_t long_absences = 0;
+    if (const PlanChannel *radar = plan->by_name("RadarMap"); radar && !plan->modes.empty())
+        for (size_t k = 0; k < switches.size(); ++k) {
+            const ModeSwitch &sw = switches[k];
+            const uint64_t end = k + 1 < switches.size() ? switches[k + 1].time : time_now;
+            if (!(sw.to < int(plan->modes.size()) && plan->modes[sw.to].carries(radar->id)) && end - sw.time > 50000)
+                ++long_absences;
+        }
+    if (long_absences && stale_in_mode < long_absences && !cpu_failed) {
+        std::snprintf(b, sizeof b, "expected navigation to report RadarMap stale in each of the %llu long runs of a mode "
+                      "without it, it did %llu times", (unsigned long long)long_absences, (unsigned long long)stale_in_mode);
+        out.emplace_back("staleness", b);
+    }
+    if (switches.size() < o.min_switches) {
+        std::snprintf(b, sizeof b, "expected at least %llu mode switches, got %zu", (unsigned long long)o.min_switches,
+                      switches.size());
+        out.emplace_back("mode", b);
+    }
+    for (const ModeSwitch &sw : switches) {
+        const bool near_end = sw.cycle + 4 * plan->cycle > cycle;  // its Mode may not be imported yet
+        if (!sw.requested)
+            std::snprintf(b, sizeof b, "expected each mode switch to follow a request, the one to %s at time %llu "
+                          "did not", name(sw.to).c_str(), (unsigned long long)sw.time);
+        else if (judge_latency && double(sw.latency) > o.switch_scale * double(sw.bound))
+            std::snprintf(b, sizeof b, "expected each switch within %.4g x the compiler's switch_latency, the one to "
+                          "%s at time %llu took %llu clocks from the request against %llu", o.switch_scale,
+                          name(sw.to).c_str(), (unsigned long long)sw.time, (unsigned long long)sw.latency,
+                          (unsigned long long)sw.bound);
+        else if (!sw.published && !near_end && !cpu_failed)
+            std::snprintf(b, sizeof b, "expected navigation to import Mode {%s, %llu} after the switch, it did not",
+                          name(sw.to).c_str(), (unsigned long long)sw.time);
+        else
+            continue;
+        out.emplace_back("mode", b);
+    }
+    if (bad_since) {
+        std::snprintf(b, sizeof b, "expected every Mode value imported to name a switch (mode and its time), %llu did not",
+                      (unsigned long long)bad_since);
+        out.emplace_back("mode", b);
+    }
+    return out;
+}
+
+void ModeTrack::summary(uint64_t stale_in_mode, uint64_t &worst, uint64_t &worst_bound) const
+{
+    worst = worst_bound = 0;
+    for (const ModeSwitch &sw : switches)
+        if (sw.requested && sw.latency * std::max<uint64_t>(worst_bound, 1) >= worst * std::max<uint64_t>(sw.bound, 1))
+            worst = sw.latency, worst_bound = sw.bound;
+    std::printf("  modes: %zu switches", switches.size());
+    for (const ModeSwitch &sw : switches)
+        std::printf("%s %s at %.3f ms (%llu clocks after the request, bound %llu)", &sw == &switches[0] ? ":" : ",",
+                    sw.to < int(plan->modes.size()) ? plan->modes[sw.to].name.c_str() : "?",
+                    1e3 * double(sw.time) / plan->clock_hz, (unsigned long long)sw.latency, (unsigned long long)sw.bound);
+    std::printf("\n  modes: worst switch latency %llu clocks against the bound %llu (%.2f); RadarMap stale %llu "
+                "times in a mode without it\n", (unsigned long long)worst, (unsigned long long)worst_bound,
+                worst_bound ? double(worst) / double(worst_bound) : 0.0, (unsigned long long)stale_in_mode);
 }
