@@ -299,8 +299,11 @@ def evaluate(system, plan, curves) -> dict:
 
 def _curves(system, rmax: int) -> dict:
     h = system.faults
+    # A channel without a consumer (a mode_request channel, which the
+    # controller reads): its slot must read the source, access_sequence(ch, -1).
     return {ch.index: [delivery_curve(h, access_sequence(ch, d), rmax, system.drop_run)
-                       for d in range(len(ch.consumers))] for ch in system.channels}
+                       for d in range(len(ch.consumers))] or
+            [delivery_curve(h, access_sequence(ch, -1), rmax, system.drop_run)] for ch in system.channels}
 
 
 def plan_for_hypothesis(system, plan_fn):
@@ -362,9 +365,6 @@ def plan_for_hypothesis(system, plan_fn):
             target = h.eps ** (1.0 / max(1, min(j, ch.period_clocks // cycle)))
             rmin = max(bus.retries_per_slot, k if len(ch.consumers) >= 2 else 0)
             cs = curves[ch.index]
-            if not cs:   # no destination (a mode_request channel: the controller reads it): no delivery to plan for
-                out[ch.index] = rmin
-                continue
             r = next((r for r in range(rmin, rmax + 1) if min(c[r] for c in cs) >= 1.0 - target), None)
             out[ch.index] = rmax if r is None else r
         return out

@@ -221,15 +221,40 @@ def switch_latency(system: System, rep: dict):
     return 2 * rep["cycle"]["clocks"] - (min(starts) + system.bus.sample_offset)
 
 
-def mode_summary(system: System, modes: list, i: int, rep: dict) -> dict:
-    """report.json's entry of mode i, from that mode's own report rep."""
+def switch_latency_at_target(ms: System, rep: dict, lat):
+    """Under a fault hypothesis: the switch latency that holds with its
+    target probability.  The request's slot (one a cycle) reads the source:
+    load Actual, store ReadLocked, load Actual, the word, each retried within
+    the slot's budget; a slot that misses leaves the request for the next
+    cycle.  With m slots in a row needed at the target (as a channel's
+    period at the target, docs/compiler.md "Fault hypothesis"), a request
+    waits at most m - 1 cycles more: lat + (m - 1) C.  None without a
+    hypothesis; clocks None if no number of slots meets the target."""
+    from .faults import access_sequence, delivery_curve, slots_needed
+    h = ms.faults
+    if h is None or lat is None:
+        return None
+    req = next(ch for ch in ms.channels if ch.request)
+    r = ms.bus.retries_of(req)
+    q = delivery_curve(h, access_sequence(req, -1), r, ms.drop_run)[r]
+    m = slots_needed(max(0.0, 1.0 - q), h.eps, limit=64)
+    clocks = None if m is None else lat + (m - 1) * rep["cycle"]["clocks"]
+    return {"clocks": clocks, "us": None if clocks is None else round(clocks * 1e6 / ms.clock_hz, 3),
+            "slots_needed": m, "slot_miss_probability": max(0.0, 1.0 - q), "probability": h.probability}
+
+
+def mode_summary(system: System, modes: list, i: int, rep: dict, ms: System = None) -> dict:
+    """report.json's entry of mode i, from that mode's own report rep (ms:
+    that mode's system, for the switch latency under a fault hypothesis)."""
     m = modes[i]
     lat = switch_latency(system, rep)
+    at_target = switch_latency_at_target(ms, rep, lat) if ms is not None else None
     keep = ("cycle", "cycle_limited_by", "entries", "drop_run", "bus_utilisation", "controller_busy",
             "schedule_fill")
     return dict({k: rep[k] for k in keep if k in rep},
                 name=m.name, start_up=i == 0, next=[modes[j].name for j in m.next],
                 switch_latency=None if lat is None else {"clocks": lat, "us": round(lat * 1e6 / system.clock_hz, 3)},
+                **({"switch_latency_at_target": at_target} if at_target else {}),
                 channels=[{k: c[k] for k in ("name", "id", "max_period", "guaranteed_period", "redundancy",
                                              "age_bound", "latency") if k in c}
                           for c in rep["channels"]],

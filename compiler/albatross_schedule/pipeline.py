@@ -79,7 +79,7 @@ def compile_system(system: System):
     if problems:
         raise AssertionError("internal error, the image of the modes breaks the contract: " + "; ".join(problems))
     ms, plan, _, rep = planned[0]
-    rep["modes"] = [mode_summary(system, system.modes, i, r) for i, (_, _, _, r) in enumerate(planned)]
+    rep["modes"] = [mode_summary(system, system.modes, i, r, s) for i, (s, _, _, r) in enumerate(planned)]
     ms.mode_plans = [(m, s, p, r) for m, (s, p, _, r) in zip(system.modes, planned)]
     return ms, plan, rom, rep
 

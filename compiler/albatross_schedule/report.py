@@ -125,6 +125,8 @@ def build_report(system: System, plan: Plan) -> dict:
                             "E0 flag four_slot on every entry)",
             "mode_request": "true on the mode_request channel (the controller reads its value as a mode request)",
             "mode_info": "true on the mode channel (the controller publishes {running mode, time its first cycle began})",
+            "switch_latency_at_target": "modes under a fault hypothesis: switch_latency + (m - 1) cycles, m the request "
+                                        "slots in a row needed so that all miss with probability <= 1 - probability",
             "termination": "per consumer: D = shortest time between two publishes to it (slot i+1 start + "
                            "fetch + access*(E-1) - slot i end), T / V = its Import loop (controller clocks); "
                            "three-buffer: unbounded if D <= T, else max_passes = ReadLocked stores per Import = "

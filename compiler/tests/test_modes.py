@@ -146,6 +146,14 @@ class ModePlanTests(unittest.TestCase):
         self.assertEqual([m["name"] for m in rep["modes"]], ["cruise", "dock"])
         req = [c for c in rep["channels"] if c.get("mode_request")]
         self.assertEqual(len(req), 1, "the report marks the mode_request channel")
+        for m in rep["modes"]:   # the switch latency that holds with the hypothesis' probability
+            at, lat = m["switch_latency_at_target"], m["switch_latency"]["clocks"]
+            self.assertEqual(at["clocks"], lat + (at["slots_needed"] - 1) * m["cycle"]["clocks"], m["name"])
+            self.assertLessEqual(at["slot_miss_probability"] ** at["slots_needed"], 1e-9 * 1.000001, m["name"])
+            if at["slots_needed"] > 1:
+                self.assertGreater(at["slot_miss_probability"] ** (at["slots_needed"] - 1), 1e-9, m["name"])
+        _, _, _, plain = S.compile_system(system_of(TWO_MODES))
+        self.assertNotIn("switch_latency_at_target", plain["modes"][0], "no hypothesis, no figure at a target")
 
     def test_every_mode_planned_and_reported(self):
         modes = {m["name"]: m for m in self.rep["modes"]}

@@ -57,6 +57,8 @@ bool Plan::load(const std::string &path, std::string &error)
             PlanMode m;
             ok = static_cast<bool>(s >> index >> m.name >> m.cycle >> m.switch_latency) &&
                  index == static_cast<int>(modes.size()) && m.cycle > 0;
+            uint64_t at_target = 0;  // optional
+            if (ok && (s >> at_target)) m.switch_latency_at_target = at_target;
             if (ok) modes.push_back(m);
         } else if (what == "mode_request") {
             ok = static_cast<bool>(s >> mode_request) && mode_request >= 0;

@@ -9,7 +9,9 @@
 //   channel <id> <name> <copy|time|status> <size> <words> <src_board> <src_base>
 //           <period> <latency> <latency_with_retries> <sync> <slots> [<four_slot>]
 //   dest <id> <index> <board> <base>
-//   mode <index> <name> <cycle_clocks> <switch_latency>    (a description with modes)
+//   mode <index> <name> <cycle_clocks> <switch_latency> [<at_target>]   (a description with
+//                                             modes; at_target: the switch latency that holds with
+//                                             the fault hypothesis' probability, 0: none)
 //   mode_request <id>                         the channel whose values ask for a mode
 //   mode_info <id>                            the channel the controller publishes {mode, since} on
 //   mode_channel <mode> <id> <period> <bound> <bound_with_retries>   a channel the mode
@@ -53,6 +55,7 @@ struct PlanChannel {
 struct PlanMode {
     std::string name;
     uint64_t cycle = 0, switch_latency = 0;  // its cycle; worst request -> first cycle of the next
+    uint64_t switch_latency_at_target = 0;   // ... under the plan's fault hypothesis (0: none)
     std::vector<uint64_t> bound;             // by channel id: latency/age bound with retries, 0 = absent
     std::vector<uint64_t> bound_ff;          // ... fault-free
     bool carries(int id) const { return id >= 0 && id < int(bound.size()) && bound[id] != 0; }

@@ -36,7 +36,8 @@ def main():
     out += [f"mode_request {c['id']}" for c in r["channels"] if c.get("mode_request")]
     out += [f"mode_info {c['id']}" for c in r["channels"] if c.get("mode_info")]
     for k, m in enumerate(r.get("modes") or []):
-        out.append(f"mode {k} {m['name']} {m['cycle']['clocks']} {m['switch_latency']['clocks']}")
+        at_target = (m.get("switch_latency_at_target") or {}).get("clocks") or 0
+        out.append(f"mode {k} {m['name']} {m['cycle']['clocks']} {m['switch_latency']['clocks']} {at_target}")
         for c in m["channels"]:
             bound = c["latency"] if c.get("age_bound") is None else c["age_bound"]
             out.append(f"mode_channel {k} {ids[c['name']]} {c['guaranteed_period']['clocks']} "

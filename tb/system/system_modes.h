@@ -9,7 +9,9 @@
 //              number of that mode's cycles (time-rigid plans);
 //   request    each switch to mode m follows a store of a request for m,
 //              within the compiler's switch_latency of the mode it leaves
-//              (judged in fault-free runs; measured always);
+//              (fault-free runs), or within its switch_latency_at_target
+//              (runs with faults on an image planned for a fault hypothesis;
+//              without one, measured only);
 //   published  every Mode value a board imports is {the start-up mode, its
 //              first cycle} or {m, the time of a switch to m};
 //   rejected   STATUS counts at most one corrupt value per request for an
@@ -54,6 +56,7 @@ private:
         bool requested = false;
         uint32_t request = 0;              // the time of the last request for 'to'
         uint64_t latency = 0, bound = 0;   // request (or the first cycle, if later) -> time; switch_latency of 'from'
+        uint64_t bound_at_target = 0;      // ... at the fault hypothesis' target (0: none)
     };
     struct Stored { uint32_t mode, time; };
     const Plan &plan_;
