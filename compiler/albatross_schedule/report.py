@@ -224,7 +224,9 @@ def render_report_txt(rep: dict) -> str:
                      f"{m['drop_run']}; switches to {', '.join(m['next']) or 'none'}"
                      + (f"; leaves out {', '.join(m['left_out'])}" if m["left_out"] else "")
                      + (f"; a request switches within {f(m['switch_latency']['us'])} us"
-                        if m.get("switch_latency") else ""))
+                        if m.get("switch_latency") else "")
+                     + (f" (under the fault hypothesis: {f(m['switch_latency_at_target']['us'])} us)"
+                        if (m.get("switch_latency_at_target") or {}).get("us") is not None else ""))
             for c in m["channels"]:
                 L.append(f"    {c['name']}: guaranteed period {f(c['guaranteed_period']['us'])} / max "
                          f"{f(c['max_period']['us'])} us, x{c['redundancy']} per cycle")
