@@ -87,7 +87,7 @@ public:
     void set_latency_is_checked(bool on) { latency_checked_ = on; }
     // Schedule modes: the bounds (fault-free, with retries) of channel chan for
     // a value from cycle 'from' (a copy's publication; a time/status value's
-    // take) measured at cycle 'to'; false: not judged (a switch in between).
+    // take) measured at cycle 'to'; false: not judged (system_modes.h).
     // Without it every value is judged by the plan's bounds.
     using BoundFn = std::function<bool(int chan, uint64_t from, uint64_t to, uint64_t &bound, uint64_t &bound_retry)>;
     void set_bound_fn(BoundFn f) { bound_fn_ = std::move(f); }
@@ -110,7 +110,7 @@ public:
         uint64_t publications = 0, imports = 0, imports_new = 0;
         uint64_t latency_max = 0, latency_sum = 0, latency_n = 0, latency_over = 0;
         uint64_t over_retry_bound = 0;                      // beyond the with-retries bound too
-        uint64_t across_switch = 0;                         // measured across a mode switch: not judged
+        uint64_t across_switch = 0;                         // not judged: no bound (schedule modes, BoundFn false)
         uint64_t max_age_seen = 0, last_age_seen = 0;       // by the consumer, via taken_at
         uint64_t max_taken_minus_publish = 0;               // time/position correlation
         uint64_t landed_unanswered = 0;                     // Actual stores performed, answer lost (err or

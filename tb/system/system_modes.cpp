@@ -88,14 +88,21 @@ void ModeWatch::mode_imported(int board, uint32_t mode, uint32_t since)
 bool ModeWatch::bound(int chan, uint64_t from, uint64_t to, uint64_t &b, uint64_t &b_retry) const
 {
     const int id = plan_.channels[chan].id;
-    int m = 0;
+    int m = 0;                       // the mode in force at 'to'
+    uint64_t last = 0;               // the last switch in (from, to] (0: none)
     for (const Switch &s : switches_) {
-        if (s.cycle + c_max_ >= from && s.cycle <= to) return false;   // across a switch (or just after one)
-        if (s.cycle <= from) m = s.to;
+        if (s.cycle > to) break;
+        m = s.to;
+        if (s.cycle > from) last = s.cycle;
     }
-    if (m >= static_cast<int>(plan_.modes.size()) || !plan_.modes[m].carries(id)) return false;
-    b = plan_.modes[m].bound_ff[id];
-    b_retry = plan_.modes[m].bound[id];
+    if (m >= static_cast<int>(plan_.modes.size()) || !plan_.modes[m].carries(id)) return ++unjudged_, false;
+    // Across switches: the value had not arrived by the last one, S; the mode
+    // that starts its first cycle at S carries the channel, so it arrives by S
+    // + that mode's bound.
+    const uint64_t wait = last ? last - from : 0;
+    if (last) ++judged_across_;
+    b = wait + plan_.modes[m].bound_ff[id];
+    b_retry = wait + plan_.modes[m].bound[id];
     return true;
 }
 
@@ -166,9 +173,11 @@ std::string ModeWatch::json() const
         j += b;
     }
     std::snprintf(b, sizeof b, "], \"switch_latency_worst\": %llu, \"switch_latency_bound\": %llu, "
-                  "\"undeclared_requests\": %llu, \"mode_values_imported\": %llu}",
+                  "\"undeclared_requests\": %llu, \"mode_values_imported\": %llu, \"judged_across_a_switch\": %llu, "
+                  "\"not_judged\": %llu}",
                   static_cast<unsigned long long>(worst), static_cast<unsigned long long>(worst_bound),
-                  static_cast<unsigned long long>(undeclared), static_cast<unsigned long long>(mode_values_));
+                  static_cast<unsigned long long>(undeclared), static_cast<unsigned long long>(mode_values_),
+                  static_cast<unsigned long long>(judged_across_), static_cast<unsigned long long>(unjudged_));
     return j + b;
 }
 

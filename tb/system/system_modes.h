@@ -17,8 +17,13 @@
 //   rejected   STATUS counts at most one corrupt value per request for an
 //              undeclared mode, and at least one when such requests were made
 //              on a fault-free bus.
-// It also gives SystemChecker the bounds of the mode in force: a latency or
-// age measured across a switch is not judged (counted as across_switch).
+// It also gives SystemChecker the bounds of the mode in force.  A value from
+// 'from' (a copy's publication, a time/status value's take) measured at 'to'
+// with no switch between: the bound of the mode in force.  Across switches,
+// the last at S: the value had not arrived by S, and the mode whose first
+// cycle starts at S delivers what its source holds within its bound, so
+// the bound is S - from + that mode's bound.  A mode without the channel
+// at 'to' is not judged (its consumers see the value age: stale).
 #pragma once
 #include <cstdint>
 #include <random>
@@ -72,6 +77,7 @@ private:
     bool have_t0_ = false;
     uint32_t t0_ = 0;                      // the start-up mode's first cycle (from Mode)
     uint64_t mode_values_ = 0, bad_values_ = 0;
+    mutable uint64_t judged_across_ = 0, unjudged_ = 0;   // bound(): values judged across a switch; not judged
     std::string first_bad_;
 };
 

@@ -97,6 +97,8 @@ int main(int argc, char **argv)
     if (!plan.load(o.plan_dir + "/tb_plan.txt", err)) { std::fprintf(stderr, "tb_system: %s\n", err.c_str()); return 2; }
     for (PlanChannel &c : plan.channels)   // a negative test's deliberately wrong bounds
         c.latency = static_cast<uint64_t>(static_cast<double>(c.latency) * o.latency_scale);
+    for (PlanMode &m : plan.modes)
+        for (uint64_t &b : m.bound_ff) b = static_cast<uint64_t>(static_cast<double>(b) * o.latency_scale);
     if (plan.boards > SystemSim::kBoards || plan.ram_bytes != SystemSim::kRamBytes) {
         std::fprintf(stderr, "tb_system: the plan has %d boards of %u bytes; this build simulates %d boards of %u bytes\n",
                      plan.boards, plan.ram_bytes, SystemSim::kBoards, SystemSim::kRamBytes);

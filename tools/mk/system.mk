@@ -139,13 +139,15 @@ test-system-faults-50-planned: $(SYS_BIN) $(BUILD)/schedule/mobot3-f50p2/tb_plan
 # mode (1 in 16 an undeclared one) every 2 to 10 cycles.  Every checker
 # holds across every switch; each switch falls on a cycle boundary, follows
 # its request within the compiler's switch_latency (fault-free) and is
-# published as Mode; latencies measured across a switch are counted, not
-# judged.  Fault-free, and at 20 % on the image planned for 20 %.  Negative:
-# a controller whose running mode changes before the boundary
-# (tb/mutants/controller/early_switch.sed).
+# published as Mode; a latency or age measured across switches is judged by
+# the time to the last switch plus the new mode's bound (system_modes.h).
+# Fault-free, and at 20 % on the image planned for 20 %.  Negatives: a
+# controller whose running mode changes before the boundary
+# (tb/mutants/controller/early_switch.sed); the bounds of every mode cut to
+# 90 % (latency_bound must fire).
 SYS_MODES     := $(BUILD)/schedule/mobot3-modes
 SYS_MODES_F20 := $(BUILD)/schedule/mobot3-modes-f20
-TESTS += system-modes system-modes-faults-20-planned system-negative-modes-early
+TESTS += system-modes system-modes-faults-20-planned system-negative-modes-early system-negative-modes-latency
 test-system-modes: $(SYS_BIN) $(SYS_MODES)/tb_plan.txt
 	@$(call sys_run,modes) --plan $(SYS_MODES)
 test-system-modes-faults-20-planned: $(SYS_BIN) $(SYS_MODES_F20)/tb_plan.txt
@@ -153,6 +155,9 @@ test-system-modes-faults-20-planned: $(SYS_BIN) $(SYS_MODES_F20)/tb_plan.txt
 test-system-negative-modes-early: $(SYS_DIR)/mutant-early_switch/tb_system $(SYS_MODES)/tb_plan.txt
 	@tools/run_test.sh system-negative-modes-early $< --plan $(SYS_MODES) --seed $(SEED) --cycles 300000 \
 	    --label system-negative-modes-early --expect-failure "on a cycle boundary" --expect-failure "which names no switch"
+test-system-negative-modes-latency: $(SYS_BIN) $(SYS_MODES)/tb_plan.txt
+	@tools/run_test.sh system-negative-modes-latency $< --plan $(SYS_MODES) --seed $(SEED) --cycles 300000 \
+	    --label system-negative-modes-latency --latency-scale 0.9 --expect-caught-by latency_bound
 
 # Negative of the rate check: the old injector's driving (the Gilbert chain
 # advanced every clock, not every access) at a nominal 20 % in bursts of 10
