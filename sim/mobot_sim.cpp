@@ -288,6 +288,7 @@ int main(int argc, char **argv)
         return usage(("--crash: board " + plan.board_names[o.crash_board] + " produces no copy channel").c_str());
     LocalClock clocks[NB];
     uint64_t stale_events = 0, stale_before_crash = 0, fresh_events = 0, first_stale = 0, status_reads = 0;
+    uint64_t stale_after_crash = 0, first_stale_after_crash = 0;  // (a mode without RadarMap may report before)
     uint64_t stale_in_mode = 0;  // stale reports while the mode in force carries no such channel
     uint32_t status_retries = 0, status_abandoned = 0;
 
@@ -424,6 +425,7 @@ int main(int argc, char **argv)
                 modes.published(int(id), arg);
             } else if (kind == EV_STALE) {
                 if (!stale_events++) first_stale = cycle;
+                if (crash_phase == 3 && !stale_after_crash++) first_stale_after_crash = cycle;
                 // stale as planned: a mode without the channel was in force within the
                 // consumer's view of it (two of its Import gaps and a cycle before now)
                 const Series *ss = find_series(c, id);
@@ -554,7 +556,7 @@ int main(int argc, char **argv)
         }
     }
     const bool radar_crash = crash_run && crash_phase == 3 && crash_prod->ch->name == "RadarMap";
-    if (radar_crash && stale_events == 0 && !cpu_failed)
+    if (radar_crash && stale_after_crash == 0 && !cpu_failed)
         fail("staleness", "expected navigation to report RadarMap stale after the radar crashed, it never did");
     if (stale_before_crash && faults == 0) {
         std::snprintf(b, sizeof b, "expected no stale RadarMap %s, navigation reported it %llu times",
@@ -562,7 +564,8 @@ int main(int argc, char **argv)
         fail("staleness", b);
     }
     // Schedule modes: check mode and the modes' part of staleness (sim/mobot_sim_modes.cpp).
-    for (const auto &f : modes.verdict(o, cycle, m->time_o, check_ages, cpu_failed, stale_in_mode))
+    for (const auto &f : modes.verdict(o, cycle, m->time_o, check_ages, cpu_failed, stale_in_mode,
+                                       crash_phase == 3 ? crash_cycle : 0))
         fail(f.first.c_str(), f.second);
     // The injected rate per access against the nominal one (tb/common/fault_model.h).
     const double rate_measured = requests ? double(faults) / double(requests) : 0;
@@ -599,7 +602,8 @@ int main(int argc, char **argv)
      .num("status_retries", status_retries).num("status_abandoned", status_abandoned)
      .num("bus_busy_fraction", cycle ? double(busy) / double(cycle) : 0.0)
      .str("muted", o.mute_arg).str("crash_board", crash_run ? plan.board_names[o.crash_board] : "").num("crash_cycle", double(crash_cycle))
-     .num("stale_events", double(stale_events)).num("first_stale_cycle", double(first_stale))
+     .num("stale_events", double(stale_events))
+     .num("first_stale_cycle", double(crash_run ? first_stale_after_crash : first_stale))
      .num("fresh_events", double(fresh_events)).num("stale_in_mode", double(stale_in_mode));
     if (!plan.modes.empty()) {  // the switches, printed and in the report
         uint64_t worst = 0, worst_bound = 0;
@@ -623,14 +627,16 @@ int main(int argc, char **argv)
         uint64_t after = 0;
         for (const Series &s : series) after += s.news_after_crash;
         std::printf("  crash: %s at cycle %llu; its consumers imported %llu New values after it (completed before "
-                    "it); navigation reported RadarMap stale %llu times, first at cycle %llu (%lld clocks after the "
+                    "it); navigation reported RadarMap stale %llu times after it, first at cycle %llu (%lld clocks after the "
                     "crash)\n", plan.board_names[o.crash_board].c_str(), (unsigned long long)crash_cycle,
-                    (unsigned long long)after, (unsigned long long)stale_events, (unsigned long long)first_stale,
-                    stale_events ? (long long)first_stale - (long long)crash_cycle : 0ll);
+                    (unsigned long long)after, (unsigned long long)stale_after_crash,
+                    (unsigned long long)first_stale_after_crash,
+                    stale_after_crash ? (long long)first_stale_after_crash - (long long)crash_cycle : 0ll);
     }
 
     if (!o.ages.empty() &&  // the picture's data: worst age per bucket and series
-        !write_ages(o.ages, series, plan, n_buckets, bucket_len, cycle, crash_cycle, first_stale))
+        !write_ages(o.ages, series, plan, n_buckets, bucket_len, cycle, crash_cycle,
+                    crash_run ? first_stale_after_crash : first_stale))
         return 1;
 
     std::string last;

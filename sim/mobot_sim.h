@@ -136,10 +136,11 @@ struct ModeTrack {
     bool absent_during(int id, uint64_t t0, uint64_t t1) const;
     std::string report(const std::string &indent) const;    // the JSON array of switches
     // The failures (check, message) of check "mode" and of the modes' part of
-    // "staleness" at the end of a run; judge_latency: a fault-free run.
+    // "staleness" at the end of a run; judge_latency: a fault-free run;
+    // crash_cycle: a producer crashed then (0: none).
     std::vector<std::pair<std::string, std::string>> verdict(const Options &o, uint64_t cycle, uint64_t time_now,
                                                              bool judge_latency, bool cpu_failed,
-                                                             uint64_t stale_in_mode) const;
+                                                             uint64_t stale_in_mode, uint64_t crash_cycle) const;
     // The console lines; the switch nearest its bound (latency, bound).
     void summary(uint64_t stale_in_mode, uint64_t &worst, uint64_t &worst_bound) const;
 };

@@ -111,13 +111,13 @@ std::string ModeTrack::report(const std::string &indent) const
 }
 
 // A mode without RadarMap long enough for navigation's threshold
-// (MOBOT_RADAR_SCAN_CLOCKS and the latency, about 20,500 clocks) is seen
-// stale; every switch came from a request within the compiler's
+// (MOBOT_RADAR_SCAN_CLOCKS and the latency, about 20,500 clocks), entered
+// before any crash, is seen stale; every switch came from a request within the compiler's
 // switch_latency of the mode it left, and reached the boards as Mode with
 // its time.
 std::vector<std::pair<std::string, std::string>> ModeTrack::verdict(const Options &o, uint64_t cycle, uint64_t time_now,
                                                                     bool judge_latency, bool cpu_failed,
-                                                                    uint64_t stale_in_mode) const
+                                                                    uint64_t stale_in_mode, uint64_t crash_cycle) const
 {
     std::vector<std::pair<std::string, std::string>> out;
     char b[512];
@@ -127,7 +127,9 @@ std::vector<std::pair<std::string, std::string>> ModeTrack::verdict(const Option
         for (size_t k = 0; k < switches.size(); ++k) {
             const ModeSwitch &sw = switches[k];
             const uint64_t end = k + 1 < switches.size() ? switches[k + 1].time : time_now;
-            if (!(sw.to < int(plan->modes.size()) && plan->modes[sw.to].carries(radar->id)) && end - sw.time > 50000)
+            // (after a crash of its producer the map is stale already: no new report)
+            if (!(sw.to < int(plan->modes.size()) && plan->modes[sw.to].carries(radar->id)) && end - sw.time > 50000 &&
+                !(crash_cycle && sw.cycle >= crash_cycle))
                 ++long_absences;
         }
     if (long_absences && stale_in_mode < long_absences && !cpu_failed) {

@@ -147,22 +147,24 @@ $(foreach s,$(PB_SCENARIOS),$(eval $(call pb_scenario,$(s))))
 # "mode" wants at least three switches, each within the compiler's
 # switch_latency and published as Mode (sim/mobot_sim_modes.cpp).
 # pico-boards-modes-faults does it at 5 % faults (the age and latency checks
-# are off under faults, as in pico-boards-faults); the negatives judge the
+# are off under faults, as in pico-boards-faults), pico-boards-modes-crash
+# with the radar crashing in cruise (stale before and after); the negatives judge the
 # same run against half the compiler's switch latency (check mode must fail)
 # and half the age bounds in force (check age must fail).
 PB_MODES := $(BUILD)/schedule/mobot3-modes
 PB_MODES_SCENARIOS := \
-  pico-boards-modes:--min-switches,3 \
-  pico-boards-modes-faults:--min-switches,3,--fault-rate,0.05 \
-  pico-boards-modes-negative-latency:--min-switches,3,--switch-scale,0.5,--expect-caught-by,mode \
-  pico-boards-modes-negative-age:--min-switches,3,--age-scale,0.5,--expect-caught-by,age
+  pico-boards-modes:--min-switches,3,--require-done \
+  pico-boards-modes-faults:--min-switches,3,--fault-rate,0.05,--require-done \
+  pico-boards-modes-crash:--min-switches,3,--crash,radar@800000 \
+  pico-boards-modes-negative-latency:--min-switches,3,--require-done,--switch-scale,0.5,--expect-caught-by,mode \
+  pico-boards-modes-negative-age:--min-switches,3,--require-done,--age-scale,0.5,--expect-caught-by,age
 define pb_modes_scenario
 TESTS += $(call neg_field,$(1),1)
 .PHONY: test-$(call neg_field,$(1),1)
 test-$(call neg_field,$(1),1): $(PB_BIN) $(foreach b,$(PB_BOARDS),$(PB_DIR)/mobot3-modes/fw/$(b).hex) $(PB_MODES)/tb_plan.txt
 	@tools/run_test.sh $(call neg_field,$(1),1) $(PB_BIN) \
 	    $(call pb_args,$(PB_MODES),$(PB_DIR)/mobot3-modes/fw,$(PB_DIR)/mobot3-modes/fw/radar.hex,$(PB_DIR)/mobot3-modes/fw/navigation.hex) \
-	    --cycles $(PB_CYCLES) --seed $(SEED) --stall 2048 --require-done --label $(call neg_field,$(1),1) \
+	    --cycles $(PB_CYCLES) --seed $(SEED) --stall 2048 --label $(call neg_field,$(1),1) \
 	    $(subst $(comma), ,$(call neg_field,$(1),2)) --report $(REPORTS)/$(subst -,_,$(call neg_field,$(1),1)).json
 endef
 $(foreach s,$(PB_MODES_SCENARIOS),$(eval $(call pb_modes_scenario,$(s))))
