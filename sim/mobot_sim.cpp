@@ -380,24 +380,13 @@ int main(int argc, char **argv)
                                      (unsigned long long)(s->ch->copy() ? producers[s->ch->id].max_gap : 0));
                     const uint64_t k = std::min<uint64_t>(cycle / bucket_len, n_buckets - 1);
                     s->bucket_max[k] = std::max(s->bucket_max[k], age);
-                    // the bound in force at the load: the mode's, the producer's longest gap so
-                    // far (the one still open included: a gap that holds the value's age)
-                    uint64_t gap = 0, bound = 0;
-                    if (s->ch->copy()) {
-                        const Producer &p = producers[s->ch->id];
-                        gap = std::max({p.max_gap, p.first_store, cycle - p.last_store});  // (reset to the first too)
-                    }
-                    if (modes.bound_at(*s->ch, gap, t_load, bound)) {
-                        s->bucket_bound[k] = std::max(s->bucket_bound[k], bound);
-                        if (!(crash_prod && crash_prod->ch == s->ch))
-                            s->worst_pm = std::max(s->worst_pm, bound ? 1000 * age / bound : 0);
-                        if (double(age) > o.age_scale * double(bound) && !(crash_prod && crash_prod->ch == s->ch)) {
-                            if (!s->over_bound++ || age * s->worst_over_bound > s->worst_over * bound)
-                                s->worst_over = age, s->worst_over_bound = bound;
-                        }
-                    } else {
+                    // the bound in force at the load: the mode's, the producer's longest gap so far
+                    uint64_t bound = 0;
+                    const uint64_t gap = s->ch->copy() ? producers[s->ch->id].gap_so_far(cycle) : 0;
+                    if (modes.bound_at(*s->ch, gap, t_load, bound))
+                        s->judge(age, bound, k, o.age_scale, crash_prod && crash_prod->ch == s->ch);
+                    else
                         ++s->unjudged;
-                    }
                 }
                 s->import_cycles.add(cyc);
                 if (s->last_import) s->max_import_gap = std::max(s->max_import_gap, cycle - s->last_import);
@@ -470,55 +459,19 @@ int main(int argc, char **argv)
     const uint32_t done = m->done_o & all;
     uint32_t code[NB];
     for (int c = 0; c < NB; ++c) code[c] = m->code_o[c];
-    for (int c = 0; c < NB; ++c)
-        if (((done >> c) & 1u) && code[c] != 0) {
-            std::snprintf(b, sizeof b, "expected %s exit code 0, got 0x%x (%s)", plan.board_names[c].c_str(), code[c],
-                          code_text(code[c], plan).c_str());
-            fail("cpu", b);
-        }
-    for (int c = 0; c < NB; ++c) {
-        if ((m->trap_o >> c) & 1u) fail("liveness", "expected no trap, got a trap on " + plan.board_names[c]);
-        if ((m->bus_err_o >> c) & 1u) fail("liveness", "expected no unmapped access, got one from " + plan.board_names[c]);
-    }
-    if (m->error_o) {
-        std::snprintf(b, sizeof b, "expected no controller error, got error_o with %u rom errors", m->rom_errors_o);
-        fail("liveness", b);
-    }
     const bool crash_run = o.crash_board >= 0;
     bool cpu_failed = false;  // a board stopped by its own check starves its consumers: left to cpu
-    for (int c = 0; c < NB; ++c) cpu_failed = cpu_failed || (((done >> c) & 1u) && code[c] != 0);
-    for (int c = 0; c < NB && !cpu_failed; ++c) {
-        if (crash_run && c == o.crash_board) continue;
-        if (o.require_done && !crash_run && !((done >> c) & 1u)) {
-            std::snprintf(b, sizeof b, "expected %s to report done (its quotas met) within %llu cycles, it did not",
-                          plan.board_names[c].c_str(), (unsigned long long)o.cycles);
-            fail("liveness", b);
-        }
-        if (last_event[c] + o.cycles / 4 < cycle) {
-            std::snprintf(b, sizeof b, "expected %s to keep calling the driver to the end, its last event was "
-                          "at cycle %llu of %llu", plan.board_names[c].c_str(), (unsigned long long)last_event[c],
-                          (unsigned long long)cycle);
-            fail("liveness", b);
-        }
-    }
+    const BoardsAtEnd ends{done, m->trap_o & all, m->bus_err_o & all, {code[0], code[1], code[2], code[3]},
+                           m->error_o != 0, m->rom_errors_o, {last_event[0], last_event[1], last_event[2], last_event[3]}};
+    for (const auto &f : board_failures(ends, plan, o, cycle, cpu_failed)) fail(f.first.c_str(), f.second);
     // A crashed producer's channel is skipped; a stopped core's channels age too (left to cpu).
     const bool check_ages = o.fault_rate == 0 && o.hang_board < 0 && !cpu_failed;
     if (check_ages)
-        for (const Series &s : series)
-            if (s.over_bound) {
-                std::snprintf(b, sizeof b, "expected every age of %s at %s <= %.4g x its bound in force, got %llu over "
-                              "it (worst %llu clocks against %llu)", s.ch->name.c_str(), plan.board_names[s.board].c_str(),
-                              o.age_scale, (unsigned long long)s.over_bound, (unsigned long long)s.worst_over,
-                              (unsigned long long)s.worst_over_bound);
-                fail("age", b);
-            }
-    if (crash_run) {
-        if (crash_phase != 3) {
-            std::snprintf(b, sizeof b, "expected %s to crash inside an Export after cycle %llu, it never did "
-                          "(no Export began)", plan.board_names[o.crash_board].c_str(), (unsigned long long)o.crash_at);
-            fail("liveness", b);
-        }
-
+        for (const std::string &f : age_failures(series, plan, o)) fail("age", f);
+    if (crash_run && crash_phase != 3) {
+        std::snprintf(b, sizeof b, "expected %s to crash inside an Export after cycle %llu, it never did "
+                      "(no Export began)", plan.board_names[o.crash_board].c_str(), (unsigned long long)o.crash_at);
+        fail("liveness", b);
     }
     // Local time: every estimate with the rate within its bounds (sim/mobot_sim_clock.cpp).
     clock_bounds(clocks, series, plan);
@@ -527,34 +480,8 @@ int main(int argc, char **argv)
         if (check_ages && !(crash_run && c == o.crash_board) && !clock_verdict(clocks[c], c, o, plan, cycle, msg))
             fail("clock", msg);
     }
-    // Import termination: every judged Import within the compiler's bound, and
-    // without --stall every loop within the compiler's T and V.
-    for (Series &s : series) {
-        if (seen_event[s.board]) s.term.finish(o.term_scale, cycle, o.stall == 0);
-        if (s.term.over) {
-            const Termination &t = s.term;
-            std::snprintf(b, sizeof b, "expected every Import of %s at %s within %.4g passes and %.4g accesses "
-                          "(compiler: D %llu, T %llu, V %llu), got %llu over it (worst %llu passes, %llu accesses; "
-                          "first at cycle %llu)", s.ch->name.c_str(), plan.board_names[s.board].c_str(),
-                          o.term_scale * double(t.max_passes), o.term_scale * double(t.max_accesses),
-                          (unsigned long long)t.D, (unsigned long long)t.T, (unsigned long long)t.V,
-                          (unsigned long long)t.over, (unsigned long long)t.worst_over_passes,
-                          (unsigned long long)t.worst_over_accesses, (unsigned long long)t.worst_over_cycle);
-            fail("termination", b);
-        }
-    }
-    for (const Series &s : series) {
-        if (o.stall == 0 && s.term.outside) {
-            const Termination &t = s.term;
-            std::snprintf(b, sizeof b, "expected the Import loop of %s at %s within the compiler's T %llu and V %llu "
-                          "clocks (the bound's premise), got %llu Imports beyond (T up to %llu, V up to %llu; up "
-                          "to %llu passes against the bound %llu)", s.ch->name.c_str(), plan.board_names[s.board].c_str(),
-                          (unsigned long long)t.T, (unsigned long long)t.V, (unsigned long long)t.outside,
-                          (unsigned long long)t.t_max, (unsigned long long)t.v_max,
-                          (unsigned long long)t.worst_beyond_passes, (unsigned long long)t.max_passes);
-            fail("termination", b);
-        }
-    }
+    // Import termination (sim/mobot_sim_ages.cpp).
+    for (const std::string &f : termination_failures(series, plan, o, cycle, seen_event)) fail("termination", f);
     const bool radar_crash = crash_run && crash_phase == 3 && crash_prod->ch->name == "RadarMap";
     if (radar_crash && stale_after_crash == 0 && !cpu_failed)
         fail("staleness", "expected navigation to report RadarMap stale after the radar crashed, it never did");

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 #include "plan.h"
 #include "report.h"
@@ -84,6 +85,9 @@ struct Series {  // one channel at one consumer
     std::vector<uint64_t> bucket_max;  // worst age per time bucket (picture)
     std::vector<uint64_t> bucket_bound;  // the largest bound a sample in the bucket was judged by (0: none)
     Termination term;
+    // One judged age sample (time bucket k) against the bound in force;
+    // a crashed producer's channel counts toward no verdict (its ages grow).
+    void judge(uint64_t age, uint64_t bound, uint64_t k, double scale, bool crashed);
 };
 
 struct LocalClock {  // one board's local time (alb_clock): its estimates against the controller's time
@@ -105,6 +109,10 @@ struct Producer {  // a copy channel's producer
     Stat export_cycles;
     uint64_t exports = 0, stores = 0, last_store = 0, max_gap = 0;
     uint64_t first_store = 0;  // the cycle of its first store (the gap from reset)
+    // The longest gap between its Actual stores up to cycle, the one still
+    // open and the one from reset to the first included: a gap that holds a
+    // value's age.
+    uint64_t gap_so_far(uint64_t cycle) const { return std::max({max_gap, first_store, cycle - last_store}); }
 };
 
 // Schedule modes (sim/mobot_sim_modes.cpp): the controller's running mode
@@ -161,12 +169,31 @@ std::string clock_report(const LocalClock clocks[NB], const Options &o, const Pl
 // table and the series' JSON object.
 int load_termination(const std::string &plan_path, std::vector<Series> &series, const Plan &plan);
 void print_termination(const std::vector<Series> &series, const Plan &plan, const Options &o);
+// The end of a run (sim/mobot_sim_ages.cpp): the failures of check
+// "termination" (every judged Import within the compiler's bound; without
+// --stall every loop within its T and V; the Import in progress judged by
+// its passes so far) and of check "age" (each series' samples over their bound).
+std::vector<std::string> termination_failures(std::vector<Series> &series, const Plan &plan, const Options &o,
+                                              uint64_t cycle, const bool seen_event[NB]);
+std::vector<std::string> age_failures(const std::vector<Series> &series, const Plan &plan, const Options &o);
 std::string termination_json(const Termination &t);
 // The end of a run (sim/mobot_sim_report.cpp): the series' and the producers'
 // console tables, each returning its JSON array, and the verdict ("pass" or
 // "fail") from the failed checks (check -> first failure) and, for a negative
 // test (positive false), the checks that must fail; last is the closing line,
 // lines the failures to print.
+// The boards' state at the end of a run, and the failures (check, message)
+// of checks "cpu" and "liveness" it shows; cpu_failed: a core failed its own
+// check (its consumers starve: their liveness is left to cpu).
+struct BoardsAtEnd {
+    uint32_t done, trap, bus_err;  // a bit per board
+    uint32_t code[NB];             // exit codes (TOHOST)
+    bool error;                    // the controller's error_o ...
+    unsigned rom_errors;           // ... and its rom_errors_o
+    uint64_t last_event[NB];       // each board's last event (cycle)
+};
+std::vector<std::pair<std::string, std::string>> board_failures(const BoardsAtEnd &e, const Plan &plan, const Options &o,
+                                                                uint64_t cycle, bool &cpu_failed);
 std::string series_report(const std::vector<Series> &series, const Plan &plan);
 std::string producers_report(const std::map<int, Producer> &producers, const Plan &plan);
 std::string judge(const std::map<std::string, std::string> &failed, const std::vector<std::string> &expect,

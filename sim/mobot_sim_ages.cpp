@@ -181,3 +181,61 @@ bool write_ages(const std::string &path, const std::vector<Series> &series, cons
     std::fclose(f);
     return true;
 }
+
+void Series::judge(uint64_t age, uint64_t bound, uint64_t k, double scale, bool crashed)
+{
+    bucket_bound[k] = std::max(bucket_bound[k], bound);
+    if (crashed) return;
+    worst_pm = std::max(worst_pm, bound ? 1000 * age / bound : 0);
+    if (double(age) > scale * double(bound) && (!over_bound++ || age * worst_over_bound > worst_over * bound))
+        worst_over = age, worst_over_bound = bound;
+}
+
+std::vector<std::string> age_failures(const std::vector<Series> &series, const Plan &plan, const Options &o)
+{
+    std::vector<std::string> out;
+    char b[512];
+    for (const Series &s : series)
+        if (s.over_bound) {
+            std::snprintf(b, sizeof b, "expected every age of %s at %s <= %.4g x its bound in force, got %llu over "
+                          "it (worst %llu clocks against %llu)", s.ch->name.c_str(), plan.board_names[s.board].c_str(),
+                          o.age_scale, (unsigned long long)s.over_bound, (unsigned long long)s.worst_over,
+                          (unsigned long long)s.worst_over_bound);
+            out.push_back(b);
+        }
+    return out;
+}
+
+std::vector<std::string> termination_failures(std::vector<Series> &series, const Plan &plan, const Options &o,
+                                              uint64_t cycle, const bool seen_event[NB])
+{
+    std::vector<std::string> out;
+    char b[512];
+    for (Series &s : series) {
+        if (seen_event[s.board]) s.term.finish(o.term_scale, cycle, o.stall == 0);
+        if (s.term.over) {
+            const Termination &t = s.term;
+            std::snprintf(b, sizeof b, "expected every Import of %s at %s within %.4g passes and %.4g accesses "
+                          "(compiler: D %llu, T %llu, V %llu), got %llu over it (worst %llu passes, %llu accesses; "
+                          "first at cycle %llu)", s.ch->name.c_str(), plan.board_names[s.board].c_str(),
+                          o.term_scale * double(t.max_passes), o.term_scale * double(t.max_accesses),
+                          (unsigned long long)t.D, (unsigned long long)t.T, (unsigned long long)t.V,
+                          (unsigned long long)t.over, (unsigned long long)t.worst_over_passes,
+                          (unsigned long long)t.worst_over_accesses, (unsigned long long)t.worst_over_cycle);
+            out.push_back(b);
+        }
+    }
+    for (const Series &s : series) {
+        if (o.stall == 0 && s.term.outside) {
+            const Termination &t = s.term;
+            std::snprintf(b, sizeof b, "expected the Import loop of %s at %s within the compiler's T %llu and V %llu "
+                          "clocks (the bound's premise), got %llu Imports beyond (T up to %llu, V up to %llu; up "
+                          "to %llu passes against the bound %llu)", s.ch->name.c_str(), plan.board_names[s.board].c_str(),
+                          (unsigned long long)t.T, (unsigned long long)t.V, (unsigned long long)t.outside,
+                          (unsigned long long)t.t_max, (unsigned long long)t.v_max,
+                          (unsigned long long)t.worst_beyond_passes, (unsigned long long)t.max_passes);
+            out.push_back(b);
+        }
+    }
+    return out;
+}

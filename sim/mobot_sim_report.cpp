@@ -78,3 +78,43 @@ std::string judge(const std::map<std::string, std::string> &failed, const std::v
     }
     return verdict;
 }
+
+std::vector<std::pair<std::string, std::string>> board_failures(const BoardsAtEnd &e, const Plan &plan, const Options &o,
+                                                                uint64_t cycle, bool &cpu_failed)
+{
+    std::vector<std::pair<std::string, std::string>> out;
+    char b[512];
+    for (int c = 0; c < NB; ++c)
+        if (((e.done >> c) & 1u) && e.code[c] != 0) {
+            std::snprintf(b, sizeof b, "expected %s exit code 0, got 0x%x (%s)", plan.board_names[c].c_str(), e.code[c],
+                          code_text(e.code[c], plan).c_str());
+            out.emplace_back("cpu", b);
+        }
+    for (int c = 0; c < NB; ++c) {
+        if ((e.trap >> c) & 1u) out.emplace_back("liveness", "expected no trap, got a trap on " + plan.board_names[c]);
+        if ((e.bus_err >> c) & 1u)
+            out.emplace_back("liveness", "expected no unmapped access, got one from " + plan.board_names[c]);
+    }
+    if (e.error) {
+        std::snprintf(b, sizeof b, "expected no controller error, got error_o with %u rom errors", e.rom_errors);
+        out.emplace_back("liveness", b);
+    }
+    const bool crash_run = o.crash_board >= 0;
+    cpu_failed = false;
+    for (int c = 0; c < NB; ++c) cpu_failed = cpu_failed || (((e.done >> c) & 1u) && e.code[c] != 0);
+    for (int c = 0; c < NB && !cpu_failed; ++c) {
+        if (crash_run && c == o.crash_board) continue;
+        if (o.require_done && !crash_run && !((e.done >> c) & 1u)) {
+            std::snprintf(b, sizeof b, "expected %s to report done (its quotas met) within %llu cycles, it did not",
+                          plan.board_names[c].c_str(), (unsigned long long)o.cycles);
+            out.emplace_back("liveness", b);
+        }
+        if (e.last_event[c] + o.cycles / 4 < cycle) {
+            std::snprintf(b, sizeof b, "expected %s to keep calling the driver to the end, its last event was "
+                          "at cycle %llu of %llu", plan.board_names[c].c_str(), (unsigned long long)e.last_event[c],
+                          (unsigned long long)cycle);
+            out.emplace_back("liveness", b);
+        }
+    }
+    return out;
+}
