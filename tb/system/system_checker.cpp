@@ -386,10 +386,8 @@ void SystemChecker::measure(Instance &in, const DestPub &p, const DestPub &prev,
         for (; d.pending <= p.seq && d.pending < s.publish_cycle.size(); ++d.pending) {
             if (s.publish_cycle[d.pending] < latency_from_) continue;
             uint64_t lat = cycle - s.publish_cycle[d.pending], bound = c.latency, bound_retry = c.latency_retry;
-            if (bound_fn_ && !bound_fn_(in.chan, s.publish_cycle[d.pending], cycle, bound, bound_retry)) {
-                ++st.across_switch;
-                continue;
-            }
+            if (bound_fn_ && !bound_fn_(in.chan, s.publish_cycle[d.pending], cycle, bound, bound_retry))
+                continue;   // no bound (ModeWatch counts it)
             if (ages_)
                 std::fprintf(ages_, "%s,%d,%llu,%llu\n", c.name.c_str(), in.board, static_cast<unsigned long long>(cycle),
                              static_cast<unsigned long long>(lat));
@@ -416,10 +414,8 @@ void SystemChecker::measure(Instance &in, const DestPub &p, const DestPub &prev,
         const uint64_t last_taken = prev.taken_at + time_offset_;
         uint64_t age = !prev_is_image && last_taken >= latency_from_ ? cycle - last_taken : 0;
         uint64_t bound = c.latency, bound_retry = c.latency_retry;
-        if (age && bound_fn_ && !bound_fn_(in.chan, last_taken, cycle, bound, bound_retry)) {
-            ++st.across_switch;
-            return;
-        }
+        if (age && bound_fn_ && !bound_fn_(in.chan, last_taken, cycle, bound, bound_retry))
+            return;   // no bound (ModeWatch counts it)
         if (ages_ && !prev_is_image && last_taken >= latency_from_)
             std::fprintf(ages_, "%s,%d,%llu,%llu\n", c.name.c_str(), in.board, static_cast<unsigned long long>(cycle),
                          static_cast<unsigned long long>(age));

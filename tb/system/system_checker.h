@@ -110,7 +110,6 @@ public:
         uint64_t publications = 0, imports = 0, imports_new = 0;
         uint64_t latency_max = 0, latency_sum = 0, latency_n = 0, latency_over = 0;
         uint64_t over_retry_bound = 0;                      // beyond the with-retries bound too
-        uint64_t across_switch = 0;                         // not judged: no bound (schedule modes, BoundFn false)
         uint64_t max_age_seen = 0, last_age_seen = 0;       // by the consumer, via taken_at
         uint64_t max_taken_minus_publish = 0;               // time/position correlation
         uint64_t landed_unanswered = 0;                     // Actual stores performed, answer lost (err or
