@@ -1,7 +1,8 @@
 """figures_integration.py -- the figure tables of faults, channel kinds, cores
 and hosts (tools/figures.py): the compiler's fault plan, the fault rates
 measured against it, the SymbiYosys proofs, the kinds' cost, VexRiscv's cost
-and tests, the make sim excerpt, the driver on host threads.  SECTIONS maps
+and tests, the make sim excerpt, the schedule modes' switches, the driver on
+host threads.  SECTIONS maps
 each block name to the function that makes its table."""
 from figures_common import Absent, load, missing, table, n
 from suite_report import TARGET   # suite name -> its make target
@@ -245,6 +246,34 @@ def sim_excerpt():
 
 
 SECTIONS["sim-excerpt"] = sim_excerpt
+
+
+def mode_switches():
+    """Switch latency against the compiler's bounds in the tests with schedule
+    modes (make test: the robot's and the system test's runs)."""
+    runs = [("pico_boards_modes", "robot, fault-free"), ("pico_boards_modes_faults", "robot, 5 % faults"),
+            ("system_modes", "system test, fault-free"),
+            ("system_modes-faults-20-planned", "system test, 20 % faults (image planned for 20 %)")]
+    rows = []
+    for name, what in runs:
+        r = load(name + ".json")
+        if not r:
+            rows.append([what, f"_not measured yet: `make test` writes `{name}.json`_"] + [""] * 5)
+            continue
+        m = r.get("modes") or {}
+        sw = m.get("switches") or r.get("mode_switches") or []
+        worst = max(sw, key=lambda s: s["latency"] / max(1, s["bound"]), default=None)
+        at_target = max((s.get("bound_at_target", 0) for s in sw), default=0)
+        verdict = r.get("verdict") or ("pass" if not r.get("violations_total") and not r.get("scenario_failures")
+                                       else "fail")
+        rows.append([what, len(sw), n(worst["latency"]) if worst else "-", n(worst["bound"]) if worst else "-",
+                     n(at_target) if at_target else "-", n(m["judged_across_a_switch"]) if "judged_across_a_switch"
+                     in m else "-", verdict])
+    return table(["run", "switches", "worst latency (clocks)", "its bound", "largest bound at the target",
+                  "values judged across a switch", "verdict"], rows)
+
+
+SECTIONS["mode-switches"] = mode_switches
 
 
 def host_threads():
