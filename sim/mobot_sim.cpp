@@ -519,8 +519,6 @@ int main(int argc, char **argv)
     std::printf("  fault rate per access: nominal %.4f, measured %.4f (mean burst %.3g accesses; tolerance +-%.4f, "
                 "%.0f sigma)%s\n", o.fault_rate, rate_measured, fault_model.mean_burst(), rate_tol,
                 FaultModel::kSigmas, rate_ok ? "" : ": OUT OF TOLERANCE");
-    std::printf("  %-11s %-11s %7s %7s %9s %9s %9s %9s %6s %11s\n", "channel", "consumer", "New", "Old",
-                "age min", "age mean", "age max", "bound", "ratio", "cyc/Import");
     JsonReport r;
     r.str("label", o.label).num("seed", double(o.seed)).num("cycles", double(cycle)).num("clock_hz", plan.clock_hz)
      .num("fault_rate", o.fault_rate).num("faults_injected", double(faults)).num("requests", double(requests))

@@ -80,6 +80,7 @@ struct Series {  // one channel at one consumer
     uint64_t news = 0, olds = 0, news_after_crash = 0, over_bound = 0, bound = 0;
     uint64_t worst_over = 0, worst_over_bound = 0;  // the sample furthest over its bound: age, bound
     uint64_t unjudged = 0;             // samples no bound applies to (a mode without the channel, settling)
+    Stat judged_age;                   // the samples judged against a bound (the console row; age: all samples)
     uint64_t worst_pm = 0;             // the worst judged age / bound, per mille
     uint64_t last_import = 0, max_import_gap = 0;  // the consumer's Imports of it: the longest gap (cycles)
     std::vector<uint64_t> bucket_max;  // worst age per time bucket (picture)

@@ -186,6 +186,7 @@ void Series::judge(uint64_t age, uint64_t bound, uint64_t k, double scale, bool 
 {
     bucket_bound[k] = std::max(bucket_bound[k], bound);
     if (crashed) return;
+    judged_age.add(age);
     worst_pm = std::max(worst_pm, bound ? 1000 * age / bound : 0);
     if (double(age) > scale * double(bound) && (!over_bound++ || age * worst_over_bound > worst_over * bound))
         worst_over = age, worst_over_bound = bound;

@@ -16,21 +16,47 @@ static void append(std::string &js, const JsonReport &e)
     js += (js.size() > 1 ? ",\n  " : "\n  ") + t.substr(0, t.size() - 1);
 }
 
+// The row's ages are those judged against a bound; the others (a mode without
+// the channel or settling after a switch; after its producer crashed) get a
+// line of their own below it, so that their age is never read against the bound.
 std::string series_report(const std::vector<Series> &series, const Plan &plan)
 {
+    std::printf("  %-11s %-11s %7s %7s %9s %9s %9s %9s %6s %11s\n", "channel", "consumer", "New", "Old",
+                "age min", "age mean", "age max", "bound", "ratio", "cyc/Import");
     std::string js = "[";
     for (const Series &s : series) {
-        std::printf("  %-11s %-11s %7llu %7llu %9llu %9.0f %9llu %9llu %6.3f %11.0f\n", s.ch->name.c_str(),
+        const Stat &a = s.judged_age;
+        char lo[24] = "-", mean[24] = "-", hi[24] = "-";  // no age judged: "-"
+        if (a.n) {
+            std::snprintf(lo, sizeof lo, "%llu", (unsigned long long)a.min);
+            std::snprintf(mean, sizeof mean, "%.0f", a.mean());
+            std::snprintf(hi, sizeof hi, "%llu", (unsigned long long)a.max);
+        }
+        std::printf("  %-11s %-11s %7llu %7llu %9s %9s %9s %9llu %6.3f %11.0f\n", s.ch->name.c_str(),
                     plan.board_names[s.board].c_str(), (unsigned long long)s.news, (unsigned long long)s.olds,
-                    (unsigned long long)s.age.min, s.age.mean(), (unsigned long long)s.age.max,
-                    (unsigned long long)s.bound, double(s.worst_pm) / 1000.0,
-                    s.import_cycles.mean());
+                    lo, mean, hi, (unsigned long long)s.bound, double(s.worst_pm) / 1000.0, s.import_cycles.mean());
+        const uint64_t crashed = s.age.n - a.n - s.unjudged;
+        if (s.age.n > a.n) {
+            std::string without;  // the modes that do not carry the channel
+            for (const PlanMode &m : plan.modes)
+                if (!m.carries(s.ch->id)) without += (without.empty() ? "" : ", ") + m.name;
+            std::printf("  %-23s + %llu ages not judged", "", (unsigned long long)(s.age.n - a.n));
+            if (s.age.max > a.max) std::printf(", up to %llu", (unsigned long long)s.age.max);
+            const bool both = s.unjudged && crashed;
+            if (s.unjudged)
+                std::printf(": %s%s, which carries no %s, or settling after the switch back", both ?
+                            (std::to_string(s.unjudged) + " in ").c_str() : "in ",
+                            without.empty() ? "a mode" : without.c_str(), s.ch->name.c_str());
+            if (crashed)
+                std::printf("%s after its producer crashed", both ? ("; " + std::to_string(crashed)).c_str() : ":");
+            std::printf("\n");
+        }
         JsonReport e;
         e.str("channel", s.ch->name).str("kind", s.ch->kind).str("consumer", plan.board_names[s.board])
          .num("new", double(s.news)).num("old", double(s.olds)).num("bound", double(s.bound))
          .num("latency_bound", double(s.ch->latency_retry)).num("period", double(s.ch->period))
          .num("over_bound_samples", double(s.over_bound))
-         .num("worst_ratio", double(s.worst_pm) / 1000.0).num("unjudged_samples", double(s.unjudged)).num("new_after_crash", double(s.news_after_crash)).raw("age", s.age.json())
+         .num("worst_ratio", double(s.worst_pm) / 1000.0).num("unjudged_samples", double(s.unjudged)).num("new_after_crash", double(s.news_after_crash)).raw("age", s.age.json()).raw("judged_age", s.judged_age.json())
          .raw("import_cycles", s.import_cycles.json()).raw("termination", termination_json(s.term));
         append(js, e);
     }
