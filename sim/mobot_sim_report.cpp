@@ -17,7 +17,7 @@ static void append(std::string &js, const JsonReport &e)
 }
 
 // The row's ages are those judged against a bound; the others (a mode without
-// the channel or settling after a switch; after its producer crashed) get a
+// the channel or settling after a switch; a producer that crashes in the run) get a
 // line of their own below it, so that their age is never read against the bound.
 std::string series_report(const std::vector<Series> &series, const Plan &plan)
 {
@@ -48,7 +48,7 @@ std::string series_report(const std::vector<Series> &series, const Plan &plan)
                             (std::to_string(s.unjudged) + " in ").c_str() : "in ",
                             without.empty() ? "a mode" : without.c_str(), s.ch->name.c_str());
             if (crashed)
-                std::printf("%s after its producer crashed", both ? ("; " + std::to_string(crashed)).c_str() : ":");
+                std::printf("%s from a producer that crashes in this run", both ? ("; " + std::to_string(crashed)).c_str() : ":");
             std::printf("\n");
         }
         JsonReport e;
