@@ -5,6 +5,12 @@
 // requester behaviour, including the ones Wishbone forbids (changing its fields
 // in the middle of an access, dropping cyc before the answer while another
 // requester raises it in the same clock, raising cyc in the clock after reset).
+// One exception, with HOLD_DAT 0 only (the controller's configuration): the
+// bus master then passes the store data through instead of holding them, and
+// its rule is that the requesters hold them, so dat_kept assumes it: while a
+// write access is pending and its owner holds cyc, the owner's r_dat_i is what
+// it was in the last clock (the owner may still change its address, we and
+// sel, and any requester's data while it is not the pending write's owner).
 // The system-bus slave answers as a classic slave may, or never
 // (formal/wb/fwb_master.v on m_*, which asserts the master's requests: stb only
 // with cyc, cyc low after reset, and req_stable -- a request carried over an
@@ -15,8 +21,10 @@
 // never together, only to a requester holding cyc, none in the clock after
 // reset.  Reset is high in the first clock only: the RTL's registers start
 // unconstrained, so this is a reset from any state.  One clock.
-// REQS = 3, ADDR_WIDTH = 2, BOARD_BITS = 2, TIMEOUT = 5 (3 counter bits, so a
-// timeout one clock late is representable).
+// Defaults REQS = 3, ADDR_WIDTH = 2, BOARD_BITS = 2, TIMEOUT = 5 (3 counter
+// bits, so a timeout one clock late is representable), HOLD_DAT = 1; the
+// script's ctrl tasks set the controller's own parameters instead
+// (ctrl_params.py reads them from rtl/albatross_controller.v).
 // A reference model (f_*) states the rules of the RTL header:
 //   pend    an access is pending: on m_* in the last clock, neither acked nor
 //           failed (f_outstanding_o of the m_* property set, not in the gap
@@ -37,13 +45,19 @@
 //               clock): a request passes in the clock it is raised, and a
 //               failure drops cyc for exactly one clock.
 //   fail_gap    in the clock after a failure m_cyc_o is low.
-//   own_fields  in an access's first clock, m_we_o, m_sel_o, m_dat_o are the
-//               owner's.
+//   own_fields  in an access's first clock, m_we_o, m_sel_o (HOLD_DAT 1: and
+//               m_dat_o) are the owner's.
+//   dat_pass    (HOLD_DAT 0) in every clock with m_cyc_o, m_dat_o is the
+//               present owner's r_dat_i: the data pass through, from the
+//               owner only (in a hand-over, the new owner's from its
+//               access's first clock).
 //   adr_owner   in an access's first clock, m_adr_o = {owner's board, owner's
 //               word}.
 //   hold_fields while an access is pending, m_* keep the last clock's fields
-//               (whatever the owner now drives; req_stable of fwb_master says
-//               the same from the slave's side).
+//               (whatever the owner now drives; HOLD_DAT 0: m_we_o, m_adr_o,
+//               m_sel_o only, the data being dat_pass's; req_stable of
+//               fwb_master says the same from the slave's side, store data
+//               included).
 //   handover    a different owner's access never follows another's without an
 //               answer or an idle clock between them.
 //   own_silent  a requester other than the owner sees neither ack nor err.
@@ -61,6 +75,9 @@
 //               never together, come only while it holds cyc, and never in the
 //               clock after reset.
 //   own_range   the model's owner is a requester (< REQS): its own invariant.
+//   we_model    while an access is pending, the model's write flag of the
+//               access (f_we_q, which dat_kept reads) is m_we_o of the last
+//               clock: its own invariant.
 // Induction strengthening (white-box): with -DF_PROBE the script connects f_busy,
 // f_owner, f_gap, f_tmo, f_pend and f_held to the RTL's busy_q, owner_q, gap_q,
 // tmo_q, pend_q, held_q (Yosys has no hierarchical references: joined after
@@ -71,7 +88,8 @@ module fbus_master #(
     parameter REQS       = 3,  // requesters
     parameter ADDR_WIDTH = 2,  // word-address bits
     parameter BOARD_BITS = 2,  // board-field bits
-    parameter TIMEOUT    = 5   // clocks of cyc without ack/err before an access fails
+    parameter TIMEOUT    = 5,  // clocks of cyc without ack/err before an access fails
+    parameter HOLD_DAT   = 1   // the bus master's HOLD_DAT (0: store data passed through, dat_kept assumed)
 ) (
     input  wire                         clk_i,
     input  wire                         rst_i,
@@ -87,6 +105,9 @@ module fbus_master #(
 );
 
     localparam AW = BOARD_BITS + ADDR_WIDTH;   // system-bus address bits
+    localparam TMO_BITS = (TIMEOUT > 1) ? $clog2(TIMEOUT) : 1;   // the RTL's tmo_q width
+    localparam OWN_BITS = (REQS > 2) ? 2 : 1;                   // the RTL's owner_q width
+    localparam WAIT_W   = ($clog2(TIMEOUT + 1) > 4) ? $clog2(TIMEOUT + 1) : 4;   // f_wait_o reaches TIMEOUT
 
     wire [31:0]     r_dat_o;
     wire [REQS-1:0] r_ack_o, r_err_o;
@@ -98,7 +119,7 @@ module fbus_master #(
     wire [15:0]     fails_o;
 
     albatross_bus_master #(.ADDR_WIDTH(ADDR_WIDTH), .BOARD_BITS(BOARD_BITS), .REQS(REQS),
-                           .TIMEOUT(TIMEOUT)) dut (
+                           .TIMEOUT(TIMEOUT), .HOLD_DAT(HOLD_DAT)) dut (
         .clk_i(clk_i), .rst_i(rst_i),
         .r_cyc_i(r_cyc_i), .r_we_i(r_we_i), .r_adr_i(r_adr_i), .r_board_i(r_board_i),
         .r_sel_i(r_sel_i), .r_dat_i(r_dat_i), .r_dat_o(r_dat_o), .r_ack_o(r_ack_o),
@@ -116,8 +137,8 @@ module fbus_master #(
 
     // ------------------------------------------------ the Wishbone property sets
     wire       m_pv, m_out, m_rack;
-    wire [3:0] m_wait;
-    fwb_master #(.AW(AW), .DW(32), .OPT_ABORT(1)) wb_m (
+    wire [WAIT_W-1:0] m_wait;
+    fwb_master #(.AW(AW), .DW(32), .OPT_ABORT(1), .WAIT_W(WAIT_W)) wb_m (
         .clk_i(clk_i), .rst_i(rst_i), .cyc_i(m_cyc_o), .stb_i(m_stb_o), .we_i(m_we_o),
         .adr_i(m_adr_o), .sel_i(m_sel_o), .wdat_i(m_dat_o), .rdat_i(m_dat_i),
         .ack_i(m_ack_i), .err_i(m_err_i),
@@ -149,11 +170,16 @@ module fbus_master #(
     localparam FW = 1 + AW + 4 + 32;
     reg  [FW-1:0] f_fld_q;          // m_* fields of the last clock
     reg         f_gap2_q  = 1'b0;   // the clock before the last was a failure (covers)
+    reg  [REQS*32-1:0] f_rdat_q;    // r_dat_i of the last clock (dat_kept)
+    reg         f_we_q    = 1'b0;   // the present access is a write (its first clock's we, kept while pending)
     wire        f_pend = m_out && !f_gap_q;
     wire [1:0]  f_own  = (f_pend || (f_hold_q && cyc4[f_own_q])) ? f_own_q : f_first;
     wire        m_req  = m_cyc_o && m_stb_o;
     wire [FW-1:0] m_fld = {m_we_o, m_adr_o, m_sel_o, m_dat_o};
     wire        f_fail = m_req && !m_ack_i && (m_err_i || m_wait == TIMEOUT - 1);
+    wire        f_we   = f_pend ? f_we_q : r_we_i[f_own];
+    // the fields that are held while an access is pending (HOLD_DAT 0: not the data)
+    localparam [FW-1:0] HELD = (HOLD_DAT != 0) ? {FW{1'b1}} : {{(FW-32){1'b1}}, 32'd0};
     always @(posedge clk_i) begin
         if (rst_i) begin
             f_hold_q  <= 1'b0;
@@ -175,6 +201,15 @@ module fbus_master #(
         f_abort_q <= f_pend && !cyc4[f_own] && !rst_i;
         f_fld_q  <= m_fld;
         f_gap2_q <= f_gap_q && !rst_i;
+        f_rdat_q <= r_dat_i;
+        f_we_q   <= f_we;
+    end
+
+    // HOLD_DAT 0: the requesters keep a pending write's data (the bus master's rule).
+    always @* begin
+        if (HOLD_DAT == 0 && !init_q)
+            dat_kept: assume(!(f_pend && cyc4[f_own] && f_we_q) ||
+                             r_dat_i[f_own*32 +: 32] == f_rdat_q[f_own*32 +: 32]);
     end
 
     // ------------------------------------------------------------ properties
@@ -191,8 +226,9 @@ module fbus_master #(
             pass_now:    assert(m_cyc_o == (cyc4[f_own] && !f_gap_q && !f_rst_q) && m_stb_o == m_cyc_o);
             fail_gap:    assert(!f_gap_q || !m_cyc_o);
             own_fields:  assert(!m_cyc_o || f_pend || (m_we_o == r_we_i[f_own] && m_sel_o == r_sel_i[f_own*4 +: 4] &&
-                                             m_dat_o == r_dat_i[f_own*32 +: 32]));
-            hold_fields: assert(!m_cyc_o || !f_pend || m_fld == f_fld_q);
+                                             (HOLD_DAT == 0 || m_dat_o == r_dat_i[f_own*32 +: 32])));
+            dat_pass:    assert(HOLD_DAT != 0 || !m_cyc_o || m_dat_o == r_dat_i[f_own*32 +: 32]);
+            hold_fields: assert(!m_cyc_o || !f_pend || (m_fld & HELD) == (f_fld_q & HELD));
             handover:    assert(!(m_cyc_o && f_mcyc_q && !f_mans_q) || f_pend);
             adr_owner:   assert(!m_cyc_o || f_pend || m_adr_o == {r_board_i[f_own*BOARD_BITS +: BOARD_BITS],
                                                         r_adr_i[f_own*ADDR_WIDTH +: ADDR_WIDTH]});
@@ -208,33 +244,36 @@ module fbus_master #(
             req_ans_cyc:   assert(((r_ack_o | r_err_o) & ~r_cyc_i) == {REQS{1'b0}});
             req_ans_reset: assert(!f_rst_q || (r_ack_o | r_err_o) == {REQS{1'b0}});
             own_range:   assert(f_own_q < REQS);   // the model's own invariant
+            we_model:    assert(!f_pend || f_we_q == f_fld_q[FW-1]);
         end
     end
 
     // ------------------------------------------------ induction strengthening
 `ifdef F_PROBE
     (* keep *) wire       f_busy;    // dut.busy_q, joined by the script
-    (* keep *) wire [1:0] f_owner;   // dut.owner_q
+    (* keep *) wire [OWN_BITS-1:0] f_owner;   // dut.owner_q
     (* keep *) wire       f_gap;     // dut.gap_q
-    (* keep *) wire [2:0] f_tmo;     // dut.tmo_q
+    (* keep *) wire [TMO_BITS-1:0] f_tmo;   // dut.tmo_q
     (* keep *) wire       f_pendr;   // dut.pend_q
     (* keep *) wire [FW-1:0] f_held; // dut.held_q
     always @* begin
         if (!init_q) begin
-            inv_owner: assert(f_busy == f_hold_q && f_owner == f_own_q);
+            inv_owner: assert(f_busy == f_hold_q && {{(2-OWN_BITS){1'b0}}, f_owner} == f_own_q);
             inv_gap:   assert(f_gap == (f_gap_q || f_rst_q));
-            inv_tmo:   assert(f_tmo == ((f_gap_q || f_rst_q) ? 3'd0 : m_wait[2:0]) && (f_gap_q || m_wait < TIMEOUT));
-            inv_out:   assert(m_out == (m_wait != 4'd0));
+            inv_tmo:   assert(f_tmo == ((f_gap_q || f_rst_q) ? {TMO_BITS{1'b0}} : m_wait[TMO_BITS-1:0]) &&
+                              (f_gap_q || m_wait < TIMEOUT));
+            inv_out:   assert(m_out == (m_wait != {WAIT_W{1'b0}}));
             inv_pend:  assert(f_pendr == f_pend);
-            inv_held:  assert(!f_pend || f_held == f_fld_q);
+            inv_held:  assert(!f_pend || (f_held & HELD) == (f_fld_q & HELD));
         end
     end
 `endif
 
     // ------------------------------------------------------ non-vacuity covers
-    // (task cover): a timeout err to the last requester; the bus handed in one
-    // clock to a requester that was waiting; an ack of a retry right after the
-    // gap of a failure; two failures counted.
+    // (tasks cover and cover_ctrl): a timeout err to the last requester; the
+    // bus handed in one clock to a requester that was waiting; an ack of a
+    // retry right after the gap of a failure; two failures counted; and the
+    // ones commented below.
     always @* begin
         if (!init_q) begin
             cover_timeout:  cover(r_err_o[REQS-1] && !m_err_i);
@@ -253,6 +292,15 @@ module fbus_master #(
             cover_abort:    cover(f_abort_q && f_own != f_own_q && f_cyc_q[f_own] && m_req && m_ack_i);
             // a reset with a requester holding cyc, then its access acked
             cover_reset:    cover(f_rst_q && r_cyc_i[0]);
+            // a write acked after a clock pending, its data those of its first
+            // clock (HOLD_DAT 0: dat_kept leaves such a write possible)
+            cover_write_held: cover(f_pend && m_req && m_we_o && m_ack_i && m_dat_o == f_fld_q[31:0]);
+            // the hand-over in one clock: the owner, answered in the last
+            // clock, drops cyc in the clock in which another requester raises
+            // it; that one's write is on the bus at once, with its own data
+            // (not the old owner's), and acked in its first clock
+            cover_drop_raise: cover(f_hold_q && f_mans_q && !cyc4[f_own_q] && f_own != f_own_q && !f_cyc_q[f_own] &&
+                                    m_req && m_we_o && m_ack_i && m_dat_o != r_dat_i[f_own_q*32 +: 32]);
         end
     end
 `endif
