@@ -1,5 +1,7 @@
 """timeline.svg: one schedule cycle, a lane for the bus and one per channel;
-with [[mode]], one such lane group per mode, the start-up mode first."""
+with [[mode]], one such lane group per mode, the start-up mode first.  A
+channel keeps its colour in every mode, and a mode's group keeps an empty
+lane for each channel of another mode that it does not carry."""
 
 from __future__ import annotations
 
@@ -32,17 +34,31 @@ def _lighten(hex_color: str, f: float) -> str:
     return f"#{r:02x}{g:02x}{b:02x}"
 
 
-def render_svg(system: System, plan: Plan, rep: dict, heading: str = "") -> str:
+def _route(system: System, ch) -> str:
+    """producer -> consumers; the controller where a side is no board."""
+    return (f"{system.boards[ch.producer] if ch.producer is not None else 'controller'} "
+            f"\u2192 {', '.join(system.boards[c] for c in ch.consumers) or 'controller'}")
+
+
+def channel_colors(names) -> dict:
+    """One colour per channel name, in the order given."""
+    return {name: PALETTE[i % len(PALETTE)] for i, name in enumerate(names)}
+
+
+def render_svg(system: System, plan: Plan, rep: dict, heading: str = "", colors: dict | None = None,
+               absent: tuple = ()) -> str:
+    """colors: the colour of each channel by name (default: by its place in
+    system.channels); absent: (name, route) of channels this schedule does
+    not carry, each given an empty lane (another mode's channels)."""
     hz = system.clock_hz
     C = plan.cycle
-    routes = {ch.index: f"{system.boards[ch.producer] if ch.producer is not None else 'controller'} "
-                        f"\u2192 {', '.join(system.boards[c] for c in ch.consumers)}" for ch in system.channels}
-    label_w = int(max([200] + [5.6 * len(r) + 24 for r in routes.values()]
-                      + [7.4 * len(ch.name) + 70 for ch in system.channels]))
+    routes = {ch.index: _route(system, ch) for ch in system.channels}
+    label_w = int(max([200] + [5.6 * len(r) + 24 for r in list(routes.values()) + [r for _, r in absent]]
+                      + [7.4 * len(n) + 70 for n in [ch.name for ch in system.channels] + [n for n, _ in absent]]))
     right_w, plot_w = 190, 1000
     width = label_w + plot_w + right_w
     top, lane_h, box_h = 74, 34, 22
-    n_lanes = 1 + len(system.channels)
+    n_lanes = 1 + len(system.channels) + len(absent)
     axis_y = top + n_lanes * lane_h + 6
     legend_y = axis_y + 40
     height = legend_y + 38
@@ -51,7 +67,8 @@ def render_svg(system: System, plan: Plan, rep: dict, heading: str = "") -> str:
     def X(clk):
         return label_w + clk * sx
 
-    colors = {ch.index: PALETTE[i % len(PALETTE)] for i, ch in enumerate(system.channels)}
+    by_name = colors or channel_colors([ch.name for ch in system.channels] + [n for n, _ in absent])
+    colors = {ch.index: by_name[ch.name] for ch in system.channels}
     font = "font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\""
     o = []
     o.append(f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
@@ -154,6 +171,18 @@ def render_svg(system: System, plan: Plan, rep: dict, heading: str = "") -> str:
         o.append(f'<text x="{label_w + plot_w + 12}" y="{y + 28}" font-size="9.5" fill="#666">'
                  f'\u00d7{len(ch.slots)} per cycle, L = {ch.slot_len} clk</text>')
 
+    # the channels of other modes that this one does not carry: an empty lane each
+    for li, (name, route) in enumerate(absent, 1 + len(system.channels)):
+        y = top + li * lane_h
+        if li % 2 == 0:
+            o.append(f'<rect x="0" y="{y}" width="{width}" height="{lane_h}" fill="#fafafa"/>')
+        o.append(f'<text x="{label_w - 10}" y="{y + 15}" font-size="12" font-weight="bold" text-anchor="end" '
+                 f'fill="{_lighten(by_name[name], 0.35)}">{_esc(name)}</text>')
+        o.append(f'<text x="{label_w - 10}" y="{y + 28}" font-size="9.5" text-anchor="end" fill="#999">'
+                 f'{_esc(route)}</text>')
+        o.append(f'<text x="{label_w + 8}" y="{y + 21}" font-size="11" fill="#999">'
+                 'not carried in this mode</text>')
+
     # legend
     lx, ly = label_w, legend_y
     col = "#4e79a7"
@@ -178,11 +207,20 @@ def render_modes_svg(system: System, plan: Plan, rep: dict) -> str:
     plans = getattr(system, "mode_plans", None)
     if not plans:
         return render_svg(system, plan, rep)
+    # every channel of any mode, the start-up mode's first: one colour each in every group
+    names, routes = [], {}
+    for _, s, _, _ in plans:
+        for ch in s.channels:
+            if ch.name not in routes:
+                names.append(ch.name)
+                routes[ch.name] = _route(s, ch)
+    colors = channel_colors(names)
     groups = []
     for i, (m, s, p, r) in enumerate(plans):
         nxt = ", ".join(plans[j][0].name for j in m.next) or "none"
         heading = f"mode {m.name}{' (start-up)' if i == 0 else ''}, switches to {nxt} \u2014 "
-        groups.append(render_svg(s, p, r, heading))
+        here = {ch.name for ch in s.channels}
+        groups.append(render_svg(s, p, r, heading, colors, tuple((n, routes[n]) for n in names if n not in here)))
     sizes = []
     for g in groups:
         head = g[:g.index(">")]
