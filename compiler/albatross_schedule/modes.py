@@ -19,8 +19,13 @@ Rules:
   * The ROM image holds every mode (rom.encode_rom_modes: the entries of
     each mode, then a descriptor per mode); the controller runs the start-up
     mode.  The board headers hold the start-up mode, so it must list every
-    channel.  Modes need the time-rigid time mode.  report.json "modes",
-    report.txt and timeline.svg (a lane group each) show every mode."""
+    channel.
+  * The modes share the ROM's entries (plan_modes): a slot per channel of
+    each mode and a descriptor per mode must fit, the rest holds redundant
+    slots, shared in proportion to what the bus time allows each mode when
+    they do not all fit; report.json "redundant_slots" says what was cut.
+  * Modes need the time-rigid time mode.  report.json "modes", report.txt
+    and timeline.svg (a lane group each) show every mode."""
 
 from __future__ import annotations
 
@@ -28,6 +33,8 @@ import copy
 import dataclasses
 
 from .model import IDENT_RE, REQUEST_KIND, ScheduleError, System
+from .plan import redundancy_estimate
+from .rom import MAX_ENTRIES
 
 MODE_KEYS = {"name", "channels", "periods", "next"}
 # The suffixes of a channel's generated macros (cgen.py): a mode name equal to
@@ -197,13 +204,85 @@ def mode_system(system: System, mode: Mode) -> System:
     return dataclasses.replace(system, channels=chans, modes=[], mode_window=system.bus.mode_switch_cycles)
 
 
-def plan_mode(system: System, mode: Mode, plan_fn):
-    """plan_fn(mode system) with every message of a failure naming the mode."""
+def plan_mode(system: System, mode: Mode, plan_fn, entry_cap=None):
+    """plan_fn(mode system) with every message of a failure naming the mode;
+    entry_cap: the entries its slots may take (None: the ROM's)."""
     ms = mode_system(system, mode)
+    ms.entry_cap = entry_cap
     try:
         return ms, plan_fn(ms)
     except ScheduleError as e:
-        raise ScheduleError([f"mode '{mode.name}': {m}" for m in e.messages])
+        share = (f" (planned within its share of the ROM, {entry_cap} entries: the modes' slots and "
+                 f"descriptors share its {MAX_ENTRIES})" if entry_cap is not None else "")
+        raise ScheduleError([f"mode '{mode.name}': {m}{share}" for m in e.messages])
+
+
+def rom_shares(room: int, wants: list) -> list:
+    """The ROM entries of each mode's redundant slots: None for every mode
+    (no cap) when the redundant slots the bus time allows them (wants) fit
+    the `room` left by their first slots and descriptors; else `room` shared
+    in proportion to the wants (largest remainder, ties to the earlier
+    mode), so that every mode keeps the same fraction of its redundancy.  A
+    share is never above its want."""
+    total = sum(wants)
+    if total <= room:
+        return [None] * len(wants)
+    shares = [room * w // total for w in wants]
+    order = sorted(range(len(wants)), key=lambda i: (-(room * wants[i] % total), i))
+    for i in order[:room - sum(shares)]:
+        shares[i] += 1
+    return shares
+
+
+SHARE_ROUNDS = 3     # plans of the modes before the shares are taken as they are
+
+
+def plan_modes(system: System, plan_fn) -> list:
+    """Every mode planned (plan_fn on its system) within the ROM: [(mode
+    system, plan)], the plan's .rom_share the entries of redundant slots it
+    was given (None: as many as the bus time allows).
+
+    Each mode needs one slot per channel and a descriptor; more than the
+    ROM holds is an error naming every mode's count.  The rest of the ROM
+    holds the redundant slots: when those the bus time allows every mode
+    fit, each mode gets them all (the plan of the mode alone); else they
+    are shared in proportion (rom_shares), first from an estimate of each
+    mode's wants (plan.redundancy_estimate, no placement), then from what
+    its plan reports (plan.redundancy["bus_allows"]: the fault plan and
+    the termination bounds change it), for at most SHARE_ROUNDS plans of a
+    mode whose share changed.  The slots of the plans always fit the ROM."""
+    modes = system.modes
+    first = [len(m.channels) for m in modes]
+    total = sum(first) + len(modes)
+    if total > MAX_ENTRIES:
+        raise ScheduleError(
+            f"{system.source}: the modes need {total} ROM entries without a single redundant slot (a slot per "
+            f"channel of each mode and a descriptor per mode), at most {MAX_ENTRIES}: "
+            + ", ".join(f"mode '{m.name}' {n} channel{'s' if n != 1 else ''}" for m, n in zip(modes, first))
+            + f", {len(modes)} descriptors. Leave channels out of modes ([[mode]] channels) or declare fewer modes")
+    room = MAX_ENTRIES - total
+    wants = [redundancy_estimate(mode_system(system, m)) for m in modes]
+    planned = [None] * len(modes)
+    given = [None] * len(modes)
+
+    def plan_with(shares):
+        for i, m in enumerate(modes):
+            if planned[i] is None or shares[i] != given[i]:
+                cap = None if shares[i] is None else first[i] + shares[i]
+                planned[i] = plan_mode(system, m, plan_fn, cap)
+                given[i] = shares[i]
+                planned[i][1].rom_share = shares[i]
+
+    for _ in range(SHARE_ROUNDS):
+        plan_with(rom_shares(room, wants))
+        got = [p.redundancy["bus_allows"] for _, p in planned]
+        if got == wants:
+            break
+        wants = got
+    if sum(p.redundancy["planned"] for _, p in planned) > room:
+        # the wants grew past the room in the last round: cap every mode
+        plan_with(rom_shares(room, wants))
+    return planned
 
 
 def switch_latency(system: System, rep: dict):
@@ -249,8 +328,8 @@ def mode_summary(system: System, modes: list, i: int, rep: dict, ms: System = No
     m = modes[i]
     lat = switch_latency(system, rep)
     at_target = switch_latency_at_target(ms, rep, lat) if ms is not None else None
-    keep = ("cycle", "cycle_limited_by", "entries", "drop_run", "bus_utilisation", "controller_busy",
-            "schedule_fill")
+    keep = ("cycle", "cycle_limited_by", "entries", "redundant_slots", "drop_run", "bus_utilisation",
+            "controller_busy", "schedule_fill")
     return dict({k: rep[k] for k in keep if k in rep},
                 name=m.name, start_up=i == 0, next=[modes[j].name for j in m.next],
                 switch_latency=None if lat is None else {"clocks": lat, "us": round(lat * 1e6 / system.clock_hz, 3)},

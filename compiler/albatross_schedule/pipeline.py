@@ -12,7 +12,7 @@ from .description import load_description, load_toml, parse_description
 from .faults import plan_for_hypothesis
 from .layout import allocate_ram, verify_ram_layout
 from .model import Plan, ScheduleError, System
-from .modes import mode_summary, plan_mode
+from .modes import mode_summary, plan_modes
 from .picture import render_modes_svg
 from .plan import build_plan, channel_gaps
 from .report import build_report, render_report_txt
@@ -60,8 +60,7 @@ def compile_system(system: System):
         self_check(system, plan, rom, layout)
         return system, plan, rom, build_report(system, plan)
     planned = []
-    for m in system.modes:
-        ms, plan = plan_mode(system, m, _plan)
+    for m, (ms, plan) in zip(system.modes, plan_modes(system, _plan)):
         rom = encode_rom(ms, plan)
         try:
             self_check(ms, plan, rom, layout)
@@ -69,10 +68,8 @@ def compile_system(system: System):
             raise AssertionError(f"mode '{m.name}': {e}")
         planned.append((ms, plan, rom, build_report(ms, plan)))
     total = sum(len(p.slots) for _, p, _, _ in planned) + len(planned)
-    if total > MAX_ENTRIES:
-        raise ScheduleError(f"{system.source}: the modes need {total} ROM entries (their slots and a descriptor "
-                            f"each), at most {MAX_ENTRIES}: " + ", ".join(
-                                f"{m.name} {len(p.slots)}" for m, (_, p, _, _) in zip(system.modes, planned)))
+    if total > MAX_ENTRIES:     # plan_modes shares the ROM: never
+        raise AssertionError(f"internal error, the modes take {total} ROM entries, at most {MAX_ENTRIES}")
     rom = encode_rom_modes([(s, p, m.next) for m, (s, p, _, _) in zip(system.modes, planned)])
     problems, _ = verify_rom(rom, n_chan=system.bus.n_chan, n_boards=len(system.boards),
                              ram_words=[r // 4 for r in system.ram_bytes], sync_expected=system.sync_mode)

@@ -316,24 +316,13 @@ def build_plan(system: System) -> Plan:
             f"at clock_hz = {system.clock_hz}){poll}. Slot lengths in clocks: {detail}. "
             "Relax max_period_us, shrink or merge channels, or raise clock_hz.")
 
-    # Redundant slots, round-robin by priority then shortest period.
-    counts = {ch.index: 1 for ch in system.channels}
-    used = need
-    entries = len(system.channels)
-    rr = sorted(system.channels, key=lambda c: (-c.priority, c.period_clocks, c.index))
-    progress = True
-    while progress and entries < MAX_ENTRIES:
-        progress = False
-        for ch in rr:
-            if entries >= MAX_ENTRIES:
-                break
-            if ch.max_slots is not None and counts[ch.index] >= ch.max_slots:
-                continue
-            if used + ch.slot_len <= cap:
-                counts[ch.index] += 1
-                used += ch.slot_len
-                entries += 1
-                progress = True
+    # Redundant slots, round-robin by priority then shortest period, up to
+    # the entries this plan may take (system.entry_cap: the ROM's 255, or a
+    # mode's share of them); bus_entries: where the bus time alone stops it.
+    entry_cap = getattr(system, "entry_cap", None) or MAX_ENTRIES
+    lengths = {ch.index: ch.slot_len for ch in system.channels}
+    counts, entries = redundancy_round_robin(system.channels, lengths, cap, entry_cap)
+    _, bus_entries = redundancy_round_robin(system.channels, lengths, cap, None)
 
     sync_ch = next((c for c in system.channels if c.sync), None)
     items = [(ch.index, ch.slot_len, counts[ch.index]) for ch in system.channels]
@@ -347,7 +336,56 @@ def build_plan(system: System) -> Plan:
     slots.sort(key=lambda s: (s.start, 0 if s.sync else 1))
     for ch in system.channels:
         ch.slots = sorted(s.start for s in slots if s.channel is ch)
-    return Plan(cycle=cycle, capacity=cap, slots=slots, limiter=limiter)
+    plan = Plan(cycle=cycle, capacity=cap, slots=slots, limiter=limiter)
+    # the redundant slots planned, those the bus time allows (more when the
+    # entry cap stopped the round-robin) and that cap (report.py)
+    plan.redundancy = {"planned": entries - len(system.channels),
+                       "bus_allows": bus_entries - len(system.channels), "entry_cap": entry_cap}
+    return plan
+
+
+def redundancy_round_robin(channels, lengths: dict, cap: int, entry_cap):
+    """Step 3 of the plan: with one slot per channel (lengths: {channel
+    index: slot clocks}) in the `cap` clocks of a cycle, add a slot at a
+    time, round-robin by priority, then shortest period, then id, skipping a
+    channel whose slot no longer fits or that reached its max_slots, until
+    nothing fits or the entries reach entry_cap (None: no cap).  Returns ({channel index: slots}, entries).
+    Capped, it stops on a prefix of the uncapped sequence, so the two
+    counts differ only in the slots the cap cut."""
+    counts = {ch.index: 1 for ch in channels}
+    entries = len(channels)
+    used = sum(lengths.values())
+    rr = sorted(channels, key=lambda c: (-c.priority, c.period_clocks, c.index))
+    progress = True
+    while progress and (entry_cap is None or entries < entry_cap):
+        progress = False
+        for ch in rr:
+            if entry_cap is not None and entries >= entry_cap:
+                break
+            if ch.max_slots is not None and counts[ch.index] >= ch.max_slots:
+                continue
+            if used + lengths[ch.index] <= cap:
+                counts[ch.index] += 1
+                used += lengths[ch.index]
+                entries += 1
+                progress = True
+    return counts, entries
+
+
+def redundancy_estimate(system: System) -> int:
+    """The redundant slots the bus time allows a system, from its slot
+    lengths with the [bus] retry budget and no termination spacing: the
+    figure build_plan's round-robin gives without an entry cap, before the
+    fault plan and the termination bounds change the slots (modes.py shares
+    the ROM with it before planning)."""
+    bus = system.bus
+    lengths = {ch.index: slot_length(ch, bus) for ch in system.channels}
+    cycle = min(ch.period_clocks for ch in system.channels)
+    cap = cycle - (bus.poll_cycles if system.sync_mode else 0) - system.mode_window
+    if sum(lengths.values()) > cap:
+        return 0
+    _, entries = redundancy_round_robin(system.channels, lengths, cap, None)
+    return entries - len(system.channels)
 
 
 def channel_bounds(system: System, plan: Plan, ch: Channel) -> dict:

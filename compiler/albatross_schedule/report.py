@@ -96,6 +96,7 @@ def build_report(system: System, plan: Plan) -> dict:
         "cycle_limited_by": plan.limiter.name,
         "capacity_clocks": plan.capacity,
         "entries": len(plan.slots),
+        "redundant_slots": redundant_slots(plan),
         "bus": dataclasses.asdict(bus),
         "drop_run": system.drop_run,
         "fault_hypothesis": None if system.faults is None else dict(
@@ -118,6 +119,12 @@ def build_report(system: System, plan: Plan) -> dict:
                       "max over slots of start(i+m) - start(i); age_bound.at_target = period_at_target + "
                       "pub_offset with retries (COPY: - fetch - access, as latency), holding with the target "
                       "probability",
+            "redundant_slots": "planned: the slots beyond one per channel and cycle; bus_allows: those the bus "
+                               "time allows (the round-robin of the plan without a limit on entries); cut: "
+                               "planned < bus_allows, the ROM stopped the round-robin at entries_allowed "
+                               "entries (its 255; with modes whose slots do not all fit, the mode's share: "
+                               "the redundant slots are shared in proportion to what the bus time allows "
+                               "each mode)",
             "bus_utilisation": "sum over slots of access_cycles*A (fault-free bus-busy clocks) / cycle",
             "controller_busy": "sum over slots of fetch + first_access_extra + access_cycles*A / cycle",
             "schedule_fill": "sum of slot lengths / cycle",
@@ -144,6 +151,25 @@ def build_report(system: System, plan: Plan) -> dict:
     }
 
 
+def redundant_slots(plan: Plan):
+    """report.json "redundant_slots" (plan.redundancy, set by plan.build_plan)."""
+    r = getattr(plan, "redundancy", None)
+    if r is None:
+        return None
+    return {"planned": r["planned"], "bus_allows": r["bus_allows"], "cut": r["planned"] < r["bus_allows"],
+            "entries_allowed": r["entry_cap"]}
+
+
+def redundancy_txt(r) -> str:
+    """The redundant slots of a plan for report.txt, saying when the ROM cut them."""
+    if r is None:
+        return ""
+    if not r["cut"]:
+        return f"{r['planned']} redundant slots (all the bus time allows)"
+    return (f"{r['planned']} redundant slots of the {r['bus_allows']} the bus time allows: CUT to fit the ROM "
+            f"({r['entries_allowed']} entries for all its slots)")
+
+
 def render_report_txt(rep: dict) -> str:
     def f(x):
         return f"{x:.2f}"
@@ -154,6 +180,8 @@ def render_report_txt(rep: dict) -> str:
              f"(smallest max_period: {rep['cycle_limited_by']}); {rep['entries']} ROM entries")
     L.append(f"bus utilisation {100 * rep['bus_utilisation']:.1f} % (fault-free accesses), controller busy "
              f"{100 * rep['controller_busy']:.1f} %, slots fill {100 * rep['schedule_fill']:.1f} % of the cycle")
+    if rep.get("redundant_slots") and not rep.get("modes"):
+        L.append(redundancy_txt(rep["redundant_slots"]))
     L.append("")
     hdr = ["id", "channel", "kind", "route", "W", "A", "L", "RAM B", "slots", "max period", "guar. period",
            "latency ff", "latency retry", "age ff", "age retry"]
@@ -221,7 +249,9 @@ def render_report_txt(rep: dict) -> str:
             tag = " (start-up)" if m["start_up"] else ""
             L.append(f"  {m['name']}{tag}: cycle {m['cycle']['clocks']} clocks = {f(m['cycle']['us'])} us, "
                      f"{m['entries']} entries, bus utilisation {100 * m['bus_utilisation']:.1f} %, drop run "
-                     f"{m['drop_run']}; switches to {', '.join(m['next']) or 'none'}"
+                     f"{m['drop_run']}; "
+                     + (redundancy_txt(m["redundant_slots"]) + "; " if m.get("redundant_slots") else "")
+                     + f"switches to {', '.join(m['next']) or 'none'}"
                      + (f"; leaves out {', '.join(m['left_out'])}" if m["left_out"] else "")
                      + (f"; a request switches within {f(m['switch_latency']['us'])} us"
                         if m.get("switch_latency") else "")

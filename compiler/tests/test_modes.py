@@ -250,5 +250,157 @@ class ModePlanTests(unittest.TestCase):
             self.assertTrue(m.startswith("mode 'dock': "), f"expected the message to name mode 'dock', got {m!r}")
 
 
+# Two modes that differ only in one channel's period (100 us, relaxed to 200
+# us): each mode alone fills its spare bus time with redundant slots, and the
+# two together want more entries than the ROM's 255.
+ROM_SHARE = """
+[system]
+name      = "share"
+clock_hz  = 50_000_000
+boards    = ["a", "b"]
+ram_bytes = 4096
+mode      = "time-rigid"
+
+[[channel]]
+name          = "Fast"
+size          = 4
+producer      = "a"
+consumers     = ["b"]
+max_period_us = 100
+
+[[channel]]
+name          = "Slow"
+size          = 4
+producer      = "b"
+consumers     = ["a"]
+max_period_us = 1000
+
+[[channel]]
+name          = "ModeRequest"
+kind          = "mode_request"
+producer      = "a"
+size          = 4
+max_period_us = 1000
+
+[[mode]]
+name = "normal"
+
+[[mode]]
+name    = "relaxed"
+periods = { Fast = 200 }
+"""
+
+
+def compile_text(text, name):
+    return S.compile_system(S.parse_description(tomllib.loads(text), name, text))
+
+
+def rom_slots(rom):
+    """{mode: {channel id: entries}} read from the image with literal bit
+    positions (docs/controller.md): the mode table's D0 = cycle | first << 16 | end << 24."""
+    ne, h2 = (rom[0] >> 8) & 0xFF, rom[2]
+    modes, table = (h2 >> 16) & 0xF, (h2 >> 8) & 0xFF
+    out = {}
+    for m in range(modes):
+        d0 = rom[4 + 8 * (table + m)]
+        first, end = (d0 >> 16) & 0xFF, d0 >> 24
+        ids = {}
+        for k in range(first, end):
+            cid = (rom[4 + 8 * k] >> 16) & 0xF
+            ids[cid] = ids.get(cid, 0) + 1
+        out[m] = ids
+    return ne, out
+
+
+class RomShareTests(unittest.TestCase):
+    """The modes share the ROM's entries: a description whose modes fit
+    without redundant slots is planned, and the report says what was cut."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.system, cls.plan, cls.rom, cls.rep = compile_text(ROM_SHARE, "share.toml")
+
+    def test_modes_that_fit_without_redundancy_are_planned(self):
+        modes = self.rep["modes"]
+        total = sum(m["entries"] for m in modes) + len(modes)
+        self.assertLessEqual(total, 255, "the modes' entries and descriptors overflow the ROM")
+        self.assertEqual(total, 255, f"expected the ROM filled (the bus time allows more), got {total} entries")
+        problems, _ = S.verify_rom(self.rom)
+        self.assertEqual(problems, [])
+
+    def test_report_says_the_redundancy_was_cut(self):
+        for m in self.rep["modes"]:
+            r = m["redundant_slots"]
+            self.assertTrue(r["cut"], f"mode {m['name']}: expected its redundancy cut, got {r}")
+            self.assertLess(r["planned"], r["bus_allows"], m["name"])
+            self.assertEqual(r["planned"], m["entries"] - len(m["channels"]), m["name"])
+            self.assertLessEqual(m["entries"], r["entries_allowed"], m["name"])
+        # shared in proportion to what the bus time allows each mode (within one slot)
+        a, b = (m["redundant_slots"] for m in self.rep["modes"])
+        self.assertLessEqual(abs(a["planned"] * b["bus_allows"] - b["planned"] * a["bus_allows"]),
+                             max(a["bus_allows"], b["bus_allows"]), f"not proportional: {a}, {b}")
+        txt = S.render_report_txt(self.rep)
+        for m in self.rep["modes"]:
+            r = m["redundant_slots"]
+            self.assertIn(f"{r['planned']} redundant slots of the {r['bus_allows']} the bus time allows: CUT", txt)
+
+    def test_bounds_are_those_of_the_planned_slots(self):
+        """Each mode's report gives the slots its ROM entries hold, and its
+        guaranteed periods from them."""
+        ne, per_mode = rom_slots(self.rom)
+        self.assertEqual(ne, 255)
+        for i, m in enumerate(self.rep["modes"]):
+            got = {c["id"]: c["redundancy"] for c in m["channels"]}
+            self.assertEqual(per_mode[i], got, f"mode {m['name']}: ROM entries per channel against the report")
+            for c in m["channels"]:
+                self.assertLessEqual(c["guaranteed_period"]["clocks"], c["max_period"]["clocks"],
+                                     f"mode {m['name']}, {c['name']}")
+
+    def test_modes_that_fit_keep_all_their_redundancy(self):
+        """Modes whose redundant slots all fit the ROM: nothing cut."""
+        _, _, _, rep = compile_text(ROM_SHARE.replace("[[mode]]\nname    = \"relaxed\"", "[[mode]]\nname = \"relaxed\"")
+                                    .replace("periods = { Fast = 200 }", "channels = [\"Fast\"]"), "share2.toml")
+        relaxed = rep["modes"][1]
+        self.assertFalse(relaxed["redundant_slots"]["cut"], relaxed["redundant_slots"])
+
+    def test_modes_over_the_rom_without_redundancy(self):
+        """16 modes of 16 channels need 272 entries with no redundant slot: an error
+        naming each mode's count, before any planning."""
+        chans = "".join(f'\n[[channel]]\nname = "C{i}"\nsize = 4\nproducer = "a"\nconsumers = ["b"]\n'
+                        f'max_period_us = 1000\n' for i in range(15))
+        modes = "".join(f'\n[[mode]]\nname = "m{i}"\n' for i in range(16))
+        text = ROM_SHARE[:ROM_SHARE.index("[[channel]]")] + chans + \
+            ROM_SHARE[ROM_SHARE.index('[[channel]]\nname          = "ModeRequest"'):ROM_SHARE.index("[[mode]]")] + modes
+        with self.assertRaises(S.ScheduleError) as cm:
+            compile_text(text, "sixteen.toml")
+        msg = " ".join(cm.exception.messages)
+        for w in ("272 ROM entries", "at most 255", "mode 'm0' 16 channels", "mode 'm15' 16 channels",
+                  "16 descriptors"):
+            self.assertIn(w, msg)
+
+    def test_one_schedule_over_the_rom(self):
+        """Without modes, redundancy alone would overflow the ROM: 255 entries, and the report says
+        how many more slots the bus time allows."""
+        text = ROM_SHARE[:ROM_SHARE.index('[[channel]]\nname          = "Slow"')].replace("100\n", "1000\n")
+        _, plan, rom, rep = compile_text(text, "one.toml")
+        self.assertEqual(len(plan.slots), 255)
+        self.assertEqual(S.verify_rom(rom)[0], [])
+        r = rep["redundant_slots"]
+        self.assertEqual((r["planned"], r["cut"], r["entries_allowed"]), (254, True, 255), r)
+        self.assertGreater(r["bus_allows"], 254)
+        self.assertIn(f"254 redundant slots of the {r['bus_allows']} the bus time allows: CUT",
+                      S.render_report_txt(rep))
+        self.assertNotIn("modes", rep)
+
+    def test_shares(self):
+        from albatross_schedule.modes import rom_shares
+        self.assertEqual(rom_shares(10, [3, 4]), [None, None], "all fit: no cap")
+        self.assertEqual(rom_shares(247, [93, 189]), [81, 166])
+        for room, wants in ((5, [1, 1, 100]), (7, [3, 3, 3]), (0, [5, 5]), (100, [0, 300])):
+            got = rom_shares(room, wants)
+            self.assertEqual(sum(got), room, (room, wants, got))
+            self.assertTrue(all(0 <= g <= w for g, w in zip(got, wants)), (room, wants, got))
+
+
 if __name__ == "__main__":
     unittest.main()
