@@ -127,9 +127,10 @@ def _place(order, targets, lengths, cap, fixed_first):
     return pos
 
 
-def _balance(order, pos, lengths, cap, cycle, fixed_first, sweeps=40):
+def _balance(order, pos, lengths, cap, cycle, fixed_first, sweeps=40, work=None):
     """Coordinate descent: move each slot, within the room its neighbours in
-    the plan leave, towards the midpoint of its channel neighbours."""
+    the plan leave, towards the midpoint of its channel neighbours.  work:
+    a one-element list that counts the moves tried (slots x sweeps)."""
     m = len(order)
     by_ch = {}
     for i, sl in enumerate(order):
@@ -150,6 +151,8 @@ def _balance(order, pos, lengths, cap, cycle, fixed_first, sweeps=40):
             steps.append((i, idx[j - 1], cycle if j == 0 else 0, idx[(j + 1) % n], cycle if j + 1 == n else 0,
                           lengths[i - 1] if i > 0 else None, i + 1 < m, lengths[i]))
     for _ in range(sweeps):
+        if work is not None:
+            work[0] += len(steps)
         moved = False
         for i, a, da, b, db, len_below, has_above, len_i in steps:
             new = (pos[a] - da + pos[b] + db) // 2
@@ -167,6 +170,13 @@ def _balance(order, pos, lengths, cap, cycle, fixed_first, sweeps=40):
     return pos
 
 
+# The local search's work per candidate, in slot moves tried by _balance:
+# an evaluation costs slots x sweeps, and large plans need many sweeps, so a
+# budget of evaluations alone lets a plan of 200 slots search for seconds
+# (the examples' plans stay well below it: at most about 190,000).
+WORK_BUDGET = 500_000
+
+
 def place_slots(items, cycle, cap, sync_key=None, seed=1, budget=2500):
     """items: list of (key, length, count).  Returns [(key, start, j)] sorted by
     start, where j numbers the slots of a channel.  The sync channel's first
@@ -176,6 +186,7 @@ def place_slots(items, cycle, cap, sync_key=None, seed=1, budget=2500):
     keys = [k for k, _, _ in items]
     rng = random.Random(seed)
     fixed_first = sync_key is not None
+    work = [0]
 
     def build(phase):
         sl = []
@@ -195,7 +206,7 @@ def place_slots(items, cycle, cap, sync_key=None, seed=1, budget=2500):
         pos = _place(order, targets, lengths, cap, fixed_first)
         if pos is None:
             return None
-        pos = _balance(order, pos, lengths, cap, cycle, fixed_first)
+        pos = _balance(order, pos, lengths, cap, cycle, fixed_first, work=work)
         return _score(order, pos, cycle, counts), pos
 
     def perfect(order, pos):
@@ -247,12 +258,13 @@ def place_slots(items, cycle, cap, sync_key=None, seed=1, budget=2500):
     for score0, order0, targets0, pos0 in candidates[:2]:
         cur = (score0, list(zip(order0, targets0)), pos0)
         evals = 0
+        work[0] = 0
         done = perfect(order0, pos0)
-        while not done and evals < budget:
+        while not done and evals < budget and work[0] < WORK_BUDGET:
             improved = False
             for i in range(first, m):
                 for j in range(max(first, i - window), min(m, i + window + 1)):
-                    if j == i or evals >= budget:
+                    if j == i or evals >= budget or work[0] >= WORK_BUDGET:
                         continue
                     seq = list(cur[1])
                     item = seq.pop(i)
@@ -267,7 +279,7 @@ def place_slots(items, cycle, cap, sync_key=None, seed=1, budget=2500):
                         improved = True
                         done = perfect([o for o, _ in seq], r[1])
                         break
-                if done or evals >= budget:
+                if done or evals >= budget or work[0] >= WORK_BUDGET:
                     break
             if not improved:
                 break
