@@ -78,7 +78,9 @@ report.json, report.txt, timeline.svg (see docs/compiler.md).
 
 Modules (standard library only):
   model        the description's constants, ScheduleError, Bus/Channel/System/Slot/Plan
-  description  reading and validating the TOML description
+  source       reading the TOML file, locating and collecting errors (line, column, field)
+  description  validating the description: every fault of it, before any planning
+  cnames       every name the generated C declares (the templates), and the names check
   layout       RAM layout of every board's channel instances
   plan         slot lengths, the cycle, redundancy, placement, bounds
   modes        [[mode]]: several schedules, each planned over one RAM layout

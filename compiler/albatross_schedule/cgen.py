@@ -1,7 +1,10 @@
-"""Generated C: each board's header, set-up source and RAM image."""
+"""Generated C: each board's header, set-up source and RAM image.  Every
+name declared here is made by the templates of cnames.py, which enumerate
+them for the names check before anything is planned."""
 
 from __future__ import annotations
 
+from . import cnames as cn
 from .contract import load as load_contract
 from .fourslot import FOUR_SLOT, initial_control_word
 from .model import Plan, System, one_minus
@@ -11,7 +14,7 @@ from .rom import rom_hex
 
 
 def _guard(system, board):
-    return f"ALB_{system.name.upper()}_{board.upper()}_H"
+    return cn.header_guard(system.name, board)
 
 
 def board_instances(system: System, b: int):
@@ -28,6 +31,15 @@ def board_instances(system: System, b: int):
 def _route(system, ch):
     src = system.boards[ch.producer] if ch.producer is not None else f"controller ({ch.kind})"
     return f"{src} -> {', '.join(system.boards[c] for c in ch.consumers)}"
+
+
+# The STATUS word accessors ALB_STATUS_<field>(parameters) and their bodies.
+STATUS_ACCESSORS = {"CYCLES": ("(w)", "((uint16_t)((w)[0] & 0xFFFFu))"),
+                    "ROM_ERRORS": ("(w)", "((uint16_t)((w)[0] >> 16))"),
+                    "RETRIES": ("(w, id)", "((uint16_t)((w)[1u + 2u * (id)] & 0xFFFFu))"),
+                    "TRANSFERS": ("(w, id)", "((uint16_t)((w)[1u + 2u * (id)] >> 16))"),
+                    "CORRUPT": ("(w, id)", "((uint16_t)((w)[2u + 2u * (id)] & 0xFFFFu))"),
+                    "ABANDONED": ("(w, id)", "((uint16_t)((w)[2u + 2u * (id)] >> 16))")}
 
 
 def render_board_header(system: System, b: int, desc_name: str, plan: Plan) -> str:
@@ -57,65 +69,64 @@ def render_board_header(system: System, b: int, desc_name: str, plan: Plan) -> s
     if system.types_header:
         L.append(f'#include "{system.types_header}"')
     L.append("")
-    L.append(f"#define ALB_{B}_BOARD      {b}u")
-    L.append(f"#define ALB_{B}_RAM_BYTES  {system.ram_bytes[b]}u")
+    L.append(f"#define {cn.board_macro(board, 'BOARD')}      {b}u")
+    L.append(f"#define {cn.board_macro(board, 'RAM_BYTES')}  {system.ram_bytes[b]}u")
     L.append("")
     L.append("/* Channel ids of the system (they index the STATUS counters). */")
     w = max(len(c.name) for c in system.channels)
     for ch in system.channels:
-        L.append(f"#define ALB_{ch.name.upper() + '_ID':<{w + 3}} {ch.id}u")
+        L.append(f"#define {cn.channel_macro(ch.name, 'ID'):<{w + 7}} {ch.id}u")
     plans = getattr(system, "mode_plans", None)
     if plans:
         L.append("")
         L.append("/* Schedule modes: the value a mode_request channel publishes to ask for each. */")
-        wm = max(len(m.name) for m, _, _, _ in plans)
+        wm = max(len(cn.mode_macro(m.name)) for m, _, _, _ in plans)
         for i, (m, _, _, _) in enumerate(plans):
-            L.append(f"#define ALB_MODE_{m.name.upper():<{wm}} {i}u")
+            L.append(f"#define {cn.mode_macro(m.name):<{wm}} {i}u")
     if any(ch.mode_info for ch, _, _ in insts):
         L.append("")
         L.append("/* The running mode (a mode channel's value): its number (ALB_MODE_*) and the")
         L.append(" * global time at which the first cycle in it began. */")
-        L.append("#ifndef ALB_MODE_T_DEFINED")
-        L.append("#define ALB_MODE_T_DEFINED")
-        L.append("typedef struct { uint32_t mode; uint32_t since; } alb_mode_t;")
+        L.append(f"#ifndef {cn.MODE_TYPE_GUARD}")
+        L.append(f"#define {cn.MODE_TYPE_GUARD}")
+        L.append(f"typedef struct {{ uint32_t mode; uint32_t since; }} {cn.MODE_TYPE};")
         L.append("#endif")
     if any(ch.kind == "status" and not ch.mode_info for ch, _, _ in insts):
         L.append("")
         L.append("/* STATUS words (w = <Status>_msg.value.word): word 0 = {rom_errors, cycles},")
         L.append(" * then per channel id {transfers, retries} and {abandoned, corrupt}. */")
-        L.append("#define ALB_STATUS_CYCLES(w)         ((uint16_t)((w)[0] & 0xFFFFu))")
-        L.append("#define ALB_STATUS_ROM_ERRORS(w)     ((uint16_t)((w)[0] >> 16))")
-        L.append("#define ALB_STATUS_RETRIES(w, id)    ((uint16_t)((w)[1u + 2u * (id)] & 0xFFFFu))")
-        L.append("#define ALB_STATUS_TRANSFERS(w, id)  ((uint16_t)((w)[1u + 2u * (id)] >> 16))")
-        L.append("#define ALB_STATUS_CORRUPT(w, id)    ((uint16_t)((w)[2u + 2u * (id)] & 0xFFFFu))")
-        L.append("#define ALB_STATUS_ABANDONED(w, id)  ((uint16_t)((w)[2u + 2u * (id)] >> 16))")
+        for field in cn.STATUS_FIELDS:
+            L.append(f"#define {cn.status_macro(field) + STATUS_ACCESSORS[field][0]:<28} "
+                     f"{STATUS_ACCESSORS[field][1]}")
     for ch, role, base in insts:
-        N = ch.name.upper()
+        def M(suffix, ch=ch):
+            return cn.channel_macro(ch.name, suffix)
         T = ch.type_name
+        msg = cn.message_type(ch.name)
         L.append("")
         kind_txt = ", four-slot (wait-free Import)" if ch.layout == FOUR_SLOT else ""
         L.append(f"/* {ch.name}: {ch.kind}{kind_txt}, {_route(system, ch)}; this board is the "
                  f"{'producer' if role == 'source' else 'consumer'}. */")
-        if ch.ctype is None and ch.kind == "copy":
-            L.append(f"typedef struct {{ uint8_t bytes[{ch.size}]; }} {T};")
-        elif ch.ctype is None and ch.kind == "status" and not ch.mode_info:
-            L.append(f"typedef struct {{ uint32_t word[{ch.words}]; }} {T};")
+        if cn.declares_value_type(ch) and ch.kind == "copy":
+            L.append(f"typedef struct {{ uint8_t bytes[{ch.size}]; }} {cn.value_type(ch.name)};")
+        elif cn.declares_value_type(ch):
+            L.append(f"typedef struct {{ uint32_t word[{ch.words}]; }} {cn.value_type(ch.name)};")
         payload = ch.size if role == "source" else ch.dst_size
-        L.append(f"#define ALB_{N}_BASE   0x{base:04x}u  /* byte offset in this board's RAM */")
-        L.append(f"#define ALB_{N}_SIZE   {payload}u  /* payload bytes of this instance"
+        L.append(f"#define {M('BASE')}   0x{base:04x}u  /* byte offset in this board's RAM */")
+        L.append(f"#define {M('SIZE')}   {payload}u  /* payload bytes of this instance"
                  + (" (value + taken_at) */" if role == "destination" else " */"))
-        L.append(f"#define ALB_{N}_WORDS  {ch.words}u  /* W, the value's words */")
-        L.append(f"#define ALB_{N}_KIND   {'ALB_FOUR_SLOT' if ch.layout == FOUR_SLOT else 'ALB_THREE_BUFFER'}"
+        L.append(f"#define {M('WORDS')}  {ch.words}u  /* W, the value's words */")
+        L.append(f"#define {M('KIND')}   {'ALB_FOUR_SLOT' if ch.layout == FOUR_SLOT else 'ALB_THREE_BUFFER'}"
                  "  /* channel kind, alb_channel_setup_kind */")
         if role == "destination":
             bnd = channel_bounds(system, plan, ch)
-            L.append(f"#define ALB_{N}_PERIOD_CLOCKS  {bnd['guaranteed_period_clocks']}u"
+            L.append(f"#define {M('PERIOD_CLOCKS')}  {bnd['guaranteed_period_clocks']}u"
                      "  /* guaranteed: a transfer slot at least this often */")
             if ch.kind == "copy":
-                L.append(f"#define ALB_{N}_LATENCY_CLOCKS  {bnd['latency_clocks']['with_retries']}u"
+                L.append(f"#define {M('LATENCY_CLOCKS')}  {bnd['latency_clocks']['with_retries']}u"
                          "  /* guaranteed: producer's Export -> published here (with retries) */")
             else:
-                L.append(f"#define ALB_{N}_AGE_CLOCKS  {bnd['age_bound_clocks']['with_retries']}u"
+                L.append(f"#define {M('AGE_CLOCKS')}  {bnd['age_bound_clocks']['with_retries']}u"
                          "  /* guaranteed: now - taken_at of the newest value here (with retries) */")
             fe = getattr(system, "fault_eval", None)
             if system.faults is not None and fe is not None:
@@ -124,37 +135,38 @@ def render_board_header(system: System, b: int, desc_name: str, plan: Plan) -> s
                     back = system.bus.sample_offset if ch.kind == "copy" else 0
                     at = x["period_at_target_clocks"] + bnd["pub_offset_clocks"]["with_retries"] - back
                     what = "LATENCY" if ch.kind == "copy" else "AGE"
-                    L.append(f"#define ALB_{N}_{what}_AT_TARGET_CLOCKS  {at}u  /* under the fault hypothesis: holds "
+                    L.append(f"#define {M(what + '_AT_TARGET_CLOCKS')}  {at}u  /* under the fault hypothesis: holds "
                              f"with probability {one_minus(1.0 - system.faults.probability)} (slot delivery "
                              f"{one_minus(x['slot_miss_probability'])}, {len(ch.slots)} per cycle) */")
             term = channel_termination(system, plan, ch)[ch.consumers.index(b)]
             if term["bounded"]:
-                L.append(f"#define ALB_{N}_IMPORT_MAX_PASSES    {term['max_passes']}u"
+                L.append(f"#define {M('IMPORT_MAX_PASSES')}    {term['max_passes']}u"
                          "  /* compile-time bound: ReadLocked stores per Import */")
-                L.append(f"#define ALB_{N}_IMPORT_MAX_ACCESSES  {term['max_accesses']}u"
+                L.append(f"#define {M('IMPORT_MAX_ACCESSES')}  {term['max_accesses']}u"
                          "  /* compile-time bound: RAM accesses per Import */")
-        L.append(f"typedef char alb_check_{ch.name}_size[(sizeof({T}) == {ch.size}u) ? 1 : -1];")
+        L.append(f"typedef char {cn.size_check(ch.name)}[(sizeof({T}) == {ch.size}u) ? 1 : -1];")
         if role == "source":
             L.append(f"ALB_CHANNEL({ch.name}, {T})")
         else:
-            L.append(f"typedef struct {{ {T} value; uint32_t taken_at; }} {ch.name}_msg;")
-            L.append(f"typedef char alb_check_{ch.name}_taken_at"
-                     f"[(offsetof({ch.name}_msg, taken_at) == 4u * {ch.words}u) ? 1 : -1];")
-            L.append(f"ALB_CHANNEL({ch.name}, {ch.name}_msg)")
+            L.append(f"typedef struct {{ {T} value; uint32_t taken_at; }} {msg};")
+            L.append(f"typedef char {cn.taken_at_check(ch.name)}"
+                     f"[(offsetof({msg}, taken_at) == 4u * {ch.words}u) ? 1 : -1];")
+            L.append(f"ALB_CHANNEL({ch.name}, {msg})")
             if ch.kind == "copy":
-                L.append(f"#define ALB_{N}_MAX_AGE_CLOCKS(producer_period_clocks) "
-                         f"((producer_period_clocks) + ALB_{N}_LATENCY_CLOCKS)"
+                L.append(f"#define {M('MAX_AGE_CLOCKS')}(producer_period_clocks) "
+                         f"((producer_period_clocks) + {M('LATENCY_CLOCKS')})"
                          "  /* refresh bound: now - taken_at here, the producer's Exports ending at most"
                          " producer_period_clocks apart */")
             else:
-                L.append(f"#define ALB_{N}_MAX_AGE_CLOCKS(producer_period_clocks) (ALB_{N}_AGE_CLOCKS)"
+                L.append(f"#define {M('MAX_AGE_CLOCKS')}(producer_period_clocks) ({M('AGE_CLOCKS')})"
                          "  /* refresh bound: now - taken_at here (the controller produces it) */")
-            L.append(f"ALB_SAMPLING({ch.name}, {ch.name}_msg)")
+            L.append(f"ALB_SAMPLING({ch.name}, {msg})")
     L.append("")
     L.append(f"/* Set up every channel of board '{board}' at dpram_base (this CPU's address of")
     L.append(" * its dual-ported RAM).  Both return ALB_OK or the first error. */")
-    L.append(f"int alb_{board}_init_all(uintptr_t dpram_base);    /* cold start: own control bytes := Buffer1 */")
-    L.append(f"int alb_{board}_attach_all(uintptr_t dpram_base);  /* RAM image loaded, or restart */")
+    L.append(f"int {cn.setup_function(board, 'init')}(uintptr_t dpram_base);    "
+             "/* cold start: own control bytes := Buffer1 */")
+    L.append(f"int {cn.setup_function(board, 'attach')}(uintptr_t dpram_base);  /* RAM image loaded, or restart */")
     L.append("")
     L.append(f"#endif /* {_guard(system, board)} */")
     return "\n".join(L) + "\n"
@@ -171,13 +183,13 @@ def render_board_c(system: System, b: int, desc_name: str) -> str:
         L.append(f"ALB_CHANNEL_DEFINE({ch.name});")
     if insts:
         L.append("")
-        L.append("static int alb_first_error(int rc, int r)")
+        L.append(f"static int {cn.FIRST_ERROR}(int rc, int r)")
         L.append("{")
         L.append("    return rc != ALB_OK ? rc : r;")
         L.append("}")
     for mode in ("init", "attach"):
         L.append("")
-        L.append(f"int alb_{board}_{mode}_all(uintptr_t dpram_base)")
+        L.append(f"int {cn.setup_function(board, mode)}(uintptr_t dpram_base)")
         L.append("{")
         if not insts:
             L.append("    (void)dpram_base;")
@@ -188,20 +200,20 @@ def render_board_c(system: System, b: int, desc_name: str) -> str:
             L.append(f"    static const uint32_t zero[{max(src_words)}]; /* initial value of every source */")
         L.append("    int rc = ALB_OK;")
         L.append("")
+        first = cn.FIRST_ERROR
         for ch, role, _ in insts:
-            N = ch.name.upper()
-            obj = f"&alb_ch_{ch.name}"
+            base, size = cn.channel_macro(ch.name, "BASE"), cn.channel_macro(ch.name, "SIZE")
+            obj = f"&{cn.channel_object(ch.name)}"
             if ch.layout == FOUR_SLOT:
-                L.append(f"    rc = alb_first_error(rc, alb_channel_setup_kind({obj}, dpram_base + ALB_{N}_BASE, "
-                         f"ALB_{N}_SIZE, ALB_FOUR_SLOT));")
+                L.append(f"    rc = {first}(rc, alb_channel_setup_kind({obj}, dpram_base + {base}, "
+                         f"{size}, ALB_FOUR_SLOT));")
             else:
-                L.append(f"    rc = alb_first_error(rc, alb_channel_setup({obj}, dpram_base + ALB_{N}_BASE, "
-                         f"ALB_{N}_SIZE));")
+                L.append(f"    rc = {first}(rc, alb_channel_setup({obj}, dpram_base + {base}, {size}));")
             if role == "source":
                 call = f"alb_producer_init({obj}, zero)" if mode == "init" else f"alb_producer_attach({obj})"
             else:
                 call = f"alb_consumer_init({obj})" if mode == "init" else f"alb_consumer_attach({obj})"
-            L.append(f"    rc = alb_first_error(rc, {call});")
+            L.append(f"    rc = {first}(rc, {call});")
         L.append("    return rc;")
         L.append("}")
     return "\n".join(L) + "\n"

@@ -1,28 +1,46 @@
-"""C names: the names of a description (system, boards, channels, channel
-types) become parts of the identifiers, macros and file names of the generated
-board headers and sources (cgen.py) and the driver's channel macros
-(c-driver/albatross.h: ALB_CHANNEL, ALB_SAMPLING).  A name is rejected when
-the name itself, or anything generated from it, collides with
+"""C names: every identifier and macro that the generated C declares, made
+by the templates of this module (cgen.py writes its names through them), and
+the check that rejects a description whose names would break that C.
 
-  - a C keyword (C99, C11, and the C23 ones that C11 headers define as macros),
-  - a name of <stdint.h>, <stddef.h> or <stdbool.h> (the generated files and
-    the driver include them; a channel `uint32` would declare `uint32_t`),
-  - an identifier of the driver (DRIVER_IDENTIFIERS: c-driver/*.h and its
-    ports; compiler/tests checks this list against the headers),
-  - something generated from another name of the description,
+The names of a description (system, boards, channels, modes, channel types)
+become parts of the identifiers, macros and file names of the generated board
+headers and sources (cgen.py) and of the driver's channel macros
+(c-driver/albatross.h: ALB_CHANNEL, ALB_SAMPLING).  generated_names()
+enumerates all of them, with the fixed names of the generated files, before
+anything is planned or written; check_names() rejects
 
-or when a board's header and source would take the name of a C standard
-header or a driver header (a board `stdint` would write a stdint.h that hides
-the system's <stdint.h>).  File names are compared without case (the outputs
-may land on a case-insensitive file system).
+  - a generated name (or a system, board or channel name itself) that is a C
+    keyword (C99, C11, and the C23 ones that C11 headers define as macros), a
+    name of <stdint.h>, <stddef.h> or <stdbool.h> (a channel `uint32` would
+    declare `uint32_t`), an identifier of the driver (DRIVER_IDENTIFIERS:
+    c-driver/*.h and its ports; compiler/tests checks this list against the
+    headers) or a fixed name of the generated files (FIXED_NAMES);
+  - any name generated twice: the message names both sources (modes `Run`
+    and `run` both give ALB_MODE_RUN; a mode `X_BOARD` beside a board
+    `MODE_X` gives ALB_MODE_X_BOARD twice);
+  - a board whose header and source would take the name of a C standard
+    header or a driver header (a board `stdint` would write a stdint.h that
+    hides the system's <stdint.h>), compared without case (the outputs may
+    land on a case-insensitive file system);
+  - a channel `type` that is not a type: a keyword other than a type keyword,
+    a name the generated files declare, a driver or standard name that is no
+    type.
 
-The generated names, for a channel N (upper case U) and a board B (upper
-case V) of system S (upper case T):
+Names are checked as one name space over all the generated files, although
+a program includes one board header: that is stricter than C, and it keeps a
+name from meaning two things in two boards' headers.  compiler/tests/
+test_names.py parses every #define, typedef and function of the generated
+files of many descriptions and checks that each is in generated_names().
+
+The generated names, for a channel N (upper case U), a board B (upper case
+V) of system S (upper case T), and a mode M (upper case K):
   channel  N_t (its value type, unless `type` names one)  N_msg
            ALB_U_<suffix> (CHANNEL_MACROS)  alb_ch_N  alb_check_N_size
            alb_check_N_taken_at  LookForNewN  MakeNAvailable  ReadN
   board    ALB_V_BOARD  ALB_V_RAM_BYTES  ALB_T_V_H  alb_B_init_all
            alb_B_attach_all; files B.h  B.c  B_ram.hex
+  mode     ALB_MODE_K
+  fixed    FIXED_NAMES (alb_mode_t, ALB_MODE_T_DEFINED, ALB_STATUS_*, alb_first_error)
 """
 
 from __future__ import annotations
@@ -70,17 +88,9 @@ ALB_THREE_BUFFER_EXPORT ALB_THREE_BUFFER_IMPORT ALB_VALID_INDEX ALB_LOCAL_TIMER_
 ALB_PORT_HAS_LOCAL_TIME
 alb_channel alb_channel_setup alb_channel_setup_kind alb_channel_t alb_clock alb_clock_at alb_clock_init
 alb_clock_now alb_clock_sample_t alb_clock_state alb_clock_sync alb_clock_sync_now alb_clock_t
-alb_consumer_attach alb_consumer_init alb_export alb_fence alb_first_error alb_import alb_local_time alb_port
+alb_consumer_attach alb_consumer_init alb_export alb_fence alb_import alb_local_time alb_port
 alb_producer_attach alb_producer_init alb_rd32 alb_rd8 alb_read alb_sample alb_sample_t alb_wr32 alb_wr8 alb_port_impl
 """.split())
-
-# Macros generated per channel: ALB_<NAME>_<suffix> (cgen.render_board_header).
-CHANNEL_MACROS = ("ID", "BASE", "SIZE", "WORDS", "KIND", "PERIOD_CLOCKS", "LATENCY_CLOCKS", "AGE_CLOCKS",
-                  "LATENCY_AT_TARGET_CLOCKS", "AGE_AT_TARGET_CLOCKS", "IMPORT_MAX_PASSES",
-                  "IMPORT_MAX_ACCESSES", "MAX_AGE_CLOCKS")
-# Fixed macros of a header with a STATUS channel.
-FIXED_MACROS = frozenset("ALB_STATUS_CYCLES ALB_STATUS_ROM_ERRORS ALB_STATUS_RETRIES ALB_STATUS_TRANSFERS "
-                         "ALB_STATUS_CORRUPT ALB_STATUS_ABANDONED".split())
 
 # C standard header names (C11, and C23's new ones) and the driver's headers:
 # no board may write <name>.h.
@@ -90,6 +100,154 @@ time uchar wchar wctype""".split())
 DRIVER_HEADERS = frozenset("albatross albatross_layout alb_port alb_port_impl alb_clock".split())
 
 
+
+# ---------------------------------------------------------------------------
+# The templates: cgen.py makes every name it declares with these.
+
+# Macros of a channel: ALB_<NAME>_<suffix>.
+CHANNEL_MACROS = ("ID", "BASE", "SIZE", "WORDS", "KIND", "PERIOD_CLOCKS", "LATENCY_CLOCKS", "AGE_CLOCKS",
+                  "LATENCY_AT_TARGET_CLOCKS", "AGE_AT_TARGET_CLOCKS", "IMPORT_MAX_PASSES",
+                  "IMPORT_MAX_ACCESSES", "MAX_AGE_CLOCKS")
+# Macros of a board: ALB_<BOARD>_<suffix>.
+BOARD_MACROS = ("BOARD", "RAM_BYTES")
+# Set-up functions of a board: alb_<board>_<what>_all.
+SETUP_FUNCTIONS = ("init", "attach")
+# The names the driver's channel macros declare for a channel (c-driver/albatross.h;
+# compiler/tests/test_names.py reads them from the macros' ## patterns).
+DRIVER_MACRO_NAMES = {"ALB_CHANNEL": (("alb_ch_{}", "channel object"), ("LookForNew{}", "Import function"),
+                                      ("Make{}Available", "Export function")),
+                      "ALB_CHANNEL_DEFINE": (("alb_ch_{}", "channel object"),),
+                      "ALB_SAMPLING": (("Read{}", "read function"),)}
+# Fixed names of the generated files: the running mode's type and its guard, the
+# STATUS word accessors, the set-up sources' helper.
+MODE_TYPE = "alb_mode_t"
+MODE_TYPE_GUARD = "ALB_MODE_T_DEFINED"
+STATUS_FIELDS = ("CYCLES", "ROM_ERRORS", "RETRIES", "TRANSFERS", "CORRUPT", "ABANDONED")
+FIRST_ERROR = "alb_first_error"
+FIXED_NAMES = dict([(MODE_TYPE, "type"), (MODE_TYPE_GUARD, "macro"), (FIRST_ERROR, "function")]
+                   + [(f"ALB_STATUS_{f}", "macro") for f in STATUS_FIELDS])
+
+
+def status_macro(field: str) -> str:
+    assert field in STATUS_FIELDS, field
+    return f"ALB_STATUS_{field}"
+
+
+def channel_macro(channel: str, suffix: str) -> str:
+    assert suffix in CHANNEL_MACROS, f"ALB_<NAME>_{suffix} is not in cnames.CHANNEL_MACROS"
+    return f"ALB_{channel.upper()}_{suffix}"
+
+
+def value_type(channel: str) -> str:
+    return f"{channel}_t"
+
+
+def message_type(channel: str) -> str:
+    return f"{channel}_msg"
+
+
+def size_check(channel: str) -> str:
+    return f"alb_check_{channel}_size"
+
+
+def taken_at_check(channel: str) -> str:
+    return f"alb_check_{channel}_taken_at"
+
+
+def channel_object(channel: str) -> str:
+    return DRIVER_MACRO_NAMES["ALB_CHANNEL_DEFINE"][0][0].format(channel)
+
+
+def declares_value_type(ch) -> bool:
+    """The headers declare ch's value type <name>_t: a copy or STATUS channel without
+    `type` (a TIME channel's value is uint32_t, a mode channel's alb_mode_t)."""
+    return ch.ctype is None and (ch.kind == "copy" or (ch.kind == "status" and not ch.mode_info))
+
+
+def board_macro(board: str, suffix: str) -> str:
+    assert suffix in BOARD_MACROS, suffix
+    return f"ALB_{board.upper()}_{suffix}"
+
+
+def header_guard(system: str, board: str) -> str:
+    return f"ALB_{system.upper()}_{board.upper()}_H"
+
+
+def setup_function(board: str, what: str) -> str:
+    assert what in SETUP_FUNCTIONS, what
+    return f"alb_{board}_{what}_all"
+
+
+def mode_macro(mode: str) -> str:
+    return f"ALB_MODE_{mode.upper()}"
+
+
+# ---------------------------------------------------------------------------
+# The enumeration.
+
+class Source:
+    """Where a name comes from: the system, a board, channel or mode (its index in
+    the description), or the generated files themselves (kind "fixed")."""
+
+    def __init__(self, kind: str, index: int = 0, name: str = ""):
+        self.kind, self.index, self.name = kind, index, name
+
+    @property
+    def label(self) -> str:
+        return "the generated files (a fixed name)" if self.kind == "fixed" else f"{self.kind} '{self.name}'"
+
+    def __eq__(self, other):
+        return isinstance(other, Source) and (self.kind, self.index) == (other.kind, other.index)
+
+    def __hash__(self):
+        return hash((self.kind, self.index))
+
+
+FIXED = Source("fixed")
+
+
+def channel_names(ch) -> list:
+    """(identifier, what it is) generated for channel ch (any of its roles)."""
+    n = ch.name
+    out = [(message_type(n), "message type")]
+    if declares_value_type(ch):
+        out.append((value_type(n), "value type"))
+    out += [(channel_macro(n, s), "macro") for s in CHANNEL_MACROS]
+    out += [(size_check(n), "size check"), (taken_at_check(n), "layout check")]
+    for names in DRIVER_MACRO_NAMES.values():
+        out += [(t.format(n), what) for t, what in names if (t.format(n), what) not in out]
+    return out
+
+
+def board_names(system_name: str, board: str) -> list:
+    return ([(board_macro(board, s), "macro") for s in BOARD_MACROS]
+            + [(header_guard(system_name, board), "header guard")]
+            + [(setup_function(board, w), "set-up function") for w in SETUP_FUNCTIONS])
+
+
+def generated_names(system_name: str, boards: list, channels: list, modes: list) -> list:
+    """Every identifier and macro the generated C may declare, as (identifier,
+    what it is, Source), in the order fixed names, boards, channels, modes.
+    boards: names (a None entry is skipped, its index kept); channels: objects
+    with name, index, ctype, kind, mode_info; modes: names (None skipped)."""
+    out = [(ident, what, FIXED) for ident, what in FIXED_NAMES.items()]
+    for i, b in enumerate(boards):
+        if b is not None:
+            out += [(ident, what, Source("board", i, b)) for ident, what in board_names(system_name, b)]
+    for ch in channels:
+        out += [(ident, what, Source("channel", ch.index, ch.name)) for ident, what in channel_names(ch)]
+    for i, m in enumerate(modes):
+        if m is not None:
+            out.append((mode_macro(m), "macro", Source("mode", i, m)))
+    return out
+
+
+def system_names(system) -> set:
+    """The identifiers of generated_names() for a parsed System."""
+    return {ident for ident, _, _ in generated_names(system.name, system.boards, system.channels,
+                                                     [m.name for m in system.modes])}
+
+
 def reserved_why(ident: str):
     """Why ident may not be declared by generated code, or None."""
     if ident in C_KEYWORDS:
@@ -97,73 +255,92 @@ def reserved_why(ident: str):
     for header, names in STD_NAMES.items():
         if ident in names:
             return f"a {header} name"
-    if ident in DRIVER_IDENTIFIERS or ident in FIXED_MACROS:
-        return "an identifier of the driver (c-driver/) or of every generated file"
+    if ident in DRIVER_IDENTIFIERS:
+        return "an identifier of the driver (c-driver/)"
     return None
 
 
-def channel_generated(name: str, has_value_type: bool) -> list:
-    """(identifier, what it is) generated for a channel."""
-    u = name.upper()
-    out = [(f"{name}_msg", "message type")]
-    if has_value_type:
-        out.append((f"{name}_t", "value type"))
-    out += [(f"ALB_{u}_{s}", "macro") for s in CHANNEL_MACROS]
-    out += [(f"alb_ch_{name}", "channel object"), (f"alb_check_{name}_size", "size check"),
-            (f"alb_check_{name}_taken_at", "layout check"), (f"LookForNew{name}", "Import function"),
-            (f"Make{name}Available", "Export function"), (f"Read{name}", "read function")]
-    return out
+def check_names(system_name: str, boards: list, channels: list, modes: list, err) -> None:
+    """Report every name whose C identifiers or files collide (err: source.Errors).
+    boards: the valid board names (None for an invalid one); channels: the parsed
+    Channel objects with a valid, unique name; modes: the [[mode]] names (None for
+    an invalid one).  Each message names the entity and field, and for a name
+    generated twice the other source and its line."""
 
+    def report(src, msg, value=None):
+        if src.kind == "board":
+            err.system("boards", f"board '{src.name}': {msg}", value=src.name)
+        elif src.kind == "channel":
+            err.channel(src.index, src.name, "name", msg)
+        elif src.kind == "mode":
+            err.mode(src.index, src.name, "name", msg)
+        else:
+            err.system("name", f"system name '{src.name}': {msg}")
 
-def board_generated(system_name: str, board: str) -> list:
-    v = board.upper()
-    return [(f"ALB_{v}_BOARD", "macro"), (f"ALB_{v}_RAM_BYTES", "macro"),
-            (f"ALB_{system_name.upper()}_{v}_H", "header guard"),
-            (f"alb_{board}_init_all", "set-up function"), (f"alb_{board}_attach_all", "set-up function")]
+    def line_of(src):
+        if src.kind == "fixed":
+            return None
+        if src.kind == "mode":
+            return err.loc.line("mode", src.index, "name")
+        if src.kind == "channel":
+            return err.loc.line("channel", src.index, "name")
+        pos = err.loc.position("system", 0, "boards" if src.kind == "board" else "name", src.name)
+        return pos[0] if pos else None
 
-
-def check_names(system_name: str, boards: list, channels: list, err) -> None:
-    """Report every name whose C identifiers or files collide (err: description.Errors).
-    channels: the parsed Channel objects (name, ctype, kind, index)."""
-    owner = {}          # generated identifier -> (entity, what it is there)
-
-    def claim(ident, who, what, report):
-        why = reserved_why(ident)
-        if why:
-            report(f"its {what} {ident} is {why}" if what else f"'{ident}' is {why}")
-        elif what and ident in owner and owner[ident][0] != who:
-            report(f"its {what} {ident} is also generated for {owner[ident][0]} ({owner[ident][1]})")
-        elif what:
-            owner.setdefault(ident, (who, what))
-
-    claim(system_name, f"system '{system_name}'", "",
-          lambda msg: err.system("name", f"system name '{system_name}': {msg}"))
-    for b in boards:
-        def report_board(msg, b=b):
-            err.system("boards", f"board '{b}': {msg}")
+    system = Source("system", 0, system_name)
+    why = reserved_why(system_name)
+    if why:
+        report(system, f"'{system_name}' is {why}")
+    for i, b in enumerate(boards):
+        if b is None:
+            continue
         low = b.lower()
         if low in STD_HEADERS:
-            report_board(f"its header {b}.h would hide the C standard header <{low}.h>")
+            report(Source("board", i, b), f"its header {b}.h would hide the C standard header <{low}.h>")
         elif low in DRIVER_HEADERS:
-            report_board(f"its header {b}.h would overwrite the driver header {low}.h")
-        else:
-            claim(b, f"board '{b}'", "", report_board)
-            for ident, what in board_generated(system_name, b):
-                claim(ident, f"board '{b}'", what, report_board)
+            report(Source("board", i, b), f"its header {b}.h would overwrite the driver header {low}.h")
+        elif reserved_why(b):
+            report(Source("board", i, b), f"'{b}' is {reserved_why(b)}")
+    bad = set()                     # sources already reported: one message each
     for ch in channels:
-        def report_channel(msg, ch=ch):
-            err.channel(ch.index, ch.name, "name", msg)
-        claim(ch.name, f"channel '{ch.name}'", "", report_channel)
-        for ident, what in channel_generated(ch.name, ch.ctype is None and ch.kind != "time"):
-            claim(ident, f"channel '{ch.name}'", what, report_channel)
-    for ch in channels:     # a named type: a type name, not one the headers declare for a channel
+        why = reserved_why(ch.name)
+        if why:
+            report(Source("channel", ch.index, ch.name), f"'{ch.name}' is {why}")
+            bad.add(Source("channel", ch.index, ch.name))
+
+    owner = {}                      # identifier -> (what, Source)
+    for ident, what, src in generated_names(system_name, boards, channels, modes):
+        if src in bad:
+            continue
+        why = reserved_why(ident) if src is not FIXED else None
+        if why is None and ident in FIXED_NAMES and src is not FIXED:
+            why = "a fixed name of the generated files"
+        if why:
+            report(src, f"its {what} {ident} is {why}")
+            bad.add(src)
+        elif ident in owner:
+            other_what, other = owner[ident]
+            line = line_of(other)
+            report(src, f"its {what} {ident} is also generated for {other.label} ({other_what}"
+                   + (f", line {line}" if line else "") + ")")
+            bad.add(src)
+        else:
+            owner[ident] = (what, src)
+
+    for ch in channels:             # a named type: a type name, not one the generated files declare
         if not ch.ctype:
             continue
         words = ch.ctype.split()
         tag = words[-1]
         if tag in C_KEYWORDS and not (len(words) == 1 and tag in C_TYPE_KEYWORDS):
             err.channel(ch.index, ch.name, "type", f"'{ch.ctype}': '{tag}' is a C keyword, not a type name")
-        elif len(words) == 1 and tag in owner and owner[tag][1] in ("value type", "message type") \
-                and owner[tag][0] != f"channel '{ch.name}'":
-            err.channel(ch.index, ch.name, "type", f"'{ch.ctype}' is the {owner[tag][1]} that the "
-                        f"generated headers declare for {owner[tag][0]}")
+        elif len(words) > 1:
+            continue
+        elif tag in owner and owner[tag][1] is FIXED:
+            err.channel(ch.index, ch.name, "type", f"'{ch.ctype}' is a {owner[tag][0]} that the generated "
+                        "headers declare themselves")
+        elif tag in owner:
+            err.channel(ch.index, ch.name, "type", f"'{ch.ctype}' is the {owner[tag][0]} that the generated "
+                        f"headers declare for {owner[tag][1].label}")
+        elif tag not in C_KEYWORDS and reserved_why(tag) and (tag in DRIVER_IDENTIFIERS or not tag.endswith("_t")):
+            err.channel(ch.index, ch.name, "type", f"'{ch.ctype}' is {reserved_why(tag)}, not a type name")

@@ -1,127 +1,50 @@
-"""Reading and validating the system description (TOML): every error names
-the file, line, channel and field."""
+"""Validating the system description (the decoded TOML): every check of the
+description itself (sections, fields, ranges, names of the generated C,
+periods, modes) runs and all its faults are reported together, before any
+planning starts.  Every error names the file, line and column, the entity
+and the field (source.py)."""
 
 from __future__ import annotations
 
 import os
-import re
-import tomllib
 
 from .model import (BUS_DEFAULTS, BUS_MINIMUM, CHANNEL_KEYS, CTYPE_RE, DEFAULT_RAM_BYTES, HEADER_RE,
                     IDENT_RE, MODE_KIND, MODE_RIGID, MODE_SYNC, REQUEST_KIND, SYSTEM_KEYS, Bus, Channel,
-                    ScheduleError, System)
-from .rom import BOARD_BITS, MAX_BOARDS, MAX_CHAN_IDS, MAX_DESTS, MAX_ENTRIES, MAX_WORDS
+                    System)
+from .rom import (BOARD_BITS, MAX_BASE_WORD, MAX_BOARDS, MAX_CHAN_IDS, MAX_DESTS, MAX_ENTRIES,
+                  MAX_WORDS)
 from .contract import load as _load_contract
 from .fourslot import FOUR_SLOT, LAYOUTS, THREE_BUFFER
 from .cnames import check_names as check_c_names
 from .faults import parse_faults
 from .modes import check_request_channel, parse_modes
+from .source import Errors, Locator, describe as _describe, is_int as _is_int, load_toml, out_of_range
 from .termination import parse_board_timing
 
+__all__ = ["load_description", "load_toml", "parse_description"]
+
 CONTRACT_TIME_BITS = _load_contract().time_bits
+# Upper bounds of the description's integers (the lower ones are in the checks).
+MAX_U32 = (1 << 32) - 1             # a 32-bit figure: the global time, a clock rate in Hz
+MAX_RAM_BYTES = 4 * (MAX_BASE_WORD + 1)     # the RAM the ROM's base fields address
+MAX_CYCLE = (1 << CONTRACT_TIME_BITS) - 1   # clocks within a cycle: bus counts fit in one
+MAX_PRIORITY = 1_000_000
 
 
-class Locator:
-    """Best-effort line numbers for [system], [bus] and the i-th [[channel]]."""
-
-    HEADER_RE = re.compile(r"^\s*\[\[?\s*([A-Za-z0-9_.\"' -]+?)\s*\]\]?\s*(#.*)?$")
-
-    def __init__(self, path: str, text: str):
-        self.path = path
-        self.lines = text.splitlines()
-        self.tables = []            # (name, is_array, line index)
-        for i, line in enumerate(self.lines):
-            m = self.HEADER_RE.match(line)
-            if m and not line.lstrip().startswith("#"):
-                self.tables.append((m.group(1).strip(), line.lstrip().startswith("[["), i))
-
-    def _table_line(self, name, nth=0):
-        k = 0
-        for tname, _, i in self.tables:
-            if tname == name:
-                if k == nth:
-                    return i
-                k += 1
-        return None
-
-    def line(self, table, nth=0, field=None):
-        start = self._table_line(table, nth)
-        if start is None:
-            return None
-        if field is not None:
-            key_re = re.compile(r"^\s*[\"']?" + re.escape(field) + r"[\"']?\s*=")
-            for i in range(start + 1, len(self.lines)):
-                if self.HEADER_RE.match(self.lines[i]) and not self.lines[i].lstrip().startswith("#"):
-                    break
-                if key_re.match(self.lines[i]):
-                    return i + 1
-        return start + 1
-
-    def where(self, table, nth=0, field=None):
-        ln = self.line(table, nth, field)
-        return f"{self.path}:{ln}" if ln else self.path
+def max_period_us(clock_hz: int) -> int:
+    """The longest max_period_us: 2^32 - 1 clocks, the range of the 32-bit
+    global time in which ages and periods are measured (now - taken_at)."""
+    return MAX_U32 * 1_000_000 // clock_hz
 
 
-class Errors:
-    def __init__(self, loc: Locator):
-        self.loc = loc
-        self.messages = []
-
-    def system(self, field, msg, table="system"):
-        where = self.loc.where(table, 0, field)
-        fld = f", field '{field}'" if field else ""
-        self.messages.append(f"{where}: [{table}]{fld}: {msg}")
-
-    def channel(self, i, name, field, msg):
-        where = self.loc.where("channel", i, field)
-        who = f"channel '{name}'" if isinstance(name, str) and name else f"channel #{i + 1}"
-        fld = f", field '{field}'" if field else ""
-        self.messages.append(f"{where}: {who}{fld}: {msg}")
-
-    def general(self, msg):
-        self.messages.append(f"{self.loc.path}: {msg}")
-
-    def raise_if_any(self):
-        if self.messages:
-            raise ScheduleError(self.messages)
-
-
-def _is_int(v) -> bool:
-    return isinstance(v, int) and not isinstance(v, bool)
-
-
-def _describe(v) -> str:
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, str):
-        return repr(v)
-    if isinstance(v, float):
-        return f"{v:g}"
-    return repr(v) if not isinstance(v, (dict, list)) else type(v).__name__
-
-
-def load_toml(path: str):
-    """Read and decode a TOML file; errors name the file, line and column."""
-    try:
-        with open(path, "rb") as f:
-            raw = f.read()
-    except OSError as e:
-        raise ScheduleError(f"{path}: cannot read the description: {e.strerror}")
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError as e:
-        raise ScheduleError(f"{path}: not UTF-8 text (byte {e.start})")
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as e:
-        msg = str(e)
-        m = re.search(r"\(at line (\d+), column (\d+)\)", msg)
-        if m:
-            base = msg[:m.start()].strip()
-            raise ScheduleError(f"{path}:{m.group(1)}:{m.group(2)}: invalid TOML: {base} "
-                                f"(line {m.group(1)}, column {m.group(2)})")
-        raise ScheduleError(f"{path}: invalid TOML: {msg}")
-    return data, text
+def period_problem(us, clock_hz: int):
+    """Why a period of us microseconds is out of range (None if it is not)."""
+    if us * clock_hz // 1_000_000 < 1:
+        return f"{us} us is less than one clock at clock_hz = {clock_hz}"
+    if us > max_period_us(clock_hz):
+        return out_of_range(us, 1, max_period_us(clock_hz), f"microseconds: 2^32 - 1 clocks at clock_hz = "
+                            f"{clock_hz}, the range of the 32-bit global time that ages are measured in")
+    return None
 
 
 def parse_description(data: dict, path: str = "<description>", text: str = "") -> System:
@@ -155,15 +78,21 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
         name = "system"
 
     clock_hz = sysd.get("clock_hz")
+    clock_ok = False
     if clock_hz is None:
         err.system("clock_hz", "missing (the controller clock in Hz)")
-        clock_hz = 1
     elif not _is_int(clock_hz) or clock_hz <= 0:
         err.system("clock_hz", f"{_describe(clock_hz)} is not a positive integer")
-        clock_hz = 1
+    elif clock_hz > MAX_U32:
+        err.system("clock_hz", out_of_range(clock_hz, 1, MAX_U32, "Hz, a 32-bit figure"))
+    else:
+        clock_ok = True
+    if not clock_ok:
+        clock_hz = 1_000_000        # stands in for the checks below (1 clock a microsecond)
 
     boards = sysd.get("boards")
     board_ok = True
+    name_boards = []                # the boards whose generated names are checked (None: invalid)
     if boards is None:
         err.system("boards", "missing (a list of board names)")
         boards, board_ok = [], False
@@ -177,14 +106,19 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
         seen = {}
         for b in boards:
             if not isinstance(b, str) or not IDENT_RE.match(b):
-                err.system("boards", f"board name {_describe(b)} is not a C identifier")
+                err.system("boards", f"board name {_describe(b)} is not a C identifier", value=b)
                 board_ok = False
+                name_boards.append(None)
                 continue
             if b.lower() in seen:
                 err.system("boards", f"duplicate board name '{b}'"
-                           + (f" (same file name as '{seen[b.lower()]}')" if seen[b.lower()] != b else ""))
+                           + (f" (same file name as '{seen[b.lower()]}')" if seen[b.lower()] != b else ""),
+                           value=b)
                 board_ok = False
+                name_boards.append(None)
+                continue
             seen[b.lower()] = b
+            name_boards.append(b)
         boards = [b for b in boards if isinstance(b, str)]
     board_index = {b: i for i, b in enumerate(boards)}
 
@@ -213,6 +147,10 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
         if v & (v - 1) or v < 16:
             err.system("ram_bytes", f"{what}: {v} is not a power of two >= 16")
             return False
+        if v > MAX_RAM_BYTES:
+            err.system("ram_bytes", f"{what}: " + out_of_range(v, 16, MAX_RAM_BYTES, f"bytes, the {MAX_BASE_WORD + 1} "
+                       "words that the ROM's base fields address"))
+            return False
         return True
 
     if isinstance(ram, dict):
@@ -238,6 +176,10 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
         if not _is_int(v) or v < lo:
             err.system(key, f"{_describe(v)} is not an integer >= {lo}", table="bus")
             continue
+        if key not in ("n_chan", "time_bits") and v > MAX_CYCLE:
+            err.system(key, out_of_range(v, lo, MAX_CYCLE, f"a cycle has at most {MAX_CYCLE} clocks, "
+                                         f"TIME_BITS = {CONTRACT_TIME_BITS}"), table="bus")
+            continue
         if key == "n_chan" and v > MAX_CHAN_IDS:
             bits = MAX_CHAN_IDS.bit_length() - 1
             article = "an" if str(bits).startswith("8") or bits in (11, 18) else "a"
@@ -262,7 +204,8 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
         err.general("[[channel]] must list at least one channel")
         err.raise_if_any()
 
-    channels = []
+    channels = []                   # the valid channels
+    named = []                      # every channel with a valid, unique name (valid or not): its C names
     names = {}
     n_sync = 0
     n_req = 0
@@ -290,6 +233,7 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
             else:
                 names[cname.upper()] = (cname, i)
         label = cname if isinstance(cname, str) else None
+        unique_name = ok
 
         for key in cd:
             if key not in CHANNEL_KEYS:
@@ -359,12 +303,15 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
             else:
                 producer = board_index[p]
         else:
+            words = 1 if kind == "time" else 2 if mode_info else status_words
+            what = MODE_KIND if mode_info else kind
+            how = {"time": "W = 1", MODE_KIND: "the running mode and since, W = 2"}.get(
+                what, f"W = 1 + 2*n_chan = {status_words}")
             for fld in ("producer", "size"):
                 if fld in cd:
-                    err.channel(i, label, fld, f"a {kind} channel has no {fld}: the controller "
-                                f"generates its value ({'W = 1' if kind == 'time' else f'W = 1 + 2*n_chan = {status_words}'})")
+                    err.channel(i, label, fld, f"a {what} channel has no {fld}: the controller "
+                                f"generates its value ({how})")
                     ok = False
-            words = 1 if kind == "time" else 2 if mode_info else status_words
             size = 4 * words
 
         consumers = []
@@ -417,6 +364,9 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
             err.channel(i, label, "max_period_us", f"{_describe(mp)} is not a positive integer number "
                         "of microseconds")
             ok, mp = False, 1
+        elif clock_ok and period_problem(mp, clock_hz):
+            err.channel(i, label, "max_period_us", period_problem(mp, clock_hz))
+            ok, mp = False, 1
 
         sync = cd.get("sync", False)
         if not isinstance(sync, bool):
@@ -442,12 +392,19 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
                 ok = False
 
         prio = cd.get("priority", 0)
-        if not _is_int(prio) or abs(prio) > 1000000:
+        if not _is_int(prio):
             err.channel(i, label, "priority", f"{_describe(prio)} is not an integer")
+            prio, ok = 0, False
+        elif abs(prio) > MAX_PRIORITY:
+            err.channel(i, label, "priority", out_of_range(prio, -MAX_PRIORITY, MAX_PRIORITY))
             prio, ok = 0, False
         max_slots = cd.get("max_slots")
         if max_slots is not None and (not _is_int(max_slots) or max_slots <= 0):
             err.channel(i, label, "max_slots", f"{_describe(max_slots)} is not a positive integer")
+            max_slots, ok = None, False
+        elif max_slots is not None and max_slots > MAX_ENTRIES:
+            err.channel(i, label, "max_slots", out_of_range(max_slots, 1, MAX_ENTRIES, f"a cycle has at most "
+                                                           f"{MAX_ENTRIES} ROM entries"))
             max_slots, ok = None, False
 
         mip = cd.get("max_import_passes")
@@ -456,13 +413,19 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
                         "that finds a new value stores ReadLocked at least once, and the bound is finite only "
                         "from 2 passes up)")
             mip, ok = None, False
+        elif mip is not None and mip > MAX_U32:
+            err.channel(i, label, "max_import_passes", out_of_range(mip, 2, MAX_U32, "a 32-bit figure"))
+            mip, ok = None, False
 
-        if ok:
-            channels.append(Channel(index=i, name=cname, kind=kind, ctype=ctype, size=size,
-                                    words=words, producer=producer, consumers=consumers,
-                                    max_period_us=mp, sync=sync, priority=prio,
-                                    max_slots=1 if request else max_slots, layout=layout,
-                                    max_import_passes=mip, request=request, mode_info=mode_info))
+        if unique_name:
+            ch = Channel(index=i, name=cname, kind=kind, ctype=ctype, size=size, words=words, producer=producer,
+                         consumers=consumers, max_period_us=mp, sync=sync, priority=prio,
+                         max_slots=1 if request else max_slots, layout=layout, max_import_passes=mip,
+                         request=request, mode_info=mode_info)
+            ch.period_clocks = mp * clock_hz // 1_000_000
+            named.append(ch)
+            if ok:
+                channels.append(ch)
 
     if len(chans) > bus.n_chan:
         err.general(f"too many channels: {len(chans)} channels but the controller has "
@@ -473,25 +436,38 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
     if mode == MODE_SYNC and n_sync == 0:
         err.system("mode", f"{MODE_SYNC} mode needs exactly one channel with sync = true "
                    "(the position channel that starts the cycle)")
-    check_c_names(name, boards if board_ok else [], channels, err)
-    err.raise_if_any()
 
     timing = parse_board_timing(data.get("board", {}), boards, clock_hz, err, _describe)
     faults = parse_faults(data.get("faults"), err, _describe)
-    err.raise_if_any()
 
+    # The modes, over every channel with a name (one with a fault of its own is
+    # no "unknown channel" to a mode); with any fault the system is not built.
     system = System(name=name, clock_hz=clock_hz, boards=boards, ram_bytes=ram_bytes,
-                    mode=mode, types_header=types_header, bus=bus, channels=channels, source=path,
+                    mode=mode, types_header=types_header, bus=bus, channels=named, source=path,
                     timing=timing, faults=faults)
-    for ch in channels:
-        ch.period_clocks = ch.max_period_us * clock_hz // 1_000_000
-        if ch.period_clocks < 1:
-            err.channel(ch.index, ch.name, "max_period_us", f"{ch.max_period_us} us is less than "
-                        f"one clock at clock_hz = {clock_hz}")
+    raw_modes = data.get("mode")
+    system.modes = parse_modes(raw_modes, system, err, _describe, _is_int)
+    for i, m in enumerate(system.modes):
+        for c, us in m.periods.items():
+            problem = period_problem(us, clock_hz) if clock_ok else None
+            if problem:
+                err.mode(i, m.name, "periods", f"{_channel_name(named, c)}: {problem}")
+
+    # The names of the generated C: boards, channels, modes, types, fixed names.
+    mode_names = []
+    if isinstance(raw_modes, list):
+        for md in raw_modes:
+            n = md.get("name") if isinstance(md, dict) else None
+            ok = isinstance(n, str) and IDENT_RE.match(n) and n not in mode_names
+            mode_names.append(n if ok else None)
+    check_c_names(name, name_boards, named, mode_names, err)
     err.raise_if_any()
-    system.modes = parse_modes(data.get("mode"), system, err, _describe, _is_int)
-    err.raise_if_any()
+    system.channels = channels
     return system
+
+
+def _channel_name(channels, index) -> str:
+    return next((ch.name for ch in channels if ch.index == index), f"#{index + 1}")
 
 
 def load_description(path: str) -> System:

@@ -38,6 +38,8 @@ import math
 from .fourslot import FOUR_SLOT
 from .model import BOARD_KEYS, BoardTiming, ScheduleError
 
+MAX_U32 = (1 << 32) - 1     # the upper bound of a clock rate or a loop time in clocks
+
 # Import loop timing per core, in the core's own clocks, with the driver
 # c-driver/albatross.c built as the firmware is (rv32i, -Os) and the board
 # memory of soc/ (pico_core/serv_core, board_memmap, the DPRAM's CPU port).
@@ -90,12 +92,20 @@ def parse_board_timing(table, boards, clock_hz, err, describe):
         if not isinstance(cpu_hz, int) or isinstance(cpu_hz, bool) or cpu_hz <= 0:
             err.system("clock_hz", f"{describe(cpu_hz)} is not a positive integer", table=tname)
             ok = False
+        elif cpu_hz > MAX_U32:
+            err.system("clock_hz", f"{cpu_hz} is out of range: an integer from 1 to {MAX_U32} (Hz, a 32-bit "
+                       "figure)", table=tname)
+            ok = False
         for key in ("import_t_clocks", "import_v_clocks"):
             x = bd.get(key)
             if x is None:
                 continue
             if not isinstance(x, int) or isinstance(x, bool) or x <= 0:
                 err.system(key, f"{describe(x)} is not a positive integer number of clocks", table=tname)
+                ok = False
+            elif x > MAX_U32:
+                err.system(key, f"{x} is out of range: an integer from 1 to {MAX_U32} (clocks, a 32-bit "
+                           "figure)", table=tname)
                 ok = False
             elif key == "import_t_clocks":
                 t, src = x, "the description"
