@@ -17,7 +17,8 @@ def main(argv=None) -> int:
                                  "-> schedule ROM, board headers, RAM images, reports.")
     ap.add_argument("description", help="system description (.toml)")
     ap.add_argument("-o", "--out", required=True, metavar="DIR",
-                    help="output folder (created if missing; the files of a previous run in it are replaced)")
+                    help="output folder, replaced whole by the outputs (created if missing; an earlier run's files "
+                         "are dropped, files of others kept; a folder holding no earlier run must be empty)")
     ap.add_argument("-q", "--quiet", action="store_true", help="print nothing on success")
     ap.add_argument("--no-redundancy", action="store_true",
                     help="one slot per channel and cycle (to measure what redundancy buys)")

@@ -5,6 +5,10 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
+import stat
+import sys
+import tempfile
 from typing import Optional
 
 from .cgen import render_board_c, render_board_header, render_ram_hex
@@ -95,19 +99,177 @@ def generate(system: System, plan: Plan, rom: list, rep: dict) -> dict:
     return files
 
 
-def write_outputs(files: dict, out_dir: str):
+# The output folder (docs/compiler.md "Outputs").  A run writes every output
+# into a new folder beside the target (<out>.tmp-XXXXXXXX), then puts it in
+# place: the old folder is renamed aside (<out>.old-XXXXXXXX), the new one
+# renamed to <out>, the old one removed.  A failure before the swap removes
+# the new folder and leaves the old one as it was.  The manifest lists the
+# files a run wrote: the next run drops them (a board renamed leaves no
+# stale header behind) and keeps, unchanged, whatever else the folder holds
+# (make's tb_plan.txt, the description itself).  A folder that is not empty
+# and holds no earlier run (no manifest, and no report.json of this
+# compiler: the folders of a compiler without manifests) is never replaced.
+MANIFEST = "manifest.txt"
+MANIFEST_HEAD = ("# albatross-schedule: the files of this run.  The next run into this folder replaces "
+                 "the folder, drops these files and keeps the others.\n")
+BASE_OUTPUTS = ("rom.hex", "report.json", "report.txt", "timeline.svg")
+
+
+def output_order(files: dict) -> list:
+    """The order of the writes: rom.hex last (its time stamp, make's target, is
+    the newest), the manifest just before it."""
+    return sorted(files, key=lambda n: (n == "rom.hex", n == MANIFEST))
+
+
+def earlier_outputs(folder: str):
+    """The names of the files the run that wrote `folder` wrote, or None if
+    it holds no run of the compiler: those its manifest lists, or, written
+    before manifests, those its report.json names (with the `.tmp` files a
+    failed write of those compilers left)."""
+    man = os.path.join(folder, MANIFEST)
+    if os.path.isfile(man) and not os.path.islink(man):
+        try:
+            with open(man, encoding="utf-8") as f:
+                names = {ln.strip() for ln in f if ln.strip() and not ln.startswith("#")}
+        except (OSError, UnicodeError):
+            return None
+        return {n for n in names if os.sep not in n and n not in (".", "..")} | {MANIFEST}
     try:
-        os.makedirs(out_dir, exist_ok=True)
-        # rom.hex last: its time stamp (the make target) is the newest
-        for name in sorted(files, key=lambda n: n == "rom.hex"):
-            text = files[name]
-            path = os.path.join(out_dir, name)
-            tmp = path + ".tmp"
-            with open(tmp, "w", newline="\n") as f:
-                f.write(text)
-            os.replace(tmp, path)
+        with open(os.path.join(folder, "report.json"), encoding="utf-8") as f:
+            rep = json.load(f)
+        boards = [b["name"] for b in rep["boards"]]
+        if not str(rep["generator"]).startswith("albatross_schedule") or \
+                not all(isinstance(b, str) and b and os.sep not in b for b in boards):
+            return None
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+    names = set(BASE_OUTPUTS) | {f"{b}{x}" for b in boards for x in (".h", ".c", "_ram.hex")}
+    return names | {n + ".tmp" for n in names}
+
+
+def _write_file(path: str, text: str):
+    with open(path, "w", newline="\n") as f:
+        f.write(text)
+
+
+def _link_or_copy(src: str, dst: str):
+    """A file kept from the old folder: a hard link (same data and time
+    stamp), or a copy where links are not possible."""
+    try:
+        os.link(src, dst, follow_symlinks=False)
+    except OSError:
+        shutil.copy2(src, dst, follow_symlinks=False)
+
+
+def _keep(src: str, dst: str):
+    if os.path.islink(src):
+        os.symlink(os.readlink(src), dst)
+    elif os.path.isdir(src):
+        shutil.copytree(src, dst, symlinks=True, copy_function=_link_or_copy)
+    elif os.path.isfile(src):
+        _link_or_copy(src, dst)
+    else:
+        raise OSError(0, "not a file, a folder or a link")
+
+
+def _kind(path: str) -> str:
+    return "a link" if os.path.islink(path) else "a folder" if os.path.isdir(path) else \
+        "a file" if os.path.isfile(path) else "a special file"
+
+
+def _plan_swap(files: dict, out_dir: str, target: str, description: Optional[str]) -> list:
+    """Check that `target` may be replaced; the names of what the new folder
+    keeps from it."""
+    if os.path.lexists(target) and not os.path.isdir(target):
+        raise ScheduleError(f"{out_dir}: not a folder (the outputs go into a folder of their own)")
+    cwd = os.path.realpath(os.getcwd())
+    if cwd == target or cwd.startswith(target.rstrip(os.sep) + os.sep):
+        raise ScheduleError(f"{out_dir}: the output folder is the current folder or holds it; it is replaced "
+                            "whole by each run: name a folder of its own (for example -o out)")
+    if not os.path.isdir(target):
+        return []
+    try:
+        names = sorted(os.listdir(target))
     except OSError as e:
-        raise ScheduleError(f"{out_dir}: cannot write the outputs: {e.strerror or e}")
+        raise ScheduleError(f"{out_dir}: cannot read the output folder: {e.strerror or e}")
+    ours = earlier_outputs(target)
+    others = [n for n in names
+              if ours is None or n not in ours or not os.path.isfile(os.path.join(target, n))
+              or os.path.islink(os.path.join(target, n))]
+    for n in others:
+        if n in files or n == MANIFEST:
+            where = os.path.join(out_dir, n)
+            raise ScheduleError(f"{where}: {_kind(os.path.join(target, n))} that no earlier run of the compiler "
+                                f"wrote ({MANIFEST} does not list it) has the name of an output: the outputs "
+                                "cannot replace it; move it away")
+    desc = os.path.realpath(description) if description else None
+    mine = {n for n in others if desc and os.path.join(target, n) == desc}
+    if ours is None and set(others) - mine:
+        raise ScheduleError(f"{out_dir}: not empty and not an output folder of the compiler (no {MANIFEST}): it "
+                            f"holds {', '.join(sorted(set(others) - mine))}. A run replaces its output folder "
+                            "whole: name a new or empty folder, or one that an earlier run wrote")
+    return others
+
+
+def write_outputs(files: dict, out_dir: str, description: Optional[str] = None):
+    """Write the outputs {name: text} as the folder out_dir, whole or not at
+    all (see MANIFEST above).  description: the file compiled; a folder that
+    holds it alone counts as empty (make writes a joined description there)."""
+    target = os.path.realpath(out_dir)         # a link to the folder stays a link
+    keep = _plan_swap(files, out_dir, target, description)
+    parent = os.path.dirname(target)
+    base = os.path.basename(target)
+    try:
+        os.makedirs(parent, exist_ok=True)
+        new = tempfile.mkdtemp(prefix=base + ".tmp-", dir=parent)
+    except OSError as e:
+        raise ScheduleError(f"{out_dir}: cannot create the new output folder beside it, in {parent}: "
+                            f"{e.strerror or e}")
+    old = None
+    try:
+        listed = dict(files)
+        listed[MANIFEST] = MANIFEST_HEAD + "".join(n + "\n" for n in sorted(files))
+        for name in output_order(listed):
+            try:
+                _write_file(os.path.join(new, name), listed[name])
+            except OSError as e:
+                raise ScheduleError(f"{os.path.join(out_dir, name)}: cannot write it: {e.strerror or e} "
+                                    f"(nothing in {out_dir} changed)")
+        for name in keep:
+            try:
+                _keep(os.path.join(target, name), os.path.join(new, name))
+            except (OSError, shutil.Error) as e:
+                raise ScheduleError(f"{os.path.join(out_dir, name)}: cannot keep it in the new output folder: "
+                                    f"{getattr(e, 'strerror', None) or e} (nothing in {out_dir} changed)")
+        try:
+            if os.path.isdir(target):
+                os.chmod(new, stat.S_IMODE(os.stat(target).st_mode))
+                old = tempfile.mkdtemp(prefix=base + ".old-", dir=parent)
+                os.rename(target, old)             # onto the empty folder just made
+                try:
+                    os.rename(new, target)
+                except OSError:
+                    os.rename(old, target)
+                    raise
+            else:
+                umask = os.umask(0)
+                os.umask(umask)
+                os.chmod(new, 0o777 & ~umask)
+                os.rename(new, target)
+        except OSError as e:
+            raise ScheduleError(f"{out_dir}: cannot put the new outputs in place: {e.strerror or e} "
+                                "(the earlier outputs are as they were)")
+    except BaseException:
+        shutil.rmtree(new, ignore_errors=True)
+        if old is not None and os.path.isdir(old) and not os.listdir(old):
+            os.rmdir(old)
+        raise
+    if old is not None:
+        failed = []
+        shutil.rmtree(old, onerror=lambda fn, path, exc: failed.append(path))
+        if failed:
+            print(f"warning: {out_dir}: the earlier outputs, moved to {old}, could not all be removed "
+                  f"({failed[0]})", file=sys.stderr)
 
 
 def compile_file(path: str, out_dir: Optional[str] = None, no_redundancy: bool = False, faults=None):
@@ -132,5 +294,5 @@ def compile_file(path: str, out_dir: Optional[str] = None, no_redundancy: bool =
     system, plan, rom, rep = compile_system(system)
     files = generate(system, plan, rom, rep)
     if out_dir is not None:
-        write_outputs(files, out_dir)
+        write_outputs(files, out_dir, path)
     return system, plan, rep, files
