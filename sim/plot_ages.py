@@ -251,15 +251,22 @@ def main():
             for t, _, b in run:
                 pts += [f'{x(t):.1f},{y(b):.1f}', f'{x(t + bucket):.1f},{y(b):.1f}']
             out.append(f'<polyline points="{" ".join(pts)}" fill="none" stroke="{GREEN}" stroke-dasharray="5,3"/>')
-        # the ages: judged stretches blue, the others grey; each stretch joined to the next
+        # the ages: judged stretches blue, the others grey, each stretch joined to the next
         pts = s["points"]
-        for k in range(len(pts)):
-            t, v, b = pts[k]
-            nxt = pts[k + 1] if k + 1 < len(pts) else None
-            if nxt:
-                colour = BLUE if b is not None and nxt[2] is not None else GREY
-                out.append(f'<line x1="{x(t):.1f}" y1="{y(v):.1f}" x2="{x(nxt[0]):.1f}" y2="{y(nxt[1]):.1f}" '
-                           f'stroke="{colour}" stroke-width="1"/>')
+        line, colour = [], None
+        for k in range(len(pts) - 1):
+            (t, v, b), (t2, v2, b2) = pts[k], pts[k + 1]
+            c = BLUE if b is not None and b2 is not None else GREY
+            if c != colour and line:
+                out.append(f'<polyline points="{" ".join(line)}" fill="none" stroke="{colour}" stroke-width="1"/>')
+                line = []
+            if not line:
+                line = [f'{x(t):.1f},{y(v):.1f}']
+            line.append(f'{x(t2):.1f},{y(v2):.1f}')
+            colour = c
+        if line:
+            out.append(f'<polyline points="{" ".join(line)}" fill="none" stroke="{colour}" stroke-width="1"/>')
+        for t, v, b in pts:
             if b is not None and v > b:
                 out.append(f'<circle cx="{x(t):.1f}" cy="{y(v):.1f}" r="1.8" fill="{RED}"/>')
         # each step up of the bound within a mode, once it has settled after a switch: a marker

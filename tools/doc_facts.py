@@ -10,7 +10,10 @@ they describe, so they cannot drift:
                    (flow: lint) of the checkout's *.core files, which
                    make test-fusesoc runs one by one;
   README.md        "ends with `sim: pass`" against the last line of a
-                   make sim log (--sim-log FILE, optional).
+                   make sim log (--sim-log FILE, optional), and the make sim
+                   excerpt (the block figures:sim-excerpt) against the same
+                   log: every line of it but "..." printed by the run, in
+                   that order.
 
   doc_facts.py [--root DIR] [--schedule DIR] [--sim-log FILE]
   doc_facts.py --self-test    the negative: a copy of the tree with each
@@ -94,7 +97,32 @@ def check(root, schedule, sim_log):
             bad.append(f"README.md says make sim ends with `sim: pass`; the last line of {sim_log} is {last!r}")
         elif claims:
             ok.append(f"README.md: make sim ends with `sim: pass` ({sim_log})")
+        excerpt = sim_excerpt(readme)
+        if excerpt is None:
+            bad.append("README.md: expected the make sim excerpt (<!-- figures:sim-excerpt --> with a ``` block), "
+                       "found none")
+        else:
+            at = 0
+            for line in excerpt:
+                try:
+                    at = lines.index(line, at) + 1
+                except ValueError:
+                    bad.append(f"README.md: the make sim excerpt's line {line.strip()[:90]!r} is not printed by the "
+                               f"run in {sim_log} (in that order); make figures copies it from the log of "
+                               "make test-docs-pictures")
+                    break
+            else:
+                ok.append(f"README.md: the make sim excerpt's {len(excerpt)} lines as {sim_log} prints them")
     return ok, bad
+
+
+def sim_excerpt(readme):
+    """The lines of README.md's make sim excerpt, without the "..." lines; None without one."""
+    m = re.search(r"^<!-- figures:sim-excerpt -->\n```\n(.*?)\n```\n<!-- /figures:sim-excerpt -->$", readme,
+                  re.S | re.M)
+    if not m:
+        return None
+    return [ln for ln in m.group(1).split("\n") if ln.strip() != "..."]
 
 
 def self_test(schedule):
@@ -134,6 +162,24 @@ def self_test(schedule):
         hit = [b for b in bad if "sim: pass" in b]
         print(("caught: " + hit[0]) if hit else "NOT CAUGHT: a make sim log that does not end with sim: pass")
         good &= bool(hit)
+        # the excerpt: a log that prints it passes; one figure of it changed by one must be caught
+        readme = os.path.join(d, "README.md")
+        excerpt = sim_excerpt(open(readme).read()) or []
+        open(log, "w").write("\n".join(["progress"] + excerpt + ["sim: pass"]) + "\n")
+        _, bad = check(d, schedule, log)
+        if [b for b in bad if "excerpt" in b] or not excerpt:
+            print(f"self-test: a log that prints the excerpt must pass, got: {bad}")
+            good = False
+        orig = open(readme).read()
+        row = next((ln for ln in excerpt if re.search(r"\d{3,}", ln)), "")
+        changed = orig.replace(row, re.sub(r"\d{3,}", lambda m: str(int(m.group()) + 1), row, count=1), 1)
+        open(readme, "w").write(changed)
+        _, bad = check(d, schedule, log)
+        hit = [b for b in bad if "excerpt" in b]
+        print(("caught: " + hit[0]) if hit and changed != orig else "NOT CAUGHT: a figure of the make sim excerpt "
+              "changed by one")
+        good &= bool(hit) and changed != orig
+        open(readme, "w").write(orig)
     print("doc-facts self-test: " + ("every changed figure caught" if good else "FAILED"))
     return 0 if good else 1
 

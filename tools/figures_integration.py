@@ -4,7 +4,12 @@ measured against it, the SymbiYosys proofs, the kinds' cost, VexRiscv's cost
 and tests, the make sim excerpt, the schedule modes' switches, the driver on
 host threads.  SECTIONS maps
 each block name to the function that makes its table."""
-from figures_common import Absent, load, missing, table, n
+import os
+import re
+import subprocess
+import sys
+
+from figures_common import Absent, load, missing, old_rows, old_text, table, n
 from suite_report import TARGET   # suite name -> its make target
 
 
@@ -214,35 +219,40 @@ def vex_tests():
 SECTIONS["vex-tests"] = vex_tests
 
 
+SIM_LOG = "build/docs/sim.log"   # make sim with its defaults, as make test-docs-pictures runs it
+
+
 def sim_excerpt():
-    """The head of `make sim`'s console report, as sim/mobot_sim.cpp prints it."""
-    r = load("sim.json")
-    if not r:
-        missing("sim.json", "make sim")
-    hz = r["clock_hz"]
-    lines = ["```",
-             f"{r['label']}: {r['cycles']} cycles ({1e3 * r['cycles'] / hz:.2f} ms at {hz / 1e6:.0f} MHz), "
-             f"controller time {r['cycles']}, bus busy {100 * r['bus_busy_fraction']:.1f} %, {r['requests']} requests, "
-             f"{r['faults_injected']} faults injected, STATUS: {r['status_retries']} retries, "
-             f"{r['status_abandoned']} abandoned"]
-    if "fault_rate_measured" in r:
-        lines.append(f"  fault rate per access: nominal {r['fault_rate']:.4f}, measured {r['fault_rate_measured']:.4f} "
-                     f"(mean burst {r['fault_mean_burst']:.3g} accesses; tolerance +-{r['fault_rate_tolerance']:.4f}, "
-                     f"6 sigma){'' if r['fault_rate_ok'] else ': OUT OF TOLERANCE'}")
-    lines += ["  %-11s %-11s %7s %7s %9s %9s %9s %9s %6s %11s" % ("channel", "consumer", "New", "Old", "age min",
-                                                             "age mean", "age max", "bound", "ratio", "cyc/Import")]
-    for s in r["series"][:4]:
-        a = s["age"]
-        lines.append("  %-11s %-11s %7d %7d %9d %9.0f %9d %9d %6.3f %11.0f" % (
-            s["channel"], s["consumer"], s["new"], s["old"], a["min"], a["mean"], a["max"], s["bound"],
-            s.get("worst_ratio", a["max"] / s["bound"] if s["bound"] else 0.0), s["import_cycles"]["mean"]))
-    lines.append("  ...")
-    if r.get("mode_switches"):
-        lines.append("  modes: %d switches, worst switch latency %d clocks against the bound %d (%.2f); RadarMap "
-                     "stale %d times in a mode without it" % (
-                         len(r["mode_switches"]), r["switch_latency_worst"], r["switch_latency_bound"],
-                         r["switch_latency_worst"] / max(1, r["switch_latency_bound"]), r["stale_in_mode"]))
-    return "\n".join(lines + ["```"])
+    """The head of `make sim`'s console report, copied from the log of a real run
+    (SIM_LOG, written by make test-docs-pictures or make docs-pictures): the run's
+    line, the fault rate, the modes' verdict, the table's head and its first four
+    rows (each with its line of ages not judged, if any), and the verdict; "..."
+    where lines are left out.  make test-docs-pictures checks each line against a
+    fresh run (tools/doc_facts.py --sim-log)."""
+    try:
+        with open(SIM_LOG) as f:
+            lines = [ln.rstrip("\n") for ln in f if ln.strip()]
+    except OSError:
+        raise Absent(f"_Not measured yet: `make test-docs-pictures` writes `{SIM_LOG}`._")
+    start = next((k for k, ln in enumerate(lines) if ln.startswith("sim: ") and " cycles (" in ln), None)
+    head = next((k for k, ln in enumerate(lines) if ln.split()[:3] == ["channel", "consumer", "New"]), None)
+    if start is None or head is None or head < start:
+        raise Absent(f"_{SIM_LOG} holds no make sim report: `make test-docs-pictures` writes it._")
+    out, rows, k = lines[start:start + 2], 0, head + 1
+    between = [ln for ln in lines[start + 2:head] if ln.startswith("  modes: worst")]
+    if len(between) < len(lines[start + 2:head]):
+        out.append("  ...")
+    out += between + [lines[head]]
+    while k < len(lines) and rows < 4:
+        out.append(lines[k])
+        if lines[k].startswith("  ") and not lines[k].startswith("   "):
+            rows += 1
+        k += 1
+    while k < len(lines) and lines[k].startswith("   "):   # the last row's own line of ages not judged
+        out.append(lines[k])
+        k += 1
+    out += ["  ...", lines[-1]]
+    return "\n".join(["```"] + out + ["```"])
 
 
 SECTIONS["sim-excerpt"] = sim_excerpt
@@ -378,24 +388,86 @@ def host_threads_reliability():
 SECTIONS["host-threads-reliability"] = host_threads_reliability
 
 
-def suite_times():
-    """How long make test and make check take (build/reports/suite_*.json, tools/suite_report.py)."""
-    rows = []
-    for name in ("check", "check_hogs", "test", "test_hogs", "slow"):
+def current_test_count(suite):
+    """How many tests the suite has now (make list-tests / list-slow-tests), or None."""
+    target = {"test": "list-tests", "slow": "list-slow-tests"}.get(suite)
+    if not target:
+        return None
+    try:
+        out = subprocess.run(["make", "-s", "--no-print-directory", target], capture_output=True, text=True,
+                             timeout=120, env={k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MFLAGS")})
+    except (OSError, subprocess.SubprocessError):
+        return None
+    return len(out.stdout.split()) if out.returncode == 0 else None
+
+
+def suite_rows(names):
+    """The rows of suite_NAME.json for each name; a row whose report is absent is
+    kept from the old table (by its suite and its note), a suite that has more
+    or fewer tests now than the run had says so (and make figures warns)."""
+    rows, cpu = [], None
+    for name in names:
         r = load(f"suite_{name}.json")
+        label = f"`make {TARGET.get(name.split('_')[0], name.split('_')[0])}`"
         if not r:
+            busy = name.endswith("_hogs")
+            for c in old_rows(label):
+                if ("(" in c[5]) != busy:
+                    continue
+                now = current_test_count(name.split("_")[0])
+                if c[1].isdigit() and now is not None and now != int(c[1]):
+                    c[1] += f" (the suite has {now} now)"
+                rows.append(c)
             continue
-        rows.append([f"`make {TARGET.get(r['suite'], r['suite'])}`", r["tests"], f"{r['passed']} passed", f"{r['wall_s'] / 60:.1f} min",
+        cpu = cpu or r["cpu"]
+        tests = str(r["tests"])
+        now = current_test_count(r["suite"])
+        if now is not None and now != r["tests"]:
+            tests += f" (the suite has {now} now)"
+            print(f"figures: suite_{name}.json ran {r['tests']} tests, make {TARGET.get(r['suite'], r['suite'])} "
+                  f"has {now} now: run it again for current figures", file=sys.stderr)
+        rows.append([label, tests, f"{r['passed']} passed", f"{r['wall_s'] / 60:.1f} min",
                      f"{r['jobs']}", f"{r['loadavg_end'][0]:.1f}" + (f" ({r['busy']})" if r.get("busy") else ""),
                      f"{r['cpu_sum_s'] / 60:.1f} min", f"{r['idle_estimate_s'] / 60:.1f} min", r["date"]])
+    return rows, cpu
+
+
+SUITE_HEAD = ["suite", "tests", "verdicts", "wall time", "jobs", "load average", "CPU time", "CPU time / cores", "run"]
+
+
+def suite_times():
+    """How long make check, make test and make test-slow take on a machine with
+    nothing else of ours running (build/reports/suite_*.json, tools/suite_report.py)."""
+    rows, cpu = suite_rows(("check", "test", "slow"))
     if not rows:
         missing("suite_test.json", "make test")
-    return ("Measured on " + load(f"suite_{'test' if load('suite_test.json') else 'check'}.json")["cpu"]
-            + ", 2 cores, shared with other jobs. The load average counts every job on the machine at the end of the run; "
-            "the CPU time is what the tests and builds used, so CPU time / cores is what the suite needs on an "
-            "idle machine.\n\n"
-            + table(["suite", "tests", "verdicts", "wall time", "jobs", "load average", "CPU time",
-                     "CPU time / cores", "run"], rows))
+    cpu = cpu or next(iter(re.findall(r"Measured on (.+?), \d+ cores", old_text())), None)
+    return ((f"Measured on {cpu}, " if cpu else "") + f"{load_cores()} cores, shared with other jobs. The load "
+            "average counts every job on the machine at the end of the run; the CPU time is what the tests and "
+            "builds used, so CPU time / cores is what the suite needs on an idle machine.\n\n"
+            + table(SUITE_HEAD, rows))
+
+
+def suite_times_busy():
+    """The same suites run beside busy loops (ALB_SUITE_TAG=hogs: suite_*_hogs.json):
+    how much a loaded machine stretches them."""
+    rows, cpu = suite_rows(("check_hogs", "test_hogs"))
+    if not rows:
+        missing("suite_test_hogs.json", "ALB_SUITE_TAG=hogs make test")
+    cpu = cpu or next(iter(re.findall(r"Measured on (.+?)\. ", old_text())), None)
+    return ((f"Measured on {cpu}. " if cpu else "") + "The load average counts every job on the machine at the end "
+            "of the run, the busy loops included.\n\n" + table(SUITE_HEAD, rows))
+
+
+SECTIONS["suite-times-busy"] = suite_times_busy
+
+
+def load_cores():
+    for name in ("test", "check", "slow"):
+        r = load(f"suite_{name}.json")
+        if r and r.get("cores"):
+            return r["cores"]
+    return os.cpu_count() or 2
 
 
 SECTIONS["suite-times"] = suite_times
