@@ -250,44 +250,21 @@ class ModePlanTests(unittest.TestCase):
             self.assertTrue(m.startswith("mode 'dock': "), f"expected the message to name mode 'dock', got {m!r}")
 
 
-# Two modes that differ only in one channel's period (100 us, relaxed to 200
-# us): each mode alone fills its spare bus time with redundant slots, and the
-# two together want more entries than the ROM's 255.
-ROM_SHARE = """
-[system]
-name      = "share"
-clock_hz  = 50_000_000
-boards    = ["a", "b"]
-ram_bytes = 4096
-mode      = "time-rigid"
-
-[[channel]]
-name          = "Fast"
-size          = 4
-producer      = "a"
-consumers     = ["b"]
-max_period_us = 100
-
-[[channel]]
-name          = "Slow"
-size          = 4
-producer      = "b"
-consumers     = ["a"]
-max_period_us = 1000
-
+# compiler/examples/modes_share.toml: two modes that differ only in one
+# channel's period (100 us, relaxed to 200 us).  Each mode alone fills its
+# spare bus time with redundant slots, and the two together want more
+# entries than the ROM's 255.
+with open(os.path.join(REPO, "compiler", "examples", "modes_share.toml")) as _f:
+    ROM_SHARE = _f.read()
+# Its system and channels, no modes: the pieces of the other descriptions below.
+SHARE_SYSTEM = ROM_SHARE[ROM_SHARE.index("[system]"):ROM_SHARE.index("[[channel]]")]
+REQUEST = """
 [[channel]]
 name          = "ModeRequest"
 kind          = "mode_request"
 producer      = "a"
 size          = 4
 max_period_us = 1000
-
-[[mode]]
-name = "normal"
-
-[[mode]]
-name    = "relaxed"
-periods = { Fast = 200 }
 """
 
 
@@ -358,8 +335,9 @@ class RomShareTests(unittest.TestCase):
 
     def test_modes_that_fit_keep_all_their_redundancy(self):
         """Modes whose redundant slots all fit the ROM: nothing cut."""
-        _, _, _, rep = compile_text(ROM_SHARE.replace("[[mode]]\nname    = \"relaxed\"", "[[mode]]\nname = \"relaxed\"")
-                                    .replace("periods = { Fast = 200 }", "channels = [\"Fast\"]"), "share2.toml")
+        text = ROM_SHARE.replace("periods = { Fast = 200 }", "channels = [\"Fast\"]")
+        self.assertNotEqual(text, ROM_SHARE)
+        _, _, _, rep = compile_text(text, "share2.toml")
         relaxed = rep["modes"][1]
         self.assertFalse(relaxed["redundant_slots"]["cut"], relaxed["redundant_slots"])
 
@@ -369,8 +347,7 @@ class RomShareTests(unittest.TestCase):
         chans = "".join(f'\n[[channel]]\nname = "C{i}"\nsize = 4\nproducer = "a"\nconsumers = ["b"]\n'
                         f'max_period_us = 1000\n' for i in range(15))
         modes = "".join(f'\n[[mode]]\nname = "m{i}"\n' for i in range(16))
-        text = ROM_SHARE[:ROM_SHARE.index("[[channel]]")] + chans + \
-            ROM_SHARE[ROM_SHARE.index('[[channel]]\nname          = "ModeRequest"'):ROM_SHARE.index("[[mode]]")] + modes
+        text = SHARE_SYSTEM + chans + REQUEST + modes
         with self.assertRaises(S.ScheduleError) as cm:
             compile_text(text, "sixteen.toml")
         msg = " ".join(cm.exception.messages)
@@ -381,7 +358,8 @@ class RomShareTests(unittest.TestCase):
     def test_one_schedule_over_the_rom(self):
         """Without modes, redundancy alone would overflow the ROM: 255 entries, and the report says
         how many more slots the bus time allows."""
-        text = ROM_SHARE[:ROM_SHARE.index('[[channel]]\nname          = "Slow"')].replace("100\n", "1000\n")
+        text = SHARE_SYSTEM + ('[[channel]]\nname = "Tiny"\nsize = 4\nproducer = "a"\nconsumers = ["b"]\n'
+                               'max_period_us = 1000\n')
         _, plan, rom, rep = compile_text(text, "one.toml")
         self.assertEqual(len(plan.slots), 255)
         self.assertEqual(S.verify_rom(rom)[0], [])
