@@ -362,3 +362,23 @@ SECTIONS = {"fpga": fpga, "robot": robot, "robot-scenarios": robot_scenarios, "s
 
 
 SECTIONS["formal-rtl"] = formal_rtl
+
+
+def compile_time():
+    """The schedule compiler's time (make bench-compile-time)."""
+    r = load("compile_time.json")
+    if not r:
+        missing("compile_time.json", "make bench-compile-time")
+    names = {"robot": "the robot (`sim/mobot3.toml`, `make schedule`)",
+             "robot-modes": "the robot with its two modes (`build/schedule/mobot3-modes`)",
+             "robot-modes-f20": "the same, planned for 20 % faults (`--faults 0.2`)",
+             "modes-share": "two modes that fill the ROM (`compiler/examples/modes_share.toml`)"}
+    rows = [[names.get(x["label"], x["description"]), x["rom_entries"], f"{x['cpu_s']:.2f}",
+             f"{x['cpu_s_min']:.2f} - {x['cpu_s_max']:.2f}", f"{x['wall_s']:.2f}"] for x in r["runs"]]
+    return (table(["description", "ROM entries", "CPU s (median)", "CPU s (range)", "wall s (median)"], rows)
+            + f"\n\n(median of {r['runs'][0]['repeats']} runs of `albatross-schedule` each, Python's start "
+            f"included; {r['cpus']} cores, load {r['load_average_1min_at_start']:g} at the start; "
+            f"`{REPORTS}/compile_time.json`)")
+
+
+SECTIONS["compile-time"] = compile_time

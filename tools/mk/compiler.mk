@@ -32,7 +32,7 @@ SCHEDULE_DIR  := $(BUILD)/schedule/$(basename $(notdir $(SCHEDULE_DESC)))
 # in one go.
 COMPILER_TESTS := $(patsubst compiler/tests/test_%.py,compiler-%,$(sort $(wildcard compiler/tests/test_*.py)))
 TESTS += $(COMPILER_TESTS) schedule-caller-dir
-.PHONY: test-compiler schedule test-schedule-caller-dir $(addprefix test-,$(COMPILER_TESTS))
+.PHONY: test-compiler schedule test-schedule-caller-dir bench-compile-time $(addprefix test-,$(COMPILER_TESTS))
 
 test-compiler: ## [test] the schedule compiler's tests (examples, bad descriptions, gcc, end to end)
 	@tools/run_test.sh compiler $(PYTHON) -m unittest discover -s compiler/tests -v
@@ -41,9 +41,10 @@ $(addprefix test-,$(COMPILER_TESTS)): test-compiler-%:
 	@tools/run_test.sh compiler-$* $(PYTHON) -m unittest discover -s compiler/tests -p 'test_$*.py' -v
 
 
-# make schedule always runs the compiler (about a second), so the report it
-# prints is this description's, never an older output found in the folder; a
-# missing description stops it with the path that was looked for.
+# make schedule always runs the compiler (its time: make bench-compile-time,
+# docs/compiler.md "Usage"), so the report it prints is this description's,
+# never an older output found in the folder; a missing description stops it
+# with the path that was looked for.
 schedule: ## compile SCHEDULE_DESC (default: the MOBOT-III example) -> build/schedule/<name>/
 	@test -f $(SCHEDULE_DESC) || { echo "schedule: no description $(SCHEDULE_DESC)$(if $(filter /%,$(SCHEDULE_DESC)),, (relative to $(CURDIR)))" >&2; exit 2; }
 	@$(SCHEDULE) $(SCHEDULE_DESC) -o $(SCHEDULE_DIR)
@@ -100,6 +101,14 @@ $(BUILD)/schedule/mobot3-modes-f20/rom.hex: sim/mobot3.toml sim/mobot3_modes.tom
 BENCHES += bench-fault-plan
 bench-fault-plan: $(SCHEDULE_SRC) tools/fault_plan_bench.py ## the robot's planned delivery and age bounds at 5/20/30/50 % faults
 	$(PYTHON) tools/fault_plan_bench.py sim/mobot3.toml $(REPORTS)/fault_plan.json
+
+# The compiler's time (CPU and wall, median of 3 runs) on the robot, the robot
+# with its modes, with its modes at 20 % faults, and two modes that fill the
+# ROM (compiler/examples/modes_share.toml): build/reports/compile_time.json,
+# the table of docs/compiler.md "Usage".
+BENCHES += bench-compile-time
+bench-compile-time: $(SCHEDULE_SRC) tools/compile_time_bench.py ## the schedule compiler's CPU and wall time on the robot, its modes and a full ROM
+	$(PYTHON) tools/compile_time_bench.py $(REPORTS)/compile_time.json
 
 # The robot planned for other fault hypotheses (--faults replaces its [faults]):
 #   build/schedule/mobot3-f<percent>/       rate <percent> %, independent accesses
