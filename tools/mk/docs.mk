@@ -74,7 +74,9 @@ test-docs-words-negative:
 # Figures typed in the prose, checked against the thing (tools/doc_facts.py):
 # the timeline caption's ROM entries and cycle (the compiler's report), the
 # FuseSoC lint-target count (the core files); test-docs-pictures also checks
-# that make sim's last line is `sim: pass`, as the README says.
+# that make sim's last line is `sim: pass`, as the README says, and that every
+# line of the README's make sim excerpt (copied by make figures from
+# build/docs/sim.log) is printed by the fresh run, in that order.
 #   make test-docs-facts            the check
 #   make test-docs-facts-negative   each figure changed by one must be caught
 TESTS += docs-facts docs-facts-negative
