@@ -12,6 +12,13 @@ from .model import ScheduleError, us
 from .pipeline import compile_file
 
 
+def _cut(rep: dict) -> str:
+    """The console's note when the ROM cut a plan's redundant slots (report.json redundant_slots)."""
+    r = rep.get("redundant_slots") or {}
+    return (f"; redundancy cut to fit the ROM ({r['planned']} of the {r['bus_allows']} redundant slots the bus "
+            "time allows)") if r.get("cut") else ""
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(prog="albatross-schedule", description="ALBATROSS schedule compiler: system description (TOML) "
                                  "-> schedule ROM, board headers, RAM images, reports.")
@@ -51,11 +58,11 @@ def main(argv=None) -> int:
     if not args.quiet:
         print(f"{args.description}: cycle {plan.cycle} clocks ({us(plan.cycle, system.clock_hz):g} us), "
               f"{len(plan.slots)} entries, bus utilisation {100 * rep['bus_utilisation']:.1f} % "
-              f"-> {args.out}/ ({len(files)} files)")
+              f"-> {args.out}/ ({len(files)} files)" + ("" if rep.get("modes") else _cut(rep)))
         for m in rep.get("modes", []):
             print(f"  mode {m['name']}{' (start-up)' if m['start_up'] else ''}: cycle "
                   f"{m['cycle']['clocks']} clocks, {m['entries']} entries, bus utilisation "
-                  f"{100 * m['bus_utilisation']:.1f} %")
+                  f"{100 * m['bus_utilisation']:.1f} %{_cut(m)}")
         if rep.get("modes"):
             print("  (rom.hex holds every mode; the controller starts in the first and switches at a cycle "
                   "boundary when the mode_request channel asks)")

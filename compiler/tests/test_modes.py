@@ -6,12 +6,13 @@ RAM layout, the errors that name the mode, and the outputs.
 """
 
 import os
+import subprocess
 import sys
 import tomllib
 import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from oracle import REPO  # noqa: E402
+from oracle import OUT, REPO, TOOL, TOOL_ENV  # noqa: E402
 import albatross_schedule as S  # noqa: E402
 from albatross_schedule import contract  # noqa: E402
 
@@ -332,6 +333,19 @@ class RomShareTests(unittest.TestCase):
             for c in m["channels"]:
                 self.assertLessEqual(c["guaranteed_period"]["clocks"], c["max_period"]["clocks"],
                                      f"mode {m['name']}, {c['name']}")
+
+    def test_console_says_the_redundancy_was_cut(self):
+        out = os.path.join(OUT, "modes_share")
+        r = subprocess.run(TOOL + [os.path.join(REPO, "compiler", "examples", "modes_share.toml"), "-o", out],
+                           capture_output=True, text=True, env=TOOL_ENV, timeout=120)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        for m in self.rep["modes"]:
+            x = m["redundant_slots"]
+            line = (f"mode {m['name']}{' (start-up)' if m['start_up'] else ''}: cycle {m['cycle']['clocks']} "
+                    f"clocks, {m['entries']} entries")
+            self.assertIn(line, r.stdout)
+            self.assertIn(f"{line}, bus utilisation {100 * m['bus_utilisation']:.1f} %; redundancy cut to fit the "
+                          f"ROM ({x['planned']} of the {x['bus_allows']} redundant slots", r.stdout)
 
     def test_modes_that_fit_keep_all_their_redundancy(self):
         """Modes whose redundant slots all fit the ROM: nothing cut."""
