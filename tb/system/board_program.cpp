@@ -5,6 +5,7 @@
 #include <cstring>
 #include <fstream>
 #include "alb_port.h"   // the faulty producer writes a control byte itself
+#include "fresh_scenario.h"
 #include "system_modes.h"
 
 namespace tbsys {
@@ -31,7 +32,8 @@ int usage(const char *why)
     std::fprintf(stderr, "tb_system: %s\n"
                  "usage: tb_system --plan DIR [--cycles N] [--seed S] [--fault-rate R] [--burst L]\n"
                  "                 [--fault-clocking access|clock] [--land-actual P] [--land-kind 3|1|13]\n"
-                 "                 [--require-landed-same 1] [--producer-interval CH:CLOCKS]\n"
+                 "                 [--require-landed-same 1] [--producer-interval CH:CLOCKS[:BURST]]\n"
+                 "                 [--producer-stop CH|all:CYCLE] [--stretch-export CH:CLOCKS]\n"
                  "                 [--stretch-import CH:BOARD:CLOCKS] [--dead-board B --dead-at C]\n"
                  "                 [--corrupt-entry K] [--rom FILE] [--report FILE] [--label NAME]\n"
                  "                 [--ages FILE] [--handoff-watchdog S] [--cpu-start C]\n"
@@ -63,14 +65,14 @@ void board_program(SimCpu &cpu)
         bool called = false;
         for (Role &r : b.roles) {
             const PlanChannel &c = g_plan->channels[r.chan];
-            called = called || r.dest >= 0 || now() >= r.next_due;
+            called = called || r.dest >= 0 || (now() >= r.next_due && !producer_stopped(*g_plan, *g_opts, c, now()));
             if (r.dest < 0) {
                 if (!g_corrupted && r.chan == g_opts->corrupt_channel && now() >= g_opts->corrupt_at) {
                     g_corrupted = true;   // a faulty producer: an out-of-range Actual,
                     alb_wr8(c.src_base + ALB_OFF_ACTUAL, 7);   // left there for two cycles
                     r.next_due = now() + 2 * g_plan->cycle;
                 }
-                if (now() < r.next_due) continue;
+                if (now() < r.next_due || producer_stopped(*g_plan, *g_opts, c, now())) continue;
                 ++r.seq;
                 channel_value(c.id, r.seq, buf, c.size);
                 const bool request = g_modes && g_modes->active() && c.id == g_plan->mode_request;
@@ -81,8 +83,10 @@ void board_program(SimCpu &cpu)
                 }
                 int rc = alb_export(&r.ch, buf);
                 if (rc == ALB_OK) g_chk->exported(r.chan, r.seq);
-                r.next_due = now() + (request ? g_modes->interval(b.rng)
-                                              : r.interval_lo + b.rng() % (r.interval_hi - r.interval_lo + 1));
+                const bool more = ++r.burst_done < r.burst;   // the next of a burst: at once
+                if (!more) r.burst_done = 0;
+                r.next_due = now() + (more ? 0 : request ? g_modes->interval(b.rng)
+                                                         : r.interval_lo + b.rng() % (r.interval_hi - r.interval_lo + 1));
             } else {
                 uint64_t begin = now();
                 // A four-slot value is aged from the Import's start (its first
@@ -179,11 +183,21 @@ int parse_options(int argc, char **argv, Options &o)
         else if (a == "--require-landed-same" && num) o.require_landed_same = x != 0;
         else if (a == "--producer-interval") {
             char name[64] = {};
-            unsigned long long clk = 0;
-            if (std::sscanf(v, "%63[^:]:%llu", name, &clk) != 2 || clk == 0)
-                return usage("--producer-interval needs CHANNEL:CLOCKS");
+            unsigned long long clk = 0, burst = 1;
+            const int n = std::sscanf(v, "%63[^:]:%llu:%llu", name, &clk, &burst);
+            if (n < 2 || clk == 0 || burst == 0 || burst > 64)
+                return usage("--producer-interval needs CHANNEL:CLOCKS[:BURST] (BURST 1..64)");
             o.slow_channel = name;
             o.slow_interval = clk;
+            o.slow_burst = burst;
+        }
+        else if (a == "--producer-stop" || a == "--stretch-export") {
+            char name[64] = {};
+            unsigned long long n = 0;
+            if (std::sscanf(v, "%63[^:]:%llu", name, &n) != 2 || (a == "--stretch-export" && (n == 0 || n > 100000)))
+                return usage((a + " needs CHANNEL:" + (a == "--producer-stop" ? "CYCLE" : "CLOCKS (1..100000)")).c_str());
+            (a == "--producer-stop" ? o.stop_channel : o.stretch_export_channel) = name;
+            (a == "--producer-stop" ? o.stop_at : o.stretch_export_clocks) = n;
         }
         else if (a == "--stretch-import") {
             char name[64] = {};

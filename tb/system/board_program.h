@@ -31,8 +31,13 @@ struct Options {
     int land_kind = 3;                           // the forced kind: 3 (answer lost), 1 (err after
                                                  // performing), 13 (alternately 3 and 1)
     bool require_landed_same = false;            // fail unless a later slot carried a landed value
-    std::string slow_channel;                    // --producer-interval CH:CLOCKS: channel CH's
+    std::string slow_channel;                    // --producer-interval CH:CLOCKS[:BURST]: channel CH's
     uint64_t slow_interval = 0;                  // producer exports every CLOCKS clocks
+    uint64_t slow_burst = 1;                     // ... BURST values back to back
+    std::string stop_channel;                    // --producer-stop CH:CYCLE: CH's producer (or "all")
+    uint64_t stop_at = 0;                        // exports nothing from CYCLE on (fresh_scenario.h)
+    std::string stretch_export_channel;          // --stretch-export CH:CLOCKS: CH's producer idles CLOCKS
+    uint64_t stretch_export_clocks = 0;          // before each value's completing store
     std::string stretch_channel;                 // --stretch-import CH:BOARD:CLOCKS: the consumer of
     int stretch_board = -1;                      // channel CH on BOARD idles CLOCKS before every
     uint64_t stretch_clocks = 0;                 // buffer load of a value but its first
@@ -61,6 +66,7 @@ struct Role {
     int dest = -1;             // -1: producer of the source instance
     alb_channel_t ch{};
     uint64_t seq = 0, next_due = 0, interval_lo = 1, interval_hi = 1;
+    uint64_t burst = 1, burst_done = 0;        // Exports back to back, and how many of them so far
     bool time_channel = false, status_channel = false;
 };
 

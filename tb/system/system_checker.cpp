@@ -17,7 +17,7 @@ const char *SystemChecker::kind_name(int k)
 {
     static const char *n[KINDS] = {"mutual_exclusion", "definite_results", "actuality", "duplicate_new",
                                    "latency_bound", "ownership", "in_channel", "driver_error", "global_time",
-                                   "taken_at", "new_twice"};
+                                   "taken_at", "new_twice", "freshness"};
     return n[k];
 }
 
@@ -142,12 +142,15 @@ void SystemChecker::on_access(int board, const Access &a)
     }
     if (producer) {
         if (a.req.we && buffer) in->writes[buffer].push_back(a.serve_cycle);
+        // A source's producer begins an Export with its load of the control word.
+        if (!a.req.we && control && in->dest < 0) src_[in->chan].exporting = true, src_[in->chan].overtaken = false;
         if (a.req.we && control && (a.req.sel & 1u)) {
             uint8_t actual = static_cast<uint8_t>(a.req.wdata);
             // A four-slot source's value is complete, and may be taken, from
             // its Slot store (below), before this store publishes it.
             if (in->dest < 0) {
                 src_[in->chan].pending_publish = a.serve_cycle;
+                src_[in->chan].exporting = false;
                 if (!in->four_slot) src_[in->chan].pending_complete = a.serve_cycle;
             }
             else if (in->four_slot) dest_actual_stored(*in, a.serve_cycle, actual);
@@ -221,6 +224,7 @@ void SystemChecker::on_bus(const SystemSim::BusEvent &e)
     SourceState &s = src_[in->chan];
     if (e.we && (e.sel & (1u << ALB_OFF_READLOCKED))) {
         s.rl_stored = static_cast<int>((e.wdata >> (8 * ALB_OFF_READLOCKED)) & 0xFFu);
+        if (s.exporting && !s.overtaken) s.overtaken = true, ++stats[in->chan].exports_overtaken;
         return;
     }
     if (e.we || !(e.sel & (1u << ALB_OFF_ACTUAL))) return;
@@ -382,6 +386,7 @@ void SystemChecker::measure(Instance &in, const DestPub &p, const DestPub &prev,
     char m[260];
     if (c.copy()) {
         const SourceState &s = src_[in.chan];
+        d.reached = std::max(d.reached, p.seq);
         // Latency of every source value this publication reaches.
         for (; d.pending <= p.seq && d.pending < s.publish_cycle.size(); ++d.pending) {
             if (s.publish_cycle[d.pending] < latency_from_) continue;

@@ -43,8 +43,18 @@
 //                     a consumer never goes back, and New exactly when newer;
 //   latency           producer's publication -> a value at least as new
 //                     published at each destination, against the compiler's
-//                     bound (a violation only where the run claims no fault);
-//   freshness         consumers age every value with taken_at.
+//                     bound (a violation only where the run claims no fault),
+//                     measured when such a value is published there;
+//   freshness         (the paper's actuality, at the destinations) a source
+//                     value that stays its source's newest for longer than
+//                     the channel's bound (no later Actual store by then)
+//                     has been published at each destination (its Actual
+//                     store; it or a newer value) within that bound; judged
+//                     in the clock the bound runs out (tick), so a value
+//                     withheld for good is seen too: the last value of a
+//                     producer that stops (fault-free runs, like latency;
+//                     a schedule mode without the channel: not judged);
+//   ages              consumers age every value with taken_at.
 #pragma once
 #include <cstdint>
 #include <cstdio>
@@ -71,7 +81,7 @@ void channel_value(int channel_id, uint64_t seq, uint8_t *out, uint32_t size);
 class SystemChecker : public SystemObserver {
 public:
     enum Kind { MUTEX, DEFINITE, ACTUALITY, DUPLICATE, LATENCY, OWNERSHIP, IN_CHANNEL, DRIVER_ERROR, TIME, TAKEN_AT,
-                NEW_TWICE, KINDS };
+                NEW_TWICE, FRESHNESS, KINDS };
     static const char *kind_name(int k);
 
     SystemChecker(const Plan &plan, SystemSim &sim, uint64_t time_offset);
@@ -101,6 +111,8 @@ public:
     // compiler's probabilistic bounds).
     void set_ages_file(std::FILE *f) { ages_ = f; }
     void end_of_run();                                         // close open read windows
+    // Every clock, after the model's tick: the freshness deadlines due now.
+    void tick(uint64_t cycle);
 
     uint64_t violations[KINDS] = {};
     std::string first_message[KINDS];
@@ -120,9 +132,13 @@ public:
         uint64_t landed_same_read = 0;                      // ... whose consumer had already read it New
         uint64_t max_overtakes = 0;                         // most publications here during one Import
         uint64_t imports_overtaken4 = 0;                    // Imports overtaken by 4 or more publications
+        uint64_t fresh_judged = 0;                          // source values newest for longer than the bound
+        uint64_t fresh_late = 0;                            // ... not published here within it
     };
     struct ChannelStats {
         uint64_t exports = 0;
+        uint64_t exports_overtaken = 0;                     // Exports during which the controller stored the
+                                                            // source's ReadLocked (a take overtook them)
         std::vector<DestStats> dests;
     };
     std::vector<ChannelStats> stats;                          // by plan channel index
@@ -158,6 +174,10 @@ private:
                                            // channels, publications after the image; ~0: none)
         bool unanswered = false;           // the last Actual store was performed, its ack not seen
         uint64_t unanswered_cycle = 0;     // ... performed at this cycle
+        uint64_t reached = 0;              // copy: the newest source value published here (Actual store)
+        uint64_t fresh_seq = 0;            // freshness: the source value judged next ...
+        uint64_t fresh_due = 0;            // ... in no clock before this one
+        bool fresh_done = true;            // ... or judged already
     };
     struct SourceState {
         std::vector<uint64_t> publish_cycle;   // by seq (0: the image)
@@ -168,6 +188,8 @@ private:
         bool taken = false;                    // a take has been seen:
         uint64_t take_seq = 0, take_cycle = 0; // the value it read, its final Actual load's ack
         uint32_t take_time = 0;                // ... and time_o then
+        bool exporting = false;                // the producer's Export runs (its control load .. Actual store)
+        bool overtaken = false;                // ... and a ReadLocked store came during it
     };
 
     void violation(Kind k, const std::string &msg);

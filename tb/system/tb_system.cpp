@@ -19,9 +19,15 @@
 //             [--require-landed-same 1]           fail unless a later slot carried the value a
 //                                                 destination holds from a landed store whose
 //                                                 answer was lost, after its consumer read it
-//             [--producer-interval CH:CLOCKS]     channel CH's producer exports every CLOCKS
+//             [--producer-interval CH:CLOCKS[:BURST]]  channel CH's producer exports every CLOCKS
 //                                                 clocks (slower than its slots: later slots
-//                                                 carry the same source value)
+//                                                 carry the same source value), BURST values
+//                                                 back to back (default 1)
+//             [--producer-stop CH|all:CYCLE]      CH's producer (all: every copy channel's) exports
+//                                                 nothing from CYCLE on (fresh_scenario.h)
+//             [--stretch-export CH:CLOCKS]        CH's producer idles CLOCKS before each value's
+//                                                 completing store; fail unless 3 Exports were
+//                                                 overtaken by a take
 //             [--stretch-import CH:BOARD:CLOCKS]  the consumer of channel CH on BOARD idles
 //                                                 CLOCKS before each buffer load of a value but
 //                                                 the first (a slow CPU); fail unless at least
@@ -62,6 +68,7 @@
 #include "system_sim.h"
 #include "board_program.h"
 #include "system_modes.h"
+#include "fresh_scenario.h"
 
 using namespace tbsys;
 
@@ -170,7 +177,7 @@ int main(int argc, char **argv)
             r.chan = static_cast<int>(i);
             r.interval_lo = c.sync ? p / 2 : 1;     // positions come about once a cycle
             r.interval_hi = c.sync ? p : p / 2;     // others many times, at random phases
-            if (c.name == o.slow_channel) r.interval_lo = r.interval_hi = o.slow_interval;
+            if (c.name == o.slow_channel) r.interval_lo = r.interval_hi = o.slow_interval, r.burst = o.slow_burst;
             boards[c.src_board].roles.push_back(r);
         }
         for (size_t d = 0; d < c.dests.size(); ++d) {
@@ -213,6 +220,11 @@ int main(int argc, char **argv)
                     o.stretch_channel.c_str(), o.stretch_board, g_stretch.clocks);
     }
 
+    if (!fresh_setup(plan, o, sim, err)) {   // --producer-stop, --stretch-export (fresh_scenario.h)
+        std::fprintf(stderr, "tb_system: %s\n", err.c_str());
+        return 2;
+    }
+
     std::vector<TransferMeter> meters;
     for (const PlanChannel &c : plan.channels)
         if (c.copy() && c.dests.size() == 1) { TransferMeter t; t.c = &c; meters.push_back(t); }
@@ -248,6 +260,7 @@ int main(int argc, char **argv)
         }
         unsigned done = sim.tick();
         modes.tick();
+        chk.tick(sim.cycle());
         // One draw per access begun (per clock: the old injector's driving).
         if (sim.fault_drawn || o.fault_per_clock) sim.set_fault(faults.next());
         if (sim.bus_event.done && sim.cycle() >= o.trace_from && sim.cycle() <= o.trace_to) {
@@ -322,6 +335,8 @@ int main(int argc, char **argv)
                       static_cast<unsigned long long>(same_later), static_cast<unsigned long long>(same_read));
         failures.push_back(m);
     }
+    std::string fresh_json;   // freshness scenarios (fresh_scenario.h)
+    fresh_report(plan, o, chk, fault_free, failures, fresh_json);
     if (g_stretch.chan >= 0) {
         const SystemChecker::DestStats &ds = chk.stats[g_stretch.chan].dests[g_stretch.dest];
         std::printf("  stretched Imports: %llu of %llu Imports overtaken by 4 or more publications, at most %llu\n",
@@ -504,7 +519,7 @@ int main(int argc, char **argv)
             .num("bus_failures", static_cast<double>(sim.bus_failures))
             .num("violations_total", static_cast<double>(chk.total())).raw("violations", viol)
             .num("scenario_failures", static_cast<double>(failures.size())).raw("channels", chans)
-            .raw("transfers", transfers)
+            .raw("transfers", transfers).raw("freshness", fresh_json)
             .raw("modes", modes.active() ? modes.json() : "null")
             .num("seconds", sec);
         rep.write(o.report);

@@ -11,6 +11,7 @@ SYS_CYCLES  ?= 400000
 
 # The harness is compiled once; only system_sim.cpp sees the Verilated model.
 SYS_COMMON  := tb/system/tb_system.cpp tb/system/board_program.cpp tb/system/system_checker.cpp tb/system/system_modes.cpp \
+               tb/system/system_freshness.cpp tb/system/fresh_scenario.cpp \
                tb/common/plan.cpp \
                tb/common/sim_cpu.cpp tb/common/ref_ram.cpp tb/common/protocol_checker.cpp
 SYS_OBJS    := $(patsubst %.cpp,$(SYS_DIR)/obj/%.o,$(notdir $(SYS_COMMON))) $(SYS_DIR)/obj/driver.o
@@ -291,3 +292,36 @@ test-system-four-slot-overtaken: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 test-system-negative-four-slot-overtaken: $(SYS_DIR)/mutant-fs_ignore_readlocked/tb_system $(SYS_RIGID)/tb_plan.txt
 	@tools/run_test.sh system-negative-four-slot-overtaken $< --plan $(SYS_RIGID) --seed $(SEED) --cycles $(SYS_CYCLES) \
 	    --label system-negative-four-slot-overtaken $(SYS_OVERTAKE) --expect-caught-by definite_results
+
+# Freshness (tb/system/system_checker.h "freshness", system_freshness.cpp): a
+# source value that stays its source's newest for longer than the channel's
+# bound must have reached every destination within it, judged when the bound
+# runs out, published there or not (tb/system/fresh_scenario.h).  Every
+# producer stops at cycle 300,000 (its last value must still arrive), and
+# Position's producer exports two values back to back every 20,000 clocks
+# (the second stays the newest for 20,000 clocks); on the four-slot plan its
+# Exports are stretched by a cycle (2,500 clocks) before the Slot store that
+# completes each value, so that the controller takes the first value of a
+# burst while the second is written into the pair it then locks.  Fault-free
+# on the rigid plan (three-buffer), the four-slot plan and the modes plan
+# (each value judged by the bound of the mode in force).  Negatives: a source
+# Import that answers Old whenever Actual lies in the pair of its copy,
+# whatever the slot (tb/mutants/controller/old_same_pair4.sed) or the buffer
+# of that pair (old_same_pair3.sed), skips the burst's second value and
+# withholds it until the next burst, the last one for good.
+SYS_FRESH  := --cycles 400000 --producer-interval Position:20000:2 --producer-stop all:300000
+SYS_FRESH4 := $(SYS_FRESH) --stretch-export Position:2500
+TESTS += system-freshness system-freshness-four-slot system-freshness-modes \
+         system-negative-freshness-pair3 system-negative-freshness-pair4
+test-system-freshness: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,freshness) --plan $(SYS_RIGID) $(SYS_FRESH)
+test-system-freshness-four-slot: $(SYS_BIN) $(SYS_FS)/tb_plan.txt
+	@$(call sys_run,freshness-four-slot) --plan $(SYS_FS) $(SYS_FRESH4)
+test-system-freshness-modes: $(SYS_BIN) $(SYS_MODES)/tb_plan.txt
+	@$(call sys_run,freshness-modes) --plan $(SYS_MODES) $(SYS_FRESH)
+test-system-negative-freshness-pair3: $(SYS_DIR)/mutant-old_same_pair3/tb_system $(SYS_RIGID)/tb_plan.txt
+	@tools/run_test.sh system-negative-freshness-pair3 $< --plan $(SYS_RIGID) --seed $(SEED) \
+	    --label system-negative-freshness-pair3 $(SYS_FRESH) --expect-caught-by freshness
+test-system-negative-freshness-pair4: $(SYS_DIR)/mutant-old_same_pair4/tb_system $(SYS_FS)/tb_plan.txt
+	@tools/run_test.sh system-negative-freshness-pair4 $< --plan $(SYS_FS) --seed $(SEED) \
+	    --label system-negative-freshness-pair4 $(SYS_FRESH4) --expect-caught-by freshness
