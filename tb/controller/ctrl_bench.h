@@ -363,3 +363,6 @@ void scenario_sync();
 void scenario_abandon();
 // ctrl_scenarios_modes.cpp
 void scenario_modes();
+// ctrl_scenarios_race.cpp
+void scenario_deadline();
+void scenario_race4();

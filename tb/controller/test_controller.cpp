@@ -50,6 +50,13 @@
 //            ignored and counted in STATUS, and a request switches back
 //            (groups 1, 2, 4; ctrl_scenarios_modes.cpp; negatives
 //            controller-negative-no_request, -forget_state)
+//   deadline a dead source retried to the deadline in slots of 16 lengths
+//            (every phase of the tries): no access begins after D-TIMEOUT-2
+//            or ends after D, and some begins exactly there (group 16;
+//            ctrl_scenarios_race.cpp; negative controller-negative-deadline_late)
+//   race4    a four-slot value completed between the Import's two
+//            control-word loads is the one taken, with the second load's
+//            time (group 2; negative controller-negative-slot_first_load)
 // Each check prints what it expected and what it got.  Exit status 0 if all
 // pass, else 64 + a bit mask of the failed groups (1 timing, 2 data, 4 rom,
 // 8 faults, 16 dead, 32 abandon).  --inject=timing makes the timing checker expect one
@@ -58,7 +65,8 @@
 //          --scenario=NAME (default: all)
 // Files: ctrl_bench.h/.cpp (checks, ROM builder, model wrapper, CPU protocol),
 //        ctrl_scenarios_data.cpp (basic, corrupt, four), ctrl_scenarios_faults.cpp (faults, dead,
-//        droprun, sync, abandon), ctrl_scenarios_cold.cpp (cold), ctrl_scenarios_modes.cpp (modes).
+//        droprun, sync, abandon), ctrl_scenarios_cold.cpp (cold), ctrl_scenarios_modes.cpp (modes),
+//        ctrl_scenarios_race.cpp (deadline, race4).
 #include "ctrl_bench.h"
 
 // ------------------------------------------------------------------ main
@@ -78,7 +86,7 @@ int main(int argc, char **argv) {
             }
         }
         else {
-            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|droprun|sync|four|abandon|cold|modes]\n",
+            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|droprun|sync|four|abandon|cold|modes|deadline|race4]\n",
                          argv[0]);
             return 2;
         }
@@ -88,7 +96,7 @@ int main(int argc, char **argv) {
         {"basic", scenario_basic}, {"corrupt", scenario_corrupt}, {"faults", scenario_faults}, {"dead", scenario_dead},
         {"droprun", scenario_droprun},
         {"sync", scenario_sync}, {"four", scenario_four}, {"abandon", scenario_abandon}, {"cold", scenario_cold},
-        {"modes", scenario_modes}};
+        {"modes", scenario_modes}, {"deadline", scenario_deadline}, {"race4", scenario_race4}};
     for (auto &x : sc)
         if (only.empty() || only == x.name) x.fn();
     std::printf("test_controller: %u checks, %u failed%s\n", g_checks, g_fails,

@@ -35,7 +35,7 @@ int usage(const char *why)
                  "                 [--require-landed-same 1] [--producer-interval CH:CLOCKS[:BURST]]\n"
                  "                 [--producer-stop CH|all:CYCLE] [--stretch-export CH:CLOCKS]\n"
                  "                 [--stretch-import CH:BOARD:CLOCKS] [--dead-board B --dead-at C]\n"
-                 "                 [--corrupt-entry K] [--rom FILE] [--report FILE] [--label NAME]\n"
+                 "                 [--corrupt-entry K] [--flip-rom-bit WORD:BIT] [--rom FILE] [--report FILE] [--label NAME]\n"
                  "                 [--ages FILE] [--handoff-watchdog S] [--cpu-start C]\n"
                  "                 [--latency-scale F] [--expect-caught-by CHECKER]... [--expect-failure TEXT]...\n", why);
     return 2;
@@ -109,6 +109,11 @@ void board_program(SimCpu &cpu)
                     g_status.abandoned = std::max(g_status.abandoned, ab);
                     g_status.corrupt = std::max(g_status.corrupt, co);
                     g_status.rom_errors = std::max<uint64_t>(g_status.rom_errors, w[0] >> 16);
+                    if (g_modes && g_modes->active()) {   // the rejected requests it counts (system_modes.h)
+                        uint32_t taken_at = 0;
+                        std::memcpy(&taken_at, buf + c.taken_at_offset(), 4);
+                        g_modes->status_read(taken_at, co);
+                    }
                 }
                 if (g_modes && c.id == g_plan->mode_info && rc == ALB_NEW) {
                     uint32_t w[2];
@@ -211,6 +216,11 @@ int parse_options(int argc, char **argv, Options &o)
         else if (a == "--dead-board" && num && x >= 0 && x < SystemSim::kBoards) o.dead_board = static_cast<int>(x);
         else if (a == "--dead-at" && num && x >= 0) o.dead_at = static_cast<uint64_t>(x);
         else if (a == "--corrupt-entry" && num && x >= 0) o.corrupt_entry = static_cast<int>(x);
+        else if (a == "--flip-rom-bit") {
+            if (std::sscanf(v, "%d:%d", &o.flip_word, &o.flip_bit) != 2 || o.flip_word < 0 || o.flip_bit < 0 ||
+                o.flip_bit > 31)
+                return usage("--flip-rom-bit needs WORD:BIT (BIT 0..31)");
+        }
         else if (a == "--corrupt-actual") {
             unsigned long long ch = 0, at = 0;
             if (std::sscanf(v, "%llu:%llu", &ch, &at) != 2) return usage("--corrupt-actual needs CHANNEL:CYCLE");

@@ -45,6 +45,7 @@ struct Options {
     std::vector<std::string> expect_failure;     // ... or scenario failures containing these
     uint64_t trace_from = 1, trace_to = 0;       // print the controller's accesses in this window
     int dead_board = -1, corrupt_entry = -1;
+    int flip_word = -1, flip_bit = 0;            // --flip-rom-bit WORD:BIT (rom_scenario.h)
     int corrupt_channel = -1;                    // a faulty producer stores Actual = 7 ...
     uint64_t corrupt_at = 0;                     // ... once, at this cycle
 };

@@ -261,6 +261,7 @@ void SystemChecker::on_bus(const SystemSim::BusEvent &e)
     s.take_seq = q < 0 ? ~0ull : static_cast<uint64_t>(q);
     s.take_time = e.time;
     s.take_cycle = e.end;
+    if (take_fn_) take_fn_(in->chan, b, e.time);
 }
 
 void SystemChecker::exported(int chan, uint64_t seq)

@@ -101,6 +101,10 @@ public:
     // Without it every value is judged by the plan's bounds.
     using BoundFn = std::function<bool(int chan, uint64_t from, uint64_t to, uint64_t &bound, uint64_t &bound_retry)>;
     void set_bound_fn(BoundFn f) { bound_fn_ = std::move(f); }
+    // Every take the controller makes of a copy source (a New Import: its
+    // buffer, and time_o in the ack clock of its final control load).
+    using TakeFn = std::function<void(int chan, uint8_t buffer, uint32_t time)>;
+    void set_take_fn(TakeFn f) { take_fn_ = std::move(f); }
     // Values published before this cycle are not measured (the controller's
     // first cycle after reset follows its scan of the ROM).
     void set_latency_from(uint64_t cycle) { latency_from_ = cycle; }
@@ -206,6 +210,7 @@ private:
     uint64_t time_offset_;             // cycle = controller time + time_offset
     bool latency_checked_ = true;
     BoundFn bound_fn_;
+    TakeFn take_fn_;
     uint64_t latency_from_ = ~0ull;
     std::FILE *ages_ = nullptr;
     std::vector<Instance> inst_;

@@ -65,6 +65,7 @@ void ModeWatch::tick()
     s.bound_at_target = mode_ < static_cast<int>(plan_.modes.size()) ? plan_.modes[mode_].switch_latency_at_target : 0;
     switches_.push_back(s);
     stores_.clear();   // a request is acted on once
+    pending_switch_ = false;
     mode_ = m;
 }
 
@@ -83,6 +84,29 @@ void ModeWatch::mode_imported(int board, uint32_t mode, uint32_t since)
                       mode, since, switches_.size());
         first_bad_ = b;
     }
+}
+
+void ModeWatch::taken(int chan, uint8_t b, uint32_t t)
+{
+    const PlanChannel &c = plan_.channels[chan];
+    if (!active() || c.id != plan_.mode_request) return;
+    // Word 0 of the buffer taken; the controller offers its low 4 bits (15
+    // if a higher bit is set) as the mode.
+    const uint32_t at = c.src_base + ALB_OFF_BUFFER(static_cast<uint32_t>(b), c.size);
+    uint32_t w = 0;
+    for (uint32_t k = 0; k < 4; ++k) w |= static_cast<uint32_t>(sim_.ref[c.src_board].byte(at + k)) << (8 * k);
+    const uint32_t m = w > 15 ? 15 : w;
+    if (pending_switch_ || m == static_cast<uint32_t>(mode_)) return;   // ignored
+    if (m >= plan_.modes.size()) rejected_.push_back(t);
+    else pending_switch_ = true;
+}
+
+void ModeWatch::status_read(uint32_t taken_at, uint64_t corrupt)
+{
+    if (status_seen_ && taken_at <= status_taken_) return;
+    status_seen_ = true;
+    status_taken_ = taken_at;
+    status_corrupt_ = corrupt;
 }
 
 bool ModeWatch::bound(int chan, uint64_t from, uint64_t to, uint64_t &b, uint64_t &b_retry) const
@@ -114,7 +138,7 @@ void ModeWatch::settle()
 
 void ModeWatch::finish(bool judge_latency, uint64_t status_corrupt, std::vector<std::string> &failures) const
 {
-    char b[300];
+    char b[400];
     uint32_t prev = t0_;
     for (size_t k = 0; k < switches_.size(); ++k) {
         const Switch &s = switches_[k];
@@ -148,11 +172,17 @@ void ModeWatch::finish(bool judge_latency, uint64_t status_corrupt, std::vector<
                       static_cast<unsigned long long>(undeclared));
         failures.push_back(b);
     }
-    if (judge_latency && undeclared >= 2 && status_corrupt == 0) {
-        std::snprintf(b, sizeof b, "modes: expected STATUS to count the %llu requests for undeclared modes, it "
-                      "counts none", static_cast<unsigned long long>(undeclared));
+    // Exact on a fault-free bus: the rejections before the last STATUS read's slot.
+    uint64_t before = 0;
+    for (uint32_t t : rejected_) before += t < status_taken_;
+    if (judge_latency && status_seen_ && status_corrupt_ != before) {
+        std::snprintf(b, sizeof b, "modes: STATUS taken at time %u counts %llu corrupt values, expected exactly the "
+                      "%llu requests for undeclared modes the controller took (and rejected) before it "
+                      "(%zu in the run, %llu stored)", status_taken_, static_cast<unsigned long long>(status_corrupt_),
+                      static_cast<unsigned long long>(before), rejected_.size(), static_cast<unsigned long long>(undeclared));
         failures.push_back(b);
     }
+    if (judge_latency && !status_seen_) failures.push_back("modes: no CPU read a STATUS value");
 }
 
 std::string ModeWatch::json() const
@@ -162,7 +192,7 @@ std::string ModeWatch::json() const
         if (s.requested && s.latency * std::max<uint64_t>(worst_bound, 1) >= worst * std::max<uint64_t>(s.bound, 1))
             worst = s.latency, worst_bound = s.bound;
     std::string j = "{\"switches\": [";
-    char b[240];
+    char b[400];
     for (size_t k = 0; k < switches_.size(); ++k) {
         const Switch &s = switches_[k];
         std::snprintf(b, sizeof b, "%s{\"time\": %u, \"from\": \"%s\", \"to\": \"%s\", \"latency\": %llu, \"bound\": %llu, "
@@ -174,10 +204,11 @@ std::string ModeWatch::json() const
     }
     std::snprintf(b, sizeof b, "], \"switch_latency_worst\": %llu, \"switch_latency_bound\": %llu, "
                   "\"undeclared_requests\": %llu, \"mode_values_imported\": %llu, \"judged_across_a_switch\": %llu, "
-                  "\"not_judged\": %llu}",
+                  "\"not_judged\": %llu, \"rejected\": %zu, \"status_corrupt\": %llu}",
                   static_cast<unsigned long long>(worst), static_cast<unsigned long long>(worst_bound),
                   static_cast<unsigned long long>(undeclared), static_cast<unsigned long long>(mode_values_),
-                  static_cast<unsigned long long>(judged_across_), static_cast<unsigned long long>(unjudged_));
+                  static_cast<unsigned long long>(judged_across_), static_cast<unsigned long long>(unjudged_),
+                  rejected_.size(), static_cast<unsigned long long>(status_corrupt_));
     return j + b;
 }
 

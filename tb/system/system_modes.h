@@ -15,8 +15,14 @@
 //   published  every Mode value a board imports is {the start-up mode, its
 //              first cycle} or {m, the time of a switch to m};
 //   rejected   STATUS counts at most one corrupt value per request for an
-//              undeclared mode, and at least one when such requests were made
-//              on a fault-free bus.
+//              undeclared mode; on a fault-free bus exactly the rejections
+//              made before the slot of the last STATUS value a CPU read
+//              (its taken_at): a request the controller took (a New Import
+//              of the request source, SystemChecker's take) for a mode the
+//              image does not declare, while no switch was pending (a
+//              request taken while a switch is loaded is ignored, not
+//              rejected; every declared mode may switch to every other, as in
+//              sim/mobot3_modes.toml).
 // It also gives SystemChecker the bounds of the mode in force.  A value from
 // 'from' (a copy's publication, a time/status value's take) measured at 'to'
 // with no switch between: the bound of the mode in force.  Across switches,
@@ -44,6 +50,11 @@ public:
     void requested(uint32_t mode) { pending_ = mode; }     // just before its Export
     void tick();                                           // after every sim.tick()
     void mode_imported(int board, uint32_t mode, uint32_t since);
+    // The controller took a value of channel chan, in buffer b, at time t
+    // (SystemChecker's take): a request it acts on, rejects or ignores.
+    void taken(int chan, uint8_t b, uint32_t t);
+    // A CPU read STATUS New: its taken_at, and the corrupt counts summed.
+    void status_read(uint32_t taken_at, uint64_t corrupt);
     bool bound(int chan, uint64_t from, uint64_t to, uint64_t &b, uint64_t &b_retry) const;
     // The checks above; judge_latency: a fault-free run.
     void finish(bool judge_latency, uint64_t status_corrupt, std::vector<std::string> &failures) const;
@@ -77,6 +88,11 @@ private:
     bool have_t0_ = false;
     uint32_t t0_ = 0;                      // the start-up mode's first cycle (from Mode)
     uint64_t mode_values_ = 0, bad_values_ = 0;
+    bool pending_switch_ = false;          // a declared request taken, its switch not yet made
+    std::vector<uint32_t> rejected_;       // times of the takes of undeclared requests (rejections)
+    bool status_seen_ = false;             // the last STATUS value read: its taken_at, its count
+    uint32_t status_taken_ = 0;
+    uint64_t status_corrupt_ = 0;
     mutable uint64_t judged_across_ = 0, unjudged_ = 0;   // bound(): values judged across a switch; not judged
     std::string first_bad_;
 };

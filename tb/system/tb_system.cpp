@@ -38,6 +38,8 @@
 //                                                 entry K's reserved word E6 at time 20000
 //                                                 (the background CRC check must find it)
 //             [--corrupt-actual CH:C]             channel CH's producer stores Actual = 7 at cycle C
+//             [--flip-rom-bit WORD:BIT]           the ROM image with that bit flipped before start-up:
+//                                                 the start-up CRC must refuse it (rom_scenario.h)
 //             [--rom FILE] [--report FILE] [--label NAME]
 //             [--handoff-watchdog S]              CPU seconds a simulated CPU may run without
 //                                                 handing control back (default 10, 1..3600)
@@ -69,6 +71,7 @@
 #include "board_program.h"
 #include "system_modes.h"
 #include "fresh_scenario.h"
+#include "rom_scenario.h"
 
 using namespace tbsys;
 
@@ -112,6 +115,10 @@ int main(int argc, char **argv)
         return 2;
     }
     std::string rom = o.rom.empty() ? o.plan_dir + "/rom.hex" : o.rom;
+    if (o.flip_word >= 0 && (rom = flip_rom_bit(rom, o.flip_word, o.flip_bit, err)).empty()) {   // rom_scenario.h
+        std::fprintf(stderr, "tb_system: %s\n", err.c_str());
+        return 2;
+    }
     // A ROM upset after start-up (the start-up CRC would refuse a corrupted
     // image outright): entry K's E6, a reserved word, so that the entry does the
     // same until the background check finds it and skips it from then on.
@@ -158,6 +165,8 @@ int main(int argc, char **argv)
     // Schedule modes: requests at random times, every switch judged (system_modes.h).
     ModeWatch modes(plan, sim);
     g_modes = &modes;
+    if (modes.active())   // the requests the controller takes: acted on, rejected or ignored
+        chk.set_take_fn([&modes](int chan, uint8_t b, uint32_t t) { modes.taken(chan, b, t); });
     if (modes.active())
         chk.set_bound_fn([&modes](int chan, uint64_t from, uint64_t to, uint64_t &b, uint64_t &br) {
             return modes.bound(chan, from, to, b, br);
@@ -491,6 +500,7 @@ int main(int argc, char **argv)
         std::printf("  %-18s %llu violations%s%s\n", SystemChecker::kind_name(k),
                     static_cast<unsigned long long>(chk.violations[k]), chk.violations[k] ? ": " : "",
                     chk.first_message[k].c_str());
+    if (o.flip_word >= 0) rom_refused_verdict(plan, chk, sim, failures);   // a refused image (rom_scenario.h)
     for (const std::string &f : failures) std::printf("  FAIL: %s\n", f.c_str());
     std::string viol = "{";
     for (int k = 0; k < SystemChecker::KINDS; ++k) {

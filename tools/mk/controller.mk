@@ -26,7 +26,8 @@ CTRL_DIR := $(BUILD)/ctrl
 CTRL_BIN := $(CTRL_DIR)/obj/Vtb_system
 CTRL_CPP := tb/controller/test_controller.cpp tb/controller/ctrl_bench.cpp \
             tb/controller/ctrl_scenarios_data.cpp tb/controller/ctrl_scenarios_faults.cpp \
-            tb/controller/ctrl_scenarios_cold.cpp tb/controller/ctrl_scenarios_modes.cpp
+            tb/controller/ctrl_scenarios_cold.cpp tb/controller/ctrl_scenarios_modes.cpp \
+            tb/controller/ctrl_scenarios_race.cpp
 CTRL_SRC := tb/system/tb_system.v tb/common/bus_fault_injector.v $(CORE_soc_system) $(CTRL_CPP) tb/controller/ctrl_bench.h \
             $(RTL_INC) tb/common/albatross_contract.h
 
@@ -70,7 +71,7 @@ $(CTRL_DIR)/mutant-$(1)/obj/Vtb_system: $(CTRL_SRC) $(CTRL_DIR)/mutant-$(1)/src/
 	    --Mdir $(CTRL_DIR)/mutant-$(1)/obj -y $(CTRL_DIR)/mutant-$(1)/src $(VLIB) tb/system/tb_system.v $(abspath $(CTRL_CPP)) \
 	    > $(CTRL_DIR)/mutant-$(1)/build.log 2>&1 || { cat $(CTRL_DIR)/mutant-$(1)/build.log; exit 1; }
 endef
-$(foreach m,stale_need cold_zero_corrupt no_request forget_state forget_switch,$(eval $(call ctrl_mutant_model,$(m))))
+$(foreach m,stale_need cold_zero_corrupt no_request forget_state forget_switch deadline_late slot_first_load,$(eval $(call ctrl_mutant_model,$(m))))
 CTRL_MUT_DIR := $(CTRL_DIR)/mutant-stale_need
 
 TESTS += controller-abandon controller-negative-stale_need
@@ -161,3 +162,36 @@ endef
 $(eval $(call ctrl_modes_negative,no_request,cycle 2 (mode 1) carries channel 4,the controller that drops mode requests))
 $(eval $(call ctrl_modes_negative,forget_state,channel 4.s value. unchanged over two more cycles,the controller that forgets the state of a channel outside mode 0))
 $(eval $(call ctrl_modes_negative,forget_switch,channel 0.s value. unchanged over the switches,the controller that forgets the state of every channel at a switch))
+
+# Events at an exact clock of a slot (ctrl_scenarios_race.cpp): scenario
+# deadline (a dead source retried to the deadline, in slots of 16 lengths so
+# that a retry falls on every phase of the rule: none begins after
+# D - TIMEOUT - 2, some begins exactly there) and race4 (a four-slot value
+# completed between the Import's two control-word loads is the one taken).
+# Negatives, each a controller mutant that must fail its scenario:
+#   deadline_late    the deadline check allows one clock more (an access may
+#                    end at D): exit 80, scenario deadline
+#   slot_first_load  the four-slot Import takes the Slot byte from its first
+#                    control-word load: the older value is taken, exit 66
+TESTS += controller-deadline controller-race4
+.PHONY: test-controller-deadline test-controller-race4
+test-controller-deadline: $(CTRL_BIN)
+	@tools/run_test.sh controller-deadline $(CTRL_BIN) --dir=$(CTRL_DIR)/deadline --scenario=deadline
+test-controller-race4: $(CTRL_BIN)
+	@tools/run_test.sh controller-race4 $(CTRL_BIN) --dir=$(CTRL_DIR)/race4 --scenario=race4
+# $(1) the mutant, $(2) the scenario, $(3) the exit status, $(4) the start of
+# the FAIL line it must produce (a grep pattern, no comma), $(5) what it is.
+define ctrl_race_negative
+TESTS += controller-negative-$(1)
+.PHONY: test-controller-negative-$(1)
+test-controller-negative-$(1): $(CTRL_DIR)/mutant-$(1)/obj/Vtb_system
+	@tools/run_test.sh controller-negative-$(1) bash -c '$$< --dir=$(CTRL_DIR)/mutant-$(1)/run --scenario=$(2) \
+	    > $(CTRL_DIR)/mutant-$(1)/run.log 2>&1; rc=$$$$?; \
+	    grep -m 3 "^FAIL" $(CTRL_DIR)/mutant-$(1)/run.log | sed "s/^FAIL/  caught:/"; \
+	    if [ $$$$rc -eq $(3) ] && grep -q "^FAIL $(4)" $(CTRL_DIR)/mutant-$(1)/run.log; then \
+	        echo "$(5) fails scenario $(2), as it must (exit $$$$rc)"; \
+	    else echo "expected scenario $(2) to fail with exit $(3) and: $(4), came exit $$$$rc"; \
+	        tail -n 5 $(CTRL_DIR)/mutant-$(1)/run.log; exit 1; fi'
+endef
+$(eval $(call ctrl_race_negative,deadline_late,deadline,80,deadline: length .* no access begins after D-TIMEOUT-2,the controller whose deadline check allows one clock more))
+$(eval $(call ctrl_race_negative,slot_first_load,race4,66,race4: the controller took the value completed before its second load,the four-slot Import that takes the Slot byte from its first load))

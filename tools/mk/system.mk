@@ -11,7 +11,7 @@ SYS_CYCLES  ?= 400000
 
 # The harness is compiled once; only system_sim.cpp sees the Verilated model.
 SYS_COMMON  := tb/system/tb_system.cpp tb/system/board_program.cpp tb/system/system_checker.cpp tb/system/system_modes.cpp \
-               tb/system/system_freshness.cpp tb/system/fresh_scenario.cpp \
+               tb/system/system_freshness.cpp tb/system/fresh_scenario.cpp tb/system/rom_scenario.cpp \
                tb/common/plan.cpp \
                tb/common/sim_cpu.cpp tb/common/ref_ram.cpp tb/common/protocol_checker.cpp
 SYS_OBJS    := $(patsubst %.cpp,$(SYS_DIR)/obj/%.o,$(notdir $(SYS_COMMON))) $(SYS_DIR)/obj/driver.o
@@ -325,3 +325,30 @@ test-system-negative-freshness-pair3: $(SYS_DIR)/mutant-old_same_pair3/tb_system
 test-system-negative-freshness-pair4: $(SYS_DIR)/mutant-old_same_pair4/tb_system $(SYS_FS)/tb_plan.txt
 	@tools/run_test.sh system-negative-freshness-pair4 $< --plan $(SYS_FS) --seed $(SEED) \
 	    --label system-negative-freshness-pair4 $(SYS_FRESH4) --expect-caught-by freshness
+
+# Weak spots, each a controller mutant the system test must catch:
+#   reject_uncounted  a rejected mode request not counted: system-modes'
+#                     exact count (STATUS counts exactly the requests for
+#                     undeclared modes the controller took before the slot
+#                     of the last STATUS value read) fails;
+#   forget_switch     every channel's state forgotten in a mode's first 100
+#                     clocks: with Position unchanged for 20,000 clocks at a
+#                     time (the freshness scenario), a switch republishes it
+#                     (duplicate_new, and new_twice at its consumers);
+#   skip_crc          the start-up CRC check skipped: the ROM image with one
+#                     bit of a reserved word flipped (entry 3's E6) must be
+#                     refused at start-up (error_o, no bus access, nothing
+#                     published; tb/system/rom_scenario.h), system-rom-start-crc.
+TESTS += system-negative-modes-reject-count system-negative-modes-forget-switch \
+         system-rom-start-crc system-negative-rom-start-crc
+test-system-negative-modes-reject-count: $(SYS_DIR)/mutant-reject_uncounted/tb_system $(SYS_MODES)/tb_plan.txt
+	@tools/run_test.sh system-negative-modes-reject-count $< --plan $(SYS_MODES) --seed $(SEED) --cycles $(SYS_CYCLES) \
+	    --label system-negative-modes-reject-count --expect-failure "modes: STATUS taken at time"
+test-system-negative-modes-forget-switch: $(SYS_DIR)/mutant-forget_switch/tb_system $(SYS_MODES)/tb_plan.txt
+	@tools/run_test.sh system-negative-modes-forget-switch $< --plan $(SYS_MODES) --seed $(SEED) \
+	    --label system-negative-modes-forget-switch $(SYS_FRESH) --expect-caught-by duplicate_new --expect-caught-by new_twice
+test-system-rom-start-crc: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
+	@$(call sys_run,rom-start-crc) --plan $(SYS_RIGID) --cycles 100000 --flip-rom-bit 34:0
+test-system-negative-rom-start-crc: $(SYS_DIR)/mutant-skip_crc/tb_system $(SYS_RIGID)/tb_plan.txt
+	@tools/run_test.sh system-negative-rom-start-crc $< --plan $(SYS_RIGID) --seed $(SEED) --cycles 100000 \
+	    --label system-negative-rom-start-crc --flip-rom-bit 34:0 --expect-failure "flipped ROM bit"

@@ -1,0 +1,7 @@
+# target: rtl/albatross_sequencer.v
+# Controller mutant (formal/sequencer/mutants/start_bad_crc.sed on the
+# controller): the start-up pass starts the first cycle at its end whatever
+# the CRC (error_o is still raised), so the slots run from an image the check
+# refused.  The system test on a ROM image with one bit flipped must fail
+# (test-system-negative-rom-start-crc): the controller makes bus accesses.
+s/(state_q == ST_CHECK \&\& pass_done \&\& crc_ok);/(state_q == ST_CHECK \&\& pass_done);/
