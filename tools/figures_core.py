@@ -382,3 +382,44 @@ def compile_time():
 
 
 SECTIONS["compile-time"] = compile_time
+
+
+def schedulability():
+    """Acceptance per bus demand: today's single-rate plan against the exact
+    search on the power-of-two grid (make bench-schedulability)."""
+    r = load("schedulability.json")
+    if not r:
+        missing("schedulability.json", "make bench-schedulability")
+    names = r["planners"]
+    head = {"single-rate": "single-rate (today)", "exact-grid": "exact grid"}
+    proofs = ("slot", "pair", "load", "search", "finer", "period")
+
+    def cpu(s):
+        return f"{s['median']:.3f} ({s['max']:.2f})" if s else "-"
+    rows = []
+    for lv in r["levels"]:
+        n_ = lv["systems"]
+        row = [lv["demand_pct"], n_]
+        row += [f"{lv[p]['accepted']} ({100 * lv[p]['accepted'] / n_:.0f} %)" for p in names]
+        if "exact-grid" in names:
+            e = lv["exact-grid"]
+            row.append(e["unknown"])
+            why = e["rejected_why"]
+            row.append(", ".join(f"{k} {why[k]}" for k in proofs if why.get(k)) or "-")
+        row += [cpu(lv[p]["seconds"]) for p in names]
+        row.append(f"{lv['redraws']['ram-overflow']}")
+        rows.append(row)
+    cols = ["demand %", "systems"] + [f"{head.get(p, p)} accepted" for p in names]
+    if "exact-grid" in names:
+        cols += ["exact: unknown", "exact: proofs of rejection"]
+    cols += [f"{head.get(p, p)} CPU s, median (max)" for p in names] + ["redrawn: RAM overflow"]
+    seeds = [s["seed"] for s in r["systems"]]
+    return (table(cols, rows)
+            + f"\n\n({r['systems_per_level']} systems per level, seeds {min(seeds)} to {max(seeds)} "
+            f"(demand target in percent times {r['generator_ranges']['seed_stride']:,}, plus a count); the exact "
+            f"search's limit {r['time_limit_s']:g} units of CP-SAT's deterministic time per system; "
+            f"{r['cpus']} cores, load {r['load_average_1min_at_start']:g} at the start, {r['wall_s']:.0f} s in all; "
+            f"`{REPORTS}/schedulability.json`, picture `{REPORTS}/schedulability.svg`)")
+
+
+SECTIONS["schedulability"] = schedulability
