@@ -73,6 +73,14 @@
 //              reported done (its quotas met, sim/firmware/mobot_check.h)
 //              (not judged once a core failed its own check: that board
 //              stopped and starves its consumers; cpu reports it)
+//   freshness  the same runs as age (the paper's actuality): a consumer's
+//              Import of a copy channel that began (its first load of the
+//              control word) after its producer's newest value had been the
+//              newest for longer than the bound in force (latency with
+//              retries, by mode) returns that value or a newer one: taken_at
+//              at or after that value's Actual store.  A crashed producer's
+//              last value included (its channel's ages are not judged), as is
+//              a destination never published (judge_fresh, mobot_sim_ages.cpp)
 //   age        runs without faults (and no core failed its check): every age <= bound, where the bound of a copy
 //              channel is the compiler's latency (with retries) plus the
 //              producer's longest measured gap between two Actual stores,
@@ -224,6 +232,7 @@ int main(int argc, char **argv)
 
     uint64_t stall_left[NB] = {0, 0, 0, 0}, busy = 0, faults = 0, requests = 0;
     uint64_t first_access = ~0ull;   // the controller's first bus request (the end of its start-up)
+    uint64_t fresh_from = ~0ull;     // check freshness judges values stored from its first cycle's end on
     uint32_t frozen = 0;
     auto tick = [&]() {
         uint32_t st = frozen;
@@ -240,7 +249,7 @@ int main(int argc, char **argv)
             if (m->fi_kind_i) ++faults;
         }
         busy += m->m_cyc_o;
-        if (m->m_cyc_o && first_access == ~0ull) first_access = cycle;
+        if (m->m_cyc_o && first_access == ~0ull) first_access = cycle, fresh_from = m->time_o + plan.cycle;
         m->clk_i = 1; m->eval();
 #if VM_TRACE
         dump(2 * ticks + 1);
@@ -267,7 +276,7 @@ int main(int argc, char **argv)
     for (int i = 0; i < 8; ++i) tick();
     m->rst_i = 0;
     in_reset = false;
-    cycle = 0; busy = 0; faults = 0; requests = 0; first_access = ~0ull;
+    cycle = 0; busy = 0; faults = 0; requests = 0; first_access = ~0ull; fresh_from = ~0ull;
 
     const uint32_t all = (1u << NB) - 1u;
     static uint64_t last_load[NB][1024];  // per core and DPRAM word: controller time of its last load
@@ -330,6 +339,7 @@ int main(int argc, char **argv)
                         if (p.ch->id == plan.mode_request) modes.request(now);
                         if (p.stores) p.max_gap = std::max(p.max_gap, cycle - p.last_store);
                         else p.first_store = cycle;
+                        p.store_times.push_back(now);
                         p.last_store = cycle;
                         ++p.stores;
                     } else if (crash_phase == 2 && &p == crash_prod && adr >= buf_first &&
@@ -388,6 +398,10 @@ int main(int argc, char **argv)
                     else
                         ++s->unjudged;
                 }
+                // freshness: from the Import's start (its first load of Actual since the last event)
+                if (s->ch->copy() && first_access != ~0ull)
+                    judge_fresh(*s, producers[s->ch->id], modes, plan.board_names[c], first_seen[c][w] ? first_load[c][w] : t_load,
+                                arg, fresh_from);
                 s->import_cycles.add(cyc);
                 if (s->last_import) s->max_import_gap = std::max(s->max_import_gap, cycle - s->last_import);
                 s->last_import = cycle;
@@ -468,6 +482,16 @@ int main(int argc, char **argv)
     const bool check_ages = o.fault_rate == 0 && o.hang_board < 0 && !cpu_failed;
     if (check_ages)
         for (const std::string &f : age_failures(series, plan, o)) fail("age", f);
+    // Freshness (judge_fresh), on the same runs as the ages.
+    uint64_t fresh_judged = 0, fresh_late = 0;
+    for (const Series &s : series) {
+        fresh_judged += s.fresh_judged;
+        fresh_late += s.fresh_late;
+        if (check_ages && s.fresh_late) fail("freshness", s.fresh_first);
+    }
+    std::printf("  freshness: %llu Imports began after a value had been its producer's newest for longer than the "
+                "bound, %llu of them returned an older one%s\n", (unsigned long long)fresh_judged,
+                (unsigned long long)fresh_late, check_ages ? "" : " (not judged: faults, a hang or a failed core)");
     if (crash_run && crash_phase != 3) {
         std::snprintf(b, sizeof b, "expected %s to crash inside an Export after cycle %llu, it never did "
                       "(no Export began)", plan.board_names[o.crash_board].c_str(), (unsigned long long)o.crash_at);
@@ -529,7 +553,8 @@ int main(int argc, char **argv)
      .str("muted", o.mute_arg).str("crash_board", crash_run ? plan.board_names[o.crash_board] : "").num("crash_cycle", double(crash_cycle))
      .num("stale_events", double(stale_events))
      .num("first_stale_cycle", double(crash_run ? first_stale_after_crash : first_stale))
-     .num("fresh_events", double(fresh_events)).num("stale_in_mode", double(stale_in_mode));
+     .num("fresh_events", double(fresh_events)).num("stale_in_mode", double(stale_in_mode))
+     .num("freshness_judged", double(fresh_judged)).num("freshness_late", double(fresh_late));
     if (!plan.modes.empty()) {  // the switches, printed and in the report
         uint64_t worst = 0, worst_bound = 0;
         modes.summary(stale_in_mode, worst, worst_bound);

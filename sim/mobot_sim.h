@@ -14,7 +14,8 @@
 
 const int NB = 4;
 enum : uint32_t { EV_NEW = 1, EV_OLD, EV_ERROR, EV_BEGIN, EV_EXPORT, EV_STALE, EV_FRESH, EV_STATUS, EV_CLOCK, EV_MODE };
-const char *const kChecks[] = {"cpu", "liveness", "age", "staleness", "faults", "clock", "termination", "mode"};
+const char *const kChecks[] = {"cpu", "liveness", "age", "staleness", "faults", "clock", "termination", "mode",
+                               "freshness"};
 
 struct Options {
     std::string age_samples;  // --age-samples FILE: every imported age (CSV, tools/fault_rates.py)
@@ -82,6 +83,8 @@ struct Series {  // one channel at one consumer
     uint64_t unjudged = 0;             // samples no bound applies to (a mode without the channel, settling)
     Stat judged_age;                   // the samples judged against a bound (the console row; age: all samples)
     uint64_t worst_pm = 0;             // the worst judged age / bound, per mille
+    uint64_t fresh_judged = 0, fresh_late = 0;  // check freshness: Imports judged, those that returned older
+    std::string fresh_first;           // ... the first of those
     uint64_t last_import = 0, max_import_gap = 0;  // the consumer's Imports of it: the longest gap (cycles)
     std::vector<uint64_t> bucket_max;  // worst age per time bucket (picture)
     std::vector<uint64_t> bucket_bound;  // the largest bound a sample in the bucket was judged by (0: none)
@@ -110,6 +113,7 @@ struct Producer {  // a copy channel's producer
     Stat export_cycles;
     uint64_t exports = 0, stores = 0, last_store = 0, max_gap = 0;
     uint64_t first_store = 0;  // the cycle of its first store (the gap from reset)
+    std::vector<uint64_t> store_times;  // the controller's time of each Actual store (check freshness)
     // The longest gap between its Actual stores up to cycle, the one still
     // open and the one from reset to the first included: a gap that holds a
     // value's age.
@@ -199,6 +203,15 @@ std::string series_report(const std::vector<Series> &series, const Plan &plan);
 std::string producers_report(const std::map<int, Producer> &producers, const Plan &plan);
 std::string judge(const std::map<std::string, std::string> &failed, const std::vector<std::string> &expect,
                   bool positive, std::string &last, std::vector<std::string> &lines);
+// Check freshness (sim/mobot_sim_ages.cpp), at a consumer's Import of a copy
+// channel that began (its first load of the control word) at controller time
+// t_start and returned a value taken at taken_at: the producer's newest value
+// that stayed its newest for longer than the bound in force (modes: the age
+// bound at t_start, without the producer's gap) and whose bound had run out
+// by t_start, published from 'from' on, must be what it returned or older
+// than it: taken_at at or after that value's Actual store.
+void judge_fresh(Series &s, const Producer &p, const ModeTrack &modes, const std::string &consumer, uint64_t t_start,
+                 uint64_t taken_at, uint64_t from);
 // The --ages CSV (sim/mobot_sim_ages.cpp); false if it cannot be written.
 bool write_ages(const std::string &path, const std::vector<Series> &series, const Plan &plan, uint64_t n_buckets,
                 uint64_t bucket_len, uint64_t cycle, uint64_t crash_cycle, uint64_t first_stale);

@@ -240,3 +240,30 @@ std::vector<std::string> termination_failures(std::vector<Series> &series, const
     }
     return out;
 }
+
+void judge_fresh(Series &s, const Producer &p, const ModeTrack &modes, const std::string &consumer, uint64_t t_start,
+                 uint64_t taken_at, uint64_t from)
+{
+    uint64_t bound = 0;
+    if (!modes.bound_at(*s.ch, 0, t_start, bound)) return;   // a mode without the channel: not judged
+    const std::vector<uint64_t> &P = p.store_times;
+    // i: the newest value whose bound had run out by t_start; then back to
+    // the newest one that stayed the newest for longer than the bound.
+    size_t i = std::upper_bound(P.begin(), P.end(), t_start > bound ? t_start - bound : 0) - P.begin();
+    for (size_t steps = 0; i > 0 && steps < 64; --i, ++steps) {
+        const size_t j = i - 1;
+        if (P[j] < from) return;
+        if (j + 1 < P.size() && P[j + 1] <= P[j] + bound) continue;   // superseded within the bound
+        ++s.fresh_judged;
+        if (taken_at >= P[j]) return;
+        if (!s.fresh_late++) {
+            char b[300];
+            std::snprintf(b, sizeof b, "%s at %s: an Import begun at time %llu returned a value taken at %llu, "
+                          "older than the producer's value stored at %llu and the newest for longer than the bound "
+                          "%llu: expected it or a newer one", s.ch->name.c_str(), consumer.c_str(), (unsigned long long)t_start,
+                          (unsigned long long)taken_at, (unsigned long long)P[j], (unsigned long long)bound);
+            s.fresh_first = b;
+        }
+        return;
+    }
+}

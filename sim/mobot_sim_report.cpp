@@ -56,7 +56,8 @@ std::string series_report(const std::vector<Series> &series, const Plan &plan)
          .num("new", double(s.news)).num("old", double(s.olds)).num("bound", double(s.bound))
          .num("latency_bound", double(s.ch->latency_retry)).num("period", double(s.ch->period))
          .num("over_bound_samples", double(s.over_bound))
-         .num("worst_ratio", double(s.worst_pm) / 1000.0).num("unjudged_samples", double(s.unjudged)).num("new_after_crash", double(s.news_after_crash)).raw("age", s.age.json()).raw("judged_age", s.judged_age.json())
+         .num("worst_ratio", double(s.worst_pm) / 1000.0).num("unjudged_samples", double(s.unjudged)).num("new_after_crash", double(s.news_after_crash))
+         .num("freshness_judged", double(s.fresh_judged)).num("freshness_late", double(s.fresh_late)).raw("age", s.age.json()).raw("judged_age", s.judged_age.json())
          .raw("import_cycles", s.import_cycles.json()).raw("termination", termination_json(s.term));
         append(js, e);
     }

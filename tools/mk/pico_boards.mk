@@ -203,7 +203,7 @@ PB_NEGATIVE := \
   nav_stale_early:staleness:fw:nav_stale_early: \
   nav_wrong_status:faults:fw:nav_wrong_status:--fault-rate,0.05 \
   age:age:fw:fw:--age-scale,0.5 \
-  unpublished:age,liveness:fw:fw:--mute,MotorCmd@motor \
+  unpublished:age,liveness,freshness:fw:fw:--mute,MotorCmd@motor \
   hang:liveness:fw:fw:--hang,motor@200000 \
   fault_per_clock:faults:fw:fw:--fault-rate,0.2,--burst,10,--fault-clocking,clock
 pb_img = $(if $(filter fw,$(1)),$(PB_FWDIR)/$(2).hex,$(PB_DIR)/mutant/$(1)/$(2).hex)
