@@ -184,7 +184,8 @@ class Contract:
         for name in ("kind", "flags", "id", "nd", "w"):
             self._need(p, "E0", name)
         for word, name in (("H2", "table"), ("H2", "modes"), ("H2", "start_end"), ("D0", "cycle"), ("D0", "first"),
-                           ("D0", "end"), ("D1", "drop_run"), ("D1", "next"), ("H1", "next")):
+                           ("D0", "end"), ("D1", "drop_run"), ("D1", "next"), ("H1", "next"),
+                           ("H2", "cluster"), ("D2", "cluster"), ("E6", "base"), ("E6", "rep"), ("E7", "frag")):
             self._need(p, word, name)
         if not p:
             if self.magic > self.field("H0", "magic").max:
@@ -198,6 +199,14 @@ class Contract:
             if len(set(self.kind.values())) != len(self.kind) or \
                     max(self.kind.values()) > self.field("E0", "kind").max:
                 p.append("rom.kind: codes must be distinct and fit E0.kind")
+            # the multi-rate fields: a repetition up to the largest cluster, a base below it
+            cl, rep, base = self.field("H2", "cluster"), self.field("E6", "rep"), self.field("E6", "base")
+            if self.field("D2", "cluster").width != cl.width or rep.width != cl.width:
+                p.append("H2.cluster, D2.cluster and E6.rep must be equally wide")
+            if base.width < cl.max:
+                p.append(f"E6.base ({base.width} bits) cannot hold a base below 2^{cl.max}")
+            if self.field("E7", "frag").width < self.field("E0", "w").width:
+                p.append("E7.frag is narrower than E0.w")
             for fl, word in ((self.header_flags, "H0"), (self.entry_flags, "E0")):
                 if any(b >= self.field(word, "flags").width for b in fl.values()):
                     p.append(f"a flag bit outside {word}.flags")

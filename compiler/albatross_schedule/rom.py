@@ -162,22 +162,24 @@ def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None
     problems += p2
     copy, time, status = KIND_CODE["copy"], KIND_CODE["time"], KIND_CODE["status"]
     src = C.src_field
-    mode_of = {k: (m, c) for m, (first, end, c) in enumerate(ranges) for k in range(first, end)}
-    prev_end, prev_mode = 0, None
+    mode_of = {k: (m, c, cl) for m, (first, end, c, cl) in enumerate(ranges) for k in range(first, end)}
+    earlier, prev_mode = [], None    # the mode's entries so far: (k, rep, base, end)
     for k in sorted(mode_of):
         e = words[C.entry_address(k): C.entry_address(k + 1)]
         if len(e) < nw:
             break
-        mode, cycle = mode_of[k]
+        mode, cycle, cluster = mode_of[k]
         if mode != prev_mode:
-            prev_end, prev_mode = 0, mode
+            earlier, prev_mode = [], mode
         tag = f"entry {k}" + (f" (mode {mode})" if len(ranges) > 1 else "")
         kind, flags = get(e, "E0", "kind"), get(e, "E0", "flags")
         cid, nd, w = get(e, "E0", "id"), get(e, "E0", "nd"), get(e, "E0", "w")
         start, length = get(e, "E1", "start"), get(e, "E2", "length")
+        rep, due_base, frag = get(e, "E6", "rep"), get(e, "E6", "base"), get(e, "E7", "frag")
         ent = {"mode": mode, "kind": KIND_NAME.get(kind, kind), "flags": flags, "id": cid, "nd": nd, "w": w,
                "start": start, "length": length, "src": C.unplace(src.get(e[src.index])),
-               "dst": [C.unplace(f.get(e[f.index])) for f in C.dest_fields][:nd]}
+               "dst": [C.unplace(f.get(e[f.index])) for f in C.dest_fields][:nd],
+               "rep": rep, "base": due_base, "frag": frag}
         entries.append(ent)
         for x in (1, 2):
             wd = C.entry[x]
@@ -187,6 +189,15 @@ def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None
             problems.append(f"{tag}: unknown kind {kind}")
             continue
         problems += [f"{tag}: {x.name} (reserved) is not 0" for x in C.entry if x.reserved and e[x.index] != 0]
+        problems += [f"{tag}: {x.name}: bits outside its fields are not 0" for x in C.entry[3:]
+                     if not x.reserved and e[x.index] & ~sum(f.mask for f in x.fields) & 0xFFFFFFFF]
+        if rep > cluster:
+            problems.append(f"{tag}: repetition 2^{rep} above the cluster of its mode (2^{cluster} minor cycles)")
+        if due_base >> rep:
+            problems.append(f"{tag}: base {due_base} not below its repetition 2^{rep}")
+        if frag and (kind != copy or flags & FLAG_REQUEST):
+            problems.append(f"{tag}: fragment size on a {'REQUEST' if kind == copy else KIND_NAME[kind]} entry "
+                            "(only a COPY to destinations is fragmented)")
         if flags & ~sum(C.flag("entry", n) for n in C.entry_flags):
             problems.append(f"{tag}: reserved E0 flag bits set ({flags:#x})")
         if flags & FLAG_FOUR_SLOT and kind not in (copy, time, status):
@@ -226,32 +237,41 @@ def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None
             if base + C.control_words + nbuf * stride > rw:
                 problems.append(f"{tag}: channel at board {board} word {base} (stride {stride}) "
                                 f"ends past the RAM ({rw} words)")
-        if start < prev_end:
-            problems.append(f"{tag}: starts at {start}, before the previous slot ends at {prev_end}")
+        # The slot order: the entry starts at or after the end of every earlier
+        # entry of its mode due in a minor cycle it is due in (due sets
+        # {n mod 2^r = b} meet iff the bases agree modulo the smaller
+        # repetition; then both are due in minor cycle n = the base of the larger).
+        late = [(end, i, bi if ri > rep else due_base) for i, ri, bi, end in earlier
+                if end > start and (bi ^ due_base) & ((1 << min(ri, rep)) - 1) == 0]
+        if late:
+            end, i, n = max(late)
+            problems.append(f"{tag}: starts at {start}, before the previous slot due in its minor cycles ends "
+                            f"at {end} (entry {i}, both due in minor cycle {n})")
         if start + length > cycle:
             problems.append(f"{tag}: ends at {start + length}, after the cycle ({cycle})")
-        prev_end = start + length
+        earlier.append((k, rep, due_base, start + length))
     return problems, entries
 
 
 def mode_ranges(words, ne, cycle, drop_run):
-    """[(first entry, end, cycle)] per mode of an image (one range, 0..NE,
-    without modes) and the problems of its mode descriptors."""
+    """[(first entry, end, cycle, cluster)] per mode of an image (one range,
+    0..NE, without modes) and the problems of its mode descriptors."""
     def get(ws, word, field):
         f = C.field(word, field)
         return f.get(ws[f.index])
 
     hdr = words[:C.header_words]
     modes, table, start_end = get(hdr, "H2", "modes"), get(hdr, "H2", "table"), get(hdr, "H2", "start_end")
+    cluster = get(hdr, "H2", "cluster")
     if modes == 0:
         if table or start_end or get(hdr, "H1", "next"):
-            return [(0, ne, cycle)], ["H1 next, H2 table and start_end are 0 in an image without modes"]
-        return [(0, ne, cycle)], []
+            return [(0, ne, cycle, cluster)], ["H1 next, H2 table and start_end are 0 in an image without modes"]
+        return [(0, ne, cycle, cluster)], []
     problems, ranges = [], []
     if modes < 2 or table + modes != ne:
         problems.append(f"H2: {modes} modes with their descriptors at entries {table}.. must be 2 or more and "
                         f"end at NE ({ne})")
-        return [(0, min(ne, start_end) if start_end else ne, cycle)], problems
+        return [(0, min(ne, start_end) if start_end else ne, cycle, cluster)], problems
     nxt_end = 0
     for m in range(modes):
         d = words[C.entry_address(table + m): C.entry_address(table + m + 1)]
@@ -259,13 +279,13 @@ def mode_ranges(words, ne, cycle, drop_run):
             problems.append(f"mode {m}: descriptor past the end of the image")
             break
         first, end, mcycle = get(d, "D0", "first"), get(d, "D0", "end"), get(d, "D0", "cycle")
-        mdrop, nxt = get(d, "D1", "drop_run"), get(d, "D1", "next")
+        mdrop, nxt, mcluster = get(d, "D1", "drop_run"), get(d, "D1", "next"), get(d, "D2", "cluster")
         tag = f"mode {m} (descriptor at entry {table + m})"
         if first != nxt_end or not first < end <= table:
             problems.append(f"{tag}: entries {first}..{end - 1}, expected a range from {nxt_end} ending by {table}")
-        if m == 0 and (end != start_end or mcycle != cycle or mdrop != drop_run):
-            problems.append(f"{tag}: the start-up mode's end, cycle and drop run must be H2.start_end, H1 and "
-                            "H2.drop_run")
+        if m == 0 and (end != start_end or mcycle != cycle or mdrop != drop_run or mcluster != cluster):
+            problems.append(f"{tag}: the start-up mode's end, cycle, drop run and cluster must be H2.start_end, H1, "
+                            "H2.drop_run and H2.cluster")
         if mdrop < 2:
             problems.append(f"{tag}: drop run {mdrop}, the compiler writes 2..255")
         if nxt >> modes or nxt & (1 << m):
@@ -275,7 +295,7 @@ def mode_ranges(words, ne, cycle, drop_run):
         problems += [f"{tag}: {w.name} (reserved) is not 0" for w in C.mode if w.reserved and d[w.index] != 0]
         problems += [f"{tag}: {w.name}: bits outside its fields are not 0" for w in C.mode
                      if not w.reserved and d[w.index] & ~sum(f.mask for f in w.fields) & 0xFFFFFFFF]
-        ranges.append((first, end, mcycle))
+        ranges.append((first, end, mcycle, mcluster))
         nxt_end = end
     if nxt_end != table:
         problems.append(f"the modes' entries end at {nxt_end}, H2.table is {table}")

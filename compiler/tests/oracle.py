@@ -112,10 +112,13 @@ def decode(words):
             "raw": e, "kind": e[0] >> 28, "flags": (e[0] >> 24) & 0xF, "id": (e[0] >> 16) & 0xFF,
             "nd": nd, "w": e[0] & 0xFFF, "start": e[1] & 0xFFFF, "length": e[2] & 0xFFFF,
             "time_high": (e[1] | e[2]) >> 16,
+            "base": e[6] & 0x7FFF, "rep": (e[6] >> 16) & 0xF, "e6_high": e[6] & ~0xF7FFF,
+            "frag": e[7] & 0xFFF, "e7_high": e[7] >> 12,
             "src_board": (e[3] >> 12) & 0xF, "src_word": e[3] & 0xFFF,
             "dst": [((d >> 12) & 0xF, d & 0xFFF) for d in dst[:nd]], "unused_dst": dst[nd:]})
     return {"magic": h0 >> 16, "ne": ne, "flags": h0 & 0xFF, "cycle": words[1] & 0xFFFF,
-            "cycle_high": words[1] >> 16, "drop_run": words[2] & 0xFF, "h2_high": words[2] >> 8}, entries
+            "cycle_high": words[1] >> 16, "drop_run": words[2] & 0xFF, "cluster": (words[2] >> 20) & 0xF,
+            "h2_high": (words[2] >> 8) & ~0xF000}, entries
 
 
 def rom_problems(words, n_chan, ram_words):
@@ -131,7 +134,7 @@ def rom_problems(words, n_chan, ram_words):
     if hdr["cycle_high"]:
         p.append("H1 above 16 bits")
     if hdr["h2_high"]:
-        p.append("H2 above its 8-bit drop run")
+        p.append("H2 above its 8-bit drop run (the cluster aside)")
     if hdr["drop_run"] < 2:
         p.append("H2 drop run below 2")
     if not 1 <= hdr["ne"] <= 255:
@@ -139,12 +142,13 @@ def rom_problems(words, n_chan, ram_words):
     if len(words) != 4 + 8 * hdr["ne"]:
         p.append("length does not match the entry count")
     sync = hdr["flags"] & 1
-    prev_end = 0
     for k, e in enumerate(entries):
         if e["time_high"]:
             p.append(f"entry {k}: time above 16 bits")
-        if e["raw"][7] != 0:
-            p.append(f"entry {k}: E7 not 0")
+        if e["e7_high"]:
+            p.append(f"entry {k}: E7 above its 12-bit fragment size")
+        if e["frag"] and (e["kind"] != 1 or e["nd"] == 0):
+            p.append(f"entry {k}: a fragment size on other than a COPY to destinations")
         if e["kind"] not in (1, 2, 3):
             p.append(f"entry {k}: kind {e['kind']}")
         if not 1 <= e["nd"] <= 4:
@@ -153,8 +157,12 @@ def rom_problems(words, n_chan, ram_words):
             p.append(f"entry {k}: channel id")
         if any(e["unused_dst"]):
             p.append(f"entry {k}: unused destination field not 0")
-        if e["raw"][6] != 0:
-            p.append(f"entry {k}: E6 not 0")
+        if e["e6_high"]:
+            p.append(f"entry {k}: E6 bits outside base and rep")
+        if e["rep"] > hdr["cluster"]:
+            p.append(f"entry {k}: repetition above the cluster")
+        if e["base"] >= 1 << e["rep"]:
+            p.append(f"entry {k}: base not below the repetition")
         if e["kind"] == 2 and e["w"] != 1:
             p.append(f"entry {k}: TIME W")
         if e["kind"] == 3 and e["w"] != 1 + 2 * n_chan:
@@ -179,11 +187,21 @@ def rom_problems(words, n_chan, ram_words):
             p.append(f"entry {k}: SYNC flag misplaced")
         if sync and k == 0 and not (e["flags"] & 1 and e["kind"] == 1 and e["start"] == 0):
             p.append("entry 0 of a sync ROM is not a SYNC COPY at 0")
-        if e["start"] < prev_end:
-            p.append(f"entry {k}: overlaps or precedes the previous slot")
         if e["start"] + e["length"] > hdr["cycle"]:
             p.append(f"entry {k}: ends after the cycle")
-        prev_end = e["start"] + e["length"]
+    # The slot order, in every minor cycle n (brute force over n below 2^(the
+    # largest repetition), which decides every entry's due set): each entry due
+    # in n starts at or after the end of every earlier entry due in n.
+    late = {}
+    for n in range(1 << max([x["rep"] for x in entries] + [0])):
+        prev_end = 0
+        for k, x in enumerate(entries):
+            if n % (1 << x["rep"]) != x["base"]:
+                continue
+            if x["start"] < prev_end:
+                late.setdefault(k, n)
+            prev_end = max(prev_end, x["start"] + x["length"])
+    p += [f"entry {k}: overlaps or precedes an earlier slot of minor cycle {n}" for k, n in sorted(late.items())]
     return p
 
 

@@ -30,7 +30,8 @@ import oracle as O  # noqa: E402  (the oracles)
 C = contract.load()
 SCALARS = {   # oracle decode key -> (word, field) of the definition
     "kind": ("E0", "kind"), "flags": ("E0", "flags"), "id": ("E0", "id"), "nd": ("E0", "nd"),
-    "w": ("E0", "w"), "start": ("E1", "start"), "length": ("E2", "length")}
+    "w": ("E0", "w"), "start": ("E1", "start"), "length": ("E2", "length"),
+    "base": ("E6", "base"), "rep": ("E6", "rep"), "frag": ("E7", "frag")}
 
 
 def mask_of(fields):
@@ -69,7 +70,7 @@ class RomDecoderOracle(unittest.TestCase):
 
     def test_header_fields(self):
         keys = {"magic": ("H0", "magic"), "ne": ("H0", "ne"), "flags": ("H0", "flags"), "cycle": ("H1", "cycle"),
-                "drop_run": ("H2", "drop_run")}
+                "drop_run": ("H2", "drop_run"), "cluster": ("H2", "cluster")}
         for key, (w, f) in keys.items():
             fld = C.field(w, f)
             got = {}
@@ -126,24 +127,66 @@ class RomDecoderOracle(unittest.TestCase):
             words[rng.randrange(n)] ^= 1 << rng.randrange(32)
             self.assertNotEqual(C.crc(words), 0, f"CRC of {n} words with one bit flipped")
 
-    def valid_rom(self, kind="copy", w=1):
-        """A one-entry ROM built from the definition alone."""
-        hdr = header(1)
+    def valid_rom(self, kind="copy", w=1, cluster=0, entries=({},)):
+        """A ROM built from the definition alone: one entry of the kind per
+        item of entries, whose {(word, field): value} items override it."""
+        hdr = header(len(entries))
         hdr[C.field("H0", "magic").index] |= C.field("H0", "magic").put(C.magic)
         hdr[C.field("H1", "cycle").index] |= C.field("H1", "cycle").put(1000)
         hdr[C.field("H2", "drop_run").index] |= C.field("H2", "drop_run").put(2)
-        e = [0] * C.entry_words
-        vals = {("E0", "kind"): C.kind[kind], ("E0", "id"): 0, ("E0", "nd"): 1, ("E0", "w"): w,
-                ("E1", "start"): 0, ("E2", "length"): 100}
-        for (wd, fd), v in vals.items():
-            e[C.field(wd, fd).index] |= C.field(wd, fd).put(v)
-        dst = C.dest_fields[0]
-        e[dst.index] |= dst.put(C.place(1, 64))
-        if kind == "copy":
-            e[C.src_field.index] |= C.src_field.put(C.place(0, 16))
-        rom = hdr + e
+        hdr[C.field("H2", "cluster").index] |= C.field("H2", "cluster").put(cluster)
+        rom = hdr
+        for over in entries:
+            e = [0] * C.entry_words
+            vals = {("E0", "kind"): C.kind[kind], ("E0", "id"): 0, ("E0", "nd"): 1, ("E0", "w"): w,
+                    ("E1", "start"): 0, ("E2", "length"): 100}
+            vals.update(over)
+            for (wd, fd), v in vals.items():
+                e[C.field(wd, fd).index] |= C.field(wd, fd).put(v)
+            dst = C.dest_fields[0]
+            e[dst.index] |= dst.put(C.place(1, 64))
+            if kind == "copy":
+                e[C.src_field.index] |= C.src_field.put(C.place(0, 16))
+            rom += e
         rom[C.crc_index] = C.check_word(rom)
         return rom
+
+    def test_multirate_rules(self):
+        """Due sets, the fragment size and the slot order per minor cycle: the
+        oracle and verify_rom agree on ROMs built from the definition alone."""
+        from albatross_schedule.rom import verify_rom
+        rb = lambda rep, base, start=0, **kw: {("E6", "rep"): rep, ("E6", "base"): base, ("E1", "start"): start, **kw}
+        cases = [   # (name, ROM, the oracle's problem or None, verify_rom's or None)
+            ("every cycle", self.valid_rom(), None, None),
+            ("rep 2 bases 0..3 in one window", self.valid_rom(cluster=2, entries=[rb(2, b) for b in range(4)]),
+             None, None),
+            ("rep 1 base 1 beside rep 2 base 0 at one start", self.valid_rom(cluster=3, entries=[rb(2, 0), rb(1, 1)]),
+             None, None),
+            ("rep 1 base 0 beside rep 2 base 2 at one start", self.valid_rom(cluster=3, entries=[rb(1, 0), rb(2, 2)]),
+             "entry 1: overlaps or precedes an earlier slot of minor cycle 2", "before the previous slot"),
+            ("every cycle beside rep 3 at one start", self.valid_rom(cluster=3, entries=[rb(3, 5), rb(0, 0)]),
+             "entry 1: overlaps or precedes an earlier slot of minor cycle 5", "before the previous slot"),
+            ("rep above the cluster", self.valid_rom(cluster=1, entries=[rb(2, 0)]),
+             "entry 0: repetition above the cluster", "repetition 2^2 above the cluster"),
+            ("base not below 2^rep", self.valid_rom(cluster=3, entries=[rb(1, 2)]),
+             "entry 0: base not below the repetition", "base 2 not below"),
+            ("fragments on a COPY", self.valid_rom(w=8, entries=[{("E7", "frag"): 3}]), None, None),
+            ("fragments on a TIME", self.valid_rom("time", 1, entries=[{("E7", "frag"): 1}]),
+             "entry 0: a fragment size on other than a COPY to destinations", "fragment size on a time entry"),
+        ]
+        for name, rom, want_o, want_v in cases:
+            with self.subTest(case=name):
+                got_o = O.rom_problems(rom, 16, [1024] * 2)
+                got_v = verify_rom(rom, n_chan=16, n_boards=2, ram_words=1024)[0]
+                if want_o is None:
+                    self.assertEqual(got_o, [], f"the oracle rejects a valid ROM ({name})")
+                else:
+                    self.assertIn(want_o, got_o, f"the oracle misses the fault ({name})")
+                if want_v is None:
+                    self.assertEqual(got_v, [], f"verify_rom rejects a valid ROM ({name})")
+                else:
+                    self.assertTrue(any(want_v in x for x in got_v),
+                                    f"verify_rom misses the fault ({name}): expected '{want_v}', came {got_v}")
 
     def test_magic_kinds_and_addressing(self):
         self.assertEqual(O.rom_problems(self.valid_rom(), 16, [1024] * 2), [],
