@@ -199,9 +199,9 @@ def rom_problems(words, n_chan, ram_words):
             if n % (1 << x["rep"]) != x["base"]:
                 continue
             if x["start"] < prev_end:
-                late.setdefault(k, n)
+                late.setdefault(k, n)   # (the first such n)
             prev_end = max(prev_end, x["start"] + x["length"])
-    p += [f"entry {k}: overlaps or precedes an earlier slot of minor cycle {n}" for k, n in sorted(late.items())]
+    p += [f"entry {k}: overlaps or precedes the previous slot" for k in sorted(late)]
     return p
 
 
