@@ -69,11 +69,13 @@ from typing import Optional
 
 from .model import System
 from .plan import slot_length
+from .rom import C as CONTRACT
 
 FEASIBLE, INFEASIBLE, UNKNOWN = "feasible", "infeasible", "unknown"
-# The longest cluster the search considers: 2^15 minor cycles (1.6 s at a
-# minor cycle of 50 us).
-MAX_REPETITION = 1 << 15
+# The longest cluster, and so the largest repetition: 2^c minor cycles, c the
+# contract's largest cluster (ROM word H2.cluster: 15, 1.6 s at a minor cycle
+# of 50 us).
+MAX_REPETITION = 1 << CONTRACT.field("H2", "cluster").max
 # CP-SAT stops at its limit of deterministic time, or after WALL_FACTOR times
 # as many seconds of wall time.
 WALL_FACTOR = 10
