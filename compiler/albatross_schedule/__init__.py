@@ -83,6 +83,8 @@ Modules (standard library only):
   cnames       every name the generated C declares (the templates), and the names check
   layout       RAM layout of every board's channel instances
   plan         slot lengths, the cycle, redundancy, placement, bounds
+  multirate    multi-rate plans: minor cycle, repetitions, bases, fragments (when single-rate does not fit)
+  rejection    why a description has no multi-rate plan (a proof or the give-up) and what would fit
   modes        [[mode]]: several schedules, each planned over one RAM layout
   fourslot     the channel kinds: [layout.four_slot] of the contract, bytes, images, flag
   termination  board Import timing, D, the Import bounds, spacing the slots
@@ -92,6 +94,7 @@ Modules (standard library only):
   cgen         generated C: board headers, set-up sources, RAM images
   report       report.json and report.txt
   picture      timeline.svg (a lane group per mode)
+  picture_cluster  timeline.svg of a multi-rate plan: the cluster as stacked minor cycles
   pipeline     the whole compilation (compile_system, compile_file)
   cli          the command line (main); __main__ runs it
 """

@@ -56,12 +56,18 @@ def main(argv=None) -> int:
               "(set ALB_DEBUG=1 for the traceback)", file=sys.stderr)
         return 3
     if not args.quiet:
-        print(f"{args.description}: cycle {plan.cycle} clocks ({us(plan.cycle, system.clock_hz):g} us), "
+        shape = (f"multi-rate: minor cycle {plan.cycle} clocks ({us(plan.cycle, system.clock_hz):g} us), cluster of "
+                 f"{plan.cluster}" if plan.multirate else
+                 f"cycle {plan.cycle} clocks ({us(plan.cycle, system.clock_hz):g} us)")
+        print(f"{args.description}: {shape}, "
               f"{len(plan.slots)} entries, bus utilisation {100 * rep['bus_utilisation']:.1f} % "
               f"-> {args.out}/ ({len(files)} files)" + ("" if rep.get("modes") else _cut(rep)))
         for m in rep.get("modes", []):
-            print(f"  mode {m['name']}{' (start-up)' if m['start_up'] else ''}: cycle "
-                  f"{m['cycle']['clocks']} clocks, {m['entries']} entries, bus utilisation "
+            print(f"  mode {m['name']}{' (start-up)' if m['start_up'] else ''}: "
+                  + ("multi-rate: minor cycle " if m.get("planner") == "multi-rate" else "cycle ")
+                  + f"{m['cycle']['clocks']} clocks"
+                  + (f", cluster of {m['cluster']['minor_cycles']}" if m.get("planner") == "multi-rate" else "")
+                  + f", {m['entries']} entries, bus utilisation "
                   f"{100 * m['bus_utilisation']:.1f} %{_cut(m)}")
         if rep.get("modes"):
             print("  (rom.hex holds every mode; the controller starts in the first and switches at a cycle "

@@ -29,6 +29,7 @@ MAX_U32 = (1 << 32) - 1             # a 32-bit figure: the global time, a clock 
 MAX_RAM_BYTES = 4 * (MAX_BASE_WORD + 1)     # the RAM the ROM's base fields address
 MAX_CYCLE = (1 << CONTRACT_TIME_BITS) - 1   # clocks within a cycle: bus counts fit in one
 MAX_PRIORITY = 1_000_000
+MAX_REPETITION = 1 << _load_contract().field("H2", "cluster").max   # a cluster of at most 2^15 minor cycles
 
 
 def max_period_us(clock_hz: int) -> int:
@@ -168,9 +169,17 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
     if not isinstance(busd, dict):
         err.general("[bus] must be a table")
         busd = {}
+    minor_us = None                 # [bus] minor_cycle_us: a multi-rate plan's minor cycle, fixed
     for key, v in busd.items():
+        if key == "minor_cycle_us":
+            if not _is_int(v) or v <= 0:
+                err.system(key, f"{_describe(v)} is not a positive integer number of microseconds", table="bus")
+            else:
+                minor_us = v
+            continue
         if key not in BUS_DEFAULTS:
-            err.system(key, f"unknown field (expected one of {', '.join(BUS_DEFAULTS)})", table="bus")
+            err.system(key, f"unknown field (expected one of {', '.join(BUS_DEFAULTS)}, minor_cycle_us)",
+                       table="bus")
             continue
         lo = BUS_MINIMUM[key]
         if not _is_int(v) or v < lo:
@@ -191,6 +200,13 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
                        f"{CONTRACT_TIME_BITS} bits wide)", table="bus")
             continue
         setattr(bus, key, v)
+
+    if minor_us is not None and clock_ok:
+        m = minor_us * clock_hz // 1_000_000
+        if not 1 <= m <= (1 << bus.time_bits) - 1:
+            err.system("minor_cycle_us", f"{minor_us} us is {m} clocks at clock_hz = {clock_hz}: a minor cycle is "
+                       f"1 .. {(1 << bus.time_bits) - 1} clocks (time_bits = {bus.time_bits})", table="bus")
+            minor_us = None
 
     # ---- [[channel]]
     chans = data.get("channel")
@@ -417,11 +433,17 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
             err.channel(i, label, "max_import_passes", out_of_range(mip, 2, MAX_U32, "a 32-bit figure"))
             mip, ok = None, False
 
+        rep = cd.get("repetition")      # multi-rate: runs every rep minor cycles, fixed
+        if rep is not None and (not _is_int(rep) or not 1 <= rep <= MAX_REPETITION or rep & (rep - 1)):
+            err.channel(i, label, "repetition", f"{_describe(rep)} is not a power of two from 1 to {MAX_REPETITION} "
+                        "(the minor cycles between two runs of the channel's entries)")
+            rep, ok = None, False
+
         if unique_name:
             ch = Channel(index=i, name=cname, kind=kind, ctype=ctype, size=size, words=words, producer=producer,
                          consumers=consumers, max_period_us=mp, sync=sync, priority=prio,
                          max_slots=1 if request else max_slots, layout=layout, max_import_passes=mip,
-                         request=request, mode_info=mode_info)
+                         request=request, mode_info=mode_info, repetition=rep)
             ch.period_clocks = mp * clock_hz // 1_000_000
             named.append(ch)
             if ok:
@@ -444,7 +466,7 @@ def parse_description(data: dict, path: str = "<description>", text: str = "") -
     # no "unknown channel" to a mode); with any fault the system is not built.
     system = System(name=name, clock_hz=clock_hz, boards=boards, ram_bytes=ram_bytes,
                     mode=mode, types_header=types_header, bus=bus, channels=named, source=path,
-                    timing=timing, faults=faults)
+                    timing=timing, faults=faults, minor_cycle_us=minor_us)
     raw_modes = data.get("mode")
     system.modes = parse_modes(raw_modes, system, err, _describe, _is_int)
     for i, m in enumerate(system.modes):

@@ -250,6 +250,27 @@ def slots_needed(miss: float, eps: float, limit: int) -> Optional[int]:
     return m if m <= limit else None
 
 
+def runs_needed(miss: float, eps: float, successes: int, limit: int) -> Optional[int]:
+    """The fewest runs n, each missing with probability at most `miss`
+    whatever came before, among which fewer than `successes` deliver with
+    probability <= eps (the binomial tail bounds it: the misses are
+    dominated by independent ones); successes = 1 is slots_needed."""
+    if successes <= 1:
+        return slots_needed(miss, eps, limit)
+    if miss >= 1.0:
+        return None
+    if miss <= 0.0:
+        return successes
+    lq, lm = math.log1p(-miss), math.log(miss)
+    for n in range(successes, limit + 1):
+        # P(fewer than `successes` of n deliver) = sum_{j < successes} C(n, j) q^j miss^(n-j), in logs
+        tail = sum(math.exp(math.lgamma(n + 1) - math.lgamma(j + 1) - math.lgamma(n - j + 1) + j * lq + (n - j) * lm)
+                   for j in range(successes))
+        if tail <= eps:
+            return n
+    return None
+
+
 def period_at(starts: list, cycle: int, m: int) -> int:
     """The longest span from a slot's start to the start of the m-th slot
     after it (cyclic; the channel's slot starts in one cycle)."""
@@ -284,12 +305,17 @@ def evaluate(system, plan, curves) -> dict:
     for ch in system.channels:
         r = bus.retries_of(ch)
         n = len(ch.slots)
+        # a multi-rate plan: ch.slots are its runs over its span; a value in F
+        # fragments is published 2F - 1 delivering runs after a sample missed
+        # (plan.channel_bounds), so m runs hold that many at the target
+        span = ch.run_span or plan.cycle
+        need = 2 * ch.fragments - 1
         per = []
         for d in range(len(ch.consumers)):
             q = curves[ch.index][d][min(r, len(curves[ch.index][d]) - 1)]
             miss = max(0.0, 1.0 - q)
-            m = slots_needed(miss, h.eps, limit=64 * n)
-            period = period_at(ch.slots, plan.cycle, m) if m is not None else None
+            m = runs_needed(miss, h.eps, need, limit=64 * n * need)
+            period = period_at(ch.slots, span, m) if m is not None else None
             per.append({"slot_delivery_probability": q, "slot_miss_probability": miss,
                         "cycle_delivery_probability": 1.0 - miss ** n, "cycle_miss_probability": miss ** n,
                         "slots_needed": m, "period_at_target_clocks": period})
@@ -338,8 +364,9 @@ def plan_for_hypothesis(system, plan_fn):
             "probability")
     system.drop_run = k
     cost = _failure_cost(bus)
-    cap = system.channels[0].period_clocks  # refined below: the cycle
-    cap = min(ch.period_clocks for ch in system.channels)
+    # the longest slot fits one cycle: the smallest period (a multi-rate
+    # plan: a minor cycle, at most what time_bits allows)
+    cap = min([ch.period_clocks for ch in system.channels] + [(1 << bus.time_bits) - 1])
     rmax = max(bus.retries_per_slot, min(RETRIES_MAX, cap // cost))
     curves = _curves(system, rmax)
     saved = {ch.index: (ch.max_slots, getattr(ch, "spaced_for_termination", None), ch.retries)
@@ -398,6 +425,12 @@ def plan_for_hypothesis(system, plan_fn):
         restore()
     if not results:
         j, bj, e = infeasible[-1]
+        if getattr(e, "kind", None):    # the multi-rate planner's rejection (multirate.MultiRateRejection)
+            err = ScheduleError([f"{m} (planned for the fault hypothesis: {_describe_h(h)}, drop run K = {k}, "
+                                 f"retry budgets {', '.join(f'{ch.name} {bj[ch.index]}' for ch in system.channels)})"
+                                 for m in e.messages])
+            err.kind = e.kind
+            raise err
         parts = []
         for ch in sorted(system.channels, key=lambda c: -c.slot_len):
             jc = max(1, min(j, ch.period_clocks // cycle))

@@ -38,7 +38,7 @@ SYSTEM_KEYS = {"name", "clock_hz", "boards", "ram_bytes", "mode", "types_header"
 BOARD_KEYS = {"core", "clock_hz", "import_t_clocks", "import_v_clocks"}
 CHANNEL_KEYS = {"name", "kind", "type", "size", "producer", "consumers",
                 "max_period_us", "sync", "priority", "max_slots", "max_import_passes",
-                "four_slot"}
+                "four_slot", "repetition"}
 
 IDENT_RE = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
 CTYPE_RE = re.compile(r"^((struct|union|enum)\s+)?[A-Za-z_][A-Za-z0-9_]*$")
@@ -53,6 +53,16 @@ class ScheduleError(Exception):
             messages = [messages]
         self.messages = list(messages)
         super().__init__("\n".join(self.messages))
+
+
+def not_due_cost(bus) -> int:
+    """The clocks an entry costs in a minor cycle in which it is not due (a
+    multi-rate plan, docs/compiler.md "Plan"): the sequencer waits for the
+    entry's start as for any entry, fetches it and skips it, so it takes
+    this many clocks from max(its start, the end of the entry before it).
+    The one place of that cost: the planner and the plan's check
+    (multirate.py) read it here."""
+    return bus.fetch_cycles
 
 
 def us(clocks: float, clock_hz: int) -> float:
@@ -119,12 +129,19 @@ class Channel:
     retries: Optional[int] = None   # this channel's slot retry budget (None: [bus] retries_per_slot)
     request: bool = False           # a mode_request channel: a copy with no consumer, read by the controller
     mode_info: bool = False         # a mode channel: a status-like channel of {mode, since}, W = 2
+    repetition: Optional[int] = None  # multi-rate: the repetition the description fixes (a power of two)
     # filled by the plan
     src_base: Optional[int] = None  # byte offset in the producer's RAM
     dst_bases: list = dataclasses.field(default_factory=list)
     accesses: int = 0               # A
     slot_len: int = 0               # L
-    slots: list = dataclasses.field(default_factory=list)   # starts, sorted
+    slots: list = dataclasses.field(default_factory=list)   # starts, sorted (multi-rate: its runs, see run_span)
+    # filled by a multi-rate plan (multirate.py); a single-rate plan leaves them as they are
+    fragments: int = 1              # F: runs that carry one value (E7: frag_words words each, the last the rest)
+    frag_words: int = 0             # E7.frag (0: the whole value in one run)
+    pub_accesses: int = 0           # the accesses of the run that publishes, up to the last Actual (0: accesses)
+    run_span: int = 0               # the clocks after which its runs repeat (0: the cycle); slots are the
+                                    # starts of its runs within it, from the cluster's start
 
     @property
     def id(self) -> int:
@@ -173,6 +190,8 @@ class System:
     drop_run: int = 2               # K: a destination is dropped after K failures in a row (ROM H2)
     modes: list = dataclasses.field(default_factory=list)   # modes.Mode, [[mode]]; empty: one schedule
     mode_window: int = 0            # clocks kept idle at the end of every cycle for a mode switch
+    minor_cycle_us: Optional[int] = None  # [bus] minor_cycle_us: the minor cycle the description fixes
+    planner: str = "auto"           # auto (single-rate when it fits, else multi-rate) | single-rate | multi-rate
 
     @property
     def sync_mode(self) -> bool:
@@ -186,6 +205,9 @@ class Slot:
     length: int
     redundant: bool
     sync: bool = False
+    rep_log: int = 0                # multi-rate: due in the minor cycles n with n mod 2^rep_log = base
+    base: int = 0
+    frag: int = 0                   # E7.frag: words per fragment (0: whole values)
 
 
 @dataclasses.dataclass
@@ -194,3 +216,9 @@ class Plan:
     capacity: int                   # clocks usable by slots
     slots: list                     # Slot, in entry order (= start order)
     limiter: Channel                # channel whose max_period sets C
+    cluster_log: int = 0            # c: the plan repeats after 2^c cycles (minor cycles of C clocks)
+    multirate: bool = False         # planned by multirate.py (repetitions, bases, fragments)
+
+    @property
+    def cluster(self) -> int:
+        return 1 << self.cluster_log

@@ -297,7 +297,26 @@ def switch_latency(system: System, rep: dict):
     starts = [e["start"] for e in rep["entries_list"] if e["channel"] == req]
     if not starts:
         return None
+    if rep.get("planner") == "multi-rate":
+        return _request_wait(system, rep, req, 1)
     return 2 * rep["cycle"]["clocks"] - (min(starts) + system.bus.sample_offset)
+
+
+def _request_wait(system: System, rep: dict, req: str, m: int) -> int:
+    """A multi-rate mode: the request channel's runs x_i over its span (its
+    entries' due minor cycles); a request published just after run i's
+    sample is read by a run m runs on, and the switch follows at the end of
+    that run's minor cycle (a minor-cycle boundary): the largest
+    end(minor cycle of x_(i+m)) - (x_i + sample_offset)."""
+    c = rep["cycle"]["clocks"]
+    mine = [e for e in rep["entries_list"] if e["channel"] == req]
+    span_cycles = max(e["repetition"] for e in mine)
+    runs = sorted(n * c + e["start"] for e in mine for n in range(e["base"], span_cycles, e["repetition"]))
+    span = span_cycles * c
+
+    def at(i):
+        return runs[i % len(runs)] + span * (i // len(runs))
+    return max((at(i + m) // c + 1) * c - (runs[i] + system.bus.sample_offset) for i in range(len(runs)))
 
 
 def switch_latency_at_target(ms: System, rep: dict, lat):
@@ -317,7 +336,10 @@ def switch_latency_at_target(ms: System, rep: dict, lat):
     r = ms.bus.retries_of(req)
     q = delivery_curve(h, access_sequence(req, -1), r, ms.drop_run)[r]
     m = slots_needed(max(0.0, 1.0 - q), h.eps, limit=64)
-    clocks = None if m is None else lat + (m - 1) * rep["cycle"]["clocks"]
+    if m is not None and rep.get("planner") == "multi-rate":
+        clocks = _request_wait(ms, rep, req.name, m)
+    else:
+        clocks = None if m is None else lat + (m - 1) * rep["cycle"]["clocks"]
     return {"clocks": clocks, "us": None if clocks is None else round(clocks * 1e6 / ms.clock_hz, 3),
             "slots_needed": m, "slot_miss_probability": max(0.0, 1.0 - q), "probability": h.probability}
 
@@ -329,12 +351,12 @@ def mode_summary(system: System, modes: list, i: int, rep: dict, ms: System = No
     lat = switch_latency(system, rep)
     at_target = switch_latency_at_target(ms, rep, lat) if ms is not None else None
     keep = ("cycle", "cycle_limited_by", "entries", "redundant_slots", "drop_run", "bus_utilisation",
-            "controller_busy", "schedule_fill")
+            "controller_busy", "schedule_fill", "planner", "minor_cycle", "cluster", "busiest_minor_cycle_clocks")
     return dict({k: rep[k] for k in keep if k in rep},
                 name=m.name, start_up=i == 0, next=[modes[j].name for j in m.next],
                 switch_latency=None if lat is None else {"clocks": lat, "us": round(lat * 1e6 / system.clock_hz, 3)},
                 **({"switch_latency_at_target": at_target} if at_target else {}),
                 channels=[{k: c[k] for k in ("name", "id", "max_period", "guaranteed_period", "redundancy",
-                                             "age_bound", "latency") if k in c}
+                                             "repetition", "base", "fragments", "age_bound", "latency") if k in c}
                           for c in rep["channels"]],
                 left_out=[ch.name for ch in system.channels if ch.index not in m.channels])

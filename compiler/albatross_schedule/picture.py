@@ -49,7 +49,11 @@ def render_svg(system: System, plan: Plan, rep: dict, heading: str = "", colors:
                absent: tuple = ()) -> str:
     """colors: the colour of each channel by name (default: by its place in
     system.channels); absent: (name, route) of channels this schedule does
-    not carry, each given an empty lane (another mode's channels)."""
+    not carry, each given an empty lane (another mode's channels).  A
+    multi-rate plan: its cluster (picture_cluster.py)."""
+    if plan.multirate:
+        from .picture_cluster import render_cluster_svg
+        return render_cluster_svg(system, plan, rep, heading, colors, absent)
     hz = system.clock_hz
     C = plan.cycle
     routes = {ch.index: _route(system, ch) for ch in system.channels}

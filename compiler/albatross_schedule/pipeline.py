@@ -17,8 +17,9 @@ from .faults import plan_for_hypothesis
 from .layout import allocate_ram, verify_ram_layout
 from .model import Plan, ScheduleError, System
 from .modes import mode_summary, plan_modes
+from .multirate import build_multirate_plan, check_timing, wants_multirate
 from .picture import render_modes_svg
-from .plan import build_plan, channel_gaps
+from .plan import build_plan, channel_bounds
 from .report import build_report, render_report_txt
 from .rom import MAX_ENTRIES, encode_rom, encode_rom_modes, rom_hex, verify_rom
 from .termination import enforce as enforce_termination, violations
@@ -35,8 +36,10 @@ def self_check(system: System, plan: Plan, rom: list, layout: dict):
     for ch in system.channels:
         if not ch.slots:
             problems.append(f"channel {ch.name} has no slot")
-        elif max(channel_gaps(ch.slots, plan.cycle)) > ch.period_clocks:
+        elif channel_bounds(system, plan, ch)["guaranteed_period_clocks"] > ch.period_clocks:
             problems.append(f"channel {ch.name}: guaranteed period exceeds max_period")
+    if plan.multirate:
+        problems += check_timing(plan.slots, plan.cycle, plan.cluster, plan.capacity, plan.skip_cost)
     for ch, who in violations(system, plan):
         problems.append(f"channel {ch.name}: three-buffer Import over its bound at {', '.join(w[0] for w in who)}")
     if system.sync_mode and plan.slots[-1].start + plan.slots[-1].length + system.bus.poll_cycles > plan.cycle:
@@ -45,10 +48,57 @@ def self_check(system: System, plan: Plan, rom: list, layout: dict):
         raise AssertionError("internal error, the plan breaks the contract: " + "; ".join(problems))
 
 
+def _saved(system: System):
+    """What a failed plan may leave changed on the system (plan_for_hypothesis
+    and termination.enforce set them), to start the next planner afresh."""
+    return (system.drop_run, [(ch, ch.max_slots, ch.retries, ch.__dict__.get("spaced_for_termination"))
+                              for ch in system.channels])
+
+
+def _restore(system: System, saved):
+    system.drop_run, chans = saved
+    for ch, ms, rt, sp in chans:
+        ch.max_slots, ch.retries = ms, rt
+        ch.__dict__.pop("spaced_for_termination", None)
+        if sp is not None:
+            ch.spaced_for_termination = sp
+    for k in ("fault_eval", "fault_split"):
+        system.__dict__.pop(k, None)
+
+
 def _plan(system: System):
-    # build_plan, spacing slots for bounded Imports, with retry budgets, drop run
-    # and redundancy sized for the fault hypothesis (if the description has one)
-    return plan_for_hypothesis(system, lambda s: enforce_termination(s, build_plan))
+    """build_plan, spacing slots for bounded Imports, with retry budgets, drop
+    run and redundancy sized for the fault hypothesis (if the description has
+    one).  The single-rate plan when it fits (system.planner "auto"); else,
+    or when the description fixes a minor cycle or a repetition, the
+    multi-rate plan (multirate.py).  When neither fits, the single-rate
+    plan's errors come first, then the multi-rate planner's."""
+    def with_(build):
+        return plan_for_hypothesis(system, lambda s: enforce_termination(s, build))
+
+    if system.planner == "single-rate" or (system.planner == "auto" and not wants_multirate(system)):
+        saved = _saved(system)
+        try:
+            return with_(build_plan)
+        except ScheduleError as e:
+            if system.planner == "single-rate" or system.sync_mode:
+                raise
+            first = e
+        _restore(system, saved)
+    else:
+        first = None
+    if system.sync_mode:
+        raise ScheduleError(f"{system.source}: a multi-rate plan ([bus] minor_cycle_us, a channel's repetition) "
+                            f"needs the time-rigid time mode ([system] mode): a position-synchronised cycle "
+                            "follows the positions, not a count of minor cycles")
+    try:
+        return with_(build_multirate_plan)
+    except ScheduleError as e:
+        if first is None:
+            raise
+        err = ScheduleError(first.messages + [m for m in e.messages if m not in first.messages])
+        err.kind = getattr(e, "kind", None)     # the multi-rate planner's rejection (multirate.MultiRateRejection)
+        raise err
 
 
 def compile_system(system: System):

@@ -27,8 +27,21 @@ def slot_length(ch: Channel, bus: Bus) -> int:
 
 
 def pub_offset(ch: Channel, bus: Bus, retries: bool) -> int:
-    off = bus.fetch_cycles + bus.first_access_extra + bus.access_cycles * ch.accesses
+    """From a slot's start to the end of its last destination's Actual store
+    (a fragmented value: of the run of its last fragment, ch.pub_accesses)."""
+    off = bus.fetch_cycles + bus.first_access_extra + bus.access_cycles * (ch.pub_accesses or ch.accesses)
     return off + (bus.retry_budget_of(ch) if retries else 0)
+
+
+def channel_span(plan: Plan, ch: Channel) -> int:
+    """The clocks after which ch's slots (multi-rate: its runs) repeat: the
+    cycle, or in a multi-rate plan its largest repetition's minor cycles."""
+    return ch.run_span or plan.cycle
+
+
+def channel_entries(plan: Plan, ch: Channel) -> int:
+    """The ROM entries of ch (single-rate: its slots per cycle)."""
+    return sum(1 for s in plan.slots if s.channel is ch)
 
 
 def import_extra_passes(ch: Channel, bus: Bus) -> int:
@@ -301,10 +314,12 @@ def place_slots(items, cycle, cap, sync_key=None, seed=1, budget=2500):
 
 
 def build_plan(system: System) -> Plan:
+    """The single-rate plan (steps 1-4 of docs/compiler.md "Plan")."""
     bus = system.bus
     for ch in system.channels:
         ch.accesses = transfer_accesses(ch)
         ch.slot_len = slot_length(ch, bus)
+        ch.fragments, ch.frag_words, ch.pub_accesses, ch.run_span = 1, 0, 0, 0
     limiter = min(system.channels, key=lambda c: (c.period_clocks, c.index))
     cycle = limiter.period_clocks
     tb = bus.time_bits
@@ -400,13 +415,35 @@ def redundancy_estimate(system: System) -> int:
     return entries - len(system.channels)
 
 
+def run_at(starts, span: int, i: int) -> int:
+    """The start of run i of a channel whose runs start at `starts` (sorted)
+    in every span clocks; i counts on past the end into the next spans."""
+    n = len(starts)
+    return starts[i % n] + span * (i // n)
+
+
 def channel_bounds(system: System, plan: Plan, ch: Channel) -> dict:
+    """The channel's bounds (docs/compiler.md "Plan").  A value in F > 1
+    fragments (multi-rate) takes F runs: the period is the longest span of
+    F runs, and a value published just after a first fragment's sampling
+    load is taken by the next first fragment, F runs on, and published by
+    that transfer's last fragment: 2F - 1 runs on."""
     bus = system.bus
-    gaps = channel_gaps(ch.slots, plan.cycle)
-    period = max(gaps)
+    span = channel_span(plan, ch)
+    gaps = channel_gaps(ch.slots, span)
+    f = ch.fragments
+    if f > 1:
+        n = len(ch.slots)
+        period = max(run_at(ch.slots, span, i + f) - ch.slots[i] for i in range(n))
+        spans = [run_at(ch.slots, span, i + 2 * f - 1) - ch.slots[i] for i in range(n)]
+    else:
+        period = max(gaps)
+        spans = gaps
     # A source value published during the Import costs the slot E extra
-    # passes (2 accesses each) before the destinations' Actual stores.
-    extra = import_extra_passes(ch, bus) * 2 * bus.access_cycles
+    # passes (2 accesses each) before the destinations' Actual stores (a
+    # fragmented value is published in the run of its last fragment, which
+    # has no Import).
+    extra = import_extra_passes(ch, bus) * 2 * bus.access_cycles if f == 1 else 0
     pub_ff = pub_offset(ch, bus, False) + extra
     pub_rt = pub_offset(ch, bus, True) + extra
     b = {
@@ -415,8 +452,8 @@ def channel_bounds(system: System, plan: Plan, ch: Channel) -> dict:
         "pub_offset_clocks": {"fault_free": pub_ff, "with_retries": pub_rt},
     }
     if ch.kind == "copy":
-        ff = max(g + pub_ff - bus.sample_offset for g in gaps)
-        rt = max(g + pub_rt - bus.sample_offset for g in gaps)
+        ff = max(g + pub_ff - bus.sample_offset for g in spans)
+        rt = max(g + pub_rt - bus.sample_offset for g in spans)
         b["latency_clocks"] = {"fault_free": ff, "with_retries": rt}
         b["age_bound_clocks"] = None
     else:

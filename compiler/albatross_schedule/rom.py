@@ -58,7 +58,8 @@ def encode_entry(slot: Slot) -> list:
         (FLAG_REQUEST if ch.request else 0) | (FLAG_MODE if ch.mode_info else 0)
     v = {("E0", "kind"): KIND_CODE[ch.kind], ("E0", "flags"): flags,
          ("E0", "id"): ch.id, ("E0", "nd"): len(ch.consumers), ("E0", "w"): ch.words,
-         ("E1", "start"): slot.start, ("E2", "length"): slot.length}
+         ("E1", "start"): slot.start, ("E2", "length"): slot.length,
+         ("E6", "base"): slot.base, ("E6", "rep"): slot.rep_log, ("E7", "frag"): slot.frag}
     if ch.kind == "copy":
         src = C.src_field
         v[(src.word, src.name)] = dest_field(ch.producer, ch.src_base)
@@ -70,7 +71,8 @@ def encode_entry(slot: Slot) -> list:
 def encode_rom(system: System, plan: Plan) -> list:
     words = _pack(C.header, {("H0", "magic"): ROM_MAGIC, ("H0", "ne"): len(plan.slots),
                              ("H0", "flags"): HFLAG_SYNC_MODE if system.sync_mode else 0,
-                             ("H1", "cycle"): plan.cycle, ("H2", "drop_run"): system.drop_run})
+                             ("H1", "cycle"): plan.cycle, ("H2", "drop_run"): system.drop_run,
+                             ("H2", "cluster"): plan.cluster_log})
     for s in plan.slots:
         words += encode_entry(s)
     words[C.crc_index] = C.check_word(words)
@@ -92,13 +94,14 @@ def encode_rom_modes(planned) -> list:
                              ("H0", "flags"): HFLAG_SYNC_MODE if system0.sync_mode else 0,
                              ("H1", "cycle"): plan0.cycle, ("H1", "next"): sum(1 << j for j in planned[0][2]),
                              ("H2", "drop_run"): system0.drop_run, ("H2", "table"): n, ("H2", "modes"): len(planned),
-                             ("H2", "start_end"): ranges[0][1]})
+                             ("H2", "start_end"): ranges[0][1], ("H2", "cluster"): plan0.cluster_log})
     for _, plan, _ in planned:
         for s in plan.slots:
             words += encode_entry(s)
     for (system, plan, nxt), (first, end) in zip(planned, ranges):
         words += _pack(C.mode, {("D0", "cycle"): plan.cycle, ("D0", "first"): first, ("D0", "end"): end,
-                                ("D1", "drop_run"): system.drop_run, ("D1", "next"): sum(1 << j for j in nxt)})
+                                ("D1", "drop_run"): system.drop_run, ("D1", "next"): sum(1 << j for j in nxt),
+                                ("D2", "cluster"): plan.cluster_log})
     words[C.crc_index] = C.check_word(words)
     return words
 

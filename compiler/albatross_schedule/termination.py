@@ -151,6 +151,12 @@ def publish_gap(system, plan, ch) -> int:
     destinations (controller clocks)."""
     bus = system.bus
     early = bus.fetch_cycles + bus.access_cycles * (first_publish_accesses(ch) - 1)
+    if getattr(plan, "multirate", False):
+        # its runs over its span; a value in F fragments is published at
+        # most once in F runs (the run of its last fragment)
+        runs, span, f = ch.slots, ch.run_span or plan.cycle, ch.fragments
+        return min(runs[(i + f) % len(runs)] + span * ((i + f) // len(runs)) + early - (runs[i] + ch.slot_len)
+                   for i in range(len(runs)))
     slots = sorted((s for s in plan.slots if s.channel is ch), key=lambda s: s.start)
     cyc = min_cycle(system, plan)
     d = None
@@ -229,13 +235,15 @@ def enforce(system, build_plan):
     while True:
         plan = build_plan(system)
         bad = violations(system, plan)
-        stuck = [(ch, who) for ch, who in bad if len(ch.slots) <= 1]
+        # its ROM entries (single-rate: its slots a cycle; multi-rate: ch.slots are its runs)
+        entries = {ch.index: sum(1 for s in plan.slots if s.channel is ch) for ch, _ in bad}
+        stuck = [(ch, who) for ch, who in bad if entries[ch.index] <= 1]
         for ch, who in bad:
-            if len(ch.slots) > 1:
+            if entries[ch.index] > 1:
                 # Aim at once at a slot count whose even spacing gives the D needed, then one less per round.
                 early = bus.fetch_cycles + bus.access_cycles * (first_publish_accesses(ch) - 1)
                 need = max(w[4] for w in who) + ch.slot_len - early
-                ch.max_slots = max(1, min(len(ch.slots) - 1, plan.cycle // max(need, 1)))
+                ch.max_slots = max(1, min(entries[ch.index] - 1, plan.cycle // max(need, 1)))
                 ch.spaced_for_termination = True
         if len(stuck) == len(bad):
             break
