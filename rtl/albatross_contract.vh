@@ -55,7 +55,7 @@ localparam ALB_ROM_D0_FIRST_LSB      = 16, ALB_ROM_D0_FIRST_W      =  8;
 localparam ALB_ROM_D0_END_LSB        = 24, ALB_ROM_D0_END_W        =  8;
 localparam ALB_ROM_D1_DROP_RUN_LSB   =  0, ALB_ROM_D1_DROP_RUN_W   =  8;
 localparam ALB_ROM_D1_NEXT_LSB       = 16, ALB_ROM_D1_NEXT_W       = 16;
-localparam ALB_ROM_D2_CLUSTER_LSB    =  0, ALB_ROM_D2_CLUSTER_W    =  4;
+localparam ALB_ROM_D2_CLUSTER_LSB    = 20, ALB_ROM_D2_CLUSTER_W    =  4;
 localparam ALB_ROM_PLACE_BOARD_LSB = 12, ALB_ROM_PLACE_BOARD_W = 4;
 localparam ALB_ROM_PLACE_BASE_LSB  = 0, ALB_ROM_PLACE_BASE_W  = 12;
 // E0.kind codes; flag bits within H0.flags and E0.flags

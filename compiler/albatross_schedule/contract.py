@@ -203,6 +203,8 @@ class Contract:
             cl, rep, base = self.field("H2", "cluster"), self.field("E6", "rep"), self.field("E6", "base")
             if self.field("D2", "cluster").width != cl.width or rep.width != cl.width:
                 p.append("H2.cluster, D2.cluster and E6.rep must be equally wide")
+            if self.field("D2", "cluster").lsb != cl.lsb:
+                p.append("D2.cluster must sit at H2.cluster's bits (the controller loads both through one path)")
             if base.width < cl.max:
                 p.append(f"E6.base ({base.width} bits) cannot hold a base below 2^{cl.max}")
             if self.field("E7", "frag").width < self.field("E0", "w").width:

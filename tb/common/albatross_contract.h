@@ -61,7 +61,7 @@ constexpr Field D0_FIRST{0, 16, 8};
 constexpr Field D0_END{0, 24, 8};
 constexpr Field D1_DROP_RUN{1, 0, 8};
 constexpr Field D1_NEXT{1, 16, 16};
-constexpr Field D2_CLUSTER{2, 0, 4};
+constexpr Field D2_CLUSTER{2, 20, 4};
 constexpr Field PLACE_BOARD{0, 12, 4};
 constexpr Field PLACE_BASE{0, 0, 12};
 // destination places of an entry, in order
