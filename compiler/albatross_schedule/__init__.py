@@ -84,6 +84,7 @@ Modules (standard library only):
   layout       RAM layout of every board's channel instances
   plan         slot lengths, the cycle, redundancy, placement, bounds
   multirate    multi-rate plans: minor cycle, repetitions, bases, fragments (when single-rate does not fit)
+  spare        a multi-rate plan's redundant entries in its spare time
   rejection    why a description has no multi-rate plan (a proof or the give-up) and what would fit
   modes        [[mode]]: several schedules, each planned over one RAM layout
   fourslot     the channel kinds: [layout.four_slot] of the contract, bytes, images, flag

@@ -316,9 +316,14 @@ def evaluate(system, plan, curves) -> dict:
             miss = max(0.0, 1.0 - q)
             m = runs_needed(miss, h.eps, need, limit=64 * n * need)
             period = period_at(ch.slots, span, m) if m is not None else None
+            # the longest span of runs in which a whole value (F fragments)
+            # gets through with the target probability: against max_period
+            mf = m if ch.fragments == 1 else runs_needed(miss, h.eps, ch.fragments, limit=64 * n * need)
+            transfer = period_at(ch.slots, span, mf) if mf is not None else None
             per.append({"slot_delivery_probability": q, "slot_miss_probability": miss,
                         "cycle_delivery_probability": 1.0 - miss ** n, "cycle_miss_probability": miss ** n,
-                        "slots_needed": m, "period_at_target_clocks": period})
+                        "slots_needed": m, "period_at_target_clocks": period,
+                        "transfer_period_at_target_clocks": transfer})
         out[ch.index] = per
     return out
 
@@ -417,7 +422,7 @@ def plan_for_hypothesis(system, plan_fn):
         worst = []
         for ch in system.channels:
             for d, x in enumerate(ev[ch.index]):
-                p = x["period_at_target_clocks"]
+                p = x["transfer_period_at_target_clocks"]
                 ratio = float("inf") if p is None else p / ch.period_clocks
                 worst.append((ratio, ch, d, x))
         worst.sort(key=lambda w: -w[0])
@@ -451,7 +456,7 @@ def plan_for_hypothesis(system, plan_fn):
         for ratio, ch, d, x in worst:
             if ratio <= 1.0:
                 continue
-            p = x["period_at_target_clocks"]
+            p = x["transfer_period_at_target_clocks"]
             got = ("never (a slot delivers with probability 0)" if p is None else
                    f"{p} clocks ({p * 1e6 / system.clock_hz:.4g} us)")
             msgs.append(

@@ -37,7 +37,7 @@ allows, ordered by the average load they give):
   4. the first minor cycle that fits gives the plan; then the spare time
      takes redundant entries (same repetition, the base farthest from the
      channel's others) round-robin by priority, then period, then id, as
-     the single-rate plan's redundant slots.
+     the single-rate plan's redundant slots (spare.py).
 A description that fits nowhere is rejected with its reason
 (rejection.py): a proof that the demand exceeds the bus, or, with OR-Tools
 installed, that the exact search finds no placement on the grid at the best
@@ -140,13 +140,39 @@ class Item:
     rep: int                        # r, a power of two (0: none fits the period)
 
 
-def item_for(ch: Channel, bus, m: int, f: int) -> Item:
+def item_for(ch: Channel, bus, m: int, f: int, runs=None) -> Item:
+    """ch's entry at minor cycle m in (about) f fragments: the largest
+    repetition whose runs(ch, F) runs (default F: one value) span at most
+    its period."""
     frag, n = fragment_shape(ch.words, f) if fragmentable(ch) else (0, 1)
+    k = runs(ch, n) if runs else n
     if ch.repetition:
-        rep = ch.repetition if ch.repetition * n * m <= ch.period_clocks else 0
+        rep = ch.repetition if ch.repetition * k * m <= ch.period_clocks else 0
     else:
-        rep = min(floor_pow2(ch.period_clocks // (n * m)), MAX_REP)
+        rep = min(floor_pow2(ch.period_clocks // (k * m)), MAX_REP)
     return Item(ch=ch, frag=frag, fragments=n, length=run_length(ch, bus, frag), rep=rep)
+
+
+def runs_for_faults(system: System):
+    """runs(ch, F): the runs one value of F fragments needs within its
+    period: F, or under a fault hypothesis the runs among which F deliver
+    with its target probability (faults.runs_needed, each run missing with
+    the whole transfer's probability at its retry budget: a fragment has
+    fewer accesses, so this is on the safe side)."""
+    h = system.faults
+    if h is None or h.rate == 0:
+        return None
+    from .faults import access_sequence, delivery_curve, runs_needed
+    cache = {}
+
+    def runs(ch, f):
+        if (ch.index, f) not in cache:
+            r = system.bus.retries_of(ch)
+            seqs = [access_sequence(ch, d) for d in range(len(ch.consumers))] or [access_sequence(ch, -1)]
+            q = min(delivery_curve(h, s, r, system.drop_run)[r] for s in seqs)
+            cache[(ch.index, f)] = runs_needed(max(0.0, 1.0 - q), h.eps, f, limit=64 * f) or (1 << 40)
+        return cache[(ch.index, f)]
+    return runs
 
 
 def pack(items: list, skip: int):
@@ -180,16 +206,6 @@ def pack(items: list, skip: int):
 def average_load(items: list, skip: int) -> float:
     """A minor cycle's load averaged over the cluster: N skip + sum (L - skip) / r."""
     return len(items) * skip + sum((it.length - skip) / it.rep for it in items)
-
-
-def append_entry(ends: list, length: int, rep: int, base: int, skip: int):
-    """One more entry after all others (the redundant ones): its start (the
-    latest end of its due classes) and the class ends after it."""
-    due = ends[base::rep]
-    start = max(due)
-    out = [max(e, start) + skip for e in ends]
-    out[base::rep] = [start + length] * len(due)
-    return start, out
 
 
 def check_timing(slots: list, minor: int, cluster: int, cap: int, skip: int, limit: int = 20) -> list:
@@ -260,7 +276,7 @@ def usable(system: System, m: int) -> int:
     return m - system.mode_window
 
 
-def initial_items(system: System, m: int, skip: int):
+def initial_items(system: System, m: int, skip: int, runs=None):
     """Each channel's entry at minor cycle m, split only as far as its slot
     must be to fit a minor cycle beside every other entry's skip cost;
     (items, None) or (None, the reason none fits)."""
@@ -268,11 +284,11 @@ def initial_items(system: System, m: int, skip: int):
     room = cap - skip * (len(system.channels) - 1)
     items = []
     for ch in system.channels:
-        it = item_for(ch, bus, m, 1)
+        it = item_for(ch, bus, m, 1, runs)
         f = 1
         while it.length > room and fragmentable(ch) and it.fragments < ch.words and it.rep:
             f = it.fragments * 2
-            it = item_for(ch, bus, m, f)
+            it = item_for(ch, bus, m, f, runs)
         if not it.rep:
             why = (f"its repetition {ch.repetition}" if ch.repetition else "one run a minor cycle")
             return None, (f"channel '{ch.name}': {why} in {it.fragments} fragment(s) of {m} clocks each "
@@ -297,11 +313,11 @@ class Attempt:
     reason: str = ""
 
 
-def attempt(system: System, m: int, skip: int, budget: list) -> Attempt:
+def attempt(system: System, m: int, skip: int, budget: list, runs=None) -> Attempt:
     """Plan at minor cycle m (steps 1-3 of the module's docstring);
-    budget[0]: the list schedulings left."""
+    budget[0]: the list schedulings left; runs: runs_for_faults."""
     cap = usable(system, m)
-    items, why = initial_items(system, m, skip)
+    items, why = initial_items(system, m, skip, runs)
     if items is None:
         return Attempt(m, cap, None, float("inf"), reason=why)
     a = Attempt(m, cap, items, average_load(items, skip))
@@ -323,7 +339,7 @@ def attempt(system: System, m: int, skip: int, budget: list) -> Attempt:
             it = items[i]
             if not fragmentable(it.ch) or it.fragments >= it.ch.words:
                 continue
-            new = item_for(it.ch, system.bus, m, 2 * it.fragments)
+            new = item_for(it.ch, system.bus, m, 2 * it.fragments, runs)
             if new.rep and new.length < it.length:
                 grown = (i, new)
                 break
@@ -335,74 +351,6 @@ def attempt(system: System, m: int, skip: int, budget: list) -> Attempt:
         a.load = average_load(items, skip)
     a.reason = a.reason or "the planner's work budget ran out"
     return a
-
-
-# ---------------------------------------------------------------------------
-# Redundant entries.
-
-def _target(used: list, rep: int) -> int:
-    """The residue (mod rep) in the middle of the largest cyclic gap between
-    the bases `used`: where one more run of the channel spreads its runs most."""
-    u = sorted(set(x % rep for x in used))
-    if not u:
-        return 0
-    gaps = [((u[(k + 1) % len(u)] - u[k]) % rep or rep, u[k]) for k in range(len(u))]
-    g, at = max(gaps, key=lambda x: (x[0], -x[1]))
-    return (at + g // 2) % rep
-
-
-def _near(target: int, rep: int):
-    """The residues mod rep by cyclic distance from target (then the lower)."""
-    yield target
-    for d in range(1, rep // 2 + 1):
-        for b in ((target - d) % rep, (target + d) % rep):
-            if b != target:
-                yield b
-        if 2 * d == rep:
-            break
-
-
-def add_redundancy(system: System, items: list, entries: list, ends: list, cap: int, skip: int, entry_cap):
-    """Redundant entries after the others, round-robin by priority, then
-    shortest period, then id (as plan.redundancy_round_robin): a channel
-    gets one more entry of its repetition, at the base nearest the middle
-    of the largest gap between its entries' bases that fits, while one fits
-    the minor cycles, its max_slots and the ROM (entry_cap).  A channel
-    that finds no room drops out (the minor cycles only fill up).
-    entries: [(item index, base, start, redundant)], appended to; returns
-    the class ends after them."""
-    by_ch = {it.ch.index: i for i, it in enumerate(items)}
-    count = {it.ch.index: 0 for it in items}
-    bases = {it.ch.index: [] for it in items}
-    for i, b, _, _ in entries:
-        count[items[i].ch.index] += 1
-        bases[items[i].ch.index].append(b)
-    rr = sorted((it.ch for it in items), key=lambda c: (-c.priority, c.period_clocks, c.index))
-    rr = [ch for ch in rr if ch.max_slots is None or count[ch.index] < ch.max_slots]
-    while rr and len(entries) < entry_cap:
-        for ch in list(rr):
-            if len(entries) >= entry_cap:
-                break
-            it = items[by_ch[ch.index]]
-            r = it.rep
-            top = max(ends)
-            found = None
-            if max(top, min(ends)) + skip <= cap:
-                for b in _near(_target(bases[ch.index], r), r):
-                    start = max(ends[b::r])
-                    if start + it.length <= cap and max(top, start) + skip <= cap:
-                        found = b
-                        break
-            if found is None:
-                rr.remove(ch)
-                continue
-            start, ends = append_entry(ends, it.length, r, found, skip)
-            entries.append((by_ch[ch.index], found, start, True))
-            count[ch.index] += 1
-            bases[ch.index].append(found)
-            if ch.max_slots is not None and count[ch.index] >= ch.max_slots:
-                rr.remove(ch)
-    return ends
 
 
 # ---------------------------------------------------------------------------
@@ -429,10 +377,11 @@ def build_multirate_plan(system: System) -> Plan:
     check_overrides(system)
     budget = [PACK_BUDGET]
     tries = []
+    runs = runs_for_faults(system)
     minors = candidate_minors(system)
     ranked = []
     for m in minors:
-        items, why = initial_items(system, m, skip)
+        items, why = initial_items(system, m, skip, runs)
         load = average_load(items, skip) if items else float("inf")
         ranked.append((load / max(1, usable(system, m)), -m, m))
     ranked.sort()
@@ -440,7 +389,7 @@ def build_multirate_plan(system: System) -> Plan:
     for _, _, m in ranked[:MAX_CANDIDATES]:
         if budget[0] <= 0:
             break
-        a = attempt(system, m, skip, budget)
+        a = attempt(system, m, skip, budget, runs)
         tries.append(a)
         if a.ok:
             found = a
@@ -454,6 +403,7 @@ def build_multirate_plan(system: System) -> Plan:
 def make_plan(system: System, a: Attempt, skip: int) -> Plan:
     bus, items, m, cap = system.bus, a.items, a.minor, a.cap
     entry_cap = getattr(system, "entry_cap", None) or MAX_ENTRIES
+    from .spare import add_redundancy
     entries = [(i, b, s, False) for i, b, s in a.placed]
     ends = add_redundancy(system, items, entries, list(a.ends), cap, skip, entry_cap)
     bus_allows = len(entries)
