@@ -33,6 +33,9 @@ The planners (PLANNERS: a new one plugs in by name):
   exact-grid    compiler/albatross_schedule/exact.py: CP-SAT on the plain
                 power-of-two grid, within --time-limit seconds per system:
                 accepted (a placement), rejected (a proof) or unknown
+  multi-rate    the compiler as it is (--no-redundancy): the single-rate plan
+                when it fits, else compiler/albatross_schedule/multirate.py;
+                a rejection's reason: demand or exact (proofs) or gave-up
 Each system's outcome, reason and time (process CPU seconds) per planner go
 to the JSON report with its seed; per demand level the counts and the time
 statistics; the console table and an SVG picture of the acceptance ratio.
@@ -217,6 +220,7 @@ def _first_line(msg: str) -> str:
 
 def plan_single_rate(data, opts) -> dict:
     system = parse_description(json.loads(json.dumps(data)), f"<seed {data['system']['name']}>")
+    system.planner = "single-rate"      # the single-rate plan alone (the compiler turns multi-rate when it fails)
     for ch in system.channels:          # albatross-schedule --no-redundancy
         ch.max_slots = 1
     t0 = time.process_time()
@@ -258,7 +262,31 @@ def plan_exact_grid(data, opts) -> dict:
     return out
 
 
-PLANNERS = {"single-rate": plan_single_rate, "exact-grid": plan_exact_grid}
+def plan_multi_rate(data, opts) -> dict:
+    """The compiler as it is, --no-redundancy: the single-rate plan when it
+    fits, else the multi-rate planner (albatross_schedule/multirate.py); a
+    rejection's reason is its kind: demand (a proof), exact (a proof on the
+    grid at the best minor cycles) or gave-up (no proof)."""
+    system = parse_description(json.loads(json.dumps(data)), f"<seed {data['system']['name']}>")
+    for ch in system.channels:
+        ch.max_slots = 1
+    t0 = time.process_time()
+    try:
+        system, plan, rom, rep = compile_system(system)
+    except ScheduleError as e:
+        return {"outcome": "rejected", "seconds": round(time.process_time() - t0, 4),
+                "reason": getattr(e, "kind", None) or "other", "detail": _first_line(e.messages[-1])}
+    except AssertionError as e:         # the self-check or verify_rom refused the plan
+        return {"outcome": "error", "seconds": round(time.process_time() - t0, 4), "reason": "internal error",
+                "detail": _first_line(str(e))}
+    frag = sum(1 for ch in system.channels if ch.fragments > 1)
+    return {"outcome": "accepted", "seconds": round(time.process_time() - t0, 4),
+            "reason": "multi-rate" if plan.multirate else "single-rate",
+            "detail": f"minor cycle {plan.cycle} clocks, cluster {plan.cluster}, {len(plan.slots)} entries, "
+                      f"{frag} channels in fragments"}
+
+
+PLANNERS = {"single-rate": plan_single_rate, "exact-grid": plan_exact_grid, "multi-rate": plan_multi_rate}
 # The planners' names in the table and the picture; a planner yet to come
 # keeps its place in the picture's legend.
 TITLES = {"single-rate": "single-rate (today's compiler)", "exact-grid": "exact search, plain grid (CP-SAT)",
@@ -286,6 +314,12 @@ def consistency(systems) -> list:
         if sr and ex and sr["outcome"] == "accepted" and ex["outcome"] == "rejected":
             problems.append(f"seed {s['seed']}: single-rate accepts it but the exact search proves it "
                             f"impossible ({ex['detail']})")
+        mr = o.get("multi-rate")
+        if mr and mr["outcome"] == "rejected" and s["demand"] < 1.0 and mr["reason"] not in ("demand", "exact",
+                                                                                             "gave-up"):
+            problems.append(f"seed {s['seed']}: multi-rate rejects it without a stated reason ({mr['detail']})")
+        if mr and sr and sr["outcome"] == "accepted" and mr["outcome"] != "accepted":
+            problems.append(f"seed {s['seed']}: the single-rate plan fits but the compiler rejects it")
         for name, r in o.items():
             if r["outcome"] == "error":
                 problems.append(f"seed {s['seed']}: {name}: {r['detail']}")
@@ -534,6 +568,10 @@ def smoke() -> int:
     check(sr["outcome"] == "rejected" and sr["reason"] == "slots exceed the cycle",
           f"hand-made feasible system: single-rate {sr['outcome']} ({sr['reason']}), expected rejected "
           "(slots exceed the cycle)")
+    mr = plan_multi_rate(data, Opts)
+    check(mr["outcome"] == "accepted" and mr["reason"] == "multi-rate",
+          f"hand-made feasible system: the compiler {mr['outcome']} ({mr['reason']}: {mr['detail']}), expected "
+          "accepted by the multi-rate planner")
     # 2. the hand-made infeasible one: a proof by search, not by the load bound.
     data = hand_infeasible()
     sys_ = parse_description(json.loads(json.dumps(data)), "<hand_infeasible>")
@@ -601,7 +639,7 @@ def main(argv=None) -> int:
     ap.add_argument("--systems", type=int, default=int(os.environ.get("SCHED_SYSTEMS") or DEFAULT_SYSTEMS),
                     help=f"systems per demand level (default SCHED_SYSTEMS or {DEFAULT_SYSTEMS})")
     ap.add_argument("--levels", default=",".join(map(str, LEVELS)), help="demand targets in percent")
-    ap.add_argument("--planners", default="single-rate,exact-grid", help=f"of {', '.join(PLANNERS)}")
+    ap.add_argument("--planners", default="single-rate,multi-rate,exact-grid", help=f"of {', '.join(PLANNERS)}")
     ap.add_argument("--time-limit", type=float, default=DEFAULT_TIME_LIMIT,
                     help=f"the exact search's seconds per system (default {DEFAULT_TIME_LIMIT:g})")
     ap.add_argument("--jobs", type=int, default=2, help="systems planned side by side (default 2)")
