@@ -22,8 +22,12 @@
 //     byte store per destination more than the three-buffer kind with known
 //     copies.  Buffers (1..4) at base + 1 + (b - 1) * S.  Failures, drop,
 //     tried (3 bits, 1..4) and cut-off as below; a Slot store that landed
-//     while its Actual store was never made leaves a complete value that a
-//     consumer may read (and take as New again later).
+//     while its Actual store was never made (a drop or a cut-off) leaves a
+//     complete value that a consumer may read: a caller must not give that
+//     value to a later Export again (a consumer could take it as New twice).
+//     albatross_export_endpoint never drops nor cuts off (every value is
+//     new); the controller's datapath (albatross_transfer) stores only
+//     Actual in such a case.
 //   * Access order, for the destinations d set in need_i, in index order:
 //     1. per d: if its Actual copy is unknown, load Actual (read back; one
 //        that names no buffer sets corrupt_o[d] and excludes no buffer); then

@@ -30,7 +30,12 @@
 //   * Export, to the destinations d in need in index order: per d, load its
 //     whole control word (both kinds: Actual with ReadLocked, so no copy of
 //     Actual is kept); an Actual equal to the buffer of a failed Actual
-//     store shows it landed: published, d leaves; else pick the buffer
+//     store shows it landed: published, d leaves (four-slot: only if the Slot
+//     byte names that buffer too); four-slot, a Slot byte naming the buffer of
+//     this value's Slot store (tried) while Actual does not shows the value
+//     complete and unpublished: store Actual := that buffer at once (S_DST_PUB,
+//     no word written again: the value is never completed twice), then d
+//     leaves, published; else pick the buffer
 //     (albatross_transfer_pick: neither Actual nor ReadLocked; four-slot
 //     from ReadLocked and the Slot bytes); then per word k: one source load
 //     (COPY; TIME: the slot time; STATUS: status_i at index_o) and one store
@@ -43,7 +48,8 @@
 //     (below 2: 2) times in a row drops that destination for the slot (the
 //     next access follows in the clock after the K-th failure).  Source
 //     accesses are retried until the deadline.  A failed Actual store
-//     remembers the buffer it tried (st_tried_i / tried_o).
+//     remembers the buffer it tried (st_tried_i / tried_o); four-slot, the
+//     Slot store remembers it (a cut-off or a drop may come before Actual).
 //   * Timing: every access begins in the clock after an edge where
 //     may_access_i is 1, in the clock after the previous ack (no idle bus
 //     clock inside a transfer); go_i's first access is on the bus in the
@@ -128,7 +134,8 @@ module albatross_transfer #(
                      S_DST_WORD = 4'd10,  // store word k - 1 to d
                      S_DST_TKN  = 4'd11,  // store taken_at to d
                      S_DST_SLOT = 4'd12,  // four-slot: store d's Slot byte
-                     S_DST_FIN  = 4'd13;  // store d's Actual
+                     S_DST_FIN  = 4'd13,  // store d's Actual
+                     S_DST_PUB  = 4'd15;  // four-slot: store d's Actual only (its value complete from a Slot store before)
 
     (* fsm_encoding = "none" *)
     reg [3:0]  state_q;
@@ -150,14 +157,19 @@ module albatross_transfer #(
 
     // The control word just loaded and the picks (albatross_transfer_pick).
     wire [2:0] a_byte, pick_l, pick;
-    wire       a_valid, a_zero, r_valid, r_zero, a_match;
+    wire       a_valid, a_zero, r_valid, r_zero, a_match, t_done;
     albatross_transfer_pick u_pick (
-        .dat_i(dat_i), .four_i(four_i), .ald_i(ald_q), .rl_i(rl_q),
+        .dat_i(dat_i), .four_i(four_i), .ald_i(ald_q), .rl_i(rl_q), .tried_i(tried_d),
         .a_byte_o(a_byte), .a_valid_o(a_valid), .a_zero_o(a_zero), .r_valid_o(r_valid), .r_zero_o(r_zero),
-        .a_match_o(a_match), .pick_l_o(pick_l), .pick_o(pick));
+        .a_match_o(a_match), .pick_l_o(pick_l), .pick_o(pick), .t_done_o(t_done));
     wire       ctrl_ld  = state_q == S_DST_CTRL;
-    wire       landed   = ack && ctrl_ld && a_valid && a_byte[2:0] == tried_d && tried_d != 3'd0;
-    wire       leave    = dst && (drop_now || landed);
+    wire       fin_st   = (state_q | 4'b0010) == S_DST_PUB;   // S_DST_FIN or S_DST_PUB: the Actual store
+    wire       t_act    = a_valid && a_byte[2:0] == tried_d;
+    // landed: Actual names the buffer tried (four-slot: and so does its Slot
+    // byte); complete: four-slot, the Slot byte does and Actual does not.
+    wire       landed   = ack && ctrl_ld && (four_i ? t_done && t_act : t_act && tried_d != 3'd0);
+    wire       complete = ack && ctrl_ld && t_done && !t_act;
+    wire       leave    = dst && (drop_now || landed || (ack && state_q == S_DST_PUB));
     wire [3:0] need_m   = need_q & ~(leave ? d_bit : 4'd0);
     // need_m != 0, written so that the read data (through leave) meets one
     // gate, not a mask and a 4-input OR: others in need, or d in need and staying.
@@ -174,7 +186,7 @@ module albatross_transfer #(
 
     // ------------------------------------------------------------ steps
     wire       adv      = ack || drop_now;
-    wire       ctrl_end = adv && ctrl_ld;
+    wire       ctrl_end = adv && (ctrl_ld ? !complete : state_q == S_DST_PUB);
     wire       last_wd  = k_q == words_i;
     wire       want     = state_q != S_WAIT && !has_next && left_any &&
                           (ctrl_end || (adv && state_q == S_DST_WORD && !last_wd));
@@ -190,7 +202,7 @@ module albatross_transfer #(
     // req: the main block below begins an access in this clock, branch by
     // branch (every begin_access call and the retry: keep it in step).
     wire       nrm      = !go_i && !(err_i && stb_q) && !(retry_q && !drop_q);
-    wire       dst_go   = has_next ||
+    wire       dst_go   = complete || has_next ||
                           (want ? (!copy_i && word_ok)
                                 : ((state_q == S_DST_WORD && last_wd) || state_q == S_DST_TKN || state_q == S_DST_SLOT));
     wire       req      = !rst_i && ((go_i && !copy_i) || (!go_i && !(err_i && stb_q) && retry_q && !drop_q) ||
@@ -303,7 +315,7 @@ module albatross_transfer #(
                 S_DST_CTRL: if (ack && ((!r_valid && !r_zero) || (!a_valid && !a_zero))) cor_q <= cor_q | d_bit;
                 default: ;
             endcase
-            if (landed || (ack && state_q == S_DST_FIN)) pub_q <= pub_q | d_bit;
+            if (landed || (ack && fin_st)) pub_q <= pub_q | d_bit;
             // The value is chosen: New (taken_at now) or Old.
             if (choose) begin
                 serve_q  <= need_now;
@@ -313,8 +325,12 @@ module albatross_transfer #(
             end
             // The next destination access (adv is 0 outside them).
             if (adv && dst) begin
-                if (!left_any) finish;
-                else if (has_next) begin_access(state_q, next_d);
+                if (complete) begin
+                    state_q <= S_DST_PUB;                  // d_q stays
+                    stb_q   <= 1'b1;
+                end
+                else if (!left_any) finish;
+                else if (has_next) begin_access(state_q == S_DST_PUB ? S_DST_CTRL : state_q, next_d);
                 else if (want) begin
                     if (copy_i) begin
                         if (may_access_i) begin
@@ -356,14 +372,15 @@ module albatross_transfer #(
     // albatross_transfer_dest, written with explicit enables: the events of
     // the current destination d_q, in the branch of the main block they belong to.
     wire       e_start  = (go_i && !copy_i) || (nrm && choose && need_now != 4'd0);
-    wire       e_errfin = !go_i && err_i && stb_q && state_q == S_DST_FIN;
+    // e_tried: d's Actual store failed, or (four-slot) its Slot store is on the bus.
+    wire       e_tried  = !go_i && stb_q && ((err_i && fin_st) || state_q == S_DST_SLOT);
     wire       e_ctrl   = nrm && adv && ctrl_ld;
-    wire       e_fin    = nrm && ack && state_q == S_DST_FIN;
+    wire       e_fin    = nrm && ack && fin_st;
     wire       no_tried = go_i || new_q;               // a fresh value: no failed store of it
     albatross_transfer_dest u_dest (
         .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start),
-        .st_tried_i(st_tried_i), .fresh_i(no_tried), .d_i(d_q), .err_fin_i(e_errfin),
-        .clr_tried_i((e_ctrl && ack) || e_fin), .set_buf_i(e_ctrl), .pick_i(pick),
+        .st_tried_i(st_tried_i), .fresh_i(no_tried), .d_i(d_q), .set_tried_i(e_tried),
+        .clr_tried_i((e_ctrl && ack && !complete) || e_fin), .set_buf_i(e_ctrl), .pick_i(t_done ? tried_d : pick),
         .buf_d_o(buf_d), .tried_d_o(tried_d), .tried_o(tried_o));
 
     // ------------------------------------------------------------ the word stored
@@ -381,7 +398,7 @@ module albatross_transfer #(
         .dst_i(dst), .src_act_i(state_q == S_SRC_ACT), .src_rl_i(state_q == S_SRC_RL),
         .src_word_i(state_q == S_SRC_WORD),
         .dst_word_i(state_q == S_DST_WORD), .dst_tkn_i(state_q == S_DST_TKN), .dst_slot_i(state_q == S_DST_SLOT),
-        .dst_fin_i(state_q == S_DST_FIN), .copy_i(copy_i), .time_kind_i(time_kind_i), .four_i(four_i),
+        .dst_fin_i(fin_st), .copy_i(copy_i), .time_kind_i(time_kind_i), .four_i(four_i),
         .words_i(words_i), .k_i(k_q), .d_i(d_q), .rl_i(rl_q[1:0]), .buf_i(buf_d), .ald_i(ald_q),
         .src_board_i(src_board_i), .src_base_i(src_base_i), .dst_board_i(dst_board_i), .dst_base_i(dst_base_i),
         .word_i(word_q), .slot_time_i(slot_time_i), .taken_i(st_taken_i),

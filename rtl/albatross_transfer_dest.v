@@ -1,14 +1,15 @@
 // albatross_transfer_dest -- the per-destination registers of the transfer
 // datapath (albatross_transfer): for each of the 4 destinations of an entry
-// the buffer the Export picked for it and the buffer of its failed Actual
-// store; and the view of the current destination d_i (a multiplexer per
-// field).
+// the buffer the Export picked for it and the buffer tried (of its failed
+// Actual store; four-slot, of its Slot store); and the view of the current
+// destination d_i (a multiplexer per field).
 // Rules:
 //   * start_i loads every destination's buffer tried from the state RAM
 //     (st_tried_i; cleared if fresh_i: a new value has no failed store).
 //   * Otherwise only destination d_i changes, on the enables of its events
-//     (the transfer's state machine makes them): err_fin_i (its Actual store
-//     failed: the buffer tried is its picked buffer); clr_tried_i (clears
+//     (the transfer's state machine makes them): set_tried_i (its Actual
+//     store failed, or its four-slot Slot store is on the bus: the buffer
+//     tried is its picked buffer); clr_tried_i (clears
 //     the buffer tried); set_buf_i (the picked buffer becomes pick_i).  When
 //     several are high in one clock the later in this list wins.
 //   * Timing: registered, in the clock after the enables; reset clears the
@@ -19,10 +20,10 @@ module albatross_transfer_dest (
     input  wire        clk_i,
     input  wire        rst_i,          // synchronous, active high
     input  wire        start_i,        // load all destinations from the state RAM
-    input  wire [11:0] st_tried_i,     // buffers of failed Actual stores, d at [3d +: 3]
+    input  wire [11:0] st_tried_i,     // buffers tried (failed Actual, four-slot Slot stores), d at [3d +: 3]
     input  wire        fresh_i,        // with start_i: no buffer tried
     input  wire [1:0]  d_i,            // the current destination
-    input  wire        err_fin_i,      // d's Actual store failed
+    input  wire        set_tried_i,    // d's buffer tried := its picked buffer
     input  wire        clr_tried_i,    // d: no buffer tried
     input  wire        set_buf_i,      // d's picked buffer := pick_i
     input  wire [2:0]  pick_i,
@@ -43,7 +44,7 @@ module albatross_transfer_dest (
                 end else if (start_i) begin
                     tried_q[3*g +: 3]  <= fresh_i ? 3'd0 : st_tried_i[3*g +: 3];
                 end else if (d_bit[g]) begin
-                    if (err_fin_i) tried_q[3*g +: 3] <= buf_d_o;
+                    if (set_tried_i) tried_q[3*g +: 3] <= buf_d_o;
                     if (clr_tried_i) tried_q[3*g +: 3] <= 3'd0;
                     if (set_buf_i) buf_q[3*g +: 3] <= pick_i;
                 end

@@ -16,6 +16,11 @@
 //     no buffer counts as none); four-slot, p = 1 - pair(ReadLocked) (not
 //     started: p = 1; not valid: 1 - pair(Actual), or p = 1), s = 1 - Slot_p,
 //     buffer 1 + 2p + s.
+//   * Destination, four-slot: t_done_o, the Slot byte of pair(tried_i) names
+//     tried_i's slot (tried_i 1..4: the buffer of an earlier Export's Slot
+//     store whose Actual store may not have been made; 0 none: no match).
+//     Only the producer writes the Slot bytes, and that Export chose the slot
+//     the byte did not name: a match shows its Slot store landed.
 `default_nettype none
 
 module albatross_transfer_pick (
@@ -23,6 +28,7 @@ module albatross_transfer_pick (
     input  wire        four_i,         // the four-slot kind
     input  wire [2:0]  ald_i,          // the source Actual loaded first (four-slot pick of L)
     input  wire [2:0]  rl_i,           // the ReadLocked copy / four-slot L (0 unknown)
+    input  wire [2:0]  tried_i,        // destination: the buffer of its Slot / Actual store tried (0 none)
     output wire [2:0]  a_byte_o,       // the Actual byte's buffer bits
     output wire        a_valid_o,      // Actual names a buffer
     output wire        a_zero_o,       // Actual is 0 (not started)
@@ -30,7 +36,8 @@ module albatross_transfer_pick (
     output wire        r_zero_o,       // ReadLocked is 0 (not started)
     output wire        a_match_o,      // source: the load shows the copy again (Old)
     output wire [2:0]  pick_l_o,       // source, four-slot: L from the second load
-    output wire [2:0]  pick_o          // destination: the buffer to write
+    output wire [2:0]  pick_o,         // destination: the buffer to write
+    output wire        t_done_o        // destination, four-slot: the Slot byte names tried_i (its Slot store landed)
 );
 
 `include "albatross_contract.vh"
@@ -79,6 +86,10 @@ module albatross_transfer_pick (
     wire       pk_p     = r_valid ? !r_pair : r_zero ? 1'b1 : a_valid ? !a_pair : 1'b1;
     wire       pk_s     = !(pk_p ? dat_i[S1_BIT] : dat_i[S0_BIT]);
     wire [2:0] pick     = four_i ? {1'b0, pk_p, pk_s} + 3'd1 : {1'b0, pick3};
+    // Destination, four-slot: Slot[pair(tried)] = slot(tried), decoded by
+    // tried's value (a register) as c_is_l above.
+    wire       t_done   = four_i && ((tried_i == 3'd1 && !dat_i[S0_BIT]) || (tried_i == 3'd2 && dat_i[S0_BIT]) ||
+                                     (tried_i == 3'd3 && !dat_i[S1_BIT]) || (tried_i == 3'd4 && dat_i[S1_BIT]));
 
     assign a_byte_o  = a_byte[2:0];
     assign a_valid_o = a_valid;
@@ -88,6 +99,7 @@ module albatross_transfer_pick (
     assign a_match_o = a_match;
     assign pick_l_o  = pick_l;
     assign pick_o    = pick;
+    assign t_done_o  = t_done;
 
 endmodule
 

@@ -32,12 +32,19 @@
 //                       1..3 / 1..4) or, four-slot, Slot_p (0 or 1);
 //   dst_publish_complete a store of Actual := b requests only after every
 //                       word of b (W value words and taken_at) was stored
-//                       (acked) in the same Export;
-//   dst_slot_complete   four-slot: likewise for Slot_p := s and buf(p, s);
+//                       (acked) in the same Export; four-slot, or b is WHOLE:
+//                       a Slot store of b landed after every word of b was
+//                       stored in its Export, and no word of b has been
+//                       requested since (a value completed by an earlier
+//                       Export whose Actual store was not made, published
+//                       now; PROTO = 0: no word of b stored in this Export);
+//   dst_slot_complete   four-slot: Slot_p := s only after every word of
+//                       buf(p, s) was stored (acked) in the same Export;
 //   dst_no_held_write   no store request to a word of the buffer the
 //                       consumer holds (confirmed lock / four-slot hold);
 //   dst_slot_first      four-slot: Actual := b only after the Slot store that
-//                       completes b was acked in the same Export;
+//                       completes b was acked in the same Export, or b is
+//                       WHOLE and Slot_pair(b) names it;
 //   dst_no_actual_write three-buffer: no store to the buffer Actual names
 //                       (the newest complete value);
 //   dst_readback_needed three-buffer, WHOLE_LOAD = 0: Actual is loaded (read
@@ -49,8 +56,11 @@
 //   dst_new_once        the watched source value (carry_i: the slot's Import
 //                       read it, falb_src) is published here at most once: a
 //                       landed Actual store that changes Actual is a
-//                       publication, and a consumer never sees one value as
-//                       New twice.
+//                       publication; and, four-slot, it is completed here at
+//                       most once: a landed Slot store that changes its Slot
+//                       byte is a completion (a four-slot consumer may read a
+//                       complete value before it is published).  So a
+//                       consumer never sees one value as New twice.
 // With PROTO = 0 (the harness then returns free load data) only the access
 // shapes are checked: dst_no_held_write, dst_no_actual_write,
 // dst_readback_needed and dst_new_once need the consumer's control word.
@@ -100,6 +110,8 @@ module falb_dst #(
     reg        unk_q;                      // three-buffer: the producer's Actual copy may be unknown
     reg        ld_q;                       // four-slot: a control load acked in this Export
     reg  [1:0] news_q;                     // publications of the watched value (saturating)
+    reg  [1:0] comps_q;                    // four-slot: completions of the watched value (saturating)
+    reg  [4:1] whole_q;                    // four-slot: buffer b is WHOLE (dst_publish_complete)
 
     assign ctrl_o = {7'd0, slot_q[1], 7'd0, slot_q[0], 5'd0, rl_q, 5'd0, act_q};
 
@@ -131,6 +143,7 @@ module falb_dst #(
     assign pub_o        = st_act && ack_i;
     wire          ld_ctrl = hit_o && !we_i && ctrl;
     wire          publish = lands && st_act && byte0[2:0] != act_q;   // Actual changes: a publication
+    wire          compl   = lands && st_slot && slot_s != slot_q[slot_p];  // four-slot: a Slot byte changes
 
     function full;                          // every word of buffer bb stored in this Export
         input [2:0]  bb;
@@ -147,6 +160,16 @@ module falb_dst #(
             endcase
             full = bb >= 3'd1 && bb <= 3'd4 && (got & want) == want;
         end
+    endfunction
+    function untouched;                     // no word of buffer bb stored in this Export
+        input [2:0]  bb;
+        input [15:0] done;
+        case (bb)
+            3'd1:    untouched = done[3:0] == 4'd0;
+            3'd2:    untouched = done[7:4] == 4'd0;
+            3'd3:    untouched = done[11:8] == 4'd0;
+            default: untouched = done[15:12] == 4'd0;
+        endcase
     endfunction
 
     // ------------------------------------------------------------ the consumer
@@ -174,6 +197,8 @@ module falb_dst #(
             unk_q  <= 1'b1;
             ld_q   <= 1'b0;
             news_q <= 2'd0;
+            comps_q <= 2'd0;
+            whole_q <= 4'd0;
         end else begin
             if (four_i) begin
                 case (op_i)
@@ -204,6 +229,11 @@ module falb_dst #(
             if (st_act && !ack_i) unk_q <= 1'b1;
             else if ((st_act || (ld_ctrl && sel_i[0])) && ack_i) unk_q <= 1'b0;
             if (publish && carry_i && news_q != 2'd3) news_q <= news_q + 2'd1;
+            if (compl && carry_i && comps_q != 2'd3) comps_q <= comps_q + 2'd1;
+            // WHOLE: set by a landed Slot store of a buffer stored whole in
+            // this Export; cleared by any store request to a word of it.
+            if (st && inb) whole_q[b] <= 1'b0;
+            else if (lands && st_slot && full(slot_b, done_q, s)) whole_q[slot_b] <= 1'b1;
         end
     end
 
@@ -218,19 +248,27 @@ module falb_dst #(
     end
     wire valid_act = byte0[7:3] == 5'd0 && byte0[2:0] >= 3'd1 && byte0[2:0] <= nbuf;
     wire [7:0] sbyte = slot_p ? byte3 : byte2;
+    // A four-slot late publication (Actual := b, b completed by an earlier
+    // Export): b WHOLE and named by its Slot byte.  PROTO = 0: the loads
+    // return free data, so the controller may take any buffer for complete;
+    // only the shape is checked: no word of b stored in this Export.
+    wire [2:0] am1b  = byte0[2:0] - 3'd1;                        // the Actual stored: {pair, slot}
+    wire       late_ok = four_i && byte0[2:0] >= 3'd1 && byte0[2:0] <= 3'd4 &&
+                         (PROTO == 0 ? untouched(byte0[2:0], done_q) : whole_q[byte0[2:0]] && slot_q[am1b[1]] == am1b[0]);
     always @* begin
         if (!init_q && !rst_i) begin
             dst_in_channel:       assert(!hit_o || ctrl || inb);
             dst_loads:            assert(!hit_o || we_i || ctrl);
             dst_ctrl_store:       assert(!(st && ctrl) || (st_act && valid_act) || (st_slot && sbyte[7:1] == 7'd0));
-            dst_publish_complete: assert(!st_act || full(byte0[2:0], done_q, s));
+            dst_publish_complete: assert(!st_act || full(byte0[2:0], done_q, s) || late_ok);
             dst_slot_complete:    assert(!st_slot || full(slot_b, done_q, s));
             dst_no_held_write:    assert(PROTO == 0 || !(st && inb) || b != held_o);
-            dst_slot_first:       assert(!(st_act && four_i) || cmp_q[byte0[2:0]]);
+            dst_slot_first:       assert(!(st_act && four_i) || cmp_q[byte0[2:0]] || late_ok);
             dst_no_actual_write:  assert(PROTO == 0 || !(st && inb && !four_i) || b != act_q);
             dst_readback_needed:  assert(PROTO == 0 || WHOLE_LOAD != 0 || !(ld_ctrl && !four_i && sel_i[0]) || unk_q);
             dst_one_load:         assert(!(ld_ctrl && (four_i || WHOLE_LOAD != 0)) || !ld_q);
-            dst_new_once:         assert(PROTO == 0 || !(publish && carry_i) || news_q == 2'd0);
+            dst_new_once:         assert(PROTO == 0 || ((!(publish && carry_i) || news_q == 2'd0) &&
+                                                        (!(compl && carry_i) || comps_q == 2'd0)));
         end
     end
 `endif

@@ -38,6 +38,7 @@ FCTRL_NEG := \
     import_no_readlocked:src_no_torn \
     never_delivered:dst_new_once \
     forget_landed:dst_new_once \
+    forget_slot4:dst_new_once \
     bad_index:dst_ctrl_store|dst_in_channel \
     wrong_lane:dst_ctrl_store
 # Each mutant is formal/ctrl/mutants/VARIANT.sed, an edit of the controller
@@ -47,7 +48,7 @@ FCTRL_MUTANTS := $(foreach n,$(FCTRL_NEG),ctrl:$(call neg_field,$(n),1):$(call f
 # The negatives whose counterexample needs two slots or more (a value published
 # twice, a reader overtaken by three Exports) take longer than make test allows:
 # make formal-slow runs them.
-FCTRL_DEEP := new_unstored old_by_actual never_delivered forget_landed ignore_rl4
+FCTRL_DEEP := new_unstored old_by_actual never_delivered forget_landed forget_slot4 ignore_rl4
 # make test keeps one negative per property (the quickest); the other mutants
 # caught by a property make test already breaks also run with make test-slow.
 FCTRL_SECOND := publish_early same_slot4 skip_confirm wrong_slot import_no_readlocked wrong_lane
