@@ -385,13 +385,14 @@ SECTIONS["compile-time"] = compile_time
 
 
 def schedulability():
-    """Acceptance per bus demand: today's single-rate plan against the exact
-    search on the power-of-two grid (make bench-schedulability)."""
+    """Acceptance per bus demand: today's single-rate plan, the compiler with
+    its multi-rate planner, and the exact search on the power-of-two grid
+    (make bench-schedulability)."""
     r = load("schedulability.json")
     if not r:
         missing("schedulability.json", "make bench-schedulability")
     names = r["planners"]
-    head = {"single-rate": "single-rate (today)", "exact-grid": "exact grid"}
+    head = {"single-rate": "single-rate (today)", "exact-grid": "exact grid", "multi-rate": "multi-rate (the compiler)"}
     proofs = ("slot", "pair", "load", "search", "finer", "period")
 
     def cpu(s):
@@ -406,12 +407,17 @@ def schedulability():
             row.append(e["unknown"])
             why = e["rejected_why"]
             row.append(", ".join(f"{k} {why[k]}" for k in proofs if why.get(k)) or "-")
+        if "multi-rate" in names:
+            why = lv["multi-rate"]["rejected_why"]
+            row.append(", ".join(f"{k} {why[k]}" for k in sorted(why)) or "-")
         row += [cpu(lv[p]["seconds"]) for p in names]
         row.append(f"{lv['redraws']['ram-overflow']}")
         rows.append(row)
     cols = ["demand %", "systems"] + [f"{head.get(p, p)} accepted" for p in names]
     if "exact-grid" in names:
         cols += ["exact: unknown", "exact: proofs of rejection"]
+    if "multi-rate" in names:
+        cols += ["multi-rate: reasons of rejection"]
     cols += [f"{head.get(p, p)} CPU s, median (max)" for p in names] + ["redrawn: RAM overflow"]
     seeds = [s["seed"] for s in r["systems"]]
     return (table(cols, rows)
