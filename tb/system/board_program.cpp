@@ -34,6 +34,7 @@ int usage(const char *why)
                  "                 [--fault-clocking access|clock] [--land-actual P] [--land-kind 3|1|13]\n"
                  "                 [--require-landed-same 1] [--producer-interval CH:CLOCKS[:BURST]]\n"
                  "                 [--producer-stop CH|all:CYCLE] [--stretch-export CH:CLOCKS]\n"
+                 "                 [--require-late-publication CH] [--require-skipped CH]\n"
                  "                 [--stretch-import CH:BOARD:CLOCKS] [--dead-board B --dead-at C]\n"
                  "                 [--corrupt-entry K] [--flip-rom-bit WORD:BIT] [--rom FILE] [--report FILE] [--label NAME]\n"
                  "                 [--ages FILE] [--handoff-watchdog S] [--cpu-start C]\n"
@@ -186,6 +187,8 @@ int parse_options(int argc, char **argv, Options &o)
         else if (a == "--land-actual" && num && x >= 0 && x <= 1) o.land_actual = x;
         else if (a == "--land-kind" && num && (x == 1 || x == 3 || x == 13)) o.land_kind = static_cast<int>(x);
         else if (a == "--require-landed-same" && num) o.require_landed_same = x != 0;
+        else if (a == "--require-late-publication") o.require_late = v;
+        else if (a == "--require-skipped") o.require_skipped.push_back(v);
         else if (a == "--producer-interval") {
             char name[64] = {};
             unsigned long long clk = 0, burst = 1;

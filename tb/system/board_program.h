@@ -31,6 +31,11 @@ struct Options {
     int land_kind = 3;                           // the forced kind: 3 (answer lost), 1 (err after
                                                  // performing), 13 (alternately 3 and 1)
     bool require_landed_same = false;            // fail unless a later slot carried a landed value
+    std::string require_late;                    // --require-late-publication CH: fail unless CH's
+                                                 // controller published a four-slot value in a later
+                                                 // slot than the Slot store that completed it
+    std::vector<std::string> require_skipped;    // --require-skipped CH...: fail unless a value of CH was
+                                                 // skipped and its latency measured (a later one arrived)
     std::string slow_channel;                    // --producer-interval CH:CLOCKS[:BURST]: channel CH's
     uint64_t slow_interval = 0;                  // producer exports every CLOCKS clocks
     uint64_t slow_burst = 1;                     // ... BURST values back to back

@@ -144,6 +144,7 @@ void SystemChecker::on_access(int board, const Access &a)
         if (a.req.we && buffer) in->writes[buffer].push_back(a.serve_cycle);
         // A source's producer begins an Export with its load of the control word.
         if (!a.req.we && control && in->dest < 0) src_[in->chan].exporting = true, src_[in->chan].overtaken = false;
+        if (!a.req.we && control && in->four_slot && in->dest >= 0) dst_[in->chan][in->dest].loaded = true;
         if (a.req.we && control && (a.req.sel & 1u)) {
             uint8_t actual = static_cast<uint8_t>(a.req.wdata);
             // A four-slot source's value is complete, and may be taken, from
@@ -175,6 +176,7 @@ void SystemChecker::on_access(int board, const Access &a)
                               plan_.channels[in->chan].name.c_str(), pair, slot);
                 violation(DEFINITE, m);
             } else {
+                dst_[in->chan][in->dest].loaded = false;
                 dest_published(*in, a.serve_cycle, static_cast<uint8_t>(ALB_FS_BUFFER(pair, slot)));
             }
         }
@@ -400,6 +402,7 @@ void SystemChecker::measure(Instance &in, const DestPub &p, const DestPub &prev,
             st.latency_max = std::max(st.latency_max, lat);
             st.latency_sum += lat;
             ++st.latency_n;
+            if (d.pending < p.seq) ++st.latency_skipped;
             if (lat > bound_retry) ++st.over_retry_bound;
             if (lat > bound) {
                 ++st.latency_over;
@@ -458,6 +461,7 @@ void SystemChecker::dest_actual_stored(Instance &in, uint64_t cycle, uint8_t buf
         if (d.pubs[i].buffer != buffer) continue;
         if (d.pubs[i].pub_cycle != ~0ull) return;
         d.pubs[i].pub_cycle = cycle;
+        if (d.loaded) ++stats[in.chan].dests[in.dest].late_publications;
         size_t j = i;                       // the publication it replaces
         while (j > 0 && d.pubs[--j].pub_cycle == ~0ull) {}
         measure(in, d.pubs[i], d.pubs[j], j == 0, cycle);

@@ -125,6 +125,8 @@ public:
     struct DestStats {
         uint64_t publications = 0, imports = 0, imports_new = 0;
         uint64_t latency_max = 0, latency_sum = 0, latency_n = 0, latency_over = 0;
+        uint64_t latency_skipped = 0;                       // of latency_n: values skipped (never published
+                                                            // here), measured at a newer one's publication
         uint64_t over_retry_bound = 0;                      // beyond the with-retries bound too
         uint64_t max_age_seen = 0, last_age_seen = 0;       // by the consumer, via taken_at
         uint64_t max_taken_minus_publish = 0;               // time/position correlation
@@ -135,6 +137,9 @@ public:
                                                             // carrying the same source value)
         uint64_t landed_same_read = 0;                      // ... whose consumer had already read it New
         uint64_t max_overtakes = 0;                         // most publications here during one Import
+        uint64_t late_publications = 0;                     // four-slot: an Actual store that publishes a value
+                                                            // completed before the controller's last load of the
+                                                            // control word (its Slot store landed in an earlier slot)
         uint64_t imports_overtaken4 = 0;                    // Imports overtaken by 4 or more publications
         uint64_t fresh_judged = 0;                          // source values newest for longer than the bound
         uint64_t fresh_late = 0;                            // ... not published here within it
@@ -177,6 +182,7 @@ private:
         uint64_t new_seq = ~0ull;          // consumer: the source value of its last New read (copy
                                            // channels, publications after the image; ~0: none)
         bool unanswered = false;           // the last Actual store was performed, its ack not seen
+        bool loaded = false;               // four-slot: a controller control load since its last Slot store
         uint64_t unanswered_cycle = 0;     // ... performed at this cycle
         uint64_t reached = 0;              // copy: the newest source value published here (Actual store)
         uint64_t fresh_seq = 0;            // freshness: the source value judged next ...

@@ -19,6 +19,12 @@
 //             [--require-landed-same 1]           fail unless a later slot carried the value a
 //                                                 destination holds from a landed store whose
 //                                                 answer was lost, after its consumer read it
+//             [--require-late-publication CH]     fail unless the controller published a value of
+//                                                 four-slot channel CH with an Actual store in a
+//                                                 later slot than the Slot store that completed it
+//             [--require-skipped CH]              fail unless a value of channel CH was skipped
+//                                                 (never published at a destination) and its
+//                                                 latency measured when a newer one arrived
 //             [--producer-interval CH:CLOCKS[:BURST]]  channel CH's producer exports every CLOCKS
 //                                                 clocks (slower than its slots: later slots
 //                                                 carry the same source value), BURST values
@@ -344,6 +350,28 @@ int main(int argc, char **argv)
                       static_cast<unsigned long long>(same_later), static_cast<unsigned long long>(same_read));
         failures.push_back(m);
     }
+    // --require-late-publication / --require-skipped: the scenario happened on channel CH.
+    auto require = [&](const std::string &ch, uint64_t SystemChecker::DestStats::*field, const char *what) {
+        if (ch.empty()) return;
+        uint64_t n = 0;
+        bool known = false;
+        for (size_t i = 0; i < plan.channels.size(); ++i) {
+            if (plan.channels[i].name != ch) continue;
+            known = true;
+            for (const SystemChecker::DestStats &ds : chk.stats[i].dests) n += ds.*field;
+        }
+        std::printf("  %s: %s: %llu\n", ch.c_str(), what, static_cast<unsigned long long>(n));
+        if (!known || n == 0) {
+            std::snprintf(m, sizeof m, "%s: expected at least one %s, got %s", ch.c_str(), what,
+                          known ? "none" : "no such channel in the plan");
+            failures.push_back(m);
+        }
+    };
+    require(o.require_late, &SystemChecker::DestStats::late_publications,
+            "late publication (an Actual store of a value completed by a Slot store in an earlier slot)");
+    for (const std::string &ch : o.require_skipped)
+        require(ch, &SystemChecker::DestStats::latency_skipped,
+                "skipped value (never published at a destination) whose latency was measured");
     std::string fresh_json;   // freshness scenarios (fresh_scenario.h)
     fresh_report(plan, o, chk, fault_free, failures, fresh_json);
     if (g_stretch.chan >= 0) {
@@ -412,7 +440,7 @@ int main(int argc, char **argv)
                         static_cast<unsigned long long>(ds.publications), static_cast<unsigned long long>(ds.imports),
                         static_cast<unsigned long long>(ds.latency_max), static_cast<unsigned long long>(c.latency), ratio,
                         static_cast<unsigned long long>(ds.latency_over), static_cast<unsigned long long>(ds.last_age_seen));
-            char b[900];
+            char b[1100];
             std::snprintf(b, sizeof b,
                           "%s{\"channel\": \"%s\", \"kind\": \"%s\", \"to_board\": %d, \"exports\": %llu, \"publications\": %llu, "
                           "\"imports\": %llu, \"imports_new\": %llu, \"latency_max\": %llu, \"latency_mean\": %.1f, "
@@ -420,7 +448,7 @@ int main(int argc, char **argv)
                           "\"delivered_within_bound\": %.5f, \"last_age_seen\": %llu, \"max_age_seen\": %llu, "
                           "\"max_taken_minus_published\": %llu, \"period_bound\": %llu, \"landed_unanswered\": %llu, "
                           "\"landed_same_later\": %llu, \"landed_same_read\": %llu, \"max_overtakes\": %llu, "
-                          "\"imports_overtaken4\": %llu}",
+                          "\"imports_overtaken4\": %llu, \"late_publications\": %llu, \"latency_skipped\": %llu}",
                           chans.size() > 1 ? ", " : "", c.name.c_str(), c.kind.c_str(), c.dests[d].board,
                           static_cast<unsigned long long>(cs.exports), static_cast<unsigned long long>(ds.publications),
                           static_cast<unsigned long long>(ds.imports), static_cast<unsigned long long>(ds.imports_new),
@@ -435,7 +463,9 @@ int main(int argc, char **argv)
                           static_cast<unsigned long long>(ds.landed_same_later),
                           static_cast<unsigned long long>(ds.landed_same_read),
                           static_cast<unsigned long long>(ds.max_overtakes),
-                          static_cast<unsigned long long>(ds.imports_overtaken4));
+                          static_cast<unsigned long long>(ds.imports_overtaken4),
+                          static_cast<unsigned long long>(ds.late_publications),
+                          static_cast<unsigned long long>(ds.latency_skipped));
             chans += b;
             // A dead board: consumers of its channels must see the age grow;
             // channels that do not involve it keep their fault-free bound, live

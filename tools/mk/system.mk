@@ -293,6 +293,42 @@ test-system-negative-four-slot-overtaken: $(SYS_DIR)/mutant-fs_ignore_readlocked
 	@tools/run_test.sh system-negative-four-slot-overtaken $< --plan $(SYS_RIGID) --seed $(SEED) --cycles $(SYS_CYCLES) \
 	    --label system-negative-four-slot-overtaken $(SYS_OVERTAKE) --expect-caught-by definite_results
 
+# A four-slot value is never completed twice: RadarMap four-slot (the plan of
+# system-four-slot-copy) with a slow producer (every 3000 clocks, longer than
+# a cycle: later slots carry the same value) at 5 % faults.  A slot cut off or
+# dropped after its Slot store landed and before its Actual store leaves the
+# value complete and unpublished; the next slot must store only Actual (a
+# late publication), never write the value again into another buffer.  The
+# run fails on no late publication of RadarMap; the duplicate-publication
+# check (duplicate_new) and the consumers' new_twice guard the outcome.
+# Negative: the controller that never recognises the landed Slot store
+# (mutant forget_slot4) completes and publishes the value a second time.
+SYS_LATE := --fault-rate 0.05 --producer-interval RadarMap:3000
+TESTS += system-four-slot-late-publish system-negative-four-slot-late-publish
+test-system-four-slot-late-publish: $(SYS_BIN) $(SYS_FS)/tb_plan.txt
+	@$(call sys_run,four-slot-late-publish) --plan $(SYS_FS) $(SYS_LATE) --require-late-publication RadarMap
+test-system-negative-four-slot-late-publish: $(SYS_DIR)/mutant-forget_slot4/tb_system $(SYS_FS)/tb_plan.txt
+	@tools/run_test.sh system-negative-four-slot-late-publish $< --plan $(SYS_FS) --seed $(SEED) --cycles $(SYS_CYCLES) \
+	    --label system-negative-four-slot-late-publish $(SYS_LATE) --expect-caught-by duplicate_new
+
+# The four-slot copy plan without faults, so that every latency is judged
+# against the compiler's bound (under faults only the counts are kept): a
+# four-slot destination's latency is taken at its Actual store, and source
+# values superseded before a slot carried them (skipped) are measured at the
+# next publication.  Fails unless both four-slot channels had such a value.
+# Negatives: the bounds cut to 90 % (latency_bound must fire); a RadarMap
+# producer slower than its slots has no skipped value (the requirement fails).
+TESTS += system-four-slot-copy-nofault system-negative-four-slot-copy-latency system-negative-four-slot-copy-skipped
+test-system-four-slot-copy-nofault: $(SYS_BIN) $(SYS_FS)/tb_plan.txt
+	@$(call sys_run,four-slot-copy-nofault) --plan $(SYS_FS) --require-skipped RadarMap --require-skipped Position
+test-system-negative-four-slot-copy-latency: $(SYS_BIN) $(SYS_FS)/tb_plan.txt
+	@tools/run_test.sh system-negative-four-slot-copy-latency $< --plan $(SYS_FS) --seed $(SEED) --cycles 300000 \
+	    --label system-negative-four-slot-copy-latency --latency-scale 0.9 --expect-caught-by latency_bound
+test-system-negative-four-slot-copy-skipped: $(SYS_BIN) $(SYS_FS)/tb_plan.txt
+	@tools/run_test.sh system-negative-four-slot-copy-skipped $< --plan $(SYS_FS) --seed $(SEED) --cycles 300000 \
+	    --label system-negative-four-slot-copy-skipped --producer-interval RadarMap:3000 --require-skipped RadarMap \
+	    --expect-failure "RadarMap: expected at least one skipped value"
+
 # Freshness (tb/system/system_checker.h "freshness", system_freshness.cpp): a
 # source value that stays its source's newest for longer than the channel's
 # bound must have reached every destination within it, judged when the bound
