@@ -15,7 +15,7 @@ from .cgen import render_board_c, render_board_header, render_ram_hex
 from .description import load_description, load_toml, parse_description
 from .faults import plan_for_hypothesis
 from .layout import allocate_ram, verify_ram_layout
-from .model import Plan, ScheduleError, System
+from .model import Plan, ScheduleError, System, not_due_cost
 from .modes import mode_summary, plan_modes
 from .multirate import build_multirate_plan, check_timing, wants_multirate
 from .picture import render_modes_svg
@@ -38,8 +38,8 @@ def self_check(system: System, plan: Plan, rom: list, layout: dict):
             problems.append(f"channel {ch.name} has no slot")
         elif channel_bounds(system, plan, ch)["guaranteed_period_clocks"] > ch.period_clocks:
             problems.append(f"channel {ch.name}: guaranteed period exceeds max_period")
-    if plan.multirate:
-        problems += check_timing(plan.slots, plan.cycle, plan.cluster, plan.capacity, plan.skip_cost)
+    if plan.multirate:      # every minor cycle of the cluster, at the model's skip cost (not the plan's word)
+        problems += check_timing(plan.slots, plan.cycle, plan.cluster, plan.capacity, not_due_cost(system.bus))
     for ch, who in violations(system, plan):
         problems.append(f"channel {ch.name}: three-buffer Import over its bound at {', '.join(w[0] for w in who)}")
     if system.sync_mode and plan.slots[-1].start + plan.slots[-1].length + system.bus.poll_cycles > plan.cycle:

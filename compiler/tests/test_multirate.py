@@ -259,11 +259,18 @@ class Negatives(unittest.TestCase):
 
     def test_plan_made_without_the_skip_cost(self):
         """Planned as if an entry not due cost nothing: the entries of one
-        residue share windows back to back, which the model's skip cost breaks."""
+        residue share windows back to back, which the model's skip cost
+        breaks; the compiler's self-check refuses the plan."""
         with mock.patch.object(MR, "not_due_cost", lambda bus: 0):
-            s, plan, rom, rep = self.plan()
+            s = parse_description(json.loads(json.dumps(fast_beside_slow())), "<x>")
+            allocate_ram(s)
+            plan = MR.build_multirate_plan(s)
+            with self.assertRaises(AssertionError) as cm:
+                plan_of(fast_beside_slow(), redundancy=False)
+        self.assertIn("busy there until", str(cm.exception))
         skip = s.bus.fetch_cycles
         self.assertTrue(MR.check_timing(plan.slots, plan.cycle, plan.cluster, plan.capacity, skip))
+        rep = S.build_report(s, plan)
         self.assertTrue(timing_oracle(rep, skip))
 
 
