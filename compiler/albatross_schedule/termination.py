@@ -153,8 +153,12 @@ def publish_gap(system, plan, ch) -> int:
     early = bus.fetch_cycles + bus.access_cycles * (first_publish_accesses(ch) - 1)
     if getattr(plan, "multirate", False):
         # its runs over its span; a value in F fragments is published at
-        # most once in F runs (the run of its last fragment)
+        # most once in F runs, in the run of its last fragment, whose fewest
+        # accesses up to an Actual store are its words' loads and stores,
+        # taken_at and Actual (no Import)
         runs, span, f = ch.slots, ch.run_span or plan.cycle, ch.fragments
+        if f > 1:
+            early = bus.fetch_cycles + bus.access_cycles * (2 * (ch.words - (f - 1) * ch.frag_words) + 1)
         return min(runs[(i + f) % len(runs)] + span * ((i + f) // len(runs)) + early - (runs[i] + ch.slot_len)
                    for i in range(len(runs)))
     slots = sorted((s for s in plan.slots if s.channel is ch), key=lambda s: s.start)

@@ -402,6 +402,27 @@ class FaultHypothesis(unittest.TestCase, Checks):
         self.assertGreaterEqual(f["age_bound"]["at_target"]["clocks"], m["latency"]["with_retries"]["clocks"])
 
 
+class Termination(unittest.TestCase):
+    def test_publish_gap_of_a_fragmented_value(self):
+        """D of the 3 KB map's consumer: a value is published at most once in
+        F runs, in its last fragment's run, whose first Actual store comes
+        after that fragment's words (a load and a store each) and taken_at."""
+        data = fast_beside_map()
+        data["board"] = {"b": {"core": "picorv32"}}
+        s, plan, rom, rep = plan_of(data, redundancy=False)
+        m = next(c for c in rep["channels"] if c["name"] == "map")
+        f, w, frag = m["fragments"], m["words"], m["fragment_words"]
+        self.assertGreater(f, 1)
+        c, cl = rep["cycle"]["clocks"], rep["cluster"]["minor_cycles"]
+        runs = sorted(n * c + e["start"] for e in rep["entries_list"] if e["channel"] == "map"
+                      for n in range(cl) if n % e["repetition"] == e["base"])
+        ext = [x + k * c * cl for k in range(f + 1) for x in runs]
+        last = w - (f - 1) * frag
+        early = s.bus.fetch_cycles + s.bus.access_cycles * (2 * last + 1)
+        want = min(ext[i + f] + early - (runs[i] + m["slot_length"]) for i in range(len(runs)))
+        self.assertEqual(m["consumers"][0]["termination"]["D_clocks"], want)
+
+
 class Fragments(unittest.TestCase):
     def test_fragment_accesses_add_up_to_the_transfer(self):
         for layout in ("three_buffer", "four_slot"):
