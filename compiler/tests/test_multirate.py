@@ -362,6 +362,13 @@ class Overrides(unittest.TestCase, Checks):
         self.assertIn("its repetition 8 times the minor cycle", "\n".join(cm.exception.messages))
 
 
+    def test_position_synchronised_stays_single_rate(self):
+        chans = [dict(self.ROBOT[0], sync=True), dict(self.ROBOT[1], repetition=2)]
+        with self.assertRaises(ScheduleError) as cm:
+            plan_of(system("sync", chans, mode="position-synchronised"))
+        self.assertIn("needs the time-rigid time mode", "\n".join(cm.exception.messages))
+
+
 class Modes(unittest.TestCase):
     def test_a_mode_of_its_own_minor_cycle(self):
         chans = [chan("fast", 8, "a", ["b"], 50), chan("map", 3072, "a", ["b"], 50_000),
