@@ -27,13 +27,23 @@
 //                   that lane only), with a buffer 1..3 / 1..4;
 //   src_no_torn     no load of a word of the buffer the producer writes;
 //   src_wait_free   four-slot: at most two acked control-word loads in a
-//                   slot (the Import is wait-free: no loop on Actual).
+//                   slot (the Import is wait-free: no loop on Actual);
+//   src_fresh       actuality (the paper's fourth proof point): every buffer
+//                   word loaded (acked) in a slot is of a buffer holding the
+//                   value the control word named when the slot began
+//                   (slot_start_i; four-slot: 1 + 2 pair(Actual) +
+//                   Slot[pair(Actual)], or a value completed and not yet
+//                   published) or one completed since, not yet overwritten
+//                   (fresh_q): an Import that starts after the producer
+//                   completed a value returns it or a newer one, New or Old.
+//                   A load of the buffer the producer is writing is
+//                   src_no_torn's, not this one's.
 // The watched value (for the destinations' dst_new_once): the first
 // publication (four-slot: completion) with watch_i; carry_o marks an acked
 // load of a word of the buffer that holds it (until the producer begins to
 // overwrite that buffer).
-// With PROTO = 0 (the harness then returns free load data) src_no_torn,
-// which needs the producer's control word, is not checked.
+// With PROTO = 0 (the harness then returns free load data) src_no_torn and
+// src_fresh, which need the producer's control word, are not checked.
 // Outputs for covers: rl_store_o (a ReadLocked store acked), word_load_o (a
 // buffer word load acked).
 `default_nettype none
@@ -149,6 +159,24 @@ module falb_src #(
     end
     wire writing = busy_q && !comp_q;
 
+    // Freshness: fresh_q[b], buffer b holds the value named at the slot's
+    // start or one completed since (a begin takes its buffer out).  Before
+    // the first slot every buffer counts.
+    wire       cp   = act_q == 3'd3 || act_q == 3'd4;               // pair(Actual)
+    wire [2:0] cur  = four_i ? 3'd1 + {cp, 1'b0} + {2'b00, slot_q[cp]} : act_q;
+    wire [4:1] pend = four_i && busy_q && comp_q ? onehot(wb_q) : 4'd0;
+    wire [4:1] f_in = slot_start_i ? onehot(cur) | pend : fresh_q;
+    wire [4:1] f_cm = op_i == 2'd2 && busy_q && !comp_q ? onehot(wb_q) : 4'd0;      // completes WB
+    wire [4:1] f_bg = op_i == 2'd1 && !busy_q ? onehot(four_i ? fwb : wb_i) : 4'd0; // begins to write
+    reg  [4:1] fresh_q;
+    always @(posedge clk_i)
+        if (rst_i) fresh_q <= 4'hF;
+        else fresh_q <= (f_in | f_cm) & ~f_bg;
+    function [4:1] onehot;
+        input [2:0] x;
+        onehot = {x == 3'd4, x == 3'd3, x == 3'd2, x == 3'd1};
+    endfunction
+
 `ifdef FORMAL
     reg init_q = 1'b1;
     always @(posedge clk_i) init_q <= 1'b0;
@@ -167,6 +195,7 @@ module falb_src #(
                                            byte1[2:0] >= 3'd1 && byte1[2:0] <= nbuf));
             src_no_torn:    assert(PROTO == 0 || !(hit_o && !we_i && inb && writing && b == wb_q));
             src_wait_free:  assert(!(four_i && ld_ctrl) || nld_q < 2'd2);
+            src_fresh:      assert(PROTO == 0 || !(word_load_o && !fresh_q[b] && !(writing && b == wb_q)));
         end
     end
 `endif

@@ -20,6 +20,12 @@
 // falb_slot.v; Wishbone classic: formal/wb/fwb_master.v with OPT_ABORT, the
 // bus master withdraws a timed-out request) and
 //   bus_board   every request goes to the source's or a destination's board.
+// Actuality (the paper's fourth proof point) is falb_src's src_fresh, for
+// both kinds: an Import that starts (s_go) after the producer completed a
+// value returns that value or a newer one; an Old answer while a newer value
+// is there loads the older copy's words for the destinations in need, which
+// src_fresh refuses (negatives old_same_pair4 and old_same_pair3: an Import
+// that answers Old whenever Actual lies in the pair of its copy).
 // With F_SHAPE the load data are free and only the access shapes are checked
 // (the observers' PROTO = 0): the proof of the bus rules, the slot timing, the
 // retry and drop rule and every access's place and lanes, without the

@@ -15,7 +15,13 @@ FCTRL_SRC     := $(filter-out rtl/albatross_sequencer.v rtl/albatross_schedule_r
 FCTRL_DIR     := $(BUILD)/formal/sby/ctrl-rtl
 FSBY_RTL_ctrl := $(FCTRL_SRC) formal/ctrl/fseq_contract.v $(wildcard formal/alb/*.v)
 # The negatives: VARIANT:PROPERTY (the property that keeps the old mutant's
-# meaning; docs/verification.md has each one's intent).
+# meaning; docs/verification.md has each one's intent).  A four-slot Import
+# that reads a buffer other than buf(pair(Actual), Slot) (idx_actual,
+# wrong_slot) reads either the buffer being written (src_no_torn) or an older
+# value than the one announced (src_fresh): the solver may show either.
+# old_same_pair4 and old_same_pair3 (an Import answering Old on Actual's pair
+# alone) are src_fresh's: the four-slot one in make test (about 30 s), as
+# the fault the check was written for.
 FCTRL_NEG := \
     early_publish:dst_publish_complete \
     publish_early:dst_publish_complete \
@@ -28,19 +34,21 @@ FCTRL_NEG := \
     actual_first4:dst_slot_first \
     early_slot4:dst_slot_complete \
     extra_load4:dst_one_load \
-    idx_actual:src_no_torn \
+    idx_actual:src_no_torn|src_fresh \
     loop4:src_wait_free \
     new_unstored:dst_new_once \
     old_by_actual:dst_new_once \
     skip_confirm:src_no_torn \
     store_actual:src_store_rl \
-    wrong_slot:src_no_torn \
+    wrong_slot:src_no_torn|src_fresh \
     import_no_readlocked:src_no_torn \
     never_delivered:dst_new_once \
     forget_landed:dst_new_once \
     forget_slot4:dst_new_once \
     bad_index:dst_ctrl_store|dst_in_channel \
-    wrong_lane:dst_ctrl_store
+    wrong_lane:dst_ctrl_store \
+    old_same_pair4:src_fresh \
+    old_same_pair3:src_fresh
 # Each mutant is formal/ctrl/mutants/VARIANT.sed, an edit of the controller
 # file its '# target:' line names (CORE:VARIANT:FILE).
 fctrl_target  = $(notdir $(shell sed -n 's/^# target: *//p' formal/ctrl/mutants/$(1).sed))
@@ -51,7 +59,9 @@ FCTRL_MUTANTS := $(foreach n,$(FCTRL_NEG),ctrl:$(call neg_field,$(n),1):$(call f
 FCTRL_DEEP := new_unstored old_by_actual never_delivered forget_landed forget_slot4 ignore_rl4
 # make test keeps one negative per property (the quickest); the other mutants
 # caught by a property make test already breaks also run with make test-slow.
-FCTRL_SECOND := publish_early same_slot4 skip_confirm wrong_slot import_no_readlocked wrong_lane
+# (skip_confirm stays in make test: src_no_torn's own, idx_actual showing
+# either property.)
+FCTRL_SECOND := publish_early same_slot4 wrong_slot import_no_readlocked wrong_lane
 FCTRL_SLOW := $(FCTRL_DEEP) $(FCTRL_SECOND)
 fctrl_neg_spec = formal-ctrl-negative-$(call neg_field,$(1),1):ctrl:neg_$(call neg_field,$(1),1):$(call neg_field,$(1),2)
 # The covers vouch for the unbounded three/four proofs (formal-ctrl-pdr),
