@@ -10,8 +10,13 @@
 //     COPY with W = 0, TIME with W != 1, STATUS with W != 2*N_CHAN+1 (MODE:
 //     2); or the background check's bad mark.
 //   * Clock 2 (E2, length): E1 did not fit (start_bad_i), the length does
-//     not fit in TIME_BITS or is below MIN_LEN, or the slot starts before
-//     the previous slot's end.
+//     not fit in TIME_BITS or is below MIN_LEN, or a due entry (due_i)
+//     starts before the end of the previous slot that ran in this cycle (a
+//     valid, due entry's; prev_end_i: entries of disjoint due sets may share
+//     a window); or the entry's E6, read ahead into rep_i and
+//     base_i, has rep above the running mode's cluster (cluster_i) or above
+//     MAX_REP (the sequencer's count: CLUSTER_BITS, 0 without
+//     HAS_MULTIRATE), or base >= 2^rep.
 //   * Clock 3: the slot ends after the cycle (end_i > H1; end_i is the
 //     register clock 2 wrote, so no adder stands between the ROM's output
 //     and this compare).
@@ -26,7 +31,8 @@ module albatross_entry_check #(
     parameter N_CHAN     = 32,   // channel ids, 1..128
     parameter TIME_BITS  = 16,   // bits of time within a cycle, 4..31
     parameter MIN_LEN    = 17,   // shortest valid slot in clocks (fetch and deadline margin)
-    parameter HAS_ENTRY_CHECK = 1 // 1: the field checks; 0: only the background check's bad marks
+    parameter HAS_ENTRY_CHECK = 1, // 1: the field checks; 0: only the background check's bad marks
+    parameter MAX_REP    = 15    // the largest rep (E6) the sequencer counts, 0..15
 ) (
     input  wire [2:0]           step_i,       // FETCH clock 1..5 (others: no check)
     input  wire [31:0]          rom_i,        // the ROM word of this clock
@@ -40,8 +46,12 @@ module albatross_entry_check #(
     input  wire [TIME_BITS-1:0] start_i,      // E1
     input  wire                 start_bad_i,  // E1 did not fit in TIME_BITS
     input  wire [TIME_BITS-1:0] cycle_i,      // H1
-    input  wire [TIME_BITS:0]   prev_end_i,   // the previous valid slot's end
+    input  wire [TIME_BITS:0]   prev_end_i,   // the end of the previous slot run in this cycle
     input  wire [TIME_BITS:0]   end_i,        // start + length (E2's, from clock 3 on)
+    input  wire [3:0]           rep_i,        // E6's rep
+    input  wire [14:0]          base_i,       // E6's base
+    input  wire [3:0]           cluster_i,    // the running mode's cluster
+    input  wire                 due_i,        // the entry is due in this cycle
     output reg                  bad_o
 );
 
@@ -91,8 +101,19 @@ module albatross_entry_check #(
                           (e0_kind == ALB_KIND_TIME && e0_w != 12'd1) ||
                           (rom_i[EFLAG_MODE] && (e0_kind != ALB_KIND_STATUS || e0_w != 12'd2)) ||
                           (e0_kind == ALB_KIND_STATUS && e0_w != W_STATUS && !rom_i[EFLAG_MODE]);
+    // E6: rep <= cluster, rep <= MAX_REP, base < 2^rep: no base bit at or above
+    // rep (above[i]: a base bit at or above i).  MAX_REP 0 (no minor cycles):
+    // E6 must be 0.
+    reg  [15:0] above;
+    integer     bi;
+    always @* begin
+        above[15] = 1'b0;
+        for (bi = 14; bi >= 0; bi = bi - 1) above[bi] = above[bi+1] || base_i[bi];
+    end
+    wire        e6_bad  = MAX_REP == 0 ? (rep_i != 4'd0 || base_i != 15'd0) :
+                          (above[rep_i] || rep_i > cluster_i || (MAX_REP < 15 && !below({28'd0, rep_i}, MAX_REP + 1)));
     wire        e2_bad  = start_bad_i || rom_i[31:TB] != 0 || below({{(32-TB){1'b0}}, rom_i[TB-1:0]}, MIN_LEN) ||
-                          {1'b0, start_i} < prev_end_i;
+                          ({1'b0, start_i} < prev_end_i && due_i) || e6_bad;
     wire        end_bad = end_i > {1'b0, cycle_i};
     // base + span < 2^ADDR_WIDTH: the bits of each above ADDR_WIDTH are 0 and
     // the sum of the low ADDR_WIDTH bits has no carry out (a carry chain, no sum).

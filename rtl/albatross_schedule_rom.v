@@ -5,16 +5,18 @@
 //     simulation +rom=FILE overrides it), zero elsewhere; never reset.
 //   * One read a clock, registered: dat_o holds, from the next clock on, the
 //     word addressed in this one.  A main read (main_o) has priority: the
-//     header (header_i: step_i 0..3 read H0, H1, H2 and entry 0's E1), the
-//     clock S of a fetch (start_i: E0 of entry ent_i) and the fetch
-//     (fetch_i, step_i 1..5: E2, E3, E4, E5, then E1 of the next entry, of
-//     entry first_i, the mode's first, after the last, last_i) and the mode
-//     table's reads (mode_rd_i at mode_adr_i: only while no other main read
-//     runs).  In every other clock the word is the background check's
-//     (bg_adr_i, rtl/albatross_rom_check.v).
+//     header (header_i: step_i 0..3 read H0, H1, H2 and entry 0's E1),
+//     the clock S of a fetch (start_i: E0 of entry ent_i) and the fetch
+//     (fetch_i, step_i 1..6: E2, E3, E4, E5, then E1 of the next entry, of
+//     entry first_i, the mode's first, after the last, last_i; in clock 6
+//     E6 of entry ent_i, which the sequencer has moved on to that next
+//     entry), the mode table's reads (mode_rd_i at mode_adr_i) and E6 of
+//     entry ent_i for the mode load and for the header (e6_i; ent_i is 0 in
+//     the header), the last two only while no other main read runs.  In every other clock the word is the background
+//     check's (bg_adr_i, rtl/albatross_rom_check.v).
 //   * Addresses: entry k's word j is 4 + 8k + j = {k, 3'b100} + j (mod
-//     2^ROM_AW): E0, E2, E3 are {k, 1jj}; E4, E5 and the next E1 are
-//     {k + 1, 0jj / 101}, k + 1 from the sequencer (ent_inc_i): no adder.
+//     2^ROM_AW): E0..E3 are {k, 1jj}; E4..E7 are {k + 1, 0jj}, k + 1 from
+//     the sequencer (ent_inc_i): no adder.
 //   * Simulation only: +rom_upset_word=N +rom_upset_at=T flips bit 16 of
 //     word N when time_i = T (a run-time upset for the background check).
 `default_nettype none
@@ -35,6 +37,7 @@ module albatross_schedule_rom #(
     input  wire [7:0]        first_i,     // the mode's first entry (after the last)
     input  wire              mode_rd_i,   // a read of the mode table (rtl/albatross_mode_switch.v)
     input  wire [$clog2(ROM_WORDS)-1:0] mode_adr_i,
+    input  wire              e6_i,        // a read of E6 of entry ent_i (the mode load's, the header's)
     input  wire [$clog2(ROM_WORDS)-1:0] bg_adr_i,    // the background check's word
     output wire              main_o,      // a main read in this clock (the check's word waits)
     output wire [31:0]       dat_o
@@ -63,18 +66,20 @@ module albatross_schedule_rom #(
     end
 
     // ------------------------------------------------------------ address
-    wire              fetch_rom = fetch_i && step_i <= 3'd5;
-    wire              main_rom  = header_i || start_i || fetch_rom || mode_rd_i;
-    wire              adr_inc   = fetch_i && step_i >= 3'd3;             // E4, E5, next E1
+    wire              fetch_rom = fetch_i && step_i <= 3'd6;
+    wire              main_rom  = header_i || start_i || fetch_rom || mode_rd_i || e6_i;
+    wire              e6_rd     = (fetch_i && step_i == 3'd6) || e6_i;   // E6 of entry ent_i
+    wire              adr_inc   = (fetch_i && step_i >= 3'd3) || e6_i;  // E4, E5, next E1, E6
     /* verilator lint_off UNUSEDSIGNAL */
     wire [7:0]        ent_sel   = adr_inc ? ent_inc_i : ent_i;
     wire [7:0]        ent_wrap  = first_i;
-    wire              adr_wrap  = fetch_i && step_i >= 3'd5 && last_i;  // last entry: word 5
+    wire              adr_wrap  = fetch_i && step_i == 3'd5 && last_i;  // last entry: word 5
     /* verilator lint_on UNUSEDSIGNAL */
     reg  [2:0]        adr_lo;
     always @* begin
         adr_lo = 3'b100;                                             // E0 (start_i)
-        if (fetch_i)
+        if (e6_rd) adr_lo = 3'b010;                                  // E6 of ent_i: {ent_i + 1, 010}
+        else if (fetch_i)
             case (step_i)
                 3'd1:    adr_lo = 3'b110;                            // E2
                 3'd2:    adr_lo = 3'b111;                            // E3

@@ -42,6 +42,25 @@
 //     "Validation" lists, the slot order, the cycle end, a bad mark) gets
 //     no go_o and adds 1 to rom_errors, once per cycle; an IDLE entry gets
 //     no go_o.
+//   * Minor cycles (HAS_MULTIRATE): n_q counts the cycles, 0 in the first
+//     cycle after start-up or a mode switch (the boundaries that take a
+//     loaded mode), + 1 at every other boundary, modulo 2^CLUSTER_BITS: as
+//     2^c divides 2^CLUSTER_BITS, n_q mod 2^c is the contract's count (which
+//     wraps at 2^c, c the running mode's cluster) and n_q mod 2^rep its
+//     residue for every rep <= c.  An entry is due in a cycle when
+//     n mod 2^rep = base (E6); every entry, due or not, is fetched in every
+//     cycle exactly as above, and only a due one gets go_o: a non-due entry
+//     costs its fetch (clocks S .. S+6, no bus access, no rom_errors, no
+//     slot end for the order check), like an IDLE one.  The due test needs
+//     E6 from FETCH clock 1 on (the entry check) and in FETCH clock 5
+//     (go_q), so E6 is read ahead: entry 0's in the clock after the start-up
+//     pass (no start-up clock added), entry k's in FETCH clock 6 of the entry
+//     before it (the port is free there), the new mode's first entry's in the
+//     mode load; rep_q and base_q hold it until the next one is read.  The entry register ent_q moves on
+//     to the next entry in FETCH clock 5 (so that E6 of the next entry is
+//     {ent_q + 1, 010}: the ROM's one incrementer); last_q and ent0_q keep
+//     what the rest of the slot needs of the entry that runs.  HAS_MULTIRATE
+//     0: every entry is due (E6 must be 0, else the entry is invalid).
 //   * Deadline D = cycle start + start + length.  may_access_o is high in a
 //     clock c of a slot when an access put on the bus in clock c+1 ends
 //     before D even if it times out: c + 1 <= D - TIMEOUT - 2.  go_o and
@@ -71,7 +90,9 @@ module albatross_sequencer #(
     parameter HAS_ROM_RECHECK = 1, // 1: the background re-check of the ROM; 0: the start-up CRC only
     parameter HAS_ENTRY_CHECK = 1, // 1: the entry field checks at fetch; 0: none
     parameter CRC_BITS   = 4,    // bits of a ROM word the ROM check's CRC takes in a clock (albatross_rom_check)
-    parameter HAS_MODES  = 1     // 1: mode switches on request (albatross_mode_switch); 0: the start-up mode only
+    parameter HAS_MODES  = 1,    // 1: mode switches on request (albatross_mode_switch); 0: the start-up mode only
+    parameter HAS_MULTIRATE = 1, // 1: entries run in the minor cycles of their E6 (base, rep); 0: every entry in every cycle
+    parameter CLUSTER_BITS  = 15 // bits of the minor-cycle count: reps up to CLUSTER_BITS (1..15)
 ) (
     input  wire                    clk_i,
     input  wire                    rst_i,          // synchronous, active high
@@ -132,6 +153,7 @@ module albatross_sequencer #(
     generate
         if (NB < 1 || NB > 16 || ADDR_WIDTH < 3 || ADDR_WIDTH > ALB_ROM_PLACE_BASE_W || N_CHAN < 1 ||
             N_CHAN > 128 || ROM_WORDS < 12 || TIME_BITS < 4 || TIME_BITS > 31 || TIMEOUT < 2 || POLL < 2 ||
+            CLUSTER_BITS < 1 || CLUSTER_BITS > 15 ||
             ALB_ROM_HEADER_WORDS != 4 || ALB_ROM_ENTRY_WORDS != 8) begin : g_param_check
             albatross_sequencer_parameter_out_of_range u_error ();
         end
@@ -148,7 +170,8 @@ module albatross_sequencer #(
             ALB_ROM_E4_DST0_LSB != 0 || ALB_ROM_E4_DST1_LSB != 16 || ALB_ROM_E5_DST2_LSB != 0 ||
             ALB_ROM_E5_DST3_LSB != 16 || ALB_ROM_H0_MAGIC_W != 16 || ALB_ROM_H0_NE_W != 8 ||
             ALB_ROM_TIME_BITS < TIME_BITS || ALB_ROM_CRC_WORD != 3 || ALB_ROM_E1_START_LSB != 0 ||
-            ALB_ROM_E2_LENGTH_LSB != 0 || ALB_ROM_H1_CYCLE_LSB != 0 || ALB_ROM_H2_DROP_RUN_W != 8) begin : g_contract_check
+            ALB_ROM_E2_LENGTH_LSB != 0 || ALB_ROM_H1_CYCLE_LSB != 0 || ALB_ROM_H2_DROP_RUN_W != 8 ||
+            ALB_ROM_E6_BASE_W != 15 || ALB_ROM_E6_REP_W != 4) begin : g_contract_check
             albatross_sequencer_contract_mismatch u_error ();
         end
     endgenerate
@@ -173,7 +196,9 @@ module albatross_sequencer #(
     reg                start_bad_q;   // ... did not fit in TIME_BITS
     reg [TB:0]         end_q;         // start + length: the deadline D in rel
     reg [TB:0]         prev_end_q;    // the previous valid slot's end
-    reg [7:0]          ent_q;
+    reg [7:0]          ent_q;         // the entry fetched; from FETCH clock 6 on, the next one
+    reg                last_q;        // the entry that runs is its mode's last (from FETCH clock 6 on)
+    reg                ent0_q;        // the entry that runs is entry 0 (from FETCH clock 6 on)
     reg                bad_q;         // the entry being fetched is invalid
     reg                switched_q;    // the boundary of the last clock took a loaded mode
     reg [31:0]         since_q;       // the first clock of the running mode's first cycle
@@ -203,10 +228,16 @@ module albatross_sequencer #(
     wire [7:0]         ent_inc   = ent_q + 8'd1;
     wire               last_ent  = ent_inc == m_end;
     wire               h2_modes  = rom_q[ALB_ROM_H2_MODES_LSB +: ALB_ROM_H2_MODES_W] != 0;   // (H2 in header step 3)
+    wire               pass_done, crc_ok, mism_new, bad_mark;   // (the ROM check, below)
+    // E6 of entry 0 ({ent_q + 1, 010}, ent_q 0 since reset) is read in the
+    // clock after the start-up pass (its CRC compare; the check issues no read
+    // then) and taken in the first clock of the first cycle: the due test needs
+    // it from FETCH clock 1 on, so even an entry at start 0 has it in time.
+    wire               hdr_e6    = state_q == ST_CHECK && pass_done && crc_ok;
     albatross_schedule_rom #(.ROM_WORDS(ROM_WORDS), .ROM_FILE(ROM_FILE)) u_rom (
         .clk_i(clk_i), .time_i(time_q), .header_i(state_q == ST_HEADER && !hdr_last), .start_i(start_now),
         .fetch_i(state_q == ST_FETCH), .step_i(step_q), .ent_i(ent_q), .ent_inc_i(ent_inc), .last_i(last_ent),
-        .first_i(m_first), .mode_rd_i(mode_rd), .mode_adr_i(mode_adr),
+        .first_i(m_first), .mode_rd_i(mode_rd), .mode_adr_i(mode_adr), .e6_i(mode_e6_rd || hdr_e6),
         .bg_adr_i(bg_adr),
         .main_o(main_rom), .dat_o(rom_q));
 
@@ -216,7 +247,7 @@ module albatross_sequencer #(
     // (rtl/albatross_mode_switch.v); a request is loaded while the sequencer
     // waits for the cycle end, and the boundary waits for a load that has
     // begun (mode_hold).
-    wire               mode_rd, mode_e1, mode_hold, mode_commit;
+    wire               mode_rd, mode_e1, mode_hold, mode_commit, mode_first_ld, mode_e6_rd, mode_e6;
     // since: time_o in the first clock of a cycle whose boundary took a loaded
     // mode (the start-up's first cycle too: the header's load of mode 0)
     always @(posedge clk_i) begin
@@ -227,19 +258,50 @@ module albatross_sequencer #(
     wire [ROM_AW-1:0]  mode_adr;
     wire [7:0]         m_first, m_end, m_next_first, m_drop;
     wire [TB-1:0]      cycle_q;       // the running mode's cycle length (H1, or its descriptor's)
+    wire [3:0]         m_cluster;     // the running mode's cluster c (H2, or its descriptor's D2)
     albatross_mode_switch #(.ROM_AW(ROM_AW), .TIME_BITS(TB), .HAS_MODES(HAS_MODES)) u_mode (
         .clk_i(clk_i), .rst_i(rst_i), .hdr1_i(state_q == ST_HEADER && step_q == 3'd2),
         .hdr2_i(state_q == ST_HEADER && step_q == 3'd3), .ne_i(ne_q), .rom_i(rom_q),
         .req_i(mode_req_i), .req_mode_i(mode_req_mode_i), .idle_i(state_q == ST_CYCLE_END), .switch_i(new_cycle),
-        .read_o(mode_rd), .read_adr_o(mode_adr), .e1_o(mode_e1), .hold_o(mode_hold),
+        .read_o(mode_rd), .read_adr_o(mode_adr), .first_ld_o(mode_first_ld), .e6_rd_o(mode_e6_rd),
+        .e1_o(mode_e1), .e6_o(mode_e6), .hold_o(mode_hold),
         .reject_o(mode_reject_o), .commit_o(mode_commit), .mode_o(mode_o), .first_o(m_first), .end_o(m_end),
         .next_first_o(m_next_first),
-        .cycle_o(cycle_q), .drop_o(m_drop));
+        .cycle_o(cycle_q), .drop_o(m_drop), .cluster_o(m_cluster));
+
+    // ------------------------------------------------------------ minor cycles and the due test
+    // E6 of entry ent_q, read ahead (the header's step 4, FETCH clock 6, the
+    // mode load) and taken in the clock its word is in rom_q; the count n_q.
+    localparam CB = CLUSTER_BITS;
+    localparam MR = HAS_MULTIRATE != 0;
+    reg  [3:0]    rep_q;
+    reg  [14:0]   base_q;
+    reg  [CB-1:0] n_q;
+    reg           e6_hdr_q, e6_fetch_q;      // rom_q holds E6 read after the start-up pass / by FETCH clock 6
+    always @(posedge clk_i) begin
+        e6_hdr_q   <= !rst_i && hdr_e6;
+        e6_fetch_q <= !rst_i && state_q == ST_FETCH && step_q == 3'd6;
+        if (e6_hdr_q || e6_fetch_q || mode_e6) begin
+            rep_q  <= rom_q[ALB_ROM_E6_REP_LSB +: 4];
+            base_q <= rom_q[ALB_ROM_E6_BASE_LSB +: 15];
+        end
+    end
+    // due: the low rep bits of n and base agree (c[i]: bits 0 .. i-1 agree);
+    // an E6 the entry check rejects (rep above the cluster or CB, base >= 2^rep)
+    // never runs, whatever this says.
+    reg  [15:0]   agree;
+    integer       ai;
+    always @* begin
+        agree[0] = 1'b1;
+        for (ai = 1; ai < 16; ai = ai + 1)
+            agree[ai] = agree[ai-1] && (ai > CB || n_q[(ai > CB ? CB : ai) - 1] == base_q[ai-1]);
+    end
+    wire          due = !MR || agree[rep_q];
 
     // ------------------------------------------------------------ ROM check
     // The start-up CRC and the background re-check; in the clock S of a
     // fetch it reads the fetched entry's bad mark for FETCH clock 1.
-    wire pass_done, crc_ok, mism_new, bad_mark;   // pass_done: the clock after the start-up pass's last check
+    // (pass_done: the clock after the start-up pass's last check)
     albatross_rom_check #(.ROM_WORDS(ROM_WORDS), .HAS_ROM_RECHECK(HAS_ROM_RECHECK), .CRC_BITS(CRC_BITS)) u_rom_check (
         .clk_i(clk_i), .rst_i(rst_i), .learn_i(state_q == ST_CHECK), .bg_on_i(bg_on),
         .main_rom_i(main_rom), .last_word_i(last_word), .adr_o(bg_adr), .rom_dat_i(rom_q),
@@ -266,42 +328,44 @@ module albatross_sequencer #(
     wire [TB:0] e2_end  = {1'b0, start_q} + {1'b0, rom_q[TB-1:0]};
     wire        bad_now;
     albatross_entry_check #(.NB(NB), .ADDR_WIDTH(ADDR_WIDTH), .N_CHAN(N_CHAN), .TIME_BITS(TB),
-                            .MIN_LEN(MIN_LEN_I), .HAS_ENTRY_CHECK(HAS_ENTRY_CHECK)) u_entry_check (
+                            .MIN_LEN(MIN_LEN_I), .HAS_ENTRY_CHECK(HAS_ENTRY_CHECK),
+                            .MAX_REP(MR ? CB : 0)) u_entry_check (
         .step_i(step_q), .rom_i(rom_q), .ent0_i(ent_q == 8'd0), .smode_i(smode_q), .bad_mark_i(bad_mark),
         .kind_i(kind), .four_i(four), .nd_i(nd), .e3_i(span), .start_i(start_q), .start_bad_i(start_bad_q),
-        .cycle_i(cycle_q), .prev_end_i(prev_end_q), .end_i(end_q), .bad_o(bad_now));
+        .cycle_i(cycle_q), .prev_end_i(prev_end_q), .end_i(end_q), .rep_i(rep_q), .base_i(base_q),
+        .cluster_i(m_cluster), .due_i(due), .bad_o(bad_now));
 
     // ------------------------------------------------------------ control
     // rel is kept as rel + 1 (next_rel_q): each compare below reads a
     // register, with no incrementer in front of it.
     wire cycle_end  = next_rel_q >= {1'b0, cycle_q};  // rel >= H1 - 1 (late only if a slot overran: recover)
     wire poll_hit;     // a poll shows a new position (u_poll, below)
-    wire entry_over = (state_q == ST_FETCH && step_q == 3'd6 && (bad_q || kind == ALB_KIND_IDLE[1:0])) ||
+    wire entry_over = (state_q == ST_FETCH && step_q == 3'd6 && !go_now) ||     // invalid, IDLE or not due
                       (state_q == ST_TRANSFER && slot_done_i);
     assign new_cycle = (state_q == ST_CYCLE_END && (cycle_end || poll_hit) && !mode_hold) ||
-                      (entry_over && last_ent && cycle_end && !mode_hold) ||   // the last slot ends at H1 - 1
+                      (entry_over && last_q && cycle_end && !mode_hold) ||     // the last slot ends at H1 - 1
                       (state_q == ST_CHECK && pass_done && crc_ok);
     // The sync-mode poll (rtl/albatross_sync_poll.v): entry 0's place, taken
     // in its fetch's last clock, is loaded every POLL clocks while the
     // sequencer waits for the cycle end.
     albatross_sync_poll #(.ADDR_WIDTH(ADDR_WIDTH), .POLL(POLL), .HAS_SYNC(HAS_SYNC)) u_poll (
         .clk_i(clk_i), .rst_i(rst_i),
-        .capture_i(state_q == ST_FETCH && !(step_q >= 3'd1 && step_q <= 3'd5) && ent_q == 8'd0),
+        .capture_i(state_q == ST_FETCH && !(step_q >= 3'd1 && step_q <= 3'd5) && ent0_q),
         .sync_i(!bad_q && sflag), .board_i(sbrd), .base_i(sbase), .smode_i(smode_q),
         .wait_i(state_q == ST_CYCLE_END), .entry_over_i(entry_over), .new_cycle_i(new_cycle),
         .poll_dat_i(poll_dat_i), .poll_ack_i(poll_ack_i), .poll_err_i(poll_err_i), .sync_rl_i(sync_rl_i),
         .poll_cyc_o(poll_cyc_o), .poll_board_o(poll_board_o), .poll_adr_o(poll_adr_o), .hit_o(poll_hit));
     // go and the deadline check are registered, decided a clock ahead, so that
     // the transfer's decisions start at registers: go_q in FETCH clock 5 from
-    // the entry's kind (go = go_q and not bad_q: the entry's checks are all
-    // in bad_q in clock 6), in_time_q from rel + 1 and D of the clock before
+    // the entry's kind and the due test (go = go_q and not bad_q: the entry's
+    // checks are all in bad_q in clock 6), in_time_q from rel + 1 and D of the clock before
     // (rel + 2 <= D - MARGIN, that is rel + 1 < D - MARGIN; used only in
     // FETCH clock 6 and in the transfer, where neither a new cycle nor a new
     // D comes between).
     reg         go_q, in_time_q;
     wire        go_now   = go_q && !bad_q;
     always @(posedge clk_i) begin
-        go_q      <= !rst_i && state_q == ST_FETCH && step_q == 3'd5 && kind != ALB_KIND_IDLE[1:0];
+        go_q      <= !rst_i && state_q == ST_FETCH && step_q == 3'd5 && kind != ALB_KIND_IDLE[1:0] && due;
         in_time_q <= {1'b0, next_rel_q[TB-1:0]} < end_q - MARGIN_T;
     end
     // Saturating counters: the carry out of the increment says the count is at its top.
@@ -318,6 +382,7 @@ module albatross_sequencer #(
             err_q     <= 1'b0;
             rerr_q    <= 16'd0;
             cycles_q  <= 16'd0;
+            ent_q     <= 8'd0;            // (the header reads E6 of entry 0 as {ent_q + 1, 010})
         end else begin
             time_q    <= time_q + 32'd1;
             next_rel_q <= {1'b0, next_rel_q[TB-1:0]} + 1'b1;
@@ -345,7 +410,7 @@ module albatross_sequencer #(
                         end
                         default: ;
                     endcase
-                    if (step_q == 3'd4) begin                                   // E1 of entry 0
+                    if (step_q == 3'd4) begin                                   // E1 of entry 0 (E6 read now)
                         start_q       <= rom_q[TB-1:0];
                         start_bad_q   <= rom_q[31:TB] != 0;
                         state_q       <= err_q ? ST_ERROR : ST_CHECK;
@@ -367,12 +432,17 @@ module albatross_sequencer #(
                     step_q <= step_q + 3'd1;
                     if (bad_now) bad_q <= 1'b1;
                     case (step_q)
-                        3'd1, 3'd3, 3'd4, 3'd5: ;                               // E0, E3, E4, E5: u_fields
+                        3'd1, 3'd3, 3'd4: ;                                     // E0, E3, E4: u_fields
                         3'd2: end_q <= e2_end;                                  // E2
-                        default: begin                                          // E1 of the next entry
+                        3'd5: begin                                             // E5: u_fields; on to the next entry
+                            ent_q  <= last_ent ? m_first : ent_inc;
+                            last_q <= last_ent;
+                            ent0_q <= ent_q == 8'd0;
+                        end
+                        default: begin                                          // E1 of the next entry (its E6 read now)
                             start_q      <= rom_q[TB-1:0];             // (entry_check is done with it)
                             start_bad_q  <= rom_q[31:TB] != 0;
-                            if (!bad_q) prev_end_q <= end_q;
+                            if (!bad_q && due) prev_end_q <= end_q;
                             if (go_now) state_q <= ST_TRANSFER;
                         end
                     endcase
@@ -382,16 +452,15 @@ module albatross_sequencer #(
                         start_q     <= rom_q[TB-1:0];
                         start_bad_q <= rom_q[31:TB] != 0;
                     end
+                    if (mode_first_ld) ent_q <= m_next_first;               // the new first entry (its E6 read next)
                 end
                 default: ;
             endcase
-            if (entry_over) begin
-                ent_q       <= ent_inc;
-                state_q     <= last_ent ? ST_CYCLE_END : ST_WAIT;
-            end
+            if (entry_over) state_q <= last_q ? ST_CYCLE_END : ST_WAIT;
             if (new_cycle) begin
                 next_rel_q  <= {{TB{1'b0}}, 1'b1};
                 ent_q       <= m_next_first;
+                n_q         <= mode_commit ? {CB{1'b0}} : n_q + 1'b1;
                 prev_end_q  <= {(TB+1){1'b0}};
                 state_q     <= ST_WAIT;
                 cycle_q1    <= 1'b1;

@@ -18,12 +18,22 @@
 //     properties are asserted once start-up has ended (the first cycle_o),
 //     whatever its length; before that, none of go_o, may_access_o, poll_cyc_o
 //     may be high.
+//   * Minor cycles: n is the harness's count of the cycles, 0 in the first
+//     one, + 1 at each later cycle start, modulo 2^c (c = H2.cluster, F_CL):
+//     the contract's count.  Entry k is due in a cycle when n mod 2^rep_k =
+//     base_k (E6).  The images' two slots do not share a window, so an entry
+//     that is not due (its fetch only, 7 clocks) moves no other's start.
 // Properties (labels; S_k = E1 of entry k, D_k = S_k + E2 of entry k,
 // MARGIN = TIMEOUT + 2, FETCH = 7):
-//   go_time        go_o only in a clock with crel = S_k + FETCH - 1 (so at most
-//                  once per entry per cycle), after start-up.
-//   go_given       in every cycle, go_o is high in clock S_k + FETCH - 1 (valid
-//                  images: every slot starts, exactly on time).
+//   go_time        go_o only in a clock with crel = S_k + FETCH - 1 of a cycle
+//                  in which entry k is due (so at most once per entry per
+//                  cycle, and never in a minor cycle it is not due in), after
+//                  start-up.
+//   go_given       in every cycle, go_o is high in clock S_k + FETCH - 1 of
+//                  every entry k due in it (valid images: every due slot
+//                  starts, exactly on time).
+//   count_wrap     (with the probes) the sequencer's count is the contract's:
+//                  n_q = n, 0 in the first cycle, wrapping at 2^c.
 //   go_fields      with go_o: kind, channel, ND, W, source, destinations and
 //                  SYNC flag are entry k's; slot_time_o is the time_o of clock S_k.
 //   deadline       may_access_o only while a slot runs (from its go_o to its
@@ -92,7 +102,7 @@ module fseq (
     // word shorter.  The k-induction proofs do not depend on it.
     albatross_sequencer #(
         .NB(F_NB), .ADDR_WIDTH(F_AW), .N_CHAN(F_NCHAN), .ROM_WORDS(F_ROM_WORDS), .ROM_FILE("fseq_rom.hex"),
-        .TIME_BITS(F_TB), .TIMEOUT(F_TIMEOUT), .POLL(F_POLL)
+        .TIME_BITS(F_TB), .TIMEOUT(F_TIMEOUT), .POLL(F_POLL), .CLUSTER_BITS(F_CLB)
 `ifdef F_WORD_CRC
         , .CRC_BITS(32)
 `endif
@@ -122,6 +132,7 @@ module fseq (
     reg           rst_q;
     reg  [31:0]   time_q;         // time_o of the last clock
     reg  [31:0]   ts_q;           // time_o of the last planned slot start S
+    reg  [7:0]    n_q;            // the minor-cycle count of the last clock's cycle
 
     wire [CW-1:0] crel   = cycle_o ? {CW{1'b0}} : crel_q;
     wire [31:0]   crel32 = {{(32-CW){1'b0}}, crel};
@@ -132,6 +143,11 @@ module fseq (
     wire [31:0]   dl     = cur ? D1 : D0;
     wire          open_w = busy && crel32 + 32'd1 + MARGIN <= dl;   // an access may begin next clock
     wire [7:0]    actual = poll_dat_i[8*ALB_CH_OFF_ACTUAL +: 8];
+    // the count of this clock's cycle: 0 in the first cycle, + 1 modulo 2^c at every later start
+    localparam [7:0] CL_MASK = (8'd1 << F_CL) - 8'd1;
+    wire [7:0]    n_cur  = !cycle_o ? n_q : started_q ? ((n_q + 8'd1) & CL_MASK) : 8'd0;
+    wire          due0   = (n_cur & ((8'd1 << F_R0) - 8'd1)) == F_B0[7:0];
+    wire          due1   = (n_cur & ((8'd1 << F_R1) - 8'd1)) == F_B1[7:0];
     wire          hit    = poll_cyc_o && poll_ack_i && actual != 8'd0 && actual[7:2] == 6'd0 &&
                            actual[1:0] != sync_rl_i;
 
@@ -139,6 +155,7 @@ module fseq (
         rst_q  <= rst_i;
         time_q <= time_o;
         if ((started_q || cycle_o) && (crel32 == F_S0 || crel32 == F_S1)) ts_q <= time_o;
+        n_q    <= n_cur;
         if (rst_i) begin
             started_q   <= 1'b0;
             crel_q      <= {CW{1'b0}};
@@ -151,7 +168,9 @@ module fseq (
             crel_q      <= (&crel) ? crel : crel + 1'b1;
             busy_q      <= go_o || (busy_q && !slot_done_i);
             cur_q       <= cur;
-            last_done_q <= (last_done_q && !cycle_o) || (busy_q && slot_done_i && cur_q);
+            // (entry 1 not due: over after its fetch, in the clock of its go had it been due)
+            last_done_q <= (last_done_q && !cycle_o) || (busy_q && slot_done_i && cur_q) ||
+                           ((started_q || cycle_o) && crel32 == G1 && !due1);
             hit_q       <= hit;
         end
     end
@@ -169,9 +188,9 @@ module fseq (
     // ------------------------------------------------------------ properties
     always @* begin
         if (!init_q) begin
-            go_time:       assert(!go_o || at_go0 || at_go1);
+            go_time:       assert(!go_o || (at_go0 && due0) || (at_go1 && due1));
             if (F_VALID) begin
-                go_given:  assert(!(at_go0 || at_go1) || go_o);
+                go_given:  assert(!((at_go0 && due0) || (at_go1 && due1)) || go_o);
             end
             if (go_o && at_go0) begin
                 go_fields_0: assert(kind_o == F_KIND0 && chan_o == F_CHAN0 && nd_o == F_ND0 && words_o == F_W0 &&
@@ -211,6 +230,7 @@ module fseq (
         if (!init_q) begin
             if (F_VALID) begin
                 c_go1:      cover(go_o && at_go1);
+                c_go0_late: cover(go_o && at_go0 && n_cur != 8'd0);   // entry 0 in a later minor cycle
                 c_cycle2:   cover(cycle_o && started_q);
                 c_last_acc: cover(may_access_o && crel32 + 32'd1 + MARGIN == D0);
             end else begin
@@ -268,24 +288,45 @@ module fseq (
     (* keep *) wire [32:0]         f_sig_q;
     (* keep *) wire                f_mism;        // the ROM check's registered mismatch
     (* keep *) wire [31:0]         f_rom_q;       // the ROM's read register
+    (* keep *) wire                f_lastq, f_ent0q;   // the entry that runs is the last / entry 0
+    (* keep *) wire [3:0]          f_rep;         // E6 read ahead: rep and base
+    (* keep *) wire [14:0]         f_base;
+    (* keep *) wire [F_CLB-1:0]    f_nq;          // the sequencer's minor-cycle count
+    (* keep *) wire                f_e6h, f_e6f;  // rom_q holds E6 read by the header / by FETCH clock 6
+    (* keep *) wire [3:0]          f_cl, f_rcl;   // the cluster: loaded, running
 
     wire          run    = started_q || cycle_o;        // start-up is over
-    wire          e1     = f_ent == 8'd1;
-    wire [31:0]   s_ent  = e1 ? F_S1 : F_S0;
-    wire [31:0]   d_ent  = e1 ? D1 : D0;
     wire          fetch  = f_state == ST_FETCH;
     wire          xfer   = f_state == ST_TRANSFER;
+    // The entry register moves on to the next entry (entry 0 after the last) in
+    // FETCH clock 5: the entry fetched or run, e1, is f_ent until then, the one
+    // before it from FETCH clock 6 on.
+    wire          e1     = (fetch && f_step <= 3'd5) ? f_ent == 8'd1 :
+                           (fetch || xfer || f_state == ST_CYCLE_END) ? f_ent == 8'd0 : f_ent == 8'd1;
+    wire [31:0]   s_ent  = e1 ? F_S1 : F_S0;
+    wire [31:0]   d_ent  = e1 ? D1 : D0;
+    wire [31:0]   s_nxt  = f_ent == 8'd1 ? F_S1 : F_S0;     // the start of entry f_ent
+    // E6 of entry 0 and 1 (word 4 + 8k + 6), and the due fields the sequencer holds: entry f_ent's,
+    // but while fetching (FETCH clocks 1 .. 6 and the clock after, whose rom_q holds the next one's)
+    wire [31:0]   e6w0   = F_ROM[32*10 +: 32];
+    wire [31:0]   e6w1   = F_ROM[32*18 +: 32];
+    wire          e6_of1 = f_e6f ? f_ent == 8'd0 : fetch ? e1 : f_ent == 8'd1;
+    wire [31:0]   e6_reg = e6_of1 ? e6w1 : e6w0;
+    // the slots run so far in the cycle (prev_end: the last due one's end)
+    wire [F_TB:0] pe1    = due0 ? D0[F_TB:0] : {(F_TB+1){1'b0}};
+    wire [F_TB:0] pe2    = due1 ? D1[F_TB:0] : pe1;
     wire          got1   = xfer || (fetch && f_step >= 3'd2);   // E0's fields are in
     wire          got2   = xfer || (fetch && f_step >= 3'd3);   // E2
     wire          got3   = xfer || (fetch && f_step >= 3'd4);   // E3
     wire          got4   = xfer || (fetch && f_step >= 3'd5);   // E4
     wire          got5   = xfer || (fetch && f_step >= 3'd6);   // E5
-    // start_q: entry ent's start, from its FETCH clock 6 on the next entry's (entry 0's after the last)
-    wire [31:0]   st_want = (f_ent == 8'd2 || (xfer && e1)) ? F_S0 : xfer ? F_S1 : s_ent;
+    // start_q: the fetched entry's start until FETCH clock 6, then the next entry's (entry 0's after the last)
+    wire [31:0]   st_want = fetch ? s_ent : s_nxt;
     wire [XW-1:0] bg_nxt = f_bg_dadr == LAST_X ? {XW{1'b0}} : f_bg_dadr + STEP_X;
     wire [31:0]   crcb   = F_CRCB[32*f_bg_dadr +: 32];
     // the word a main read of the last clock left in rom_q: the header reads, the
-    // entry's words E0, E2..E5, then the next entry's E1 (after the last entry: entry 0's)
+    // entry's words E0, E2..E5, then the next entry's E1 (after the last entry: entry 0's;
+    // f_ent is the next entry then); E6 of the next entry in the clock after the fetch (f_e6f)
     // (entry k's words start at 4 + 8k: the sequencer derives its addresses from ent_q)
     reg  [31:0]   main_a;
     wire          hdr    = f_state == ST_HEADER;
@@ -297,14 +338,13 @@ module fseq (
             3'd3:    main_a = hdr ? 32'd2 : e_base + 32'd3;
             3'd4:    main_a = hdr ? 32'd5 : e_base + 32'd4;
             3'd5:    main_a = e_base + 32'd5;
-            default: main_a = hdr ? 32'd0 : (f_ent + 8'd1 == F_NE) ? 32'd5 : e_base + 32'd9;   // HEADER: word 0 while it waits
+            default: main_a = hdr ? 32'd0 : e_base + 32'd1;   // HEADER: word 0 while it waits
         endcase
     end
     wire [31:0]   rom_main = F_ROM[32*main_a[AW-1:0] +: 32];
     wire          hdr_ok = f_ne == F_NE && f_smode == F_SMODE && f_cycle == F_H1[F_TB-1:0] && f_drop == F_DROP &&
                           f_ent_end == F_NE && f_mfirst == 8'd0 && f_mmodes == 4'd0;
-    wire [F_TB:0] pe_want = (f_ent == 8'd0 && !xfer) ? {(F_TB+1){1'b0}} :
-                            ((f_ent == 8'd0 && xfer) || (e1 && !xfer)) ? D0[F_TB:0] : D1[F_TB:0];
+    wire [F_TB:0] pe_want = f_state == ST_CYCLE_END ? pe2 : xfer ? (e1 ? pe2 : pe1) : e1 ? pe1 : {(F_TB+1){1'b0}};
     // a part's signature is stored once the start-up pass has checked its last word
     wire [F_NE:0] sig_ok;
     genvar r;
@@ -338,6 +378,7 @@ module fseq (
             end
             if (f_state == ST_HEADER) begin
                 inv_header: assert(f_step <= 3'd4 && !error_o && !f_last && (rst_q || (!f_bg_data && f_bg_dadr == 0)) &&
+                                   (rst_q || (!f_e6h && !f_e6f && f_ent == 8'd0)) &&
                                    (f_step < 3'd2 || (f_ne == F_NE && f_smode == F_SMODE)) &&
                                    (f_step < 3'd3 || f_cycle == F_H1[F_TB-1:0]) &&
                                    (f_step < 3'd4 || (f_drop == F_DROP && f_ent_end == F_NE && f_mfirst == 8'd0 &&
@@ -345,7 +386,8 @@ module fseq (
             end
             if (f_state == ST_CHECK) begin
                 inv_check: assert(hdr_ok && !error_o && f_start == F_S0[F_TB-1:0] && !f_start_bad &&
-                                  (!f_last || (!f_bg_data && f_bg_dadr == 0)));
+                                  (!f_last || (!f_bg_data && f_bg_dadr == 0)) && f_ent == 8'd0 && !f_e6f && !f_e6h &&
+                                  f_cl == F_CL[3:0]);
             end
             if (f_state == ST_ERROR) begin
                 inv_error: assert(!F_VALID && error_o && !cycle_o && !started_q && !f_last && (!f_bg_data || f_bg_dadr == 0));
@@ -367,23 +409,36 @@ module fseq (
             if ((hdr && !rst_q) || (fetch && main_a < F_ROM_WORDS)) begin
                 inv_rom_main: assert(f_rom_q == rom_main);
             end
+            inv_rom_e6: assert(!f_e6f || f_rom_q == (f_ent == 8'd1 ? e6w1 : e6w0));
+            // E6 of entry 0, read in the clock after the start-up pass, in the first cycle's first clock
+            inv_rom_e6h: assert(!f_e6h || (f_rom_q == e6w0 && cycle_o && !started_q && !f_e6f));
             if (run) begin
                 inv_run: assert(hdr_ok && !error_o && f_next_rel == {1'b0, crel[F_TB-1:0]} + 1'b1 && crel32 < F_H1 &&
-                                f_ent <= 8'd2 &&
+                                f_ent <= 8'd1 &&
                                 f_start == st_want[F_TB-1:0] && !f_start_bad &&
                                 f_prev_end == pe_want && (busy_q == xfer) && (!xfer || cur_q == e1) &&
                                 ((last_done_q && !cycle_o) == (f_state == ST_CYCLE_END)));
+                // the due test's inputs: the count (count_wrap), the cluster, the due fields
+                count_wrap: assert(f_nq == n_cur[F_CLB-1:0]);
+                inv_cl:     assert(f_cl == F_CL[3:0] && f_rcl == F_CL[3:0]);
+                inv_e6:  assert(f_e6h || {f_rep, f_base} == {e6_reg[19:16], e6_reg[14:0]});
+                inv_e6f: assert(!f_e6f || (crel32 == (f_ent == 8'd1 ? F_S0 : F_S1) + FETCH && f_state != ST_FETCH));
+                // the entry that runs, from FETCH clock 6 on
+                if ((fetch && f_step == 3'd6) || xfer || f_state == ST_CYCLE_END) begin
+                    inv_ran: assert(f_lastq == e1 && f_ent0q == !e1);
+                end
                 case (f_state)
-                    ST_WAIT:      inv_wait:  assert(f_ent < 8'd2 && crel32 <= s_ent && (!e1 || crel32 >= G0 + 32'd2));
-                    ST_FETCH:     inv_fetch: assert(f_ent < 8'd2 && crel32 == s_ent + {29'd0, f_step} && f_step >= 3'd1 &&
-                                                    f_step <= 3'd6 && !f_bad && f_slot_time == ts_q);
-                    ST_TRANSFER:  inv_xfer:  assert(f_ent < 8'd2 && crel32 > s_ent + FETCH - 32'd1 &&
-                                                    crel32 < (e1 ? F_H1 : F_S1) &&
-                                                    (e1 || (f_start == F_S1[F_TB-1:0] && !f_start_bad)));
-                    ST_CYCLE_END: inv_end:   assert(f_ent == 8'd2 && crel32 >= G1 + 32'd2);
+                    ST_WAIT:      inv_wait:  assert(crel32 <= s_ent && (!e1 || crel32 >= G0 + (due0 ? 32'd2 : 32'd1)));
+                    ST_FETCH:     inv_fetch: assert(crel32 == s_ent + {29'd0, f_step} && f_step >= 3'd1 &&
+                                                    f_step <= 3'd6 && !f_bad && f_slot_time == ts_q &&
+                                                    (f_step <= 3'd5 || f_ent == {7'd0, !e1}));
+                    ST_TRANSFER:  inv_xfer:  assert(crel32 > s_ent + FETCH - 32'd1 && f_ent == {7'd0, !e1} &&
+                                                    crel32 < (e1 ? F_H1 : F_S1) && (e1 ? due1 : due0));
+                    ST_CYCLE_END: inv_end:   assert(f_ent == 8'd0 && crel32 >= G1 + (due1 ? 32'd2 : 32'd1));
                     default:      inv_state: assert(1'b0);
                 endcase
-                if (f_ent >= 8'd1 || xfer) begin
+                // entry 0's fetch is over in this cycle: its poll capture is made
+                if ((f_state == ST_WAIT && f_ent == 8'd1) || (fetch && e1) || xfer || f_state == ST_CYCLE_END) begin
                     inv_sync_ok: assert(f_sync_ok == F_SYNC0);
                 end
                 if (got1) begin

@@ -3,16 +3,23 @@
 
     gen_rom.py OUTDIR
 
-Writes, for each image NAME (time, sync, badcrc), OUTDIR/NAME.hex (the ROM, one word a line,
+Writes, for each image NAME (time, sync, badcrc, rep8), OUTDIR/NAME.hex (the ROM, one word a line,
 for $readmemh) and OUTDIR/NAME.vh (the proof's configuration and the image's decoded fields
 as Verilog localparams, `include'd by fseq.v).  The images are encoded by the schedule
 compiler's own encoder (albatross_schedule.rom.encode_rom: the contract's fields and CRC)
 and checked with its verify_rom; nothing is typed as a hex number here.
   time    time-rigid, 2 entries: a COPY (2 destinations) and a TIME, gaps between the slots
-          and before the cycle end.
-  sync    position-synchronised, 2 entries: the SYNC COPY at 0 and a TIME right after it
-          (start = the previous slot's end), H1 = the longest cycle.
+          and before the cycle end; cluster 2 (4 minor cycles), the COPY due in the even minor
+          cycles (rep 1, base 0), the TIME in those that are 1 mod 4 (rep 2, base 1); the
+          sequencer's count CLUSTER_BITS = 2, so that it wraps where the contract's does.
+  sync    position-synchronised, 2 entries: the SYNC COPY at 0 (every cycle) and a TIME right
+          after it (start = the previous slot's end; rep 1, base 0), H1 = the longest cycle;
+          cluster 1, CLUSTER_BITS 1.
   badcrc  the time image with H3 one bit off: the start-up CRC pass must reject it.
+  rep8    the time image with cluster 8 and CLUSTER_BITS 8: the COPY due in minor cycle 0
+          of 256 (rep 8: a repetition whose top bit is set), the TIME in those that are 5 mod 8.
+The due fields (E6: base, rep) and the cluster (H2) are put into the encoder's words here, with
+the contract's fields, and the check word recomputed (C.check_word).
 The .vh also holds the image itself (F_ROM) and the CRC tables the k-induction invariants use: F_CRCB, the CRC before
 each chunk of each word (the ROM check takes CRC_BITS bits of a word a clock: c after words 0..a-1, H3 included, and
 after chunks 0..j-1 of word a, at the check's read index {a, j}), and F_PFX, the prefix CRC after each part (header,
@@ -36,6 +43,9 @@ NB, ADDR_WIDTH, N_CHAN, TIME_BITS, TIMEOUT, POLL = 2, 4, 2, 5, 2, 2
 FETCH_CYCLES = 7                                    # the sequencer's FETCH_CYCLES
 MIN_LEN = FETCH_CYCLES + TIMEOUT + 2                # shortest valid slot
 NE = 2
+# Per image: (cluster c, the sequencer's CLUSTER_BITS, (rep, base) of entry 0 and 1).
+MULTIRATE = {"time": (2, 2, ((1, 0), (2, 1))), "sync": (1, 1, ((0, 0), (1, 0))),
+             "badcrc": (2, 2, ((1, 0), (2, 1))), "rep8": (8, 8, ((8, 0), (3, 5)))}
 ROM_WORDS = C.entry_address(NE)                     # the image fills the ROM exactly
 CRC_BITS = 4                                        # the ROM check's CRC step (albatross_rom_check's default)
 CHUNKS = 32 // CRC_BITS                             # clocks of the ROM port per word
@@ -72,6 +82,20 @@ def image_sync():
                 slots=[Slot(copy, start=0, length=12, redundant=False, sync=True),
                        Slot(time, start=12, length=11, redundant=False)])
     return system(MODE_SYNC, [copy, time]), plan
+
+
+def multirate(words, cluster, _clb, due):
+    """The image with H2.cluster and each entry's E6 (rep, base) set, its check word recomputed."""
+    words = list(words)
+    cl = C.field("H2", "cluster")
+    words[cl.index] = (words[cl.index] & ~cl.mask) | cl.put(cluster)
+    for k, (rep, base) in enumerate(due):
+        for name, v in (("rep", rep), ("base", base)):
+            f = C.field("E6", name)
+            a = C.entry_address(k) + f.index
+            words[a] = (words[a] & ~f.mask) | f.put(v)
+    words[C.crc_index] = C.check_word(words)
+    return words
 
 
 def crc_chunks(c, w):
@@ -121,6 +145,8 @@ def vh(name, words, system_, plan, valid):
            f"           F_CRC_BITS = {CRC_BITS}, F_CHUNKS = {CHUNKS}, F_CB = {CHUNK_BITS};"
            "  // the ROM check's CRC step, chunks of a word, chunk-index bits",
            f"localparam F_VALID = {int(valid)};  // the image is valid (else: the start-up must reject it)",
+           f"localparam F_CL = {fld('H2', 'cluster').get(hdr[2])};  // the cluster c: 2^c minor cycles",
+           f"localparam F_CLB = {MULTIRATE[name][1]};  // the sequencer's CLUSTER_BITS",
            f"localparam F_SMODE = {int(system_.sync_mode)};  // position-synchronised",
            lp("F_H1", fld("H1", "cycle").get(hdr[1]), 32, "cycle length"),
            lp("F_DROP", fld("H2", "drop_run").get(hdr[2]), 8, "the drop run K"),
@@ -134,6 +160,8 @@ def vh(name, words, system_, plan, valid):
         out += [f"// entry {k}",
                 lp(f"F_S{k}", g("E1", "start"), 32, "start"),
                 lp(f"F_L{k}", g("E2", "length"), 32, "length"),
+                lp(f"F_R{k}", g("E6", "rep"), 32, "rep: due every 2^rep minor cycles"),
+                lp(f"F_B{k}", g("E6", "base"), 32, "base: due when n mod 2^rep = base"),
                 lp(f"F_KIND{k}", g("E0", "kind") & 3, 2),
                 lp(f"F_SYNC{k}", int(bool(g("E0", "flags") & C.flag("entry", "sync"))), 1),
                 lp(f"F_CHAN{k}", g("E0", "id") & 31, 5),
@@ -161,10 +189,10 @@ def vh(name, words, system_, plan, valid):
 def main():
     outdir = sys.argv[1]
     os.makedirs(outdir, exist_ok=True)
-    for name, make in (("time", image_time), ("sync", image_sync), ("badcrc", image_time)):
+    for name, make in (("time", image_time), ("sync", image_sync), ("badcrc", image_time), ("rep8", image_time)):
         sys_, plan = make()
         check_plan(sys_, plan)
-        words = encode_rom(sys_, plan)
+        words = multirate(encode_rom(sys_, plan), *MULTIRATE[name])
         problems, _ = verify_rom(words, n_chan=N_CHAN, n_boards=NB, ram_words=1 << ADDR_WIDTH,
                                  sync_expected=sys_.sync_mode)
         if problems:

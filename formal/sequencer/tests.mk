@@ -4,20 +4,26 @@ FSBY_TESTS_SPEC += \
     formal-sequencer:sequencer:prove:pass \
     formal-sequencer-sync:sequencer:prove_sync:pass \
     formal-sequencer-error:sequencer:prove_bad:pass \
+    formal-sequencer-rep8:sequencer:prove_rep8:pass \
     formal-sequencer-cover:sequencer:cover:pass \
     formal-sequencer-cover-sync:sequencer:cover_sync:pass \
     formal-sequencer-cover-error:sequencer:cover_bad:pass \
     formal-sequencer-negative-slot_late:sequencer:neg_slot_late:go_time \
     formal-sequencer-negative-deadline_late:sequencer:neg_deadline_late:deadline \
-    formal-sequencer-negative-start_bad_crc:sequencer:neg_start_bad_crc:idle_on_error
-FSBY_MUTANTS += sequencer:slot_late sequencer:deadline_late sequencer:start_bad_crc
+    formal-sequencer-negative-start_bad_crc:sequencer:neg_start_bad_crc:idle_on_error \
+    formal-sequencer-negative-wrong_cycle:sequencer:neg_wrong_cycle:go_given \
+    formal-sequencer-negative-rep_short:sequencer:neg_rep_short:go_time \
+    formal-sequencer-negative-count_early:sequencer:neg_count_early:go_time \
+    formal-sequencer-negative-count_stuck:sequencer:neg_count_stuck:go_given
+FSBY_MUTANTS += sequencer:slot_late sequencer:deadline_late sequencer:start_bad_crc sequencer:wrong_cycle \
+                sequencer:rep_short sequencer:count_early sequencer:count_stuck
 FSBY_RTL_sequencer := rtl/albatross_sequencer.v rtl/albatross_schedule_rom.v rtl/albatross_rom_check.v \
                       rtl/albatross_entry_check.v rtl/albatross_mode_switch.v rtl/albatross_entry_fields.v rtl/albatross_sync_poll.v
 
 # The ROM images of the proofs and their decoded fields, written by gen_rom.py with the
 # schedule compiler's encoder and CRC (sequencer.sby reads them from this folder).
 FSEQ_ROM       := $(BUILD)/formal/sby/sequencer-rom
-FSEQ_ROM_FILES := $(foreach i,time sync badcrc,$(FSEQ_ROM)/$(i).hex $(FSEQ_ROM)/$(i).vh)
+FSEQ_ROM_FILES := $(foreach i,time sync badcrc rep8,$(FSEQ_ROM)/$(i).hex $(FSEQ_ROM)/$(i).vh)
 $(FSEQ_ROM_FILES) &: formal/sequencer/gen_rom.py rtl/albatross_contract.toml \
                      $(wildcard compiler/albatross_schedule/*.py)
 	$(PYTHON) formal/sequencer/gen_rom.py $(FSEQ_ROM)

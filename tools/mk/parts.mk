@@ -17,6 +17,20 @@
 #                               the same bench on a sequencer whose slots start
 #                               one clock late (formal/rtl/mutants/slot_late.sed):
 #                               passes only if the bench fails and names the go
+#   make test-sequencer-multirate
+#                               tb/sequencer/tb_sequencer_multirate.v on a
+#                               multi-rate image (make_rom.py --multirate:
+#                               cluster 8, reps 0 to 8, three entries in one
+#                               window): every go and every cycle against the
+#                               bench's model of the due rule, the count's wrap,
+#                               invalid E6 entries counted in rom_errors
+#   make test-sequencer-multirate-modes
+#                               the same with a mode switch to a cluster of 4
+#                               and back: the count restarts at each switch
+#   make test-sequencer-multirate-negative-no_reset, -e6_unchecked
+#                               the bench on a sequencer whose count does not
+#                               restart at a switch, or whose entry check
+#                               forgets E6 (tb/sequencer/mutants/): must fail
 # Outputs in build/parts/.
 
 PARTS_DIR := $(BUILD)/parts
@@ -27,10 +41,12 @@ SEQ_SUB   := rtl/albatross_schedule_rom.v rtl/albatross_rom_check.v rtl/albatros
 
 TESTS += parts-lint sequencer sequencer-bad-start0 sequencer-negative-slot_late \
          sequencer-modes sequencer-modes-bad sequencer-modes-negative sequencer-modes-switch \
-         sequencer-modes-switch-negative
+         sequencer-modes-switch-negative sequencer-multirate sequencer-multirate-modes \
+         sequencer-multirate-negative-no_reset sequencer-multirate-negative-e6_unchecked
 .PHONY: test-parts-lint test-sequencer test-sequencer-bad-start0 test-sequencer-negative-slot_late \
         test-sequencer-modes test-sequencer-modes-bad test-sequencer-modes-negative test-sequencer-modes-switch \
-        test-sequencer-modes-switch-negative
+        test-sequencer-modes-switch-negative test-sequencer-multirate test-sequencer-multirate-modes \
+        test-sequencer-multirate-negative-no_reset test-sequencer-multirate-negative-e6_unchecked
 
 test-parts-lint: $(addprefix rtl/,$(addsuffix .v,$(PARTS))) $(RTL_INC)
 	@mkdir -p $(PARTS_DIR)
@@ -104,3 +120,29 @@ test-sequencer-modes-switch-negative: tb/sequencer/tb_sequencer.v tb/sequencer/m
 	        $(PARTS_DIR)/seq-switch-neg/albatross_mode_switch.v,+modes_switch); \
 	    if grep -q "^PASS" tb.log; then echo "the bench passed a mode switch before the cycle boundary"; exit 1; fi; \
 	    grep -q "^FAIL" tb.log && echo "caught: $$(grep -m1 "^FAIL" tb.log)"'
+
+# The multi-rate bench: $(1) = folder, $(2) = make_rom.py option, $(3) = the
+# sequencer and its parts (a mutant in the place of one), $(4) = plusargs.
+SEQ_MR = set -e; mkdir -p $(PARTS_DIR)/$(1); $(PYTHON) tb/sequencer/make_rom.py $(PARTS_DIR)/$(1)/seq_rom.hex $(2); \
+	    iverilog -g2005 -Irtl -o $(PARTS_DIR)/$(1)/tb tb/sequencer/tb_sequencer_multirate.v $(3); \
+	    cd $(PARTS_DIR)/$(1) && vvp -n tb $(4) | grep -v readmemh > tb.log || true; cat tb.log
+SEQ_MR_DEPS := tb/sequencer/tb_sequencer_multirate.v tb/sequencer/make_rom.py rtl/albatross_sequencer.v $(SEQ_SUB) $(RTL_INC)
+test-sequencer-multirate: $(SEQ_MR_DEPS)
+	@tools/run_test.sh sequencer-multirate bash -c '$(call SEQ_MR,seq-mr,--multirate,rtl/albatross_sequencer.v $(SEQ_SUB),); \
+	    grep -q "^PASS" tb.log'
+test-sequencer-multirate-modes: $(SEQ_MR_DEPS)
+	@tools/run_test.sh sequencer-multirate-modes bash -c '$(call SEQ_MR,seq-mr-modes,--multirate-modes,rtl/albatross_sequencer.v $(SEQ_SUB),+modes); \
+	    grep -q "^PASS" tb.log'
+# $(1) = mutant (tb/sequencer/mutants/$(1).sed), $(2) = the file it breaks, $(3) = make_rom.py option, $(4) = plusargs.
+define seq_mr_negative
+test-sequencer-multirate-negative-$(1): $(SEQ_MR_DEPS) tb/sequencer/mutants/$(1).sed
+	@mkdir -p $(PARTS_DIR)/seq-mr-neg-$(1)
+	@sed -f tb/sequencer/mutants/$(1).sed rtl/$(2) > $(PARTS_DIR)/seq-mr-neg-$(1)/$(2)
+	@tools/run_test.sh sequencer-multirate-negative-$(1) bash -c 'if cmp -s $(PARTS_DIR)/seq-mr-neg-$(1)/$(2) rtl/$(2); then \
+	        echo "mutant $(1) did not apply: rtl/$(2) no longer has the line its .sed edits"; exit 1; fi; \
+	    $$(call SEQ_MR,seq-mr-neg-$(1),$(3),$(filter-out rtl/$(2),rtl/albatross_sequencer.v $(SEQ_SUB)) $(PARTS_DIR)/seq-mr-neg-$(1)/$(2),$(4)); \
+	    if grep -q "^PASS" tb.log; then echo "the bench passed the broken sequencer $(1)"; exit 1; fi; \
+	    grep -q "^FAIL" tb.log && echo "caught: $$$$(grep -m1 "^FAIL" tb.log)"'
+endef
+$(eval $(call seq_mr_negative,no_reset,albatross_sequencer.v,--multirate-modes,+modes))
+$(eval $(call seq_mr_negative,e6_unchecked,albatross_entry_check.v,--multirate,))
