@@ -29,6 +29,14 @@
 //     and the current value's taken_at, written with time_o in the clock a
 //     New value is chosen (the datapath's taken_at stores read it back from
 //     the RAM).
+//   * Fragments (HAS_FRAGMENTS): a second state RAM keeps, per channel id,
+//     the progress of a value carried in fragments (its next word, 0 none)
+//     and each destination's picked buffer, written at every COPY slot's end
+//     and cleared with the rest after reset (a value cut by a reset restarts
+//     with a fresh Import; nothing partial is published).  The source buffer
+//     held is the ReadLocked copy, and the destinations still in the value
+//     are the need field.  A slot that ends with its value going on counts
+//     only the destinations it dropped as abandoned.
 //   * The datapath's rules (order, retries, drop, cut-off) are in
 //     rtl/albatross_transfer.v.  A destination it published leaves need; at
 //     the slot's end each destination still in need counts as abandoned, and
@@ -37,8 +45,8 @@
 //     New twice.
 //   * Optional parts (parameters HAS_*, default 1): the counters and STATUS
 //     words, the sync-mode poll, the background ROM re-check, the entry field
-//     checks, the schedule modes' switches.  With all five 0 this is the
-//     core configuration.
+//     checks, the schedule modes' switches, values in fragments.  With all
+//     six 0 this is the core configuration.
 //   * No bus access is ever made while the ROM is invalid (error_o): the
 //     sequencer then never starts a slot or a poll.
 // Adding a channel kind touches the datapath and the sequencer's decode.
@@ -58,6 +66,7 @@ module albatross_controller #(
     parameter HAS_ROM_RECHECK = 1, // 1: the background re-check of the ROM; 0: the start-up CRC only
     parameter HAS_ENTRY_CHECK = 1, // 1: the entry field checks at fetch ("Validation"); 0: none
     parameter HAS_MODES  = 1,     // 1: schedule modes switch on request; 0: an image's start-up mode runs for good
+    parameter HAS_FRAGMENTS = 1,  // 1: a COPY's value may go in fragments (E7.frag); 0: one slot carries a whole value
     parameter ROM_CRC_BITS = 4    // bits of a ROM word the CRC check takes a clock: 1, 2, 4, 8, 16, 32 (smaller is smaller, start-up 32/ROM_CRC_BITS clocks a word)
 ) (
     input  wire                  clk_i,
@@ -178,12 +187,40 @@ module albatross_controller #(
     wire [2:0]  st_rl    = st_q[34:32];
     wire [31:0] st_taken = st_q[31:0];
 
+    // Fragments: {buffers, progress} per channel, a RAM of its own beside
+    // the other fields (same addresses, same read and write clocks).
+    wire [11:0] st_prog, st_buf, tr_prog, tr_buf;
+    wire        wr_frg = !ready_q || (slot_end && (tr_exp || tr_imp));
+    generate
+        if (HAS_FRAGMENTS != 0) begin : g_frag_state
+            reg [23:0] fr_mem [0:ST_DEPTH-1];
+            reg [23:0] fr_q;
+            always @(posedge clk_i) begin
+                if (st_wr) begin
+                    if (wr_frg) fr_mem[st_wa] <= ready_q ? {tr_buf, tr_prog} : 24'd0;
+                end else begin
+                    fr_q <= fr_mem[st_ix];
+                end
+            end
+            assign st_prog = fr_q[11:0];
+            assign st_buf  = fr_q[23:12];
+        end else begin : g_no_frag_state
+            assign st_prog = 12'd0;
+            assign st_buf  = 12'd0;
+            wire unused_frag = &{1'b0, tr_prog, tr_buf, wr_frg};
+        end
+    endgenerate
+
     // ------------------------------------------------------------ transfer datapath
     // A MODE entry (a STATUS of W 2) publishes {the running mode, the time its
     // first cycle began} instead of the counters' words.
     wire [31:0] tr_status;
     wire        tr_status_valid;
-    wire        tr_done, tr_imp, tr_exp, tr_new;
+    wire        tr_done, tr_imp, tr_exp, tr_new, tr_mid;
+    wire [3:0]  tr_gone;
+    // E7.frag of the entry: the sequencer does not deliver it yet, so every
+    // value goes in one fragment (the datapath and the state are ready).
+    wire [11:0] frag = 12'd0;
     wire [2:0]  tr_rl, tr_xfers, tr_corrupt;
     wire [3:0]  tr_need;
     wire [11:0] tr_tried, tr_index;
@@ -196,13 +233,14 @@ module albatross_controller #(
     wire [7:0]  r_sel, r_board;
     wire [63:0] r_wdat;
 
-    albatross_transfer #(.ADDR_WIDTH(AW)) u_transfer (
+    albatross_transfer #(.ADDR_WIDTH(AW), .HAS_FRAGMENTS(HAS_FRAGMENTS)) u_transfer (
         .clk_i(clk_i), .rst_i(rst_i),
         .go_i(go), .copy_i(k_copy), .time_kind_i(k_time), .four_i(four), .request_i(request), .active_i(active),
-        .words_i(words),
+        .words_i(words), .frag_i(frag),
         .src_board_i(src_board), .src_base_i(src_base), .dst_board_i(dst_board), .dst_base_i(dst_base),
         .slot_time_i(slot_time), .may_access_i(may_access), .drop_run_i(drop_run),
         .st_rl_i(st_rl), .st_need_i(st_need), .st_tried_i(st_tried), .st_taken_i(st_taken),
+        .st_prog_i(st_prog), .st_buf_i(st_buf), .prog_o(tr_prog), .buf_o(tr_buf), .mid_o(tr_mid), .gone_o(tr_gone),
         .status_i(tr_status), .status_valid_i(tr_status_valid), .index_o(tr_index),
         .done_o(tr_done), .imp_run_o(tr_imp), .exp_run_o(tr_exp), .new_o(tr_new), .rl_o(tr_rl),
         .need_o(tr_need), .tried_o(tr_tried),
@@ -258,7 +296,8 @@ module albatross_controller #(
 
     // ------------------------------------------------------------ counters
     // need after the slot: the state RAM's copy if the Export did not run.
-    wire [3:0] need_end = tr_exp ? tr_need : st_need;
+    // (a value that goes on: the destinations dropped in this slot.)
+    wire [3:0] need_end = (HAS_FRAGMENTS != 0 && tr_mid) ? tr_gone : tr_exp ? tr_need : st_need;
     wire [2:0] abandons = popcount4(need_end & active);
     // A rejected mode request (the clock of its REQUEST slot's end) counts as
     // a corrupt value of the request channel.

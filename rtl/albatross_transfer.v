@@ -56,13 +56,30 @@
 //     next clock.  done_o is high for one clock after the last ack, the
 //     cut-off or the decision that nothing is to be done.  Reset clears
 //     control state only.
+//   * Fragments (HAS_FRAGMENTS; a COPY with frag_i = F != 0 words per
+//     fragment): a slot carries words [p, min(p + F, W)) of the value, p the
+//     channel's progress (st_prog_i, a word offset; 0: the value's first
+//     fragment).  p = 0: the Import and the destinations' control loads and
+//     picks as above, then the fragment's words.  p != 0 (p < W): no Import
+//     and no control load: the source buffer is the held one (st_rl_i, whose
+//     ReadLocked the first fragment stored and nothing changes until the
+//     value ends), the destinations are those still in the value
+//     (st_need_i) and their buffers are the picked ones (st_buf_i).  After a
+//     fragment that is not the last: prog_o = its end, need_o = the
+//     destinations still in the value (a dropped one stays out of it), no
+//     taken_at, Slot or Actual store (nothing published).  The last
+//     fragment: taken_at, (Slot,) Actual as above, prog_o = 0.  A fragment
+//     cut off keeps p (it runs again from the same word); a value with no
+//     destination left ends (prog_o = 0).  gone_o: the destinations dropped
+//     in a fragment that is not the last (abandoned now, not in need).
 // Parts: albatross_transfer_dest (the per-destination registers),
 // albatross_transfer_access (address, lanes and write data of the access),
 // albatross_transfer_pick (the control-word decode and the buffer picks).
 `default_nettype none
 
 module albatross_transfer #(
-    parameter ADDR_WIDTH = 10  // word-address bits of a board RAM
+    parameter ADDR_WIDTH    = 10, // word-address bits of a board RAM
+    parameter HAS_FRAGMENTS = 1   // 1: a COPY's value may go in fragments (frag_i); 0: frag_i is ignored
 ) (
     input  wire                    clk_i,
     input  wire                    rst_i,          // synchronous, active high
@@ -74,6 +91,7 @@ module albatross_transfer #(
     input  wire                    request_i,      // a REQUEST COPY: its New value is a mode request
     input  wire [3:0]              active_i,       // the destinations of the entry
     input  wire [11:0]             words_i,        // W
+    input  wire [11:0]             frag_i,         // words per fragment (E7.frag; 0: one fragment)
     input  wire [3:0]              src_board_i,
     input  wire [ADDR_WIDTH-1:0]   src_base_i,
     input  wire [15:0]             dst_board_i,    // d at [4d +: 4]
@@ -86,6 +104,8 @@ module albatross_transfer #(
     input  wire [3:0]              st_need_i,      // destinations that still need the current value
     input  wire [11:0]             st_tried_i,     // buffers of failed Actual stores (0 none), d at [3d +: 3]
     input  wire [31:0]             st_taken_i,     // taken_at of the current value
+    input  wire [11:0]             st_prog_i,      // fragments: the next word of the value (0: its first fragment)
+    input  wire [11:0]             st_buf_i,       // fragments: each destination's picked buffer, d at [3d +: 3]
     // STATUS words
     input  wire [31:0]             status_i,
     input  wire                    status_valid_i,
@@ -98,6 +118,10 @@ module albatross_transfer #(
     output wire [2:0]              rl_o,           // the copy after the slot
     output wire [3:0]              need_o,         // destinations still in need after the Export
     output wire [11:0]             tried_o,
+    output wire [11:0]             prog_o,         // fragments: the progress after the slot
+    output wire [11:0]             buf_o,          // fragments: the picked buffers, d at [3d +: 3]
+    output wire                    mid_o,          // fragments: the value goes on (prog_o != 0)
+    output wire [3:0]              gone_o,         // fragments: destinations dropped in a fragment not the last
     output wire [2:0]              transfers_o,    // destinations published
     output wire [2:0]              corrupt_o,      // control bytes that named no buffer
     output wire                    mode_req_o,     // one clock: a mode request (REQUEST entries)
@@ -149,6 +173,10 @@ module albatross_transfer #(
     reg [2:0]  rl_q;
     reg        new_q, icor_q, imp_q, exp_q;
     reg [3:0]  serve_q, need_q, pub_q, cor_q;
+    reg        cont_q;                // fragments: the slot goes on with a value (no Import)
+    reg        lastf_q;               // the slot's words end the value
+    reg        fdone_q;               // a fragment not the last stored all its words
+    reg [11:0] end_q;                 // the end of the slot's words
     wire [2:0] buf_d, tried_d;
     wire       dst      = state_q[3];
     wire       ack      = ack_i && stb_q;
@@ -184,10 +212,23 @@ module albatross_transfer #(
     wire [1:0] first_d  = need_m[0] ? 2'd0 : need_m[1] ? 2'd1 : need_m[2] ? 2'd2 : 2'd3;
     wire [1:0] first_in = start_need[0] ? 2'd0 : start_need[1] ? 2'd1 : start_need[2] ? 2'd2 : 2'd3;
 
+    // ------------------------------------------------------------ fragments
+    // cont: the slot goes on with a value (st_prog_i a word of it); f_end:
+    // the end of the slot's words, min(p + F, W); F = 0 or frag_end >= W:
+    // the last fragment.
+    wire        fr_on    = HAS_FRAGMENTS != 0 && copy_i && !request_i && frag_i != 12'd0;
+    wire        cont     = fr_on && st_prog_i != 12'd0 && st_prog_i < words_i;
+    wire [12:0] f_sum    = {1'b0, cont ? st_prog_i : 12'd0} + {1'b0, frag_i};
+    wire        f_last   = !fr_on || f_sum >= {1'b0, words_i};
+    wire [11:0] f_end    = f_last ? words_i : f_sum[11:0];
+    wire [11:0] end_w    = HAS_FRAGMENTS != 0 ? end_q : words_i;
+    wire        lastf    = HAS_FRAGMENTS == 0 || lastf_q;
+    wire [3:0]  c_need   = st_need_i & active_i;
+
     // ------------------------------------------------------------ steps
     wire       adv      = ack || drop_now;
     wire       ctrl_end = adv && (ctrl_ld ? !complete : state_q == S_DST_PUB);
-    wire       last_wd  = k_q == words_i;
+    wire       last_wd  = k_q == end_w;
     wire       want     = state_q != S_WAIT && !has_next && left_any &&
                           (ctrl_end || (adv && state_q == S_DST_WORD && !last_wd));
     wire       word_ok  = !copy_i && (time_kind_i || status_valid_i);
@@ -204,7 +245,7 @@ module albatross_transfer #(
     wire       nrm      = !go_i && !(err_i && stb_q) && !(retry_q && !drop_q);
     wire       dst_go   = complete || has_next ||
                           (want ? (!copy_i && word_ok)
-                                : ((state_q == S_DST_WORD && last_wd) || state_q == S_DST_TKN || state_q == S_DST_SLOT));
+                                : ((state_q == S_DST_WORD && last_wd && lastf) || state_q == S_DST_TKN || state_q == S_DST_SLOT));
     wire       req      = !rst_i && ((go_i && !copy_i) || (!go_i && !(err_i && stb_q) && retry_q && !drop_q) ||
                           (nrm && ((ack && ((state_q == S_SRC_ACT && a_valid && !a_match) || state_q == S_SRC_RL ||
                                             (state_q == S_SRC_WORD && !request_i))) ||
@@ -252,6 +293,9 @@ module albatross_transfer #(
             new_q    <= 1'b0;
             icor_q   <= 1'b0;
             rl_q     <= 3'd0;
+            cont_q   <= 1'b0;
+            lastf_q  <= 1'b1;
+            fdone_q  <= 1'b0;
             serve_q  <= 4'd0;
             need_q   <= 4'd0;
             pub_q    <= 4'd0;
@@ -267,7 +311,23 @@ module albatross_transfer #(
             retry_q  <= 1'b0;
             drop_q   <= 1'b0;
             rl_q     <= st_rl_i;
-            if (copy_i) begin
+            cont_q   <= cont;
+            lastf_q  <= f_last;
+            fdone_q  <= 1'b0;
+            end_q    <= f_end;
+            if (cont) begin
+                // A fragment after the first: its first word from the held buffer.
+                imp_q   <= 1'b0;
+                exp_q   <= 1'b1;
+                serve_q <= c_need;
+                need_q  <= c_need;
+                run_q   <= 8'd0;
+                d_q     <= 2'd0;
+                if (may_access_i && c_need != 4'd0) begin
+                    state_q <= S_SRC_WORD;
+                    stb_q   <= 1'b1;
+                end else finish;
+            end else if (copy_i) begin
                 serve_q <= active_i;
                 d_q     <= 2'd0;
                 if (may_access_i) begin
@@ -347,7 +407,13 @@ module albatross_transfer #(
                     end
                 end
                 else if (state_q == S_DST_WORD) begin
-                    if (last_wd) begin_access(S_DST_TKN, first_d);
+                    if (last_wd) begin
+                        if (lastf) begin_access(S_DST_TKN, first_d);
+                        else begin
+                            finish;                        // a fragment not the last: nothing published
+                            fdone_q <= 1'b1;
+                        end
+                    end
                 end
                 else if (state_q == S_DST_TKN) begin_access(four_i ? S_DST_SLOT : S_DST_FIN, first_d);
                 else if (state_q == S_DST_SLOT) begin_access(S_DST_FIN, first_d);
@@ -371,17 +437,17 @@ module albatross_transfer #(
     // ------------------------------------------------------------ per-destination fields
     // albatross_transfer_dest, written with explicit enables: the events of
     // the current destination d_q, in the branch of the main block they belong to.
-    wire       e_start  = (go_i && !copy_i) || (nrm && choose && need_now != 4'd0);
+    wire       e_start  = (go_i && (!copy_i || cont)) || (nrm && choose && need_now != 4'd0);
     // e_tried: d's Actual store failed, or (four-slot) its Slot store is on the bus.
     wire       e_tried  = !go_i && stb_q && ((err_i && fin_st) || state_q == S_DST_SLOT);
     wire       e_ctrl   = nrm && adv && ctrl_ld;
     wire       e_fin    = nrm && ack && fin_st;
-    wire       no_tried = go_i || new_q;               // a fresh value: no failed store of it
+    wire       no_tried = (go_i && !cont) || new_q;    // a fresh value: no failed store of it
     albatross_transfer_dest u_dest (
-        .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start),
+        .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start), .ld_buf_i(go_i && cont), .st_buf_i(st_buf_i),
         .st_tried_i(st_tried_i), .fresh_i(no_tried), .d_i(d_q), .set_tried_i(e_tried),
         .clr_tried_i((e_ctrl && ack && !complete) || e_fin), .set_buf_i(e_ctrl), .pick_i(t_done ? tried_d : pick),
-        .buf_d_o(buf_d), .tried_d_o(tried_d), .tried_o(tried_o));
+        .buf_d_o(buf_d), .tried_d_o(tried_d), .tried_o(tried_o), .buf_o(buf_o));
 
     // ------------------------------------------------------------ the word stored
     // word_q: the word the stores write, taken when the first store begins:
@@ -391,7 +457,7 @@ module albatross_transfer #(
                    (nrm && word_ok && (state_q == S_WAIT || (adv && dst && want)));
     always @(posedge clk_i) if (take_en) word_q <= copy_i ? dat_i : status_i;
     // k_q: the index of the next word to take; 0 from go_i and when an Export starts.
-    always @(posedge clk_i) if (e_start || go_i) k_q <= 12'd0; else if (take_en) k_q <= k_q + 12'd1;
+    always @(posedge clk_i) if (go_i && cont) k_q <= st_prog_i; else if (e_start || go_i) k_q <= 12'd0; else if (take_en) k_q <= k_q + 12'd1;
 
     // ------------------------------------------------------------ the access
     albatross_transfer_access #(.ADDR_WIDTH(AW)) u_access (
@@ -413,7 +479,12 @@ module albatross_transfer #(
     assign exp_run_o   = exp_q;
     assign new_o       = nrm && choose && new_q;
     assign rl_o        = rl_q;
-    assign need_o      = serve_q & ~pub_q;
+    // A value that goes on: the destinations still in it (the dropped ones out).
+    wire   mid         = HAS_FRAGMENTS != 0 && (fdone_q || (cont_q && need_q != 4'd0));
+    assign prog_o      = !mid ? 12'd0 : fdone_q ? end_q : st_prog_i;
+    assign mid_o       = mid;
+    assign gone_o      = serve_q & ~need_q & ~pub_q;
+    assign need_o      = mid ? need_q : serve_q & ~pub_q;
     assign transfers_o = exp_q ? popcount4(pub_q) : 3'd0;
     assign corrupt_o   = {2'd0, icor_q} + popcount4(cor_q);
     assign mode_req_o      = nrm && ack && state_q == S_SRC_WORD && request_i && !early_q;

@@ -12,6 +12,8 @@
 //     tried is its picked buffer); clr_tried_i (clears
 //     the buffer tried); set_buf_i (the picked buffer becomes pick_i).  When
 //     several are high in one clock the later in this list wins.
+//   * ld_buf_i (a fragment after a value's first) loads every
+//     destination's picked buffer from st_buf_i (the first fragment's picks).
 //   * Timing: registered, in the clock after the enables; reset clears the
 //     buffers tried (the picks are data).
 `default_nettype none
@@ -20,6 +22,8 @@ module albatross_transfer_dest (
     input  wire        clk_i,
     input  wire        rst_i,          // synchronous, active high
     input  wire        start_i,        // load all destinations from the state RAM
+    input  wire        ld_buf_i,       // load the picked buffers from st_buf_i
+    input  wire [11:0] st_buf_i,       // the picked buffers, d at [3d +: 3]
     input  wire [11:0] st_tried_i,     // buffers tried (failed Actual, four-slot Slot stores), d at [3d +: 3]
     input  wire        fresh_i,        // with start_i: no buffer tried
     input  wire [1:0]  d_i,            // the current destination
@@ -29,7 +33,8 @@ module albatross_transfer_dest (
     input  wire [2:0]  pick_i,
     output wire [2:0]  buf_d_o,        // d's picked buffer
     output wire [2:0]  tried_d_o,      // d's buffer tried (0 none)
-    output wire [11:0] tried_o         // the buffers tried, d at [3d +: 3]
+    output wire [11:0] tried_o,        // the buffers tried, d at [3d +: 3]
+    output wire [11:0] buf_o           // the picked buffers, d at [3d +: 3]
 );
 
     reg  [11:0] buf_q, tried_q;
@@ -43,6 +48,7 @@ module albatross_transfer_dest (
                     tried_q[3*g +: 3]  <= 3'd0;
                 end else if (start_i) begin
                     tried_q[3*g +: 3]  <= fresh_i ? 3'd0 : st_tried_i[3*g +: 3];
+                    if (ld_buf_i) buf_q[3*g +: 3] <= st_buf_i[3*g +: 3];
                 end else if (d_bit[g]) begin
                     if (set_tried_i) tried_q[3*g +: 3] <= buf_d_o;
                     if (clr_tried_i) tried_q[3*g +: 3] <= 3'd0;
@@ -55,6 +61,7 @@ module albatross_transfer_dest (
     assign buf_d_o   = d_i[1] ? (d_i[0] ? buf_q[9 +: 3] : buf_q[6 +: 3]) : (d_i[0] ? buf_q[3 +: 3] : buf_q[0 +: 3]);
     assign tried_d_o = d_i[1] ? (d_i[0] ? tried_q[9 +: 3] : tried_q[6 +: 3]) : (d_i[0] ? tried_q[3 +: 3] : tried_q[0 +: 3]);
     assign tried_o   = tried_q;
+    assign buf_o     = buf_q;
 
 endmodule
 
