@@ -138,11 +138,11 @@ module albatross_controller #(
     albatross_sequencer #(.NB(NB), .ADDR_WIDTH(AW), .N_CHAN(N_CHAN), .ROM_WORDS(ROM_WORDS), .ROM_FILE(ROM_FILE),
                           .TIME_BITS(TIME_BITS), .TIMEOUT(TIMEOUT), .POLL(POLL), .HAS_SYNC(HAS_SYNC),
                           .HAS_ROM_RECHECK(HAS_ROM_RECHECK), .HAS_ENTRY_CHECK(HAS_ENTRY_CHECK), .CRC_BITS(ROM_CRC_BITS),
-                          .HAS_MODES(HAS_MODES)) u_seq (
+                          .HAS_MODES(HAS_MODES), .HAS_FRAGMENTS(HAS_FRAGMENTS)) u_seq (
         .clk_i(clk_i), .rst_i(rst_i), .enable_i(ready_q && cnt_ready),
         .go_o(go), .kind_o(kind), .chan_o(chan7), .nd_o(nd), .words_o(words),
         .src_board_o(src_board), .src_base_o(src_base), .dst_board_o(dst_board), .dst_base_o(dst_base),
-        .slot_time_o(slot_time), .sync_entry_o(sync_entry), .four_o(four), .request_o(request), .mode_info_o(mode_info),
+        .slot_time_o(slot_time), .frag_o(frag), .sync_entry_o(sync_entry), .four_o(four), .request_o(request), .mode_info_o(mode_info),
         .may_access_o(may_access), .slot_done_i(slot_end),
         .poll_cyc_o(poll_cyc), .poll_board_o(poll_board), .poll_adr_o(poll_adr), .poll_dat_i(bus_rdat),
         .poll_ack_i(r_ack[1]), .poll_err_i(r_err[1]), .sync_rl_i(sync_rl_q),
@@ -218,9 +218,7 @@ module albatross_controller #(
     wire        tr_status_valid;
     wire        tr_done, tr_imp, tr_exp, tr_new, tr_mid;
     wire [3:0]  tr_gone;
-    // E7.frag of the entry: the sequencer does not deliver it yet, so every
-    // value goes in one fragment (the datapath and the state are ready).
-    wire [11:0] frag = 12'd0;
+    wire [11:0] frag;           // E7.frag of the running entry (from 2 clocks after go)
     wire [2:0]  tr_rl, tr_xfers, tr_corrupt;
     wire [3:0]  tr_need;
     wire [11:0] tr_tried, tr_index;

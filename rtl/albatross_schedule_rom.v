@@ -12,7 +12,9 @@
 //     E6 of entry ent_i, which the sequencer has moved on to that next
 //     entry), the mode table's reads (mode_rd_i at mode_adr_i) and E6 of
 //     entry ent_i for the mode load and for the header (e6_i; ent_i is 0 in
-//     the header), the last two only while no other main read runs.  In every other clock the word is the background
+//     the header), the last two only while no other main read runs, and
+//     E7 of the entry whose transfer runs (e7_i, in its transfer's first
+//     clock: {e7_ent_i, 011}, e7_ent_i that entry + 1).  In every other clock the word is the background
 //     check's (bg_adr_i, rtl/albatross_rom_check.v).
 //   * Addresses: entry k's word j is 4 + 8k + j = {k, 3'b100} + j (mod
 //     2^ROM_AW): E0..E3 are {k, 1jj}; E4..E7 are {k + 1, 0jj}, k + 1 from
@@ -38,6 +40,8 @@ module albatross_schedule_rom #(
     input  wire              mode_rd_i,   // a read of the mode table (rtl/albatross_mode_switch.v)
     input  wire [$clog2(ROM_WORDS)-1:0] mode_adr_i,
     input  wire              e6_i,        // a read of E6 of entry ent_i (the mode load's, the header's)
+    input  wire              e7_i,        // a read of E7 of the running entry (its transfer's first clock)
+    input  wire [7:0]        e7_ent_i,    // that entry + 1
     input  wire [$clog2(ROM_WORDS)-1:0] bg_adr_i,    // the background check's word
     output wire              main_o,      // a main read in this clock (the check's word waits)
     output wire [31:0]       dat_o
@@ -67,12 +71,13 @@ module albatross_schedule_rom #(
 
     // ------------------------------------------------------------ address
     wire              fetch_rom = fetch_i && step_i <= 3'd6;
-    wire              main_rom  = header_i || start_i || fetch_rom || mode_rd_i || e6_i;
+    wire              main_rom  = header_i || start_i || fetch_rom || mode_rd_i || e6_i || e7_i;
     wire              e6_rd     = (fetch_i && step_i == 3'd6) || e6_i;   // E6 of entry ent_i
     wire              adr_inc   = (fetch_i && step_i >= 3'd3) || e6_i;  // E4, E5, next E1, E6
     /* verilator lint_off UNUSEDSIGNAL */
     wire [7:0]        ent_sel   = adr_inc ? ent_inc_i : ent_i;
     wire [7:0]        ent_wrap  = first_i;
+    wire [7:0]        ent_e7    = e7_ent_i;
     wire              adr_wrap  = fetch_i && step_i == 3'd5 && last_i;  // last entry: word 5
     /* verilator lint_on UNUSEDSIGNAL */
     reg  [2:0]        adr_lo;
@@ -91,6 +96,7 @@ module albatross_schedule_rom #(
     reg [ROM_AW-1:0] main_adr;
     always @* begin
         main_adr = {adr_wrap ? ent_wrap[ROM_AW-4:0] : ent_sel[ROM_AW-4:0], adr_lo};
+        if (e7_i) main_adr = {ent_e7[ROM_AW-4:0], 3'b011};        // E7: {k + 1, 011}
         if (mode_rd_i) main_adr = mode_adr_i;
         if (header_i)
             case (step_i)

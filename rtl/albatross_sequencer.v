@@ -61,6 +61,9 @@
 //     {ent_q + 1, 010}: the ROM's one incrementer); last_q and ent0_q keep
 //     what the rest of the slot needs of the entry that runs.  HAS_MULTIRATE
 //     0: every entry is due (E6 must be 0, else the entry is invalid).
+//   * E7 (HAS_FRAGMENTS): read in the first clock of the entry's transfer
+//     (a main read: the background check waits a clock), frag_o is its frag
+//     field from the clock after, held until the next transfer's.
 //   * Deadline D = cycle start + start + length.  may_access_o is high in a
 //     clock c of a slot when an access put on the bus in clock c+1 ends
 //     before D even if it times out: c + 1 <= D - TIMEOUT - 2.  go_o and
@@ -92,7 +95,8 @@ module albatross_sequencer #(
     parameter CRC_BITS   = 4,    // bits of a ROM word the ROM check's CRC takes in a clock (albatross_rom_check)
     parameter HAS_MODES  = 1,    // 1: mode switches on request (albatross_mode_switch); 0: the start-up mode only
     parameter HAS_MULTIRATE = 1, // 1: entries run in the minor cycles of their E6 (base, rep); 0: every entry in every cycle
-    parameter CLUSTER_BITS  = 15 // bits of the minor-cycle count: reps up to CLUSTER_BITS (1..15)
+    parameter CLUSTER_BITS  = 15, // bits of the minor-cycle count: reps up to CLUSTER_BITS (1..15)
+    parameter HAS_FRAGMENTS = 1  // 1: E7.frag of the running entry on frag_o; 0: frag_o is 0
 ) (
     input  wire                    clk_i,
     input  wire                    rst_i,          // synchronous, active high
@@ -108,6 +112,7 @@ module albatross_sequencer #(
     output wire [15:0]             dst_board_o,    // destination d at [4d +: 4]
     output wire [4*ADDR_WIDTH-1:0] dst_base_o,     // destination d at [d*ADDR_WIDTH +: ADDR_WIDTH]
     output wire [31:0]             slot_time_o,    // S, the slot's nominal start
+    output wire [11:0]             frag_o,         // E7.frag of the running entry, valid from 2 clocks after go_o
     output wire                    sync_entry_o,   // the entry is the SYNC COPY (entry 0, sync mode)
     output wire                    four_o,         // E0 flag FOUR_SLOT: the channel is of the four-slot kind
     output wire                    request_o,      // E0 flag REQUEST: a COPY whose New value is a mode request
@@ -207,6 +212,8 @@ module albatross_sequencer #(
     reg [15:0]         rerr_q;
     reg [15:0]         cycles_q;
     reg                cycle_q1;      // cycle_o
+    reg                e7_rd_q, e7_q; // E7 of the running entry: read now / in rom_q now
+    reg [11:0]         frag_q;        // E7.frag of the running entry
 
     // ------------------------------------------------------------ ROM and its read port
     wire               start_now = state_q == ST_WAIT && next_rel_q > {1'b0, start_q};   // rel >= start: clock S (late only after an overrun)
@@ -238,6 +245,7 @@ module albatross_sequencer #(
         .clk_i(clk_i), .time_i(time_q), .header_i(state_q == ST_HEADER && !hdr_last), .start_i(start_now),
         .fetch_i(state_q == ST_FETCH), .step_i(step_q), .ent_i(ent_q), .ent_inc_i(ent_inc), .last_i(last_ent),
         .first_i(m_first), .mode_rd_i(mode_rd), .mode_adr_i(mode_adr), .e6_i(mode_e6_rd || hdr_e6),
+        .e7_i(e7_rd_q && state_q == ST_TRANSFER), .e7_ent_i(last_q ? m_end : ent_q),
         .bg_adr_i(bg_adr),
         .main_o(main_rom), .dat_o(rom_q));
 
@@ -368,6 +376,18 @@ module albatross_sequencer #(
         go_q      <= !rst_i && state_q == ST_FETCH && step_q == 3'd5 && kind != ALB_KIND_IDLE[1:0] && due;
         in_time_q <= {1'b0, next_rel_q[TB-1:0]} < end_q - MARGIN_T;
     end
+
+    // ------------------------------------------------------------ E7 of the running entry
+    // E7 is read in the first clock of the entry's transfer (the fetch's
+    // clocks are all taken; the entry + 1 is ent_q there, m_end after the
+    // mode's last), so frag_o is the ROM word in the clock after it, and
+    // holds it to the next transfer.
+    always @(posedge clk_i) begin
+        e7_rd_q <= !rst_i && HAS_FRAGMENTS != 0 && go_now;
+        e7_q    <= !rst_i && e7_rd_q;
+        if (e7_q) frag_q <= rom_q[ALB_ROM_E7_FRAG_LSB +: 12];
+    end
+    assign frag_o = HAS_FRAGMENTS == 0 ? 12'd0 : e7_q ? rom_q[ALB_ROM_E7_FRAG_LSB +: 12] : frag_q;
     // Saturating counters: the carry out of the increment says the count is at its top.
     wire        rerr_up  = mism_new | (entry_over && state_q == ST_FETCH && bad_q);
     wire [16:0] rerr_inc = {1'b0, rerr_q} + 17'd1;   // (rerr_up enables it: the event is not on the carry chain)

@@ -69,8 +69,12 @@
 //     destinations still in the value (a dropped one stays out of it), no
 //     taken_at, Slot or Actual store (nothing published).  The last
 //     fragment: taken_at, (Slot,) Actual as above, prog_o = 0.  A fragment
-//     cut off keeps p (it runs again from the same word); a value with no
-//     destination left ends (prog_o = 0).  gone_o: the destinations dropped
+//     cut off keeps p (it runs again from the same word), except the first
+//     (p stays 0: the next run Imports afresh) and a last one whose
+//     publication has begun (p = 0, the destinations not published stay in
+//     need: the next run Imports afresh and an Old value is sent again from
+//     fragment 0, its control loads seeing a landed Actual store); a value
+//     with no destination left ends (prog_o = 0).  gone_o: the destinations dropped
 //     in a fragment that is not the last (abandoned now, not in need).
 // Parts: albatross_transfer_dest (the per-destination registers),
 // albatross_transfer_access (address, lanes and write data of the access),
@@ -91,7 +95,7 @@ module albatross_transfer #(
     input  wire                    request_i,      // a REQUEST COPY: its New value is a mode request
     input  wire [3:0]              active_i,       // the destinations of the entry
     input  wire [11:0]             words_i,        // W
-    input  wire [11:0]             frag_i,         // words per fragment (E7.frag; 0: one fragment)
+    input  wire [11:0]             frag_i,         // words per fragment (E7.frag; 0: one fragment), valid from 2 clocks after go_i
     input  wire [3:0]              src_board_i,
     input  wire [ADDR_WIDTH-1:0]   src_base_i,
     input  wire [15:0]             dst_board_i,    // d at [4d +: 4]
@@ -174,9 +178,8 @@ module albatross_transfer #(
     reg        new_q, icor_q, imp_q, exp_q;
     reg [3:0]  serve_q, need_q, pub_q, cor_q;
     reg        cont_q;                // fragments: the slot goes on with a value (no Import)
-    reg        lastf_q;               // the slot's words end the value
     reg        fdone_q;               // a fragment not the last stored all its words
-    reg [11:0] end_q;                 // the end of the slot's words
+    reg        pubph_q;               // the publication (taken_at, Slot, Actual stores) has begun
     wire [2:0] buf_d, tried_d;
     wire       dst      = state_q[3];
     wire       ack      = ack_i && stb_q;
@@ -213,16 +216,16 @@ module albatross_transfer #(
     wire [1:0] first_in = start_need[0] ? 2'd0 : start_need[1] ? 2'd1 : start_need[2] ? 2'd2 : 2'd3;
 
     // ------------------------------------------------------------ fragments
-    // cont: the slot goes on with a value (st_prog_i a word of it); f_end:
-    // the end of the slot's words, min(p + F, W); F = 0 or frag_end >= W:
-    // the last fragment.
+    // cont (at go_i): the slot goes on with a value, st_prog_i a word of it
+    // (only a fragmented value leaves a progress: frag_i is not needed yet,
+    // it comes from the ROM after go_i).  end_w: the end of the slot's words,
+    // min(p + F, W), read where a word store ends (from 2 clocks after go_i);
+    // F = 0, or p + F >= W: the last fragment (lastf).
+    wire        cont     = HAS_FRAGMENTS != 0 && copy_i && !request_i && st_prog_i != 12'd0 && st_prog_i < words_i;
     wire        fr_on    = HAS_FRAGMENTS != 0 && copy_i && !request_i && frag_i != 12'd0;
-    wire        cont     = fr_on && st_prog_i != 12'd0 && st_prog_i < words_i;
-    wire [12:0] f_sum    = {1'b0, cont ? st_prog_i : 12'd0} + {1'b0, frag_i};
-    wire        f_last   = !fr_on || f_sum >= {1'b0, words_i};
-    wire [11:0] f_end    = f_last ? words_i : f_sum[11:0];
-    wire [11:0] end_w    = HAS_FRAGMENTS != 0 ? end_q : words_i;
-    wire        lastf    = HAS_FRAGMENTS == 0 || lastf_q;
+    wire [12:0] f_sum    = {1'b0, cont_q ? st_prog_i : 12'd0} + {1'b0, frag_i};
+    wire        lastf    = !fr_on || f_sum >= {1'b0, words_i};
+    wire [11:0] end_w    = lastf ? words_i : f_sum[11:0];
     wire [3:0]  c_need   = st_need_i & active_i;
 
     // ------------------------------------------------------------ steps
@@ -294,8 +297,8 @@ module albatross_transfer #(
             icor_q   <= 1'b0;
             rl_q     <= 3'd0;
             cont_q   <= 1'b0;
-            lastf_q  <= 1'b1;
             fdone_q  <= 1'b0;
+            pubph_q  <= 1'b0;
             serve_q  <= 4'd0;
             need_q   <= 4'd0;
             pub_q    <= 4'd0;
@@ -312,9 +315,8 @@ module albatross_transfer #(
             drop_q   <= 1'b0;
             rl_q     <= st_rl_i;
             cont_q   <= cont;
-            lastf_q  <= f_last;
             fdone_q  <= 1'b0;
-            end_q    <= f_end;
+            pubph_q  <= 1'b0;
             if (cont) begin
                 // A fragment after the first: its first word from the held buffer.
                 imp_q   <= 1'b0;
@@ -408,8 +410,10 @@ module albatross_transfer #(
                 end
                 else if (state_q == S_DST_WORD) begin
                     if (last_wd) begin
-                        if (lastf) begin_access(S_DST_TKN, first_d);
-                        else begin
+                        if (lastf) begin
+                            begin_access(S_DST_TKN, first_d);
+                            pubph_q <= 1'b1;
+                        end else begin
                             finish;                        // a fragment not the last: nothing published
                             fdone_q <= 1'b1;
                         end
@@ -479,9 +483,14 @@ module albatross_transfer #(
     assign exp_run_o   = exp_q;
     assign new_o       = nrm && choose && new_q;
     assign rl_o        = rl_q;
-    // A value that goes on: the destinations still in it (the dropped ones out).
-    wire   mid         = HAS_FRAGMENTS != 0 && (fdone_q || (cont_q && need_q != 4'd0));
-    assign prog_o      = !mid ? 12'd0 : fdone_q ? end_q : st_prog_i;
+    // A value that goes on (a fragment not the last done, or a later fragment
+    // cut before its publication began): the destinations still in it (the
+    // dropped ones out).  Once the last fragment's publication has begun, the
+    // value ends as a whole one does (a destination not published stays in
+    // need, and the next run Imports afresh, its control load seeing a
+    // landed store).
+    wire   mid         = HAS_FRAGMENTS != 0 && (fdone_q || (cont_q && !pubph_q && need_q != 4'd0));
+    assign prog_o      = !mid ? 12'd0 : fdone_q ? end_w : st_prog_i;
     assign mid_o       = mid;
     assign gone_o      = serve_q & ~need_q & ~pub_q;
     assign need_o      = mid ? need_q : serve_q & ~pub_q;

@@ -34,7 +34,8 @@ module fseq_contract #(
     parameter HAS_ROM_RECHECK = 1,  // unused
     parameter HAS_ENTRY_CHECK = 1,  // unused
     parameter CRC_BITS        = 4,  // unused
-    parameter HAS_MODES       = 1   // unused (no mode request: no REQUEST entry)
+    parameter HAS_MODES       = 1,  // unused (no mode request: no REQUEST entry)
+    parameter HAS_FRAGMENTS   = 1   // unused (E7.frag is e_frag)
 ) (
     input  wire                    clk_i,
     input  wire                    rst_i,
@@ -49,6 +50,7 @@ module fseq_contract #(
     output wire [15:0]             dst_board_o,
     output wire [4*ADDR_WIDTH-1:0] dst_base_o,
     output wire [31:0]             slot_time_o,
+    output wire [11:0]             frag_o,         // E7.frag (e_frag; F_FRAG: free from 2 clocks after go_o)
     output wire                    sync_entry_o,
     output wire                    four_o,
     output wire                    request_o,      // (modes: not modelled, no REQUEST entry)
@@ -131,6 +133,7 @@ module fseq_contract #(
     assign dst_board_o  = {8'd0, 4'd3, 4'd2};
     assign dst_base_o   = {{(2*AW){1'b0}}, e_dst_base1, e_dst_base0};
     assign slot_time_o  = f_slot_time;
+    assign frag_o       = 12'd0;                 // every value in one slot
     assign sync_entry_o = 1'b0;
     assign four_o       = e_four;
     assign poll_cyc_o   = 1'b0;

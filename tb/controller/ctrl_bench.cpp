@@ -54,6 +54,7 @@ std::vector<uint32_t> build_rom(uint32_t h1, unsigned hflags, const std::vector<
         w[C::E3_SRC.word] |= C::E3_SRC.put(C::place(e.sbrd, e.sbase));
         for (size_t i = 0; i < e.dst.size(); ++i)
             w[C::DST[i].word] |= C::DST[i].put(C::place(e.dst[i].brd, e.dst[i].base));
+        w[C::E7_FRAG.word] |= C::E7_FRAG.put(e.frag);
     }
     reseal(r, es.size());
     return r;

@@ -75,6 +75,7 @@ struct Entry {
     uint32_t start, len;
     unsigned sbrd, sbase;
     std::vector<Dst> dst;
+    unsigned frag = 0;                  // E7.frag: words per fragment (0: one fragment)
 };
 enum { IDLE = C::KIND_IDLE, COPY = C::KIND_COPY, TIME = C::KIND_TIME, STATUS = C::KIND_STATUS };
 
@@ -366,3 +367,5 @@ void scenario_modes();
 // ctrl_scenarios_race.cpp
 void scenario_deadline();
 void scenario_race4();
+// ctrl_scenarios_frag.cpp
+void scenario_frag();

@@ -57,6 +57,13 @@
 //   race4    a four-slot value completed between the Import's two
 //            control-word loads is the one taken, with the second load's
 //            time (group 2; negative controller-negative-slot_first_load)
+//   frag     a value in 3 fragments: published once, after its last
+//            fragment, whole; the source's lock held (no control access) and
+//            each fragment at its word; a failed fragment run again from its
+//            word; a reset in the middle publishes nothing of the cut value
+//            (group 2; ctrl_scenarios_frag.cpp; negatives
+//            controller-negative-frag_publish_first, -frag_reimport,
+//            -frag_wrong_word)
 // Each check prints what it expected and what it got.  Exit status 0 if all
 // pass, else 64 + a bit mask of the failed groups (1 timing, 2 data, 4 rom,
 // 8 faults, 16 dead, 32 abandon).  --inject=timing makes the timing checker expect one
@@ -66,7 +73,7 @@
 // Files: ctrl_bench.h/.cpp (checks, ROM builder, model wrapper, CPU protocol),
 //        ctrl_scenarios_data.cpp (basic, corrupt, four), ctrl_scenarios_faults.cpp (faults, dead,
 //        droprun, sync, abandon), ctrl_scenarios_cold.cpp (cold), ctrl_scenarios_modes.cpp (modes),
-//        ctrl_scenarios_race.cpp (deadline, race4).
+//        ctrl_scenarios_race.cpp (deadline, race4), ctrl_scenarios_frag.cpp (frag).
 #include "ctrl_bench.h"
 
 // ------------------------------------------------------------------ main
@@ -86,7 +93,7 @@ int main(int argc, char **argv) {
             }
         }
         else {
-            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|droprun|sync|four|abandon|cold|modes|deadline|race4]\n",
+            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|droprun|sync|four|abandon|cold|modes|deadline|race4|frag]\n",
                          argv[0]);
             return 2;
         }
@@ -96,7 +103,8 @@ int main(int argc, char **argv) {
         {"basic", scenario_basic}, {"corrupt", scenario_corrupt}, {"faults", scenario_faults}, {"dead", scenario_dead},
         {"droprun", scenario_droprun},
         {"sync", scenario_sync}, {"four", scenario_four}, {"abandon", scenario_abandon}, {"cold", scenario_cold},
-        {"modes", scenario_modes}, {"deadline", scenario_deadline}, {"race4", scenario_race4}};
+        {"modes", scenario_modes}, {"deadline", scenario_deadline}, {"race4", scenario_race4},
+        {"frag", scenario_frag}};
     for (auto &x : sc)
         if (only.empty() || only == x.name) x.fn();
     std::printf("test_controller: %u checks, %u failed%s\n", g_checks, g_fails,

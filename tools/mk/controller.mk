@@ -27,7 +27,7 @@ CTRL_BIN := $(CTRL_DIR)/obj/Vtb_system
 CTRL_CPP := tb/controller/test_controller.cpp tb/controller/ctrl_bench.cpp \
             tb/controller/ctrl_scenarios_data.cpp tb/controller/ctrl_scenarios_faults.cpp \
             tb/controller/ctrl_scenarios_cold.cpp tb/controller/ctrl_scenarios_modes.cpp \
-            tb/controller/ctrl_scenarios_race.cpp
+            tb/controller/ctrl_scenarios_race.cpp tb/controller/ctrl_scenarios_frag.cpp
 CTRL_SRC := tb/system/tb_system.v tb/common/bus_fault_injector.v $(CORE_soc_system) $(CTRL_CPP) tb/controller/ctrl_bench.h \
             $(RTL_INC) tb/common/albatross_contract.h
 
@@ -71,7 +71,8 @@ $(CTRL_DIR)/mutant-$(1)/obj/Vtb_system: $(CTRL_SRC) $(CTRL_DIR)/mutant-$(1)/src/
 	    --Mdir $(CTRL_DIR)/mutant-$(1)/obj -y $(CTRL_DIR)/mutant-$(1)/src $(VLIB) tb/system/tb_system.v $(abspath $(CTRL_CPP)) \
 	    > $(CTRL_DIR)/mutant-$(1)/build.log 2>&1 || { cat $(CTRL_DIR)/mutant-$(1)/build.log; exit 1; }
 endef
-$(foreach m,stale_need cold_zero_corrupt no_request forget_state forget_switch deadline_late slot_first_load,$(eval $(call ctrl_mutant_model,$(m))))
+$(foreach m,stale_need cold_zero_corrupt no_request forget_state forget_switch deadline_late slot_first_load \
+    frag_publish_first frag_reimport frag_wrong_word,$(eval $(call ctrl_mutant_model,$(m))))
 CTRL_MUT_DIR := $(CTRL_DIR)/mutant-stale_need
 
 TESTS += controller-abandon controller-negative-stale_need
@@ -195,3 +196,19 @@ test-controller-negative-$(1): $(CTRL_DIR)/mutant-$(1)/obj/Vtb_system
 endef
 $(eval $(call ctrl_race_negative,deadline_late,deadline,80,deadline: length .* no access begins after D-TIMEOUT-2,the controller whose deadline check allows one clock more))
 $(eval $(call ctrl_race_negative,slot_first_load,race4,66,race4: the controller took the value completed before its second load,the four-slot Import that takes the Slot byte from its first load))
+
+# A value in fragments (ctrl_scenarios_frag.cpp): scenario frag (W 5 in
+# fragments of 2: published once after the last fragment, whole; the
+# source's lock held and each fragment at its word; a failed fragment run
+# again from its word; a reset in the middle).  Negatives, each a controller
+# mutant (tb/mutants/controller/NAME.sed) that must fail it (exit 66, data):
+#   frag_publish_first  a publish after the first fragment
+#   frag_reimport       the source's lock released between fragments (a fresh Import)
+#   frag_wrong_word     a fragment resumed one word early
+TESTS += controller-frag
+.PHONY: test-controller-frag
+test-controller-frag: $(CTRL_BIN)
+	@tools/run_test.sh controller-frag $(CTRL_BIN) --dir=$(CTRL_DIR)/frag --scenario=frag
+$(eval $(call ctrl_race_negative,frag_publish_first,frag,66,frag whole: fragment 0 publishes nothing,the controller that publishes after the first fragment of a value))
+$(eval $(call ctrl_race_negative,frag_reimport,frag,66,frag whole: fragment 1 makes no access to the source.s control word,the controller that Imports afresh at every fragment))
+$(eval $(call ctrl_race_negative,frag_wrong_word,frag,66,frag whole: fragment 1 resumes at word 2,the controller that resumes a fragment one word early))

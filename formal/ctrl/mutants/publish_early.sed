@@ -2,4 +2,4 @@
 # publish_early (formal/rtl/mutants/publish_early.sed on the datapath): after
 # the last value word, Actual is stored instead of taken_at.  Must fail
 # dst_publish_complete.
-s/if (lastf) begin_access(S_DST_TKN, first_d);/if (lastf) begin_access(S_DST_FIN, first_d);/
+s/begin_access(S_DST_TKN, first_d);/begin_access(S_DST_FIN, first_d);/

@@ -1,4 +1,4 @@
 # target: rtl/albatross_transfer.v
 # Controller mutant (formal only): after the last value word, the Export stores
 # Actual instead of the taken_at word, publishing a buffer one word short.
-s/if (lastf) begin_access(S_DST_TKN, first_d);/if (lastf) begin_access(S_DST_FIN, first_d);/
+s/begin_access(S_DST_TKN, first_d);/begin_access(S_DST_FIN, first_d);/
