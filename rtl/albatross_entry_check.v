@@ -13,10 +13,12 @@
 //     not fit in TIME_BITS or is below MIN_LEN, or a due entry (due_i)
 //     starts before the end of the previous slot that ran in this cycle (a
 //     valid, due entry's; prev_end_i: entries of disjoint due sets may share
-//     a window); or the entry's E6, read ahead into rep_i and
-//     base_i, has rep above the running mode's cluster (cluster_i) or above
-//     MAX_REP (the sequencer's count: CLUSTER_BITS, 0 without
-//     HAS_MULTIRATE), or base >= 2^rep.
+//     a window); or the entry's E6 was found bad (e6_bad_i).
+//   * E6 (e6_bad_o, on rom_i whenever it holds an E6 word, which the
+//     sequencer reads ahead of the fetch and keeps the verdict of): rep above
+//     the mode's cluster (cluster_i) or above MAX_REP (the sequencer's count:
+//     CLUSTER_BITS, 0 without HAS_MULTIRATE: E6 must then be 0), or base >=
+//     2^rep.
 //   * Clock 3: the slot ends after the cycle (end_i > H1; end_i is the
 //     register clock 2 wrote, so no adder stands between the ROM's output
 //     and this compare).
@@ -48,11 +50,11 @@ module albatross_entry_check #(
     input  wire [TIME_BITS-1:0] cycle_i,      // H1
     input  wire [TIME_BITS:0]   prev_end_i,   // the end of the previous slot run in this cycle
     input  wire [TIME_BITS:0]   end_i,        // start + length (E2's, from clock 3 on)
-    input  wire [3:0]           rep_i,        // E6's rep
-    input  wire [14:0]          base_i,       // E6's base
-    input  wire [3:0]           cluster_i,    // the running mode's cluster
+    input  wire [3:0]           cluster_i,    // the cluster of the mode of the E6 in rom_i
     input  wire                 due_i,        // the entry is due in this cycle
-    output reg                  bad_o
+    input  wire                 e6_bad_i,     // the entry's E6 was found bad (e6_bad_o when it was read)
+    output reg                  bad_o,
+    output wire                 e6_bad_o      // rom_i, an E6 word, breaks the E6 rules
 );
 
 `include "albatross_contract.vh"
@@ -101,19 +103,22 @@ module albatross_entry_check #(
                           (e0_kind == ALB_KIND_TIME && e0_w != 12'd1) ||
                           (rom_i[EFLAG_MODE] && (e0_kind != ALB_KIND_STATUS || e0_w != 12'd2)) ||
                           (e0_kind == ALB_KIND_STATUS && e0_w != W_STATUS && !rom_i[EFLAG_MODE]);
-    // E6: rep <= cluster, rep <= MAX_REP, base < 2^rep: no base bit at or above
-    // rep (above[i]: a base bit at or above i).  MAX_REP 0 (no minor cycles):
-    // E6 must be 0.
-    reg  [15:0] above;
+    // E6: rep <= cluster, rep <= MAX_REP, base < 2^rep: base's bit length (blen,
+    // the index of its highest one + 1) at most rep (smaller in iCE40 LUTs
+    // than a shift or a scan of the bits above rep).  MAX_REP 0 (no minor
+    // cycles): E6 must be 0.
+    wire [3:0]  rep_i  = rom_i[ALB_ROM_E6_REP_LSB +: 4];
+    wire [14:0] base_i = rom_i[ALB_ROM_E6_BASE_LSB +: 15];
+    reg  [3:0]  blen;
     integer     bi;
     always @* begin
-        above[15] = 1'b0;
-        for (bi = 14; bi >= 0; bi = bi - 1) above[bi] = above[bi+1] || base_i[bi];
+        blen = 4'd0;
+        for (bi = 0; bi < 15; bi = bi + 1) if (base_i[bi]) blen = bi[3:0] + 4'd1;
     end
-    wire        e6_bad  = MAX_REP == 0 ? (rep_i != 4'd0 || base_i != 15'd0) :
-                          (above[rep_i] || rep_i > cluster_i || (MAX_REP < 15 && !below({28'd0, rep_i}, MAX_REP + 1)));
+    assign      e6_bad_o = CHK && (MAX_REP == 0 ? (rep_i != 4'd0 || base_i != 15'd0) :
+                           (blen > rep_i || rep_i > cluster_i || (MAX_REP < 15 && !below({28'd0, rep_i}, MAX_REP + 1))));
     wire        e2_bad  = start_bad_i || rom_i[31:TB] != 0 || below({{(32-TB){1'b0}}, rom_i[TB-1:0]}, MIN_LEN) ||
-                          ({1'b0, start_i} < prev_end_i && due_i) || e6_bad;
+                          ({1'b0, start_i} < prev_end_i && due_i) || e6_bad_i;
     wire        end_bad = end_i > {1'b0, cycle_i};
     // base + span < 2^ADDR_WIDTH: the bits of each above ADDR_WIDTH are 0 and
     // the sum of the low ADDR_WIDTH bits has no carry out (a carry chain, no sum).

@@ -3,8 +3,10 @@
 // reads of the requested mode's descriptor before the cycle boundary.
 // Rules:
 //   * The running schedule: entries first_o .. end_o - 1, cycle length
-//     cycle_o, drop run drop_o, cluster cluster_o (2^c minor cycles), and the
-//     modes it may switch to.  They are
+//     cycle_o, drop run drop_o, and the modes it may switch to; cluster_o
+//     (2^c minor cycles) is the last loaded mode's (the running one's, but
+//     from its D2 read on for a mode loaded for the next boundary: the
+//     sequencer judges the new first entry's E6 against it).  They are
 //     registers that take a loaded mode's values at a cycle boundary
 //     (switch_i) and change nowhere else.  The header is the load of mode 0
 //     (hdr1_i: rom_i = H1, hdr2_i: rom_i = H2): the cycle and next mask of
@@ -97,7 +99,7 @@ module albatross_mode_switch #(
     reg [TB-1:0] n_cycle_q, cycle_q;
     reg [7:0]    n_first_q, n_end_q, n_drop_q, first_q, end_q, drop_q;
     reg [15:0]   n_next_q, next_q;            // the modes it may switch to
-    reg [3:0]    n_cluster_q, cluster_q;
+    reg [3:0]    n_cluster_q;
 
     localparam  MODES   = HAS_MODES != 0;
     wire        taken   = MODES && req_i && modes_q != 4'd0 && step_q == L_IDLE && req_mode_i != mode_q;
@@ -130,7 +132,6 @@ module albatross_mode_switch #(
             drop_q    <= n_drop_q;
             end_q     <= n_end_q;
             first_q   <= n_first_q;
-            cluster_q <= n_cluster_q;
         end
     end
 
@@ -188,7 +189,7 @@ module albatross_mode_switch #(
     assign next_first_o = MODES ? ((commit || ld_d1) ? n_first_q : first_q) : 8'd0;
     assign cycle_o      = cycle_q;
     assign drop_o       = drop_q;
-    assign cluster_o    = cluster_q;
+    assign cluster_o    = n_cluster_q;
 
 endmodule
 

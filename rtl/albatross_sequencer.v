@@ -43,11 +43,12 @@
 //     no go_o and adds 1 to rom_errors, once per cycle; an IDLE entry gets
 //     no go_o.
 //   * Minor cycles (HAS_MULTIRATE): n_q counts the cycles, 0 in the first
-//     cycle after start-up or a mode switch (the boundaries that take a
-//     loaded mode), + 1 at every other boundary, modulo 2^CLUSTER_BITS: as
-//     2^c divides 2^CLUSTER_BITS, n_q mod 2^c is the contract's count (which
-//     wraps at 2^c, c the running mode's cluster) and n_q mod 2^rep its
-//     residue for every rep <= c.  An entry is due in a cycle when
+//     cycle after start-up or a mode switch, + 1 at every other cycle,
+//     modulo 2^CLUSTER_BITS: as 2^c divides 2^CLUSTER_BITS, n_q mod 2^c is
+//     the contract's count (which wraps at 2^c, c the running mode's
+//     cluster) and n_q mod 2^rep its residue for every rep <= c.  (n_q
+//     counts for the entry in ent_q: it steps when ent_q wraps to the mode's
+//     first entry, and the mode load clears it with ent_q.)  An entry is due in a cycle when
 //     n mod 2^rep = base (E6); every entry, due or not, is fetched in every
 //     cycle exactly as above, and only a due one gets go_o: a non-due entry
 //     costs its fetch (clocks S .. S+6, no bus access, no rom_errors, no
@@ -56,7 +57,8 @@
 //     (go_q), so E6 is read ahead: entry 0's in the clock after the start-up
 //     pass (no start-up clock added), entry k's in FETCH clock 6 of the entry
 //     before it (the port is free there), the new mode's first entry's in the
-//     mode load; rep_q and base_q hold it until the next one is read.  The entry register ent_q moves on
+//     mode load.  It is judged in the clock it arrives: due_q and e6_bad_q
+//     hold the verdict until the next E6.  The entry register ent_q moves on
 //     to the next entry in FETCH clock 5 (so that E6 of the next entry is
 //     {ent_q + 1, 010}: the ROM's one incrementer); last_q and ent0_q keep
 //     what the rest of the slot needs of the entry that runs.  HAS_MULTIRATE
@@ -278,33 +280,37 @@ module albatross_sequencer #(
         .cycle_o(cycle_q), .drop_o(m_drop), .cluster_o(m_cluster));
 
     // ------------------------------------------------------------ minor cycles and the due test
-    // E6 of entry ent_q, read ahead (the header's step 4, FETCH clock 6, the
-    // mode load) and taken in the clock its word is in rom_q; the count n_q.
+    // E6 of entry ent_q, read ahead (after the start-up pass, FETCH clock 6, the
+    // mode load), is judged in the clock its word is in rom_q: due_q (due in
+    // the cycle it runs in: n_q, below) and e6_bad_q (the entry check's E6
+    // rules, against the loaded mode's cluster) hold the verdict until the
+    // next E6.  n_q is the count of the cycle entry ent_q runs in: 0 from
+    // reset and from the mode load's new first entry, + 1 (modulo
+    // 2^CLUSTER_BITS) when ent_q wraps to the mode's first entry.
     localparam CB = CLUSTER_BITS;
     localparam MR = HAS_MULTIRATE != 0;
-    reg  [3:0]    rep_q;
-    reg  [14:0]   base_q;
+    reg           due_q, e6_bad_q;
     reg  [CB-1:0] n_q;
     reg           e6_hdr_q, e6_fetch_q;      // rom_q holds E6 read after the start-up pass / by FETCH clock 6
-    always @(posedge clk_i) begin
-        e6_hdr_q   <= !rst_i && hdr_e6;
-        e6_fetch_q <= !rst_i && state_q == ST_FETCH && step_q == 3'd6;
-        if (e6_hdr_q || e6_fetch_q || mode_e6) begin
-            rep_q  <= rom_q[ALB_ROM_E6_REP_LSB +: 4];
-            base_q <= rom_q[ALB_ROM_E6_BASE_LSB +: 15];
-        end
-    end
-    // due: the low rep bits of n and base agree (c[i]: bits 0 .. i-1 agree);
-    // an E6 the entry check rejects (rep above the cluster or CB, base >= 2^rep)
-    // never runs, whatever this says.
+    wire          e6_bad;                    // (the entry check, on rom_q)
+    wire [3:0]    e6_rep  = rom_q[ALB_ROM_E6_REP_LSB +: 4];
+    wire [14:0]   e6_base = rom_q[ALB_ROM_E6_BASE_LSB +: 15];
+    // due: the low rep bits of n and base agree (agree[i]: bits 0 .. i-1 agree)
     reg  [15:0]   agree;
     integer       ai;
     always @* begin
         agree[0] = 1'b1;
         for (ai = 1; ai < 16; ai = ai + 1)
-            agree[ai] = agree[ai-1] && (ai > CB || n_q[(ai > CB ? CB : ai) - 1] == base_q[ai-1]);
+            agree[ai] = agree[ai-1] && (ai > CB || n_q[(ai > CB ? CB : ai) - 1] == e6_base[ai-1]);
     end
-    wire          due = !MR || agree[rep_q];
+    always @(posedge clk_i) begin
+        e6_hdr_q   <= !rst_i && hdr_e6;
+        e6_fetch_q <= !rst_i && state_q == ST_FETCH && step_q == 3'd6;
+        if (e6_hdr_q || e6_fetch_q || mode_e6) begin
+            due_q    <= !MR || agree[e6_rep];
+            e6_bad_q <= e6_bad;
+        end
+    end
 
     // ------------------------------------------------------------ ROM check
     // The start-up CRC and the background re-check; in the clock S of a
@@ -340,8 +346,8 @@ module albatross_sequencer #(
                             .MAX_REP(MR ? CB : 0)) u_entry_check (
         .step_i(step_q), .rom_i(rom_q), .ent0_i(ent_q == 8'd0), .smode_i(smode_q), .bad_mark_i(bad_mark),
         .kind_i(kind), .four_i(four), .nd_i(nd), .e3_i(span), .start_i(start_q), .start_bad_i(start_bad_q),
-        .cycle_i(cycle_q), .prev_end_i(prev_end_q), .end_i(end_q), .rep_i(rep_q), .base_i(base_q),
-        .cluster_i(m_cluster), .due_i(due), .bad_o(bad_now));
+        .cycle_i(cycle_q), .prev_end_i(prev_end_q), .end_i(end_q), .cluster_i(m_cluster), .due_i(due_q),
+        .e6_bad_i(e6_bad_q), .bad_o(bad_now), .e6_bad_o(e6_bad));
 
     // ------------------------------------------------------------ control
     // rel is kept as rel + 1 (next_rel_q): each compare below reads a
@@ -373,7 +379,7 @@ module albatross_sequencer #(
     reg         go_q, in_time_q;
     wire        go_now   = go_q && !bad_q;
     always @(posedge clk_i) begin
-        go_q      <= !rst_i && state_q == ST_FETCH && step_q == 3'd5 && kind != ALB_KIND_IDLE[1:0] && due;
+        go_q      <= !rst_i && state_q == ST_FETCH && step_q == 3'd5 && kind != ALB_KIND_IDLE[1:0] && due_q;
         in_time_q <= {1'b0, next_rel_q[TB-1:0]} < end_q - MARGIN_T;
     end
 
@@ -402,7 +408,8 @@ module albatross_sequencer #(
             err_q     <= 1'b0;
             rerr_q    <= 16'd0;
             cycles_q  <= 16'd0;
-            ent_q     <= 8'd0;            // (the header reads E6 of entry 0 as {ent_q + 1, 010})
+            ent_q     <= 8'd0;            // (E6 of entry 0 is read as {ent_q + 1, 010})
+            n_q       <= {CB{1'b0}};
         end else begin
             time_q    <= time_q + 32'd1;
             next_rel_q <= {1'b0, next_rel_q[TB-1:0]} + 1'b1;
@@ -455,14 +462,15 @@ module albatross_sequencer #(
                         3'd1, 3'd3, 3'd4: ;                                     // E0, E3, E4: u_fields
                         3'd2: end_q <= e2_end;                                  // E2
                         3'd5: begin                                             // E5: u_fields; on to the next entry
-                            ent_q  <= last_ent ? m_first : ent_inc;
+                            ent_q  <= last_ent ? m_next_first : ent_inc;     // (the mode's first: no switch mid-cycle)
                             last_q <= last_ent;
+                            if (last_ent) n_q <= n_q + 1'b1;                   // the next cycle's count
                             ent0_q <= ent_q == 8'd0;
                         end
                         default: begin                                          // E1 of the next entry (its E6 read now)
                             start_q      <= rom_q[TB-1:0];             // (entry_check is done with it)
                             start_bad_q  <= rom_q[31:TB] != 0;
-                            if (!bad_q && due) prev_end_q <= end_q;
+                            if (!bad_q && due_q) prev_end_q <= end_q;
                             if (go_now) state_q <= ST_TRANSFER;
                         end
                     endcase
@@ -472,7 +480,10 @@ module albatross_sequencer #(
                         start_q     <= rom_q[TB-1:0];
                         start_bad_q <= rom_q[31:TB] != 0;
                     end
-                    if (mode_first_ld) ent_q <= m_next_first;               // the new first entry (its E6 read next)
+                    if (mode_first_ld) begin                                // the new first entry (its E6 read next)
+                        ent_q <= m_next_first;
+                        n_q   <= {CB{1'b0}};
+                    end
                 end
                 default: ;
             endcase
@@ -480,7 +491,6 @@ module albatross_sequencer #(
             if (new_cycle) begin
                 next_rel_q  <= {{TB{1'b0}}, 1'b1};
                 ent_q       <= m_next_first;
-                n_q         <= mode_commit ? {CB{1'b0}} : n_q + 1'b1;
                 prev_end_q  <= {(TB+1){1'b0}};
                 state_q     <= ST_WAIT;
                 cycle_q1    <= 1'b1;

@@ -4,10 +4,12 @@
 // before any request, as the sequencer reads it; as the sequencer does, an
 // idle stretch lasts until a boundary, and no boundary comes while hold_o.
 // Proves by k-induction:
-//   base_at_boundary  the running schedule (first_o, end_o, cycle_o, drop_o,
-//                     cluster_o) and mode_o change only in the clock after a
-//                     cycle boundary with a loaded mode (switch_i), or after
-//                     the header;
+//   base_at_boundary  the running schedule (first_o, end_o, cycle_o, drop_o)
+//                     and mode_o change only in the clock after a cycle
+//                     boundary with a loaded mode (switch_i), or after the
+//                     header;
+//   cluster_at_load   cluster_o (the loaded mode's) changes only after the
+//                     header or a load's D2 data (step L_E1);
 //   declared_mode     with M = H2.modes > 0 the running mode is below M;
 //                     without modes it stays 0 and no request is taken (the
 //                     header's load of mode 0 is the only one);
@@ -98,7 +100,10 @@ module fmode_switch (
     always @(posedge clk_i) if (past_valid && !$past(init_q) && !init_q) begin
         if (!$past(hdr1) && !$past(hdr2) && !($past(sw) && $past(f_step) == 3'd5)) begin
             base_at_boundary: assert($stable(first) && $stable(last_end) && $stable(cycle) && $stable(drop) &&
-                                     $stable(cluster) && $stable(mode));
+                                     $stable(mode));
+        end
+        if (!$past(hdr2) && !($past(f_step) == 3'd3)) begin
+            cluster_at_load: assert($stable(cluster));
         end
         if ($past(sw) && $past(f_step) == 3'd5 && $past(run_q)) begin
             allowed_switch: assert(mode == $past(f_idx) && past_allowed);

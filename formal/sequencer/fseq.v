@@ -289,11 +289,10 @@ module fseq (
     (* keep *) wire                f_mism;        // the ROM check's registered mismatch
     (* keep *) wire [31:0]         f_rom_q;       // the ROM's read register
     (* keep *) wire                f_lastq, f_ent0q;   // the entry that runs is the last / entry 0
-    (* keep *) wire [3:0]          f_rep;         // E6 read ahead: rep and base
-    (* keep *) wire [14:0]         f_base;
-    (* keep *) wire [F_CLB-1:0]    f_nq;          // the sequencer's minor-cycle count
-    (* keep *) wire                f_e6h, f_e6f;  // rom_q holds E6 read by the header / by FETCH clock 6
-    (* keep *) wire [3:0]          f_cl, f_rcl;   // the cluster: loaded, running
+    (* keep *) wire                f_dueq, f_e6badq;  // the verdict on the E6 read ahead: due, bad
+    (* keep *) wire [F_CLB-1:0]    f_nq;          // the sequencer's minor-cycle count (of entry f_ent's cycle)
+    (* keep *) wire                f_e6h, f_e6f;  // rom_q holds E6 read after the start-up pass / by FETCH clock 6
+    (* keep *) wire [3:0]          f_cl;          // the loaded mode's cluster
 
     wire          run    = started_q || cycle_o;        // start-up is over
     wire          fetch  = f_state == ST_FETCH;
@@ -306,12 +305,17 @@ module fseq (
     wire [31:0]   s_ent  = e1 ? F_S1 : F_S0;
     wire [31:0]   d_ent  = e1 ? D1 : D0;
     wire [31:0]   s_nxt  = f_ent == 8'd1 ? F_S1 : F_S0;     // the start of entry f_ent
-    // E6 of entry 0 and 1 (word 4 + 8k + 6), and the due fields the sequencer holds: entry f_ent's,
+    // E6 of entry 0 and 1 (word 4 + 8k + 6), and the verdict the sequencer holds: on entry f_ent's,
     // but while fetching (FETCH clocks 1 .. 6 and the clock after, whose rom_q holds the next one's)
+    // on the fetched one's; judged at the count of the cycle it runs in (entry 0 after the last entry:
+    // the next cycle's)
     wire [31:0]   e6w0   = F_ROM[32*10 +: 32];
     wire [31:0]   e6w1   = F_ROM[32*18 +: 32];
     wire          e6_of1 = f_e6f ? f_ent == 8'd0 : fetch ? e1 : f_ent == 8'd1;
-    wire [31:0]   e6_reg = e6_of1 ? e6w1 : e6w0;
+    wire          wrapped = (fetch && f_step == 3'd6 && e1) || (xfer && e1) || f_state == ST_CYCLE_END;
+    wire [7:0]    n_nxt  = (n_cur + 8'd1) & CL_MASK;
+    wire          due0n  = (n_nxt & ((8'd1 << F_R0) - 8'd1)) == F_B0[7:0];
+    wire          due_want = e6_of1 ? due1 : (wrapped && !f_e6f) ? due0n : due0;
     // the slots run so far in the cycle (prev_end: the last due one's end)
     wire [F_TB:0] pe1    = due0 ? D0[F_TB:0] : {(F_TB+1){1'b0}};
     wire [F_TB:0] pe2    = due1 ? D1[F_TB:0] : pe1;
@@ -378,7 +382,7 @@ module fseq (
             end
             if (f_state == ST_HEADER) begin
                 inv_header: assert(f_step <= 3'd4 && !error_o && !f_last && (rst_q || (!f_bg_data && f_bg_dadr == 0)) &&
-                                   (rst_q || (!f_e6h && !f_e6f && f_ent == 8'd0)) &&
+                                   (rst_q || (!f_e6h && !f_e6f && f_ent == 8'd0 && f_nq == {F_CLB{1'b0}})) &&
                                    (f_step < 3'd2 || (f_ne == F_NE && f_smode == F_SMODE)) &&
                                    (f_step < 3'd3 || f_cycle == F_H1[F_TB-1:0]) &&
                                    (f_step < 3'd4 || (f_drop == F_DROP && f_ent_end == F_NE && f_mfirst == 8'd0 &&
@@ -387,7 +391,7 @@ module fseq (
             if (f_state == ST_CHECK) begin
                 inv_check: assert(hdr_ok && !error_o && f_start == F_S0[F_TB-1:0] && !f_start_bad &&
                                   (!f_last || (!f_bg_data && f_bg_dadr == 0)) && f_ent == 8'd0 && !f_e6f && !f_e6h &&
-                                  f_cl == F_CL[3:0]);
+                                  f_cl == F_CL[3:0] && f_nq == {F_CLB{1'b0}});
             end
             if (f_state == ST_ERROR) begin
                 inv_error: assert(!F_VALID && error_o && !cycle_o && !started_q && !f_last && (!f_bg_data || f_bg_dadr == 0));
@@ -419,9 +423,9 @@ module fseq (
                                 f_prev_end == pe_want && (busy_q == xfer) && (!xfer || cur_q == e1) &&
                                 ((last_done_q && !cycle_o) == (f_state == ST_CYCLE_END)));
                 // the due test's inputs: the count (count_wrap), the cluster, the due fields
-                count_wrap: assert(f_nq == n_cur[F_CLB-1:0]);
-                inv_cl:     assert(f_cl == F_CL[3:0] && f_rcl == F_CL[3:0]);
-                inv_e6:  assert(f_e6h || {f_rep, f_base} == {e6_reg[19:16], e6_reg[14:0]});
+                count_wrap: assert(f_nq == (wrapped ? n_nxt[F_CLB-1:0] : n_cur[F_CLB-1:0]));
+                inv_cl:     assert(f_cl == F_CL[3:0]);
+                inv_due: assert(f_e6h || (f_dueq == due_want && !f_e6badq));
                 inv_e6f: assert(!f_e6f || (crel32 == (f_ent == 8'd1 ? F_S0 : F_S1) + FETCH && f_state != ST_FETCH));
                 // the entry that runs, from FETCH clock 6 on
                 if ((fetch && f_step == 3'd6) || xfer || f_state == ST_CYCLE_END) begin
