@@ -67,6 +67,8 @@ module albatross_controller #(
     parameter HAS_ENTRY_CHECK = 1, // 1: the entry field checks at fetch ("Validation"); 0: none
     parameter HAS_MODES  = 1,     // 1: schedule modes switch on request; 0: an image's start-up mode runs for good
     parameter HAS_FRAGMENTS = 1,  // 1: a COPY's value may go in fragments (E7.frag); 0: one slot carries a whole value
+    parameter HAS_MULTIRATE = 1,  // 1: an entry runs in the minor cycles its E6 gives (multi-rate); 0: every entry in every cycle (E6 must be 0)
+    parameter CLUSTER_BITS = 15,  // bits of the minor-cycle count: the largest rep (E6) it runs, 1..15
     parameter ROM_CRC_BITS = 4    // bits of a ROM word the CRC check takes a clock: 1, 2, 4, 8, 16, 32 (smaller is smaller, start-up 32/ROM_CRC_BITS clocks a word)
 ) (
     input  wire                  clk_i,
@@ -138,7 +140,8 @@ module albatross_controller #(
     albatross_sequencer #(.NB(NB), .ADDR_WIDTH(AW), .N_CHAN(N_CHAN), .ROM_WORDS(ROM_WORDS), .ROM_FILE(ROM_FILE),
                           .TIME_BITS(TIME_BITS), .TIMEOUT(TIMEOUT), .POLL(POLL), .HAS_SYNC(HAS_SYNC),
                           .HAS_ROM_RECHECK(HAS_ROM_RECHECK), .HAS_ENTRY_CHECK(HAS_ENTRY_CHECK), .CRC_BITS(ROM_CRC_BITS),
-                          .HAS_MODES(HAS_MODES), .HAS_FRAGMENTS(HAS_FRAGMENTS)) u_seq (
+                          .HAS_MODES(HAS_MODES), .HAS_FRAGMENTS(HAS_FRAGMENTS), .HAS_MULTIRATE(HAS_MULTIRATE),
+                          .CLUSTER_BITS(CLUSTER_BITS)) u_seq (
         .clk_i(clk_i), .rst_i(rst_i), .enable_i(ready_q && cnt_ready),
         .go_o(go), .kind_o(kind), .chan_o(chan7), .nd_o(nd), .words_o(words),
         .src_board_o(src_board), .src_base_o(src_base), .dst_board_o(dst_board), .dst_base_o(dst_base),

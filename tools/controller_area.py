@@ -15,7 +15,8 @@ configures it) synthesised in the same run.  It reports:
   configurations  per family: LUTs, FFs, block RAMs and LUTs / PicoRV32 of
                   "full" (every feature: the parameters' defaults), each
                   optional feature alone off (HAS_STATUS, HAS_SYNC,
-                  HAS_ROM_RECHECK, HAS_ENTRY_CHECK, HAS_MODES, HAS_FRAGMENTS = 0) and "core" (all six 0)
+                  HAS_ROM_RECHECK, HAS_ENTRY_CHECK, HAS_MODES, HAS_FRAGMENTS, HAS_MULTIRATE = 0) and "core"
+                  (all seven 0)
   growth          per growth family: NB = 2, 4, 8, 16 (N_CHAN 16) and
                   N_CHAN = 8, 32, 128 (NB 4)
   Fmax            the controller alone and PicoRV32 alone, placed out of
@@ -62,7 +63,8 @@ FEATURES = [("HAS_STATUS", "STATUS entries and their counters"),
             ("HAS_ROM_RECHECK", "background re-check of the ROM"),
             ("HAS_ENTRY_CHECK", "field checks of the entries at fetch"),
             ("HAS_MODES", "schedule modes' switches"),
-            ("HAS_FRAGMENTS", "values carried in fragments")]
+            ("HAS_FRAGMENTS", "values carried in fragments"),
+            ("HAS_MULTIRATE", "multi-rate schedules (entries due in some minor cycles)")]
 # name: (description, parameters over BASE)
 CONFIGS = [("full", "every feature (the parameters' defaults)", {})] + \
     [(f"no {p[4:].lower().replace('_', ' ')}", f"without the {d} ({p} 0)", {p: 0}) for p, d in FEATURES] + \
