@@ -30,9 +30,10 @@
 //     New value is chosen (the datapath's taken_at stores read it back from
 //     the RAM).
 //   * Fragments (HAS_FRAGMENTS): a second state RAM keeps, per channel id,
-//     the progress of a value carried in fragments (its next word, 0 none)
-//     and each destination's picked buffer, written at every COPY slot's end
-//     and cleared with the rest after reset (a value cut by a reset restarts
+//     the progress of a value carried in fragments (its next word; 0 or W:
+//     none)
+//     and each destination's picked buffer, written at a slot's end where
+//     the progress changes and cleared with the rest after reset (a value cut by a reset restarts
 //     with a fresh Import; nothing partial is published).  The source buffer
 //     held is the ReadLocked copy, and the destinations still in the value
 //     are the need field.  A slot that ends with its value going on counts
@@ -193,14 +194,15 @@ module albatross_controller #(
     // Fragments: {buffers, progress} per channel, a RAM of its own beside
     // the other fields (same addresses, same read and write clocks).
     wire [11:0] st_prog, st_buf, tr_prog, tr_buf;
-    wire        wr_frg = !ready_q || (slot_end && (tr_exp || tr_imp));
+    wire        tr_prog_wr;
+    wire        wr_frg = !ready_q || (slot_end && tr_prog_wr);
     generate
         if (HAS_FRAGMENTS != 0) begin : g_frag_state
             reg [23:0] fr_mem [0:ST_DEPTH-1];
             reg [23:0] fr_q;
             always @(posedge clk_i) begin
                 if (st_wr) begin
-                    if (wr_frg) fr_mem[st_wa] <= ready_q ? {tr_buf, tr_prog} : 24'd0;
+                    if (wr_frg) fr_mem[st_wa] <= {tr_buf, tr_prog};   // (clearing: tr_prog is 0 after reset)
                 end else begin
                     fr_q <= fr_mem[st_ix];
                 end
@@ -241,7 +243,7 @@ module albatross_controller #(
         .src_board_i(src_board), .src_base_i(src_base), .dst_board_i(dst_board), .dst_base_i(dst_base),
         .slot_time_i(slot_time), .may_access_i(may_access), .drop_run_i(drop_run),
         .st_rl_i(st_rl), .st_need_i(st_need), .st_tried_i(st_tried), .st_taken_i(st_taken),
-        .st_prog_i(st_prog), .st_buf_i(st_buf), .prog_o(tr_prog), .buf_o(tr_buf), .mid_o(tr_mid), .gone_o(tr_gone),
+        .st_prog_i(st_prog), .st_buf_i(st_buf), .prog_o(tr_prog), .prog_wr_o(tr_prog_wr), .buf_o(tr_buf), .mid_o(tr_mid), .gone_o(tr_gone),
         .status_i(tr_status), .status_valid_i(tr_status_valid), .index_o(tr_index),
         .done_o(tr_done), .imp_run_o(tr_imp), .exp_run_o(tr_exp), .new_o(tr_new), .rl_o(tr_rl),
         .need_o(tr_need), .tried_o(tr_tried),

@@ -68,13 +68,15 @@
 //     fragment that is not the last: prog_o = its end, need_o = the
 //     destinations still in the value (a dropped one stays out of it), no
 //     taken_at, Slot or Actual store (nothing published).  The last
-//     fragment: taken_at, (Slot,) Actual as above, prog_o = 0.  A fragment
+//     fragment: taken_at, (Slot,) Actual as above, prog_o = W (none: the
+//     next run Imports afresh).  prog_o is written (prog_wr_o) only where
+//     it changes; reset makes it 0 (the state RAM's clearing).  A fragment
 //     cut off keeps p (it runs again from the same word), except the first
-//     (p stays 0: the next run Imports afresh) and a last one whose
-//     publication has begun (p = 0, the destinations not published stay in
+//     (p stays none: the next run Imports afresh) and a last one whose
+//     publication has begun (p = W, none; the destinations not published stay in
 //     need: the next run Imports afresh and an Old value is sent again from
 //     fragment 0, its control loads seeing a landed Actual store); a value
-//     with no destination left ends (prog_o = 0).  gone_o: the destinations dropped
+//     with no destination left ends (its next run Imports afresh).  gone_o: the destinations dropped
 //     in a fragment that is not the last (abandoned now, not in need).
 // Parts: albatross_transfer_dest (the per-destination registers),
 // albatross_transfer_access (address, lanes and write data of the access),
@@ -123,6 +125,7 @@ module albatross_transfer #(
     output wire [3:0]              need_o,         // destinations still in need after the Export
     output wire [11:0]             tried_o,
     output wire [11:0]             prog_o,         // fragments: the progress after the slot
+    output wire                    prog_wr_o,      // fragments: prog_o and buf_o changed (else the state keeps them)
     output wire [11:0]             buf_o,          // fragments: the picked buffers, d at [3d +: 3]
     output wire                    mid_o,          // fragments: the value goes on (prog_o != 0)
     output wire [3:0]              gone_o,         // fragments: destinations dropped in a fragment not the last
@@ -216,22 +219,23 @@ module albatross_transfer #(
     wire [1:0] first_in = start_need[0] ? 2'd0 : start_need[1] ? 2'd1 : start_need[2] ? 2'd2 : 2'd3;
 
     // ------------------------------------------------------------ fragments
-    // cont (at go_i): the slot goes on with a value, st_prog_i a word of it
-    // (only a fragmented value leaves a progress: frag_i is not needed yet,
-    // it comes from the ROM after go_i).  end_w: the end of the slot's words,
-    // min(p + F, W), read where a word store ends (from 2 clocks after go_i);
-    // F = 0, or p + F >= W: the last fragment (lastf).
-    wire        cont     = HAS_FRAGMENTS != 0 && copy_i && !request_i && st_prog_i != 12'd0 && st_prog_i < words_i;
-    wire        fr_on    = HAS_FRAGMENTS != 0 && copy_i && !request_i && frag_i != 12'd0;
-    wire [12:0] f_sum    = {1'b0, cont_q ? st_prog_i : 12'd0} + {1'b0, frag_i};
-    wire        lastf    = !fr_on || f_sum >= {1'b0, words_i};
-    wire [11:0] end_w    = lastf ? words_i : f_sum[11:0];
     wire [3:0]  c_need   = st_need_i & active_i;
+    // cont (at go_i): the slot goes on with a value, st_prog_i a word of it
+    // (0, or W after a value's last fragment: none; only a fragmented value
+    // leaves a progress: frag_i is not needed yet, it comes from the ROM
+    // after go_i).  The slot's words end at min(p + F, W) (last_wd, read
+    // where a word store ends, from 2 clocks after go_i); at W the value is
+    // whole (lastf).
+    wire        cont     = HAS_FRAGMENTS != 0 && copy_i && !request_i && st_prog_i != 12'd0 && st_prog_i < words_i &&
+                           c_need != 4'd0;
+    wire        fr_on    = HAS_FRAGMENTS != 0 && copy_i && !request_i && frag_i != 12'd0;
+    wire [11:0] f_end    = ({12{cont_q}} & st_prog_i) + frag_i;   // p + F (a fragment's end unless W comes first)
+    wire        lastf    = k_q == words_i;                        // (at last_wd: the value's last word is taken)
 
     // ------------------------------------------------------------ steps
     wire       adv      = ack || drop_now;
     wire       ctrl_end = adv && (ctrl_ld ? !complete : state_q == S_DST_PUB);
-    wire       last_wd  = k_q == end_w;
+    wire       last_wd  = lastf || (fr_on && k_q == f_end);
     wire       want     = state_q != S_WAIT && !has_next && left_any &&
                           (ctrl_end || (adv && state_q == S_DST_WORD && !last_wd));
     wire       word_ok  = !copy_i && (time_kind_i || status_valid_i);
@@ -325,7 +329,7 @@ module albatross_transfer #(
                 need_q  <= c_need;
                 run_q   <= 8'd0;
                 d_q     <= 2'd0;
-                if (may_access_i && c_need != 4'd0) begin
+                if (may_access_i) begin
                     state_q <= S_SRC_WORD;
                     stb_q   <= 1'b1;
                 end else finish;
@@ -461,7 +465,8 @@ module albatross_transfer #(
                    (nrm && word_ok && (state_q == S_WAIT || (adv && dst && want)));
     always @(posedge clk_i) if (take_en) word_q <= copy_i ? dat_i : status_i;
     // k_q: the index of the next word to take; 0 from go_i and when an Export starts.
-    always @(posedge clk_i) if (go_i && cont) k_q <= st_prog_i; else if (e_start || go_i) k_q <= 12'd0; else if (take_en) k_q <= k_q + 12'd1;
+    // (reset: 0, the progress the state RAM's clearing writes)
+    always @(posedge clk_i) if (rst_i) k_q <= 12'd0; else if (go_i && cont) k_q <= st_prog_i; else if (e_start || go_i) k_q <= 12'd0; else if (take_en) k_q <= k_q + 12'd1;
 
     // ------------------------------------------------------------ the access
     albatross_transfer_access #(.ADDR_WIDTH(AW)) u_access (
@@ -489,8 +494,11 @@ module albatross_transfer #(
     // value ends as a whole one does (a destination not published stays in
     // need, and the next run Imports afresh, its control load seeing a
     // landed store).
+    // prog_o is written only where it changes (prog_wr_o): a fragment not the
+    // last done (k_q: its end), or a later fragment's publication begun (0).
     wire   mid         = HAS_FRAGMENTS != 0 && (fdone_q || (cont_q && !pubph_q && need_q != 4'd0));
-    assign prog_o      = !mid ? 12'd0 : fdone_q ? end_w : st_prog_i;
+    assign prog_o      = k_q;                             // (after the last fragment: W, no word of the value)
+    assign prog_wr_o   = HAS_FRAGMENTS != 0 && (fdone_q || (cont_q && pubph_q));
     assign mid_o       = mid;
     assign gone_o      = serve_q & ~need_q & ~pub_q;
     assign need_o      = mid ? need_q : serve_q & ~pub_q;

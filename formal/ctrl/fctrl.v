@@ -30,6 +30,22 @@
 // (the observers' PROTO = 0): the proof of the bus rules, the slot timing, the
 // retry and drop rule and every access's place and lanes, without the
 // producer's and consumers' state.
+// With F_FRAG (and F_FIXED: W = 2) the value goes in two fragments of one
+// word (fseq_contract's frag_o = 1; the negatives: formal/ctrl/tests.mk): a slot continues the value when the
+// controller's progress at go (f_prog, its state RAM, joined by the script)
+// is a word of it, else it starts a value (s_vgo).  The observers take s_vgo
+// as their slot start (an Import and an Export span the value's slots), and
+//   frag_words_src, frag_words_dst  every source word load and destination word store of a slot
+//               is of its fragment's word (0 in the first, the progress in a
+//               later one: the fragment resumes at the right word), and a
+//               taken_at store comes only in the last fragment;
+//   frag_held   a slot that continues a value makes no access to the
+//               source's control word (its ReadLocked stays held from the
+//               first fragment to the last);
+// with falb_dst's dst_publish_complete (an Actual store only of a buffer
+// whose words were all stored since the value's start) nothing is
+// published before the last fragment, and dst_no_held_write keeps every
+// store out of the buffer the consumer holds.
 // Covers: cov_new, cov_old (a New / an Old Import read the source), cov_pub0,
 // cov_pub1 (each destination published), cov_drop, cov_retry, cov_readback
 // (a destination's Actual store whose answer was lost, seen landed by the
@@ -83,6 +99,15 @@ module fctrl #(
     (* keep *) wire [AW-1:0] e_src_base, e_dst_base0, e_dst_base1;
     (* keep *) wire [7:0]    e_drop_run;
     (* keep *) wire          s_go, s_may;
+    (* keep *) wire [11:0]   f_prog;         // the controller's progress of channel 0 (its state RAM)
+`ifdef F_FRAG
+    // a slot continues the value when the progress at go is a word of it
+    wire          s_cont = s_go && f_prog != 12'd0 && f_prog < e_words;
+    wire          s_vgo  = s_go && !s_cont;
+`else
+    wire          s_vgo  = s_go;
+    wire          unused_prog = &{1'b0, f_prog};
+`endif
     wire [WW-1:0] w = e_words[WW-1:0];
 
     wire        s_hit, s_rl, s_wl, d0_hit, d0_ctrl, d0_pub, d1_hit, d1_ctrl, d1_pub;
@@ -94,15 +119,15 @@ module fctrl #(
         .clk_i(clk_i), .rst_i(rst_i), .base_i(e_src_base), .words_i(w), .four_i(e_four),
         .cyc_i(m_cyc), .stb_i(m_stb), .we_i(m_we), .adr_i(m_adr), .sel_i(m_sel), .wdat_i(m_wdat),
         .ack_i(ack_i), .land_i(land_i), .op_i(p_op_i), .wb_i(p_wb_i),
-        .slot_start_i(s_go), .watch_i(p_watch_i), .carry_o(s_carry),
+        .slot_start_i(s_vgo), .watch_i(p_watch_i), .carry_o(s_carry),
         .ctrl_o(s_ctrl), .hit_o(s_hit), .rl_store_o(s_rl), .word_load_o(s_wl));
     falb_dst #(.AW(AW), .WW(WW), .BB(BB), .PROTO(PROTO), .WHOLE_LOAD(1), .BOARD(2)) dst0 (
-        .clk_i(clk_i), .rst_i(rst_i), .slot_start_i(s_go), .base_i(e_dst_base0), .words_i(w), .four_i(e_four),
+        .clk_i(clk_i), .rst_i(rst_i), .slot_start_i(s_vgo), .base_i(e_dst_base0), .words_i(w), .four_i(e_four),
         .cyc_i(m_cyc), .stb_i(m_stb), .we_i(m_we), .adr_i(m_adr), .sel_i(m_sel), .wdat_i(m_wdat),
         .ack_i(ack_i), .land_i(land_i), .op_i(c0_op_i), .carry_i(carry_q),
         .ctrl_o(d0_word), .hit_o(d0_hit), .ctrl_hit_o(d0_ctrl), .pub_o(d0_pub), .held_o(d0_held), .act_o(d0_act));
     falb_dst #(.AW(AW), .WW(WW), .BB(BB), .PROTO(PROTO), .WHOLE_LOAD(1), .BOARD(3)) dst1 (
-        .clk_i(clk_i), .rst_i(rst_i), .slot_start_i(s_go), .base_i(e_dst_base1), .words_i(w), .four_i(e_four),
+        .clk_i(clk_i), .rst_i(rst_i), .slot_start_i(s_vgo), .base_i(e_dst_base1), .words_i(w), .four_i(e_four),
         .cyc_i(m_cyc), .stb_i(m_stb), .we_i(m_we), .adr_i(m_adr), .sel_i(m_sel), .wdat_i(m_wdat),
         .ack_i(ack_i), .land_i(land_i), .op_i(c1_op_i), .carry_i(carry_q),
         .ctrl_o(d1_word), .hit_o(d1_hit), .ctrl_hit_o(d1_ctrl), .pub_o(d1_pub), .held_o(d1_held), .act_o(d1_act));
@@ -116,7 +141,7 @@ module fctrl #(
         .ack_i(ack_i), .err_i(err_i), .fail_o(fail), .retry_o(retry), .dropped_o(dropped));
 
     always @(posedge clk_i) begin
-        if (rst_i || s_go) carry_q <= 1'b0;
+        if (rst_i || s_vgo) carry_q <= 1'b0;
         else if (s_carry) carry_q <= 1'b1;
     end
 
@@ -153,6 +178,37 @@ module fctrl #(
         .f_past_valid_o(f_pv), .f_outstanding_o(f_out), .f_wait_o(f_wait), .f_read_ack_o(f_rack));
 
     always @* if (!init_q) bus_board: assert(!req || s_hit || d0_hit || d1_hit);
+
+`ifdef F_FRAG
+    // ------------------------------------------------------------ fragments (W = 2, one word each)
+    reg       cont_q, last_q;
+    reg       p_q;                         // the slot's word: 0 or 1
+    always @(posedge clk_i) begin
+        if (rst_i) begin
+            cont_q <= 1'b0;
+            last_q <= 1'b1;
+            p_q    <= 1'b0;
+        end else if (s_go) begin
+            cont_q <= s_cont;
+            last_q <= s_cont;                  // W = 2: the second fragment is the last
+            p_q    <= s_cont;
+        end
+    end
+    // word offsets of the access in its buffer: source stride 2, destination stride 3
+    wire [AW-1:0] s_off = m_adr[AW-1:0] - e_src_base - 1'b1;
+    wire [AW-1:0] d_off = m_adr[AW-1:0] - (d0_hit ? e_dst_base0 : e_dst_base1) - 1'b1;
+    wire [AW-1:0] d_m   = d_off % 3;       // 0, 1: value words; 2: taken_at
+    always @* begin
+        if (!init_q && req) begin
+            if (s_hit && !m_we && m_adr[AW-1:0] != e_src_base)
+                frag_words_src: assert(s_off[0] == p_q);
+            if ((d0_hit && !d0_ctrl || d1_hit && !d1_ctrl) && m_we)
+                frag_words_dst: assert(d_m == 2 ? last_q : d_m[0] == p_q);
+            if (cont_q)
+                frag_held: assert(!(s_hit && m_adr[AW-1:0] == e_src_base));
+        end
+    end
+`endif
 
     // ------------------------------------------------------------ covers
     reg rl_slot_q, wl_slot_q, lost_q, later_q;

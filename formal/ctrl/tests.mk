@@ -48,7 +48,10 @@ FCTRL_NEG := \
     bad_index:dst_ctrl_store|dst_in_channel \
     wrong_lane:dst_ctrl_store \
     old_same_pair4:src_fresh \
-    old_same_pair3:src_fresh
+    old_same_pair3:src_fresh \
+    frag_publish_first:frag_words_dst|dst_publish_complete \
+    frag_reimport:frag_held \
+    frag_wrong_word:frag_words_src
 # Each mutant is formal/ctrl/mutants/VARIANT.sed, an edit of the controller
 # file its '# target:' line names (CORE:VARIANT:FILE).
 fctrl_target  = $(notdir $(shell sed -n 's/^# target: *//p' formal/ctrl/mutants/$(1).sed))
@@ -73,6 +76,10 @@ FSBY_TESTS_SPEC += \
     formal-ctrl-shape-negative-drop_total:ctrl:neg_shape_drop_total:retry_same|drop_k \
     $(foreach n,$(FCTRL_NEG),$(if $(filter $(call neg_field,$(n),1),$(FCTRL_SLOW)),,$(call fctrl_neg_spec,$(n))))
 FSBY_SLOW_SPEC += formal-ctrl-cover3:ctrl:cover3:pass formal-ctrl-cover4:ctrl:cover4:pass
+# A value in two fragments (F_FRAG, fctrl.v's frag_* properties): the
+# proofs (abc pdr, about 2 CPU minutes three-buffer) run with make
+# test-slow; their negatives (frag_*) in make test.
+FSBY_SLOW_SPEC += formal-ctrl-frag-three:ctrl:frag3:pass formal-ctrl-frag-four:ctrl:frag4:pass
 # The protocol proofs that converge within the slow suite's bound (abc pdr:
 # three and three_fixed in minutes, four_fixed in 15 to 25 minutes)
 # run with make test-slow too; make formal-ctrl-pdr runs every unbounded task.
