@@ -35,7 +35,7 @@ module fseq_contract #(
     parameter HAS_ENTRY_CHECK = 1,  // unused
     parameter CRC_BITS        = 4,  // unused
     parameter HAS_MODES       = 1,  // unused (no mode request: no REQUEST entry)
-    parameter HAS_FRAGMENTS   = 1,  // unused (E7.frag is e_frag)
+    parameter HAS_FRAGMENTS   = 1,  // unused (E7.frag: frag_o, below)
     parameter HAS_MULTIRATE   = 1,  // unused (every go_o is the entry's: the sequencer's proof covers the due rule)
     parameter CLUSTER_BITS    = 15  // unused
 ) (
