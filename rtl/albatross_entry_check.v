@@ -13,12 +13,13 @@
 //     not fit in TIME_BITS or is below MIN_LEN, or a due entry (due_i)
 //     starts before the end of the previous slot that ran in this cycle (a
 //     valid, due entry's; prev_end_i: entries of disjoint due sets may share
-//     a window); or the entry's E6 was found bad (e6_bad_i).
-//   * E6 (e6_bad_o, on rom_i whenever it holds an E6 word, which the
-//     sequencer reads ahead of the fetch and keeps the verdict of): rep above
-//     the mode's cluster (cluster_i) or above MAX_REP (the sequencer's count:
-//     CLUSTER_BITS, 0 without HAS_MULTIRATE: E6 must then be 0), or base >=
-//     2^rep.
+//     a window); or the entry's E6 breaks its rules: rep above the mode's
+//     cluster (cluster_i) or above MAX_REP (the sequencer's count:
+//     CLUSTER_BITS), or base >= 2^rep, i.e. base's bit length (the index of
+//     its highest one + 1) above rep.  The sequencer reads E6 ahead of the
+//     fetch and keeps rep (rep_i) and base's bit length (blen_i), which
+//     blen_o gives whenever rom_i holds an E6 word.  MAX_REP 0 (no minor
+//     cycles): E6 must be 0 (rep 0, bit length 0).
 //   * Clock 3: the slot ends after the cycle (end_i > H1; end_i is the
 //     register clock 2 wrote, so no adder stands between the ROM's output
 //     and this compare).
@@ -50,11 +51,12 @@ module albatross_entry_check #(
     input  wire [TIME_BITS-1:0] cycle_i,      // H1
     input  wire [TIME_BITS:0]   prev_end_i,   // the end of the previous slot run in this cycle
     input  wire [TIME_BITS:0]   end_i,        // start + length (E2's, from clock 3 on)
-    input  wire [3:0]           cluster_i,    // the cluster of the mode of the E6 in rom_i
+    input  wire [3:0]           cluster_i,    // the running mode's cluster
     input  wire                 due_i,        // the entry is due in this cycle
-    input  wire                 e6_bad_i,     // the entry's E6 was found bad (e6_bad_o when it was read)
+    input  wire [3:0]           rep_i,        // the entry's E6 rep
+    input  wire [3:0]           blen_i,       // the bit length of the entry's E6 base (blen_o when it was read)
     output reg                  bad_o,
-    output wire                 e6_bad_o      // rom_i, an E6 word, breaks the E6 rules
+    output reg  [3:0]           blen_o        // the bit length of base, rom_i holding an E6 word
 );
 
 `include "albatross_contract.vh"
@@ -103,22 +105,18 @@ module albatross_entry_check #(
                           (e0_kind == ALB_KIND_TIME && e0_w != 12'd1) ||
                           (rom_i[EFLAG_MODE] && (e0_kind != ALB_KIND_STATUS || e0_w != 12'd2)) ||
                           (e0_kind == ALB_KIND_STATUS && e0_w != W_STATUS && !rom_i[EFLAG_MODE]);
-    // E6: rep <= cluster, rep <= MAX_REP, base < 2^rep: base's bit length (blen,
-    // the index of its highest one + 1) at most rep (smaller in iCE40 LUTs
-    // than a shift or a scan of the bits above rep).  MAX_REP 0 (no minor
-    // cycles): E6 must be 0.
-    wire [3:0]  rep_i  = rom_i[ALB_ROM_E6_REP_LSB +: 4];
-    wire [14:0] base_i = rom_i[ALB_ROM_E6_BASE_LSB +: 15];
-    reg  [3:0]  blen;
+    // E6: the bit length of base (a priority encoder on the ROM word, kept
+    // by the sequencer with rep: comparing two 4-bit registers at the fetch
+    // is smaller in iCE40 LUTs than a check of the whole word when it is read)
+    wire [14:0] e6_base = rom_i[ALB_ROM_E6_BASE_LSB +: 15];
     integer     bi;
     always @* begin
-        blen = 4'd0;
-        for (bi = 0; bi < 15; bi = bi + 1) if (base_i[bi]) blen = bi[3:0] + 4'd1;
+        blen_o = 4'd0;
+        for (bi = 0; bi < 15; bi = bi + 1) if (e6_base[bi]) blen_o = bi[3:0] + 4'd1;
     end
-    assign      e6_bad_o = CHK && (MAX_REP == 0 ? (rep_i != 4'd0 || base_i != 15'd0) :
-                           (blen > rep_i || rep_i > cluster_i || (MAX_REP < 15 && !below({28'd0, rep_i}, MAX_REP + 1))));
+    wire        e6_bad  = blen_i > rep_i || rep_i > cluster_i || (MAX_REP < 15 && !below({28'd0, rep_i}, MAX_REP + 1));
     wire        e2_bad  = start_bad_i || rom_i[31:TB] != 0 || below({{(32-TB){1'b0}}, rom_i[TB-1:0]}, MIN_LEN) ||
-                          ({1'b0, start_i} < prev_end_i && due_i) || e6_bad_i;
+                          ({1'b0, start_i} < prev_end_i && due_i) || e6_bad;
     wire        end_bad = end_i > {1'b0, cycle_i};
     // base + span < 2^ADDR_WIDTH: the bits of each above ADDR_WIDTH are 0 and
     // the sum of the low ADDR_WIDTH bits has no carry out (a carry chain, no sum).

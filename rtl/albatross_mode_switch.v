@@ -4,9 +4,9 @@
 // Rules:
 //   * The running schedule: entries first_o .. end_o - 1, cycle length
 //     cycle_o, drop run drop_o, and the modes it may switch to; cluster_o
-//     (2^c minor cycles) is the last loaded mode's (the running one's, but
-//     from its D2 read on for a mode loaded for the next boundary: the
-//     sequencer judges the new first entry's E6 against it).  They are
+//     (2^c minor cycles) is the last loaded mode's: the running one's
+//     whenever the sequencer fetches an entry (a load runs only while it
+//     waits for the cycle end, and the boundary takes it).  They are
 //     registers that take a loaded mode's values at a cycle boundary
 //     (switch_i) and change nowhere else.  The header is the load of mode 0
 //     (hdr1_i: rom_i = H1, hdr2_i: rom_i = H2): the cycle and next mask of

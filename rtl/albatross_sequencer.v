@@ -57,8 +57,8 @@
 //     (go_q), so E6 is read ahead: entry 0's in the clock after the start-up
 //     pass (no start-up clock added), entry k's in FETCH clock 6 of the entry
 //     before it (the port is free there), the new mode's first entry's in the
-//     mode load.  It is judged in the clock it arrives: due_q and e6_bad_q
-//     hold the verdict until the next E6.  The entry register ent_q moves on
+//     mode load.  The due test is made in the clock it arrives (due_q); rep
+//     and base's bit length wait in rep_q, blen_q for the entry check.  The entry register ent_q moves on
 //     to the next entry in FETCH clock 5 (so that E6 of the next entry is
 //     {ent_q + 1, 010}: the ROM's one incrementer); last_q and ent0_q keep
 //     what the rest of the slot needs of the entry that runs.  HAS_MULTIRATE
@@ -281,18 +281,18 @@ module albatross_sequencer #(
 
     // ------------------------------------------------------------ minor cycles and the due test
     // E6 of entry ent_q, read ahead (after the start-up pass, FETCH clock 6, the
-    // mode load), is judged in the clock its word is in rom_q: due_q (due in
-    // the cycle it runs in: n_q, below) and e6_bad_q (the entry check's E6
-    // rules, against the loaded mode's cluster) hold the verdict until the
-    // next E6.  n_q is the count of the cycle entry ent_q runs in: 0 from
+    // mode load), is taken in the clock its word is in rom_q: due_q (due in
+    // the cycle it runs in: n_q, below), and rep_q and blen_q for the entry
+    // check's E6 rules at the fetch, hold it until the next E6.  n_q is the count of the cycle entry ent_q runs in: 0 from
     // reset and from the mode load's new first entry, + 1 (modulo
     // 2^CLUSTER_BITS) when ent_q wraps to the mode's first entry.
     localparam CB = CLUSTER_BITS;
     localparam MR = HAS_MULTIRATE != 0;
-    reg           due_q, e6_bad_q;
+    reg           due_q;
+    reg  [3:0]    rep_q, blen_q;             // E6's rep and base's bit length (the entry check's)
     reg  [CB-1:0] n_q;
     reg           e6_hdr_q, e6_fetch_q;      // rom_q holds E6 read after the start-up pass / by FETCH clock 6
-    wire          e6_bad;                    // (the entry check, on rom_q)
+    wire [3:0]    e6_blen;                   // (the entry check, on rom_q)
     wire [3:0]    e6_rep  = rom_q[ALB_ROM_E6_REP_LSB +: 4];
     wire [14:0]   e6_base = rom_q[ALB_ROM_E6_BASE_LSB +: 15];
     // due: the low rep bits of n and base agree (agree[i]: bits 0 .. i-1 agree)
@@ -308,7 +308,8 @@ module albatross_sequencer #(
         e6_fetch_q <= !rst_i && state_q == ST_FETCH && step_q == 3'd6;
         if (e6_hdr_q || e6_fetch_q || mode_e6) begin
             due_q    <= !MR || agree[e6_rep];
-            e6_bad_q <= e6_bad;
+            rep_q    <= e6_rep;
+            blen_q   <= e6_blen;
         end
     end
 
@@ -347,7 +348,7 @@ module albatross_sequencer #(
         .step_i(step_q), .rom_i(rom_q), .ent0_i(ent_q == 8'd0), .smode_i(smode_q), .bad_mark_i(bad_mark),
         .kind_i(kind), .four_i(four), .nd_i(nd), .e3_i(span), .start_i(start_q), .start_bad_i(start_bad_q),
         .cycle_i(cycle_q), .prev_end_i(prev_end_q), .end_i(end_q), .cluster_i(m_cluster), .due_i(due_q),
-        .e6_bad_i(e6_bad_q), .bad_o(bad_now), .e6_bad_o(e6_bad));
+        .rep_i(rep_q), .blen_i(blen_q), .bad_o(bad_now), .blen_o(e6_blen));
 
     // ------------------------------------------------------------ control
     // rel is kept as rel + 1 (next_rel_q): each compare below reads a

@@ -289,12 +289,21 @@ module fseq (
     (* keep *) wire                f_mism;        // the ROM check's registered mismatch
     (* keep *) wire [31:0]         f_rom_q;       // the ROM's read register
     (* keep *) wire                f_lastq, f_ent0q;   // the entry that runs is the last / entry 0
-    (* keep *) wire                f_dueq, f_e6badq;  // the verdict on the E6 read ahead: due, bad
+    (* keep *) wire                f_dueq;        // the due test on the E6 read ahead
+    (* keep *) wire [3:0]          f_rep, f_blen; // its rep and base's bit length (the entry check's)
     (* keep *) wire [F_CLB-1:0]    f_nq;          // the sequencer's minor-cycle count (of entry f_ent's cycle)
     (* keep *) wire                f_e6h, f_e6f;  // rom_q holds E6 read after the start-up pass / by FETCH clock 6
     (* keep *) wire [3:0]          f_cl;          // the loaded mode's cluster
 
     wire          run    = started_q || cycle_o;        // start-up is over
+    function [3:0] blen;                                // the bit length of a base
+        input [31:0] b;
+        integer i;
+        begin
+            blen = 4'd0;
+            for (i = 0; i < 15; i = i + 1) if (b[i]) blen = i[3:0] + 4'd1;
+        end
+    endfunction
     wire          fetch  = f_state == ST_FETCH;
     wire          xfer   = f_state == ST_TRANSFER;
     // The entry register moves on to the next entry (entry 0 after the last) in
@@ -316,6 +325,8 @@ module fseq (
     wire [7:0]    n_nxt  = (n_cur + 8'd1) & CL_MASK;
     wire          due0n  = (n_nxt & ((8'd1 << F_R0) - 8'd1)) == F_B0[7:0];
     wire          due_want = e6_of1 ? due1 : (wrapped && !f_e6f) ? due0n : due0;
+    wire [3:0]    e6_rep_w  = e6_of1 ? F_R1[3:0] : F_R0[3:0];
+    wire [3:0]    e6_blen_w = e6_of1 ? blen(F_B1) : blen(F_B0);
     // the slots run so far in the cycle (prev_end: the last due one's end)
     wire [F_TB:0] pe1    = due0 ? D0[F_TB:0] : {(F_TB+1){1'b0}};
     wire [F_TB:0] pe2    = due1 ? D1[F_TB:0] : pe1;
@@ -425,7 +436,7 @@ module fseq (
                 // the due test's inputs: the count (count_wrap), the cluster, the due fields
                 count_wrap: assert(f_nq == (wrapped ? n_nxt[F_CLB-1:0] : n_cur[F_CLB-1:0]));
                 inv_cl:     assert(f_cl == F_CL[3:0]);
-                inv_due: assert(f_e6h || (f_dueq == due_want && !f_e6badq));
+                inv_due: assert(f_e6h || (f_dueq == due_want && f_rep == e6_rep_w && f_blen == e6_blen_w));
                 inv_e6f: assert(!f_e6f || (crel32 == (f_ent == 8'd1 ? F_S0 : F_S1) + FETCH && f_state != ST_FETCH));
                 // the entry that runs, from FETCH clock 6 on
                 if ((fetch && f_step == 3'd6) || xfer || f_state == ST_CYCLE_END) begin
