@@ -4,4 +4,4 @@
 # boundary; the new mode's entries still start at the boundary.  The system
 # test must catch it: a switch that is not on a cycle boundary
 # (test-system-negative-modes-early).
-s/^                    e1_q   <= 1'b1;/                    e1_q   <= 1'b1; mode_q <= idx_q;/
+s/^                    e6_q   <= 1'b1;/                    e6_q   <= 1'b1; mode_q <= idx_q;/
