@@ -75,10 +75,13 @@ module duo_system #(
         .NB(2), .ADDR_WIDTH(8), .RAM_WORDS(512), .N_CHAN(4), .ROM_WORDS(256),
         .ROM_FILE(ROM_FILE), .FW_PREFIX(FW_PREFIX), .RAM_PREFIX(RAM_PREFIX), .SERV_MASK(SERV_MASK),
         .SMALL(1), .CPU_CDC(CPU_CDC),
-        // fpga/duo.toml is time-rigid and has no STATUS channel and no modes:
-        // the controller leaves out the counters, the sync poll and the mode
-        // switch (with them two PicoRV32 boards do not fit the iCEBreaker's UP5K).
-        .CTRL_HAS_STATUS(0), .CTRL_HAS_SYNC(0), .CTRL_HAS_MODES(0)
+        // fpga/duo.toml is time-rigid, single-rate, its values go whole, and it
+        // has no STATUS channel and no modes: the controller leaves out the
+        // counters, the sync poll, the mode switch, the minor-cycle count and
+        // the fragments' progress RAM (with them two PicoRV32 boards do not
+        // fit the iCEBreaker's UP5K: its block RAMs run out).
+        .CTRL_HAS_STATUS(0), .CTRL_HAS_SYNC(0), .CTRL_HAS_MODES(0),
+        .CTRL_HAS_FRAGMENTS(0), .CTRL_HAS_MULTIRATE(0)
     ) u_sys (
         .clk_i(clk_i), .rst_i(rst), .cpu_clk_i(core_clk), .cpu_rst_i(core_rst), .stall_i(2'b00),
         .ext_cyc_i(2'b00), .ext_stb_i(2'b00), .ext_we_i(2'b00), .ext_adr_i(16'd0), .ext_sel_i(8'd0),

@@ -78,6 +78,8 @@ module albatross_system #(
     parameter CTRL_HAS_STATUS = 1, // controller HAS_STATUS: 0 for a schedule with no STATUS entry (STATUS sends zeros)
     parameter CTRL_HAS_SYNC   = 1, // controller HAS_SYNC: 0 for a time-rigid schedule (no poll requester)
     parameter CTRL_HAS_MODES  = 1, // controller HAS_MODES: 0 for a schedule without modes (no mode switch)
+    parameter CTRL_HAS_FRAGMENTS = 1, // controller HAS_FRAGMENTS: 0 for a schedule whose values go whole (no progress RAM)
+    parameter CTRL_HAS_MULTIRATE = 1, // controller HAS_MULTIRATE: 0 for a single-rate schedule (no minor-cycle count)
     parameter EXT_MASK   = 0,     // NB bits: board c's port A is ext_*[c] when bit c is set, else a core
     parameter SERV_MASK  = 0,     // NB bits: core c is SERV when bit c is set, else PicoRV32
     parameter VEX_MASK   = 0,     // NB bits: core c is VexRiscv (caches; soc/vexriscv_core.v) when bit c is set
@@ -168,7 +170,8 @@ module albatross_system #(
     albatross_controller #(
         .NB(NB), .ADDR_WIDTH(ADDR_WIDTH), .N_CHAN(N_CHAN), .ROM_WORDS(ROM_WORDS),
         .ROM_FILE(ROM_FILE), .TIMEOUT(TIMEOUT), .POLL(POLL),
-        .HAS_STATUS(CTRL_HAS_STATUS), .HAS_SYNC(CTRL_HAS_SYNC), .HAS_MODES(CTRL_HAS_MODES)
+        .HAS_STATUS(CTRL_HAS_STATUS), .HAS_SYNC(CTRL_HAS_SYNC), .HAS_MODES(CTRL_HAS_MODES),
+        .HAS_FRAGMENTS(CTRL_HAS_FRAGMENTS), .HAS_MULTIRATE(CTRL_HAS_MULTIRATE)
     ) u_ctrl (
         .clk_i(clk_i), .rst_i(rst_i),
         .m_cyc_o(ctl_cyc_o), .m_stb_o(ctl_stb_o), .m_we_o(ctl_we_o), .m_adr_o(ctl_adr_o),

@@ -384,7 +384,7 @@ test-system-negative-modes-forget-switch: $(SYS_DIR)/mutant-forget_switch/tb_sys
 	@tools/run_test.sh system-negative-modes-forget-switch $< --plan $(SYS_MODES) --seed $(SEED) \
 	    --label system-negative-modes-forget-switch $(SYS_FRESH) --expect-caught-by duplicate_new --expect-caught-by new_twice
 test-system-rom-start-crc: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
-	@$(call sys_run,rom-start-crc) --plan $(SYS_RIGID) --cycles 100000 --flip-rom-bit 34:0
+	@$(call sys_run,rom-start-crc) --plan $(SYS_RIGID) --cycles 100000 --flip-rom-bit 35:31
 test-system-negative-rom-start-crc: $(SYS_DIR)/mutant-skip_crc/tb_system $(SYS_RIGID)/tb_plan.txt
 	@tools/run_test.sh system-negative-rom-start-crc $< --plan $(SYS_RIGID) --seed $(SEED) --cycles 100000 \
-	    --label system-negative-rom-start-crc --flip-rom-bit 34:0 --expect-failure "flipped ROM bit"
+	    --label system-negative-rom-start-crc --flip-rom-bit 35:31 --expect-failure "flipped ROM bit"
