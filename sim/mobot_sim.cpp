@@ -592,10 +592,7 @@ int main(int argc, char **argv)
     std::string last;
     std::vector<std::string> lines;
     const std::string verdict = judge(failed, expect, o.expect.empty(), last, lines);
-    std::string checks = "{";
-    for (const char *c : kChecks)
-        checks += std::string(checks.size() > 1 ? ", " : "") + "\"" + c + "\": \"" + (failed.count(c) ? "fail" : "pass") + "\"";
-    r.raw("checks", checks + "}").str("expect_caught_by", o.expect).str("verdict", verdict);
+    r.raw("checks", checks_report(failed)).str("expect_caught_by", o.expect).str("verdict", verdict);
     if (!o.report.empty() && !r.write(o.report)) return 1;
     for (const std::string &l : lines) std::printf("  %s\n", l.c_str());
     std::printf("%s: %s\n", o.label.c_str(), last.c_str());

@@ -201,6 +201,8 @@ std::vector<std::pair<std::string, std::string>> board_failures(const BoardsAtEn
                                                                 uint64_t cycle, bool &cpu_failed);
 std::string series_report(const std::vector<Series> &series, const Plan &plan);
 std::string producers_report(const std::map<int, Producer> &producers, const Plan &plan);
+// The checks as a JSON object, each "pass" or "fail" (sim/mobot_sim_report.cpp).
+std::string checks_report(const std::map<std::string, std::string> &failed);
 std::string judge(const std::map<std::string, std::string> &failed, const std::vector<std::string> &expect,
                   bool positive, std::string &last, std::vector<std::string> &lines);
 // Check freshness (sim/mobot_sim_ages.cpp), at a consumer's Import of a copy

@@ -83,6 +83,14 @@ std::string producers_report(const std::map<int, Producer> &producers, const Pla
     return js + "]";
 }
 
+std::string checks_report(const std::map<std::string, std::string> &failed)
+{
+    std::string checks = "{";
+    for (const char *c : kChecks)
+        checks += std::string(checks.size() > 1 ? ", " : "") + "\"" + c + "\": \"" + (failed.count(c) ? "fail" : "pass") + "\"";
+    return checks + "}";
+}
+
 std::string judge(const std::map<std::string, std::string> &failed, const std::vector<std::string> &expect,
                   bool positive, std::string &last, std::vector<std::string> &lines)
 {
