@@ -59,6 +59,11 @@ struct Options {
 // (the usage message has been printed).
 int parse_options(int argc, char **argv, Options &o);
 
+// The run's verdict, printed, as main's exit status: an expected failure
+// (o.expect_failure), a negative test (o.expect_caught_by), or PASSED/FAILED
+// (tb_system_verdict.cpp).
+int system_verdict(const Options &o, const std::vector<std::string> &failures, const SystemChecker &chk);
+
 // Shared with board_program (set up by main before the CPUs start).
 extern SystemSim *g_sim;
 extern const Options *g_opts;

@@ -12,6 +12,7 @@ SYS_CYCLES  ?= 400000
 # The harness is compiled once; only system_sim.cpp sees the Verilated model.
 SYS_COMMON  := tb/system/tb_system.cpp tb/system/board_program.cpp tb/system/system_checker.cpp tb/system/system_modes.cpp \
                tb/system/system_freshness.cpp tb/system/fresh_scenario.cpp tb/system/rom_scenario.cpp \
+               tb/system/tb_system_verdict.cpp \
                tb/common/plan.cpp \
                tb/common/sim_cpu.cpp tb/common/ref_ram.cpp tb/common/protocol_checker.cpp
 SYS_OBJS    := $(patsubst %.cpp,$(SYS_DIR)/obj/%.o,$(notdir $(SYS_COMMON))) $(SYS_DIR)/obj/driver.o
