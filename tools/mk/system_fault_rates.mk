@@ -104,7 +104,7 @@ $(foreach t,$(FR_ROBOT),$(eval $(call fr_robot,$(t))))
 # About 90 s of CPU.
 BENCHES += bench-fault-rates
 .PHONY: bench-fault-rates docs-pictures-fault-rates
-bench-fault-rates: $(SYS_BIN) $(PB_BIN) tools/fault_rates.py $(SCHEDULE_SRC) ## delivery and worst age against the true fault rate, measured beside the compiler's prediction
+bench-fault-rates: $(SYS_BIN) $(PB_BIN) tools/fault_rates.py tools/fault_rates_svg.py $(SCHEDULE_SRC) ## delivery and worst age against the true fault rate, measured beside the compiler's prediction
 	$(PYTHON) tools/fault_rates.py bench --desc sim/mobot3.toml --tb-system $(SYS_BIN) --robot $(PB_BIN) \
 	    --seed 1 --out $(REPORTS)/fault_rates.json --svg $(REPORTS)/fault_rates.svg
 docs-pictures-fault-rates: bench-fault-rates ## refresh docs/img/fault_rates.svg from make bench-fault-rates
