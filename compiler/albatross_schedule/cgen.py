@@ -42,6 +42,20 @@ STATUS_ACCESSORS = {"CYCLES": ("(w)", "((uint16_t)((w)[0] & 0xFFFFu))"),
                     "ABANDONED": ("(w, id)", "((uint16_t)((w)[2u + 2u * (id)] >> 16))")}
 
 
+def runs_phrase(system: System, plan: Plan, ch) -> str:
+    """How often the channel's slots run, for a header comment: 'N per cycle'
+    in a single-rate plan; 'N runs per S minor cycles' (its span) and the
+    fragments a value takes in a multi-rate one."""
+    n = len(ch.slots)
+    if not plan.multirate:
+        runs = f"{n} per cycle"
+    else:
+        minors = max(1, (ch.run_span or plan.cycle) // plan.cycle)
+        runs = f"{n} run{'s' if n != 1 else ''} per {'minor cycle' if minors == 1 else f'{minors} minor cycles'}"
+    frags = getattr(ch, "fragments", 1) or 1
+    return runs + (f", {frags} fragments a value" if frags > 1 else "")
+
+
 def render_board_header(system: System, b: int, desc_name: str, plan: Plan) -> str:
     board = system.boards[b]
     B = board.upper()
@@ -137,7 +151,7 @@ def render_board_header(system: System, b: int, desc_name: str, plan: Plan) -> s
                     what = "LATENCY" if ch.kind == "copy" else "AGE"
                     L.append(f"#define {M(what + '_AT_TARGET_CLOCKS')}  {at}u  /* under the fault hypothesis: holds "
                              f"with probability {one_minus(1.0 - system.faults.probability)} (slot delivery "
-                             f"{one_minus(x['slot_miss_probability'])}, {len(ch.slots)} per cycle) */")
+                             f"{one_minus(x['slot_miss_probability'])}, {runs_phrase(system, plan, ch)}) */")
             term = channel_termination(system, plan, ch)[ch.consumers.index(b)]
             if term["bounded"]:
                 L.append(f"#define {M('IMPORT_MAX_PASSES')}    {term['max_passes']}u"
