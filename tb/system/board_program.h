@@ -34,6 +34,10 @@ struct Options {
     std::string require_late;                    // --require-late-publication CH: fail unless CH's
                                                  // controller published a four-slot value in a later
                                                  // slot than the Slot store that completed it
+    std::string bounds_at_target;                // --bounds-at-target FILE: each consumer's latency / age
+                                                 // bound at the fault hypothesis' target (bounds_at_target.py)
+    uint64_t require_fragments = 0;              // --require-fragments N: fail unless N values were published
+                                                 // after two or more fragments, each judged (fragment_checker.h)
     std::vector<std::string> require_skipped;    // --require-skipped CH...: fail unless a value of CH was
                                                  // skipped and its latency measured (a later one arrived)
     std::string slow_channel;                    // --producer-interval CH:CLOCKS[:BURST]: channel CH's

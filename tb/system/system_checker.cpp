@@ -10,14 +10,15 @@ extern "C" {
 
 void channel_value(int channel_id, uint64_t seq, uint8_t *out, uint32_t size)
 {
-    make_value(seq ^ (static_cast<uint64_t>(channel_id + 1) << 44), out, size);
+    for (uint32_t i = 0; i < size; ++i) out[i] = static_cast<uint8_t>(value_word(channel_id, seq, i / 4) >> (8 * (i % 4)));
 }
 
 const char *SystemChecker::kind_name(int k)
 {
     static const char *n[KINDS] = {"mutual_exclusion", "definite_results", "actuality", "duplicate_new",
                                    "latency_bound", "ownership", "in_channel", "driver_error", "global_time",
-                                   "taken_at", "new_twice", "freshness"};
+                                   "taken_at", "new_twice", "freshness", "due_cycle", "fragment_publish",
+                                   "source_lock", "fragment_word"};
     return n[k];
 }
 

@@ -55,6 +55,9 @@
 //                     producer that stops (fault-free runs, like latency;
 //                     a schedule mode without the channel: not judged);
 //   ages              consumers age every value with taken_at.
+// On the controller's bus, from the ROM image (tb/system/fragment_checker.h):
+//   due_cycle, fragment_publish, source_lock, fragment_word (multi-rate
+//   schedules and values carried in fragments).
 #pragma once
 #include <cstdint>
 #include <cstdio>
@@ -75,13 +78,22 @@ inline uint32_t instance_bytes(const PlanChannel &c, uint32_t size)
     return c.four_slot ? ALB_FS_CHANNEL_BYTES(size) : ALB_CHANNEL_BYTES(size);
 }
 
-// The value a producer exports as its seq-th value of channel id.
+// The value a producer exports as its seq-th value of channel id: word i
+// (32-bit, little-endian) is value_word(id, seq, i), so every word names its
+// value and its place (fragment_checker.h); a last partial word keeps the
+// low bytes of its tag.
+inline uint32_t value_word(int channel_id, uint64_t seq, uint32_t i)
+{
+    return static_cast<uint32_t>(seq & 0xFFFFu) << 16 | (static_cast<uint32_t>(channel_id) & 0xFu) << 12 | (i & 0xFFFu);
+}
+inline uint32_t value_word_seq(uint32_t w) { return w >> 16; }        // seq mod 2^16
+inline uint32_t value_word_index(uint32_t w) { return w & 0xFFFu; }   // i mod 2^12
 void channel_value(int channel_id, uint64_t seq, uint8_t *out, uint32_t size);
 
 class SystemChecker : public SystemObserver {
 public:
     enum Kind { MUTEX, DEFINITE, ACTUALITY, DUPLICATE, LATENCY, OWNERSHIP, IN_CHANNEL, DRIVER_ERROR, TIME, TAKEN_AT,
-                NEW_TWICE, FRESHNESS, KINDS };
+                NEW_TWICE, FRESHNESS, DUE_CYCLE, FRAGMENT_PUBLISH, SOURCE_LOCK, FRAGMENT_WORD, KINDS };
     static const char *kind_name(int k);
 
     SystemChecker(const Plan &plan, SystemSim &sim, uint64_t time_offset);
@@ -121,6 +133,8 @@ public:
     uint64_t violations[KINDS] = {};
     std::string first_message[KINDS];
     uint64_t total() const;
+    // A violation found by a checker outside this class (fragment_checker.h).
+    void report(Kind k, const std::string &msg) { violation(k, msg); }
 
     struct DestStats {
         uint64_t publications = 0, imports = 0, imports_new = 0;

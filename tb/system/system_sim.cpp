@@ -113,6 +113,7 @@ bool SystemSim::next_request(int &board, uint32_t &addr, bool &we, uint8_t &sel)
 void SystemSim::set_dead(unsigned mask) { dut_->fi_dead_i = mask & ((1u << kBoards) - 1u); }
 uint32_t SystemSim::time() const { return dut_->time_o; }
 unsigned SystemSim::mode() const { return dut_->mode_o; }
+bool SystemSim::cycle_start() const { return dut_->cycle_o != 0; }
 bool SystemSim::bus_stb() const { return dut_->bus_stb_o != 0; }
 bool SystemSim::error() const { return dut_->error_o != 0; }
 unsigned SystemSim::rom_errors() const { return dut_->rom_errors_o; }

@@ -70,6 +70,7 @@ public:
     // The controller, as seen from outside.
     uint32_t time() const;                      // global time (clocks since reset)
     unsigned mode() const;                      // the controller's running schedule mode (a probe)
+    bool cycle_start() const;                   // after tick(): a minor cycle starts in this clock (a probe)
     bool error() const;
     unsigned rom_errors() const;
     uint64_t bus_busy_cycles = 0, bus_accesses = 0, bus_failures = 0;

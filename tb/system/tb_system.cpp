@@ -22,6 +22,11 @@
 //             [--require-late-publication CH]     fail unless the controller published a value of
 //                                                 four-slot channel CH with an Actual store in a
 //                                                 later slot than the Slot store that completed it
+//             [--require-fragments N]             fail unless N values were published after two or
+//                                                 more fragments (fragment_checker.h)
+//             [--bounds-at-target FILE]           fail if a consumer's largest latency / age exceeds
+//                                                 its bound at the fault hypothesis' target
+//                                                 (lines "at_target CH BOARD CLOCKS", bounds_at_target.py)
 //             [--require-skipped CH]              fail unless a value of channel CH was skipped
 //                                                 (never published at a destination) and its
 //                                                 latency measured when a newer one arrived
@@ -78,6 +83,7 @@
 #include "system_modes.h"
 #include "fresh_scenario.h"
 #include "rom_scenario.h"
+#include "fragment_checker.h"
 
 using namespace tbsys;
 
@@ -158,6 +164,12 @@ int main(int argc, char **argv)
     SystemChecker chk(plan, sim, time_offset);
     g_chk = &chk;
     sim.observer = &chk;
+    // Minor cycles and fragments on the controller's bus (fragment_checker.h):
+    // not on an image the start-up check refuses or one upset while it runs.
+    FragmentChecker frag(rom, plan, chk);
+    const bool frag_on = frag.active() && o.flip_word < 0 && o.corrupt_entry < 0;
+    std::printf("  minor cycles and fragments: %s\n", frag_on ? "judged (due_cycle, fragment_publish, source_lock, fragment_word)"
+                : frag.active() ? "not judged (a corrupted ROM image)" : ("not judged: " + frag.why_inactive()).c_str());
     std::FILE *ages = nullptr;
     if (!o.ages.empty()) {
         ages = std::fopen(o.ages.c_str(), "w");
@@ -276,6 +288,7 @@ int main(int argc, char **argv)
         unsigned done = sim.tick();
         modes.tick();
         chk.tick(sim.cycle());
+        if (frag_on) frag.tick(sim.cycle(), sim.cycle_start());
         // One draw per access begun (per clock: the old injector's driving).
         if (sim.fault_drawn || o.fault_per_clock) sim.set_fault(faults.next());
         if (sim.bus_event.done && sim.cycle() >= o.trace_from && sim.cycle() <= o.trace_to) {
@@ -291,6 +304,7 @@ int main(int argc, char **argv)
             }
             for (TransferMeter &t : meters) t.on(sim.bus_event);
             chk.on_bus(sim.bus_event);
+            if (frag_on) frag.on_bus(sim.bus_event);
         }
         for (int b = 0; b < SystemSim::kBoards; ++b)
             if (done & (1u << b)) wait[b] = static_cast<uint64_t>((rng() % 3) * period[b]);
@@ -412,6 +426,42 @@ int main(int argc, char **argv)
         modes.settle();
         modes.finish(fault_free, g_status.corrupt, failures);
         std::printf("  modes: %s\n", modes.json().c_str());
+    }
+    if (frag_on) std::printf("  minor cycles and fragments: %s\n", frag.json().c_str());
+    if (!o.bounds_at_target.empty()) {   // every latency / age against the report's bound at the target
+        std::ifstream bf(o.bounds_at_target);
+        std::string line;
+        int judged = 0;
+        while (std::getline(bf, line)) {
+            std::istringstream ls(line);
+            std::string tag, ch;
+            int board = -1;
+            unsigned long long bound = 0;
+            if (!(ls >> tag >> ch >> board >> bound) || tag != "at_target") continue;
+            for (size_t i = 0; i < plan.channels.size(); ++i)
+                for (size_t d = 0; d < plan.channels[i].dests.size(); ++d) {
+                    if (plan.channels[i].name != ch || plan.channels[i].dests[d].board != board) continue;
+                    const SystemChecker::DestStats &ds = chk.stats[i].dests[d];
+                    ++judged;
+                    std::printf("  at the target: %-12s board %d: largest %s %llu of %llu values, bound %llu\n", ch.c_str(), board,
+                                plan.channels[i].copy() ? "latency" : "age", static_cast<unsigned long long>(ds.latency_max),
+                                static_cast<unsigned long long>(ds.latency_n), bound);
+                    if (ds.latency_max > bound) {
+                        std::snprintf(m, sizeof m, "at the target: %s to board %d: a %s of %llu clocks, expected at most the "
+                                      "report's bound at the fault hypothesis' target, %llu", ch.c_str(), board,
+                                      plan.channels[i].copy() ? "latency" : "age",
+                                      static_cast<unsigned long long>(ds.latency_max), bound);
+                        failures.push_back(m);
+                    }
+                }
+        }
+        if (judged == 0) failures.push_back("at the target: no bound in " + o.bounds_at_target + " names a consumer of the plan");
+    }
+    if (o.require_fragments && (!frag_on || frag.fragmented_publications < o.require_fragments)) {
+        std::snprintf(m, sizeof m, "fragments: expected at least %llu values published after two or more fragments, got %llu%s",
+                      static_cast<unsigned long long>(o.require_fragments),
+                      static_cast<unsigned long long>(frag.fragmented_publications), frag_on ? "" : " (not judged)");
+        failures.push_back(m);
     }
     if (o.corrupt_channel >= 0 && !g_corrupted) failures.push_back("the faulty producer never ran");
     if (o.corrupt_entry >= 0 && sim.rom_errors() == 0)
@@ -561,6 +611,7 @@ int main(int argc, char **argv)
             .num("scenario_failures", static_cast<double>(failures.size())).raw("channels", chans)
             .raw("transfers", transfers).raw("freshness", fresh_json)
             .raw("modes", modes.active() ? modes.json() : "null")
+            .raw("fragments", frag_on ? frag.json() : "null")
             .num("seconds", sec);
         rep.write(o.report);
     }

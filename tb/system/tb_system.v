@@ -65,7 +65,8 @@ module tb_system #(
     output wire [31:0]                time_o,       // global time
     output wire                       error_o,      // invalid ROM header
     output wire [15:0]                rom_errors_o, // invalid entries skipped (counter)
-    output wire [3:0]                 mode_o        // the controller's running schedule mode (a probe)
+    output wire [3:0]                 mode_o,       // the controller's running schedule mode (a probe)
+    output wire                       cycle_o       // one clock: a minor cycle starts (a probe)
 );
 
     localparam BOARD_BITS = 4;   // board field of a bus address
@@ -160,8 +161,10 @@ module tb_system #(
     // has no port for it); the harness times every switch with it.
 `ifndef SYNTHESIS
     assign mode_o = u_sys.u_ctrl.mode;
+    assign cycle_o = u_sys.u_ctrl.cycle_start;
 `else
     assign mode_o = 4'd0;
+    assign cycle_o = 1'b0;
 `endif
 
     bus_fault_injector #(

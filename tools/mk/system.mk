@@ -12,7 +12,7 @@ SYS_CYCLES  ?= 400000
 # The harness is compiled once; only system_sim.cpp sees the Verilated model.
 SYS_COMMON  := tb/system/tb_system.cpp tb/system/board_program.cpp tb/system/system_checker.cpp tb/system/system_modes.cpp \
                tb/system/system_freshness.cpp tb/system/fresh_scenario.cpp tb/system/rom_scenario.cpp \
-               tb/system/tb_system_verdict.cpp \
+               tb/system/tb_system_verdict.cpp tb/system/fragment_checker.cpp \
                tb/common/plan.cpp \
                tb/common/sim_cpu.cpp tb/common/ref_ram.cpp tb/common/protocol_checker.cpp
 SYS_OBJS    := $(patsubst %.cpp,$(SYS_DIR)/obj/%.o,$(notdir $(SYS_COMMON))) $(SYS_DIR)/obj/driver.o
@@ -53,7 +53,8 @@ $(eval $(call sys_model,real,))
 
 # Controller mutants (tb/mutants/controller/*.sed applied to the real RTL):
 # each system checker has a negative test that must catch one.
-# Each .sed names the controller file it edits on its '# target:' line; the
+# Each .sed names the controller file it edits on its '# target:' line, and
+# each of its substitutions must change that file (else the build fails); the
 # mutated copy keeps the file name, so the model's -y finds it first.  Its
 # folder is emptied first: a copy left from a target the mutant had before
 # would shadow the real file.
@@ -66,6 +67,10 @@ $(SYS_DIR)/mutant-src/$(1)/$(notdir $(call sys_mutant_target,$(1))): tb/mutants/
 	@if cmp -s $$@ $(call sys_mutant_target,$(1)); then \
 	    echo "controller mutant $(1) did not apply: $(call sys_mutant_target,$(1)) no longer has the line tb/mutants/controller/$(1).sed edits"; \
 	    rm -f $$@; exit 1; fi
+	@grep '^s' $$< | while IFS= read -r l; do \
+	    if sed -e "$$$$l" $(call sys_mutant_target,$(1)) | cmp -s - $(call sys_mutant_target,$(1)); then \
+	    echo "controller mutant $(1): its substitution $$$$l matches nothing in $(call sys_mutant_target,$(1))"; \
+	    rm -f $$@; exit 1; fi; done
 $(call sys_model,mutant-$(1),$(SYS_DIR)/mutant-src/$(1)/$(notdir $(call sys_mutant_target,$(1))))
 endef
 $(foreach m,$(CTRL_MUTANTS),$(eval $(call sys_mutant,$(m))))
@@ -389,3 +394,54 @@ test-system-rom-start-crc: $(SYS_BIN) $(SYS_RIGID)/tb_plan.txt
 test-system-negative-rom-start-crc: $(SYS_DIR)/mutant-skip_crc/tb_system $(SYS_RIGID)/tb_plan.txt
 	@tools/run_test.sh system-negative-rom-start-crc $< --plan $(SYS_RIGID) --seed $(SEED) --cycles 100000 \
 	    --label system-negative-rom-start-crc --flip-rom-bit 35:31 --expect-failure "flipped ROM bit"
+
+# Multi-rate images with fragments (tb/system/sys_multirate.toml; the checks
+# of tb/system/fragment_checker.h): a 50 us and two 100 us channels beside
+# slow ones at a minor cycle of 8 us, Scan (three-buffer, two destinations)
+# and Map (four-slot) carried in fragments.  sys_multirate-plain is the
+# description without its [faults] table (fault-free: Scan in 4 fragments,
+# Map in 2); sys_multirate as written, planned for 5 % independent faults
+# (Scan in 30 fragments, Map in 8), run at that rate.
+SYS_MR       := $(BUILD)/schedule/sys_multirate
+SYS_MR_PLAIN := $(BUILD)/schedule/sys_multirate-plain
+$(SYS_MR)/rom.hex: tb/system/sys_multirate.toml $(SCHEDULE_SRC)
+	@mkdir -p $(@D)
+	$(SCHEDULE) $< -o $(@D) -q
+$(SYS_MR_PLAIN)/rom.hex: tb/system/sys_multirate.toml $(SCHEDULE_SRC)
+	@mkdir -p $(@D)
+	sed '/^\[faults\]/,/^probability/d' $< > $(@D)/sys_multirate-plain.toml
+	$(SCHEDULE) $(@D)/sys_multirate-plain.toml -o $(@D) -q
+# Fault-free on the plain image (every latency and age judged against the
+# compiler's bounds), and at 5 % on the image planned for it; each fails
+# unless at least 10 values were published after two or more fragments.
+SYS_MR_RUN := --cycles 400000 --require-fragments 10
+TESTS += system-multirate system-multirate-faults-5-planned
+test-system-multirate: $(SYS_BIN) $(SYS_MR_PLAIN)/tb_plan.txt
+	@$(call sys_run,multirate) --plan $(SYS_MR_PLAIN) $(SYS_MR_RUN)
+test-system-multirate-faults-5-planned: $(SYS_BIN) $(SYS_MR)/tb_plan.txt $(SYS_MR)/bounds_at_target.txt
+	@$(call sys_run,multirate-faults-5-planned) --plan $(SYS_MR) $(SYS_MR_RUN) --fault-rate 0.05 \
+	    --bounds-at-target $(SYS_MR)/bounds_at_target.txt
+
+# Negatives, each a controller mutant on the plain image, fault-free, and the
+# named check that must catch it: NAME:MUTANT:CHECKER.
+#   wrong-cycle          the minor-cycle count starts at 1 (sys_wrong_cycle.sed)
+#   rep-short            the repetition read one bit short (sys_rep_short.sed)
+#   frag-publish-first   a publish after the first fragment (frag_publish_first.sed)
+#   frag-lock            the source's lock released between fragments: a fresh
+#                        Import at every run (frag_reimport.sed)
+#   frag-wrong-word      a fragment resumed one word early (frag_wrong_word.sed)
+SYS_MR_NEGATIVE := \
+  wrong-cycle:sys_wrong_cycle:due_cycle \
+  rep-short:sys_rep_short:due_cycle \
+  frag-publish-first:frag_publish_first:fragment_publish \
+  frag-lock:frag_reimport:source_lock \
+  frag-wrong-word:frag_wrong_word:fragment_word
+define sys_mr_negative
+TESTS += system-negative-$(call neg_field,$(1),1)
+test-system-negative-$(call neg_field,$(1),1): $(SYS_DIR)/mutant-$(call neg_field,$(1),2)/tb_system $(SYS_MR_PLAIN)/tb_plan.txt
+	@tools/run_test.sh system-negative-$(call neg_field,$(1),1) $$< --plan $(SYS_MR_PLAIN) --seed $(SEED) \
+	    --cycles 200000 --label system-negative-$(call neg_field,$(1),1) --expect-caught-by $(call neg_field,$(1),3)
+endef
+$(foreach n,$(SYS_MR_NEGATIVE),$(eval $(call sys_mr_negative,$(n))))
+$(BUILD)/schedule/%/bounds_at_target.txt: $(BUILD)/schedule/%/rom.hex tb/system/bounds_at_target.py
+	$(PYTHON) tb/system/bounds_at_target.py $(@D)/report.json $@
