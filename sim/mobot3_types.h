@@ -27,4 +27,15 @@ typedef struct {
     uint32_t flags;                            /* bit 0: enable, bit 1: brake */
 } MotorCommand;                                /* 8 bytes */
 
+/* The slow channels (sim/mobot3_slow.toml).  Every word of a value is
+ * seq << SHIFT | index (sim/firmware/mobot_check.h), so a consumer catches a
+ * torn, mixed or shifted value. */
+typedef struct {
+    uint32_t word[1024];                       /* the radar's full scan */
+} RadarScanData;                               /* 4096 bytes */
+
+typedef struct {
+    uint32_t word[64];                         /* navigation's log */
+} NavLogData;                                  /* 256 bytes */
+
 #endif

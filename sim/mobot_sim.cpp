@@ -84,7 +84,10 @@
 //   age        runs without faults (and no core failed its check): every age <= bound, where the bound of a copy
 //              channel is the compiler's latency (with retries) plus the
 //              producer's longest measured gap between two Actual stores,
-//              and of a time/status channel the compiler's age bound
+//              and of a time/status channel the compiler's age bound; with
+//              modes, the bound in force (sim/mobot_sim_modes.cpp: after a
+//              switch, and after a channel comes back, the bound before it
+//              plus the time since)
 //   staleness  navigation reports RadarMap stale (MOBOT_EV_STALE) after a
 //              radar crash (unless a core failed its own check), and, on a
 //              fault-free bus, never before it and never without one
@@ -279,11 +282,20 @@ int main(int argc, char **argv)
     cycle = 0; busy = 0; faults = 0; requests = 0; first_access = ~0ull; fresh_from = ~0ull;
 
     const uint32_t all = (1u << NB) - 1u;
-    static uint64_t last_load[NB][1024];  // per core and DPRAM word: controller time of its last load
+    // The DPRAM's address width (the model's aw_o): the plan's RAM must fit it.
+    const unsigned aw = m->aw_o;
+    const uint32_t dp_words = 1u << aw, adr_mask = dp_words - 1u;
+    if (aw < 2 || dp_words > uint32_t(DP_MAX_WORDS) || plan.ram_bytes > 4u * dp_words) {
+        std::fprintf(stderr, "mobot_sim: the plan's ram_bytes %u does not fit the model's DPRAM of %u bytes "
+                     "(ADDR_WIDTH %u; the harness tracks at most %d words)\n", plan.ram_bytes, 4u * dp_words, aw,
+                     DP_MAX_WORDS);
+        return 2;
+    }
+    static uint64_t last_load[NB][DP_MAX_WORDS];  // per core and DPRAM word: controller time of its last load
     // ... and of its first load since the core's last event (the start of a
     // four-slot Import: its value is at least as new as Actual then, not at its last load)
-    static uint64_t first_load[NB][1024];
-    static bool first_seen[NB][1024];
+    static uint64_t first_load[NB][DP_MAX_WORDS];
+    static bool first_seen[NB][DP_MAX_WORDS];
     bool clear_first[NB] = {false, false, false, false};  // an event came: a new Import starts
     uint64_t done_at[NB] = {0, 0, 0, 0}, last_event[NB] = {0, 0, 0, 0}, events[NB] = {0, 0, 0, 0};
     // crash state: armed at crash_at, begins with the next Export, fires after half its words
@@ -316,10 +328,10 @@ int main(int argc, char **argv)
         const uint64_t now = m->time_o;
         modes.observe(m->mode_o, now, cycle);
         for (int c = 0; c < NB; ++c) {
-            if (clear_first[c]) std::fill(first_seen[c], first_seen[c] + 1024, false), clear_first[c] = false;
+            if (clear_first[c]) std::fill(first_seen[c], first_seen[c] + dp_words, false), clear_first[c] = false;
             if (((m->done_o >> c) & 1u) && !done_at[c]) done_at[c] = cycle;
             if ((m->timer_rd_o >> c) & 1u) clocks[c].read(now, m->timer_o[c], cycle);  // a TIMER read completes
-            const uint32_t adr = (m->dp_adr_o >> (10 * c)) & 0x3ffu, sel = (m->dp_sel_o >> (4 * c)) & 0xfu;
+            const uint32_t adr = uint32_t(m->dp_adr_o >> (aw * c)) & adr_mask, sel = (m->dp_sel_o >> (4 * c)) & 0xfu;
             // a load: when a consumer read a control word (its Actual) last
             if (((m->dp_ack_o >> c) & 1u) && !((m->dp_we_o >> c) & 1u)) {
                 last_load[c][adr] = now;
@@ -393,9 +405,12 @@ int main(int argc, char **argv)
                     // the bound in force at the load: the mode's, the producer's longest gap so far
                     uint64_t bound = 0;
                     const uint64_t gap = s->ch->copy() ? producers[s->ch->id].gap_so_far(cycle) : 0;
-                    if (modes.bound_at(*s->ch, gap, t_load, bound))
-                        s->judge(age, bound, k, o.age_scale, crash_prod && crash_prod->ch == s->ch);
-                    else
+                    int how = 0;
+                    if (modes.bound_at(*s->ch, gap, t_load, bound, &how)) {
+                        s->judge(age, bound, k, o.age_scale, crash_prod && crash_prod->ch == s->ch, how == 2);
+                        s->settling += how == 1;
+                        s->comeback += how == 2;
+                    } else
                         ++s->unjudged;
                 }
                 // freshness: from the Import's start (its first load of Actual since the last event)

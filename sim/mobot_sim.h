@@ -13,6 +13,7 @@
 #include "report.h"
 
 const int NB = 4;
+const int DP_MAX_WORDS = 4096;  // the largest DPRAM the harness tracks (pico_boards' ADDR_WIDTH <= 12)
 enum : uint32_t { EV_NEW = 1, EV_OLD, EV_ERROR, EV_BEGIN, EV_EXPORT, EV_STALE, EV_FRESH, EV_STATUS, EV_CLOCK, EV_MODE };
 const char *const kChecks[] = {"cpu", "liveness", "age", "staleness", "faults", "clock", "termination", "mode",
                                "freshness"};
@@ -83,6 +84,10 @@ struct Series {  // one channel at one consumer
     uint64_t unjudged = 0;             // samples no bound applies to (a mode without the channel, settling)
     Stat judged_age;                   // the samples judged against a bound (the console row; age: all samples)
     uint64_t worst_pm = 0;             // the worst judged age / bound, per mille
+    uint64_t worst_pm_age = 0, worst_pm_bound = 0;  // ... that sample's age and bound in force
+    uint64_t settling = 0, comeback = 0;  // samples judged in a window after a switch (how 1, how 2 of bound_at)
+    Stat comeback_age;                 // the ages judged after the channel came back (how 2)
+    uint64_t comeback_pm = 0, comeback_pm_age = 0, comeback_pm_bound = 0;  // their worst age / bound
     uint64_t fresh_judged = 0, fresh_late = 0;  // check freshness: Imports judged, those that returned older
     std::string fresh_first;           // ... the first of those
     uint64_t last_import = 0, max_import_gap = 0;  // the consumer's Imports of it: the longest gap (cycles)
@@ -91,7 +96,10 @@ struct Series {  // one channel at one consumer
     Termination term;
     // One judged age sample (time bucket k) against the bound in force;
     // a crashed producer's channel counts toward no verdict (its ages grow).
-    void judge(uint64_t age, uint64_t bound, uint64_t k, double scale, bool crashed);
+    // comeback: judged after the channel came back (bound_at's how 2): kept
+    // out of the row's figures (judged_age, worst_pm), in comeback_age and
+    // comeback_pm, and judged like any sample.
+    void judge(uint64_t age, uint64_t bound, uint64_t k, double scale, bool crashed, bool comeback = false);
 };
 
 struct LocalClock {  // one board's local time (alb_clock): its estimates against the controller's time
@@ -144,7 +152,10 @@ struct ModeTrack {
     // The age bound at controller time t of channel id (a copy's producer gap
     // added); false: not judged (the mode in force, or the one before within
     // its settling, carries no such channel).
-    bool bound_at(const PlanChannel &c, uint64_t gap, uint64_t t, uint64_t &bound) const;
+    // how (if given): 0 the bound of the mode in force, 1 in the window after
+    // a switch from a mode that carries it (that mode's bound + t - S), 2 in
+    // the window after it comes back (the bound before S1 + t - S1).
+    bool bound_at(const PlanChannel &c, uint64_t gap, uint64_t t, uint64_t &bound, int *how = nullptr) const;
     // Some mode in force during [t0, t1] carries no channel id.
     bool absent_during(int id, uint64_t t0, uint64_t t1) const;
     std::string report(const std::string &indent) const;    // the JSON array of switches

@@ -182,12 +182,18 @@ bool write_ages(const std::string &path, const std::vector<Series> &series, cons
     return true;
 }
 
-void Series::judge(uint64_t age, uint64_t bound, uint64_t k, double scale, bool crashed)
+void Series::judge(uint64_t age, uint64_t bound, uint64_t k, double scale, bool crashed, bool comeback)
 {
     bucket_bound[k] = std::max(bucket_bound[k], bound);
     if (crashed) return;
-    judged_age.add(age);
-    worst_pm = std::max(worst_pm, bound ? 1000 * age / bound : 0);
+    const uint64_t pm = bound ? 1000 * age / bound : 0;
+    if (comeback) {
+        comeback_age.add(age);
+        if (pm > comeback_pm || !comeback_pm_bound) comeback_pm = pm, comeback_pm_age = age, comeback_pm_bound = bound;
+    } else {
+        judged_age.add(age);
+        if (pm > worst_pm || !worst_pm_bound) worst_pm = pm, worst_pm_age = age, worst_pm_bound = bound;
+    }
     if (double(age) > scale * double(bound) && (!over_bound++ || age * worst_over_bound > worst_over * bound))
         worst_over = age, worst_over_bound = bound;
 }

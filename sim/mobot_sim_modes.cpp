@@ -7,8 +7,14 @@
 // the bound of the mode in force (none if it does not carry the channel).
 // Within the window [S, S + C + b) after a switch at S to a mode of cycle C
 // and bound b, the age can only have grown since S: bound_old + (t - S), where
-// bound_old is the bound of the mode before (none if that mode did not carry
-// the channel: a channel that comes back is judged once its window ends).
+// bound_old is the bound of the mode before.  A channel that comes back (the
+// mode before did not carry it) is judged in its window by the bound in force
+// just before S1, the end of the last stay in a mode that carried it, plus
+// t - S1: the consumer's newest value then was within that bound, and what it
+// imports later is that value or a newer one (a value in fragments cut by
+// the switch at S1 goes on after the return, taken_at from its first
+// fragment before S1: newer than the consumer's newest at S1, so within the
+// same bound).  A channel no earlier mode carried is not judged in its window.
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -51,8 +57,9 @@ void ModeTrack::published(int m, uint32_t since)
     ++bad_since;
 }
 
-bool ModeTrack::bound_at(const PlanChannel &c, uint64_t gap, uint64_t t, uint64_t &bound) const
+bool ModeTrack::bound_at(const PlanChannel &c, uint64_t gap, uint64_t t, uint64_t &bound, int *how) const
 {
+    if (how) *how = 0;
     const uint64_t extra = c.copy() ? gap : 0;
     if (plan->modes.empty()) {
         bound = c.latency_retry + extra;
@@ -76,9 +83,21 @@ bool ModeTrack::bound_at(const PlanChannel &c, uint64_t gap, uint64_t t, uint64_
         return true;
     }
     uint64_t b_old = 0;
-    if (!in(last->from, b_old)) return false;
-    bound = b_old + (t - last->time);
-    return true;
+    if (in(last->from, b_old)) {
+        bound = b_old + (t - last->time);
+        if (how) *how = 1;
+        return true;
+    }
+    // The channel comes back: the end S1 of the last stay in a mode that carried it.
+    for (size_t k = size_t(last - switches.data()) + 1; k-- > 0;) {
+        const ModeSwitch &s = switches[k];
+        if (!in(s.from, b_old)) continue;
+        if (s.time == 0 || !bound_at(c, gap, s.time - 1, b_old)) return false;
+        bound = b_old + (t - s.time);
+        if (how) *how = 2;
+        return true;
+    }
+    return false;
 }
 
 bool ModeTrack::absent_during(int id, uint64_t t0, uint64_t t1) const

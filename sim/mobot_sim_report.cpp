@@ -35,12 +35,12 @@ std::string series_report(const std::vector<Series> &series, const Plan &plan)
         std::printf("  %-11s %-11s %7llu %7llu %9s %9s %9s %9llu %6.3f %11.0f\n", s.ch->name.c_str(),
                     plan.board_names[s.board].c_str(), (unsigned long long)s.news, (unsigned long long)s.olds,
                     lo, mean, hi, (unsigned long long)s.bound, double(s.worst_pm) / 1000.0, s.import_cycles.mean());
-        const uint64_t crashed = s.age.n - a.n - s.unjudged;
-        if (s.age.n > a.n) {
+        const uint64_t crashed = s.age.n - a.n - s.unjudged - s.comeback_age.n;
+        if (s.age.n > a.n + s.comeback_age.n) {
             std::string without;  // the modes that do not carry the channel
             for (const PlanMode &m : plan.modes)
                 if (!m.carries(s.ch->id)) without += (without.empty() ? "" : ", ") + m.name;
-            std::printf("  %-23s + %llu ages not judged", "", (unsigned long long)(s.age.n - a.n));
+            std::printf("  %-23s + %llu ages not judged", "", (unsigned long long)(s.age.n - a.n - s.comeback_age.n));
             if (s.age.max > a.max) std::printf(", up to %llu", (unsigned long long)s.age.max);
             const bool both = s.unjudged && crashed;
             if (s.unjudged)
@@ -51,15 +51,43 @@ std::string series_report(const std::vector<Series> &series, const Plan &plan)
                 std::printf("%s from a producer that crashes in this run", both ? ("; " + std::to_string(crashed)).c_str() : ":");
             std::printf("\n");
         }
+        if (s.comeback_age.n)
+            std::printf("  %-23s + %llu ages judged after the channel came back, by the bound in force when it was "
+                        "last carried + the time since: up to %llu, worst %llu against %llu (%.3f)\n", "",
+                        (unsigned long long)s.comeback_age.n, (unsigned long long)s.comeback_age.max,
+                        (unsigned long long)s.comeback_pm_age, (unsigned long long)s.comeback_pm_bound,
+                        double(s.comeback_pm) / 1000.0);
         JsonReport e;
         e.str("channel", s.ch->name).str("kind", s.ch->kind).str("consumer", plan.board_names[s.board])
          .num("new", double(s.news)).num("old", double(s.olds)).num("bound", double(s.bound))
          .num("latency_bound", double(s.ch->latency_retry)).num("period", double(s.ch->period))
          .num("over_bound_samples", double(s.over_bound))
-         .num("worst_ratio", double(s.worst_pm) / 1000.0).num("unjudged_samples", double(s.unjudged)).num("new_after_crash", double(s.news_after_crash))
+         .num("worst_ratio", double(s.worst_pm) / 1000.0).num("worst_ratio_age", double(s.worst_pm_age))
+         .num("worst_ratio_bound", double(s.worst_pm_bound)).num("settling_samples", double(s.settling))
+         .num("comeback_samples", double(s.comeback)).raw("comeback_age", s.comeback_age.json())
+         .num("comeback_worst_ratio", double(s.comeback_pm) / 1000.0).num("comeback_worst_age", double(s.comeback_pm_age))
+         .num("comeback_worst_bound", double(s.comeback_pm_bound)).num("unjudged_samples", double(s.unjudged)).num("new_after_crash", double(s.news_after_crash))
          .num("freshness_judged", double(s.fresh_judged)).num("freshness_late", double(s.fresh_late)).raw("age", s.age.json()).raw("judged_age", s.judged_age.json())
          .raw("import_cycles", s.import_cycles.json()).raw("termination", termination_json(s.term));
         append(js, e);
+    }
+    // The slow channels (a guaranteed period of 10 ms or more), in ms: the
+    // worst judged age against the bound in force at that Import.
+    const double ms = 1e3 / plan.clock_hz;
+    for (const Series &s : series) {
+        if (double(s.ch->period) < plan.clock_hz / 100) continue;
+        std::printf("  slow channel %s at %s: period %.2f ms, latency bound %.2f ms; %llu New, %llu ages judged",
+                    s.ch->name.c_str(), plan.board_names[s.board].c_str(), double(s.ch->period) * ms,
+                    double(s.ch->latency_retry) * ms, (unsigned long long)s.news, (unsigned long long)s.judged_age.n);
+        if (s.judged_age.n)
+            std::printf(", age max %.2f ms; worst %.2f ms against its bound %.2f ms (%.3f)",
+                        double(s.judged_age.max) * ms, double(s.worst_pm_age) * ms, double(s.worst_pm_bound) * ms,
+                        double(s.worst_pm) / 1000.0);
+        if (s.comeback_age.n)
+            std::printf("; after coming back %llu, worst %.2f ms against %.2f ms (%.3f)",
+                        (unsigned long long)s.comeback_age.n, double(s.comeback_pm_age) * ms,
+                        double(s.comeback_pm_bound) * ms, double(s.comeback_pm) / 1000.0);
+        std::printf("\n");
     }
     return js + "]";
 }

@@ -21,6 +21,9 @@
 // the controller itself).  Board index c is the compiler's board index; NB is
 // at most 4 (four plusarg names).  Core c uses the flattened outputs' bits
 // [c*w +: w].  stall_i[c] holds core c's local-RAM accesses for a clock.
+// ADDR_WIDTH 12 (16 KiB per DPRAM) serves every robot description: an image
+// of a smaller RAM (ram_bytes 4096) fills the low words; the harness reads
+// aw_o and refuses a plan whose ram_bytes exceeds the DPRAM.
 // Local timers (simulation only, by hierarchical reference into each board's
 // board_memmap; 0 under SYNTHESIS): timer_rd_o[c] is high in the clock a read
 // of board c's TIMER register completes, timer_o the value it returns; the
@@ -33,7 +36,7 @@
 
 module pico_boards #(
     parameter NB         = 4,     // boards, 1..4
-    parameter ADDR_WIDTH = 10,    // word-address bits of each board DPRAM
+    parameter ADDR_WIDTH = 12,    // word-address bits of each board DPRAM (12: 16 KiB, room for the slow channels)
     parameter RAM_WORDS  = 4096,  // words of each core's local RAM (16 KiB)
     parameter N_CHAN     = 16,    // controller channel ids
     parameter ROM_WORDS  = 1024,  // schedule ROM depth in words
@@ -70,10 +73,13 @@ module pico_boards #(
     output wire              m_err_o,    //                     err
     output wire [NB-1:0]     timer_rd_o, // core c's read of its TIMER completes this clock (simulation only)
     output wire [NB*32-1:0]  timer_o,    // core c's local timer, the value such a read returns
-    output wire [3:0]        mode_o      // the controller's running schedule mode (simulation only: a probe)
+    output wire [3:0]        mode_o,     // the controller's running schedule mode (simulation only: a probe)
+    output wire [7:0]        aw_o        // ADDR_WIDTH, for the harness to check a plan's RAM against (a constant)
 );
 
     localparam BA = 4 + ADDR_WIDTH;  // bus address {board[3:0], word}
+    localparam [7:0] AW8 = ADDR_WIDTH;
+    assign aw_o = AW8;
 
     // controller <-> fault injector
     wire          m_we;

@@ -16,7 +16,8 @@ module pico_boards_tb;
     wire [3:0]  done, trap, bus_err, ev_valid, dp_ack, dp_we;
     wire [127:0] code, ev_data, ev_arg;
     wire [511:0] stat;
-    wire [39:0] dp_adr;
+    wire [47:0] dp_adr;     // NB x ADDR_WIDTH (12)
+    wire [7:0]  aw;
     wire [15:0] dp_sel, rom_errors;
     wire [31:0] time_now;
     wire [3:0]  timer_rd;
@@ -25,7 +26,7 @@ module pico_boards_tb;
     wire        error, m_cyc, m_stb, m_ack, m_err, fi_new, fi_dead;
     // Outputs this bench does not look at (it only measures speed).
     wire unused = &{1'b0, ev_valid, dp_ack, dp_we, code, ev_data, ev_arg, stat, dp_adr, dp_sel,
-                    rom_errors, m_cyc, m_stb, m_ack, m_err, fi_new, fi_dead, timer_rd, timer, mode};
+                    rom_errors, m_cyc, m_stb, m_ack, m_err, fi_new, fi_dead, timer_rd, timer, mode, aw};
 
     pico_boards u_dut (
         .clk_i(clk_q), .rst_i(rst_q), .stall_i(4'd0), .fi_kind_i(2'd0), .fi_dead_i(4'd0),
@@ -34,7 +35,7 @@ module pico_boards_tb;
         .ev_arg_o(ev_arg), .dp_ack_o(dp_ack), .dp_we_o(dp_we), .dp_adr_o(dp_adr), .dp_sel_o(dp_sel),
         .trap_o(trap), .bus_err_o(bus_err), .time_o(time_now), .error_o(error),
         .rom_errors_o(rom_errors), .m_cyc_o(m_cyc), .m_stb_o(m_stb), .m_ack_o(m_ack), .m_err_o(m_err),
-        .timer_rd_o(timer_rd), .timer_o(timer), .mode_o(mode)
+        .timer_rd_o(timer_rd), .timer_o(timer), .mode_o(mode), .aw_o(aw)
     );
 
     always #5 clk_q <= ~clk_q;

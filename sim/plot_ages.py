@@ -10,7 +10,9 @@ schedule mode without the channel).  The header names each series
 the start-up mode).  REPORT.json gives the clock, the crash, the first stale
 report, the mode switches and per series the worst judged age / bound.
 
-One panel per series that has ages: the worst age (us) against time (ms),
+One panel per series that has ages: the worst age against time (ms), in us,
+or in ms for a slow channel (a panel whose scale reaches 10 ms: the robot's
+RadarScan and NavLog beside its 50 us loops),
 blue where a bound applies, grey where none does (a mode without the
 channel, or the settling after a switch back to one with it), the bound in
 force dashed, ages above it red.  The scale is set by the judged ages and
@@ -107,21 +109,26 @@ def gap_steps(points, switches, bucket):
     buckets of one mode once it has settled after a switch (the bound grows
     after a switch and then drops to the new mode's: settled from that drop
     on, or 40 buckets after the switch).  For a copy channel such a rise is
-    its producer's longest gap growing."""
-    out, last_t, prev_b, settled, start = [], -1, None, True, 0
+    its producer's longest gap growing.  A run of rises in consecutive
+    buckets (a slow channel's gap still open, growing with time) gets one
+    marker, at its start."""
+    out, last_t, prev_b, settled, start, rising = [], -1, None, True, 0, False
     for t, _, b in points:
         crossed = [c for c in switches if last_t < c <= t]
         last_t = t
         if crossed:
             settled, start, prev_b = False, crossed[-1], None
         if b is None:
-            prev_b = None
+            prev_b, rising = None, False
             continue
+        up = False
         if not settled and ((prev_b is not None and b < prev_b) or t >= start + 40 * bucket):
             settled = True
         elif settled and prev_b is not None and b > prev_b:
-            out.append((t, b))
-        prev_b = b
+            up = True
+            if not rising:
+                out.append((t, b))
+        prev_b, rising = b, up
     return out
 
 
@@ -192,7 +199,9 @@ def main():
     if bands:
         notes.append("Right after a switch the bound is the old mode's plus the time since the switch (the spike at "
                      "each switch), until one cycle and one bound of the new mode have passed; a channel the new mode "
-                     "brings back is judged from then on.")
+                     "brings back is judged meanwhile by the bound it had when it was last carried plus the time "
+                     "since (a value in fragments cut by the switch goes on after the return, its taken_at from its "
+                     "first fragment).")
     if unread:
         by_ch = {}
         for s in unread:
@@ -213,7 +222,7 @@ def main():
            f'{report.get("faults_injected", 0)} faults injected'
            + (f', {report["crash_board"]} crashes at {crash * 1e3 / hz:.2f} ms' if crash else "")
            + (f', {len(bands) - 1} mode switches' if bands else "")
-           + "; ages in us</text>"]
+           + "; ages in us, or ms where the panel says so</text>"]
     for i, s in enumerate(series):
         top = TOP + i * (PANEL_H + GAP)
         bottom = top + PANEL_H
@@ -223,6 +232,8 @@ def main():
         # the scale: the judged ages and the bound (grey ages above it are clipped)
         ymax = max(1.3 * s["bound"], 1.1 * worst, 1)
         y = lambda v: bottom - PANEL_H * min(v, ymax) / ymax
+        # the unit: ms for a slow channel (its scale reaches 10 ms), else us
+        unit, per = ("ms", us / 1e3) if ymax * us >= 1e4 else ("us", us)
         out.append(f'<rect x="{LEFT}" y="{top}" width="{plot_w}" height="{PANEL_H}" fill="#fafafa" stroke="#ccc"/>')
         for t0, t1, name in bands:
             out.append(f'<rect x="{x(t0):.1f}" y="{top}" width="{x(t1) - x(t0):.1f}" height="{PANEL_H}" '
@@ -237,14 +248,14 @@ def main():
                    f'{esc(s["channel"])}</text>')
         out.append(f'<text x="{LEFT - 8}" y="{top + 28}" text-anchor="end" fill="#555">at {esc(s["consumer"])}</text>')
         out.append(f'<text x="{LEFT - 8}" y="{top + 42}" text-anchor="end" fill="#555">'
-                   f'worst {worst * us:.1f} us</text>')
+                   f'worst {worst * per:.1f} {unit}</text>')
         if s["crashed"]:
             out.append(f'<text x="{LEFT - 8}" y="{top + 56}" text-anchor="end" fill="#555">'
                        f'not judged: {esc(report["crash_board"])} crashes</text>')
         elif s["ratio"] is not None:
             out.append(f'<text x="{LEFT - 8}" y="{top + 56}" text-anchor="end" fill="#555">'
                        f'{s["ratio"]:.2f} of its bound</text>')
-        out.append(f'<text x="{LEFT + 3}" y="{top + 10}" fill="{GREY}" font-size="9">{ymax * us:.0f} us</text>')
+        out.append(f'<text x="{LEFT + 3}" y="{top + 10}" fill="{GREY}" font-size="9">{ymax * per:.0f} {unit}</text>')
         # the bound in force: a step line over the buckets that had one
         for run in runs(s["points"], True):
             pts = []
@@ -282,7 +293,7 @@ def main():
             where = mode_at(t_hi)
             why = (f' (after the crash of {report["crash_board"]})' if s["crashed"] and t_hi + bucket > crash else
                    f' (in {where}, no {s["channel"]})' if where and where not in s["modes"] else "")
-            label = f'not judged: up to {v_hi * us:.0f} us{why}'
+            label = f'not judged: up to {v_hi * per:.0f} {unit}{why}'
             anchor_x = x(first) + 4
             out.append(f'<text x="{anchor_x:.1f}" y="{top + 13}" fill="#666" font-size="9">{esc(label)}</text>')
         for t, colour in ((crash, RED), (stale, ORANGE)):

@@ -88,7 +88,9 @@ def render_cluster_svg(system: System, plan: Plan, rep: dict, heading: str = "",
     span = C * plan.cluster
     title = (f"{heading}{system.name}: multi-rate, minor cycle {C} clocks = {us(C, hz):g} \u00b5s, cluster of "
              f"{plan.cluster} minor cycles = {us(span, hz) / 1000:g} ms ({system.mode}, {hz / 1e6:g} MHz)")
-    o.append(f'<text x="16" y="24" font-size="16" font-weight="bold" fill="#222">{_esc(title)}</text>')
+    # a long title (a mode's heading before it) gets a smaller font to fit the width (about 0.6 em a character)
+    fs = min(16.0, round((width - 32) / (0.6 * len(title)), 1))
+    o.append(f'<text x="16" y="24" font-size="{fs:g}" font-weight="bold" fill="#222">{_esc(title)}</text>')
     sub = (f"{len(plan.slots)} ROM entries \u00b7 bus utilisation {100 * rep['bus_utilisation']:.1f} % over the "
            f"cluster \u00b7 busiest minor cycle ends at {rep.get('busiest_minor_cycle_clocks', '?')} of "
            f"{plan.capacity} usable clocks \u00b7 an entry not due costs {skip} clocks (grey)")

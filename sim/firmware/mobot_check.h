@@ -40,7 +40,13 @@
 #define MOBOT_EXPORTS  40u   /* exports before a producer reports */
 
 /* Time budgets of the application, in controller clocks (50 MHz). */
-#define MOBOT_RADAR_SCAN_CLOCKS 20000u  /* the radar publishes a scan at least this often (400 us) */
+#ifndef ALB_RADARSCAN_ID
+#define MOBOT_RADAR_SCAN_CLOCKS 20000u  /* the radar publishes a map at least this often (400 us) */
+#else
+/* With the full scan (sim/mobot3_slow.toml) the radar's loop also fills and
+ * exports 4 KB every 20 ms: a map at least every 2 ms. */
+#define MOBOT_RADAR_SCAN_CLOCKS 100000u
+#endif
 
 /* Board event kinds (ARG). */
 #define MOBOT_EV_NEW     1u  /* alb_import returned New (taken_at)            */
@@ -64,7 +70,13 @@
  * each stay drawn up to MOBOT_MODE_SPREAD_CLOCKS longer, so the requests fall
  * at varied places of the cycle), and asks again if the mode has not changed
  * MOBOT_MODE_RETRY_CLOCKS after a request. */
+#ifndef ALB_RADARSCAN_ID
 #define MOBOT_CRUISE_CLOCKS     300000u  /* 6 ms */
+#else
+/* With the slow channels (cruise only): stays of 60 ms in cruise, so the
+ * 20 ms scan and the 100 ms log are delivered and judged between switches. */
+#define MOBOT_CRUISE_CLOCKS    3000000u  /* 60 ms */
+#endif
 #define MOBOT_DOCK_CLOCKS       200000u  /* 4 ms */
 #define MOBOT_MODE_SPREAD_CLOCKS 131072u /* 2.6 ms, a power of two */
 #define MOBOT_MODE_RETRY_CLOCKS  20000u  /* 400 us: far above a switch's latency */
@@ -254,6 +266,50 @@ static inline int motor_ok0(const MotorCommand *v)
 {
     return (v->left_mm_s == 0 && v->right_mm_s == 0 && v->flags == 0u) ||
            v->flags == (mobot_mix(motor_seq(v)) ^ MOBOT_SALT);
+}
+
+/* The slow channels (sim/mobot3_slow.toml, when the board's header has
+ * them): RadarScan (radar -> navigation, 1024 words, a new scan every
+ * MOBOT_SCAN_PERIOD_CLOCKS) and NavLog (navigation -> odometry, 64 words,
+ * every MOBOT_LOG_PERIOD_CLOCKS).  Word k of value seq is seq << shift | k
+ * (shift: the index bits), seq counting from 1; the start image (all zero)
+ * is sequence 0.  slow_ok0 finds any word of another value (torn or mixed:
+ * fragments of two scans), out of place (shifted) or wrong: exit code 3
+ * (checksum) with the channel's id.  The consumers import them every
+ * MOBOT_SLOW_EVERY-th loop (an Import copies the whole value, Old too). */
+#define MOBOT_SCAN_SHIFT         10u       /* RadarScanData: 1024 words */
+#define MOBOT_LOG_SHIFT           6u       /* NavLogData: 64 words */
+#define MOBOT_SCAN_PERIOD_CLOCKS 1000000u  /* 20 ms */
+#define MOBOT_LOG_PERIOD_CLOCKS  5000000u  /* 100 ms */
+#define MOBOT_SLOW_EVERY         16u       /* a power of two */
+#define MOBOT_SCAN_NEWS           3u       /* navigation's quota: New scans (the start value's and two) */
+#define MOBOT_LOG_NEWS            1u       /* odometry's quota: New logs */
+
+static inline void slow_make(uint32_t *w, uint32_t n, uint32_t shift, uint32_t seq)
+{
+    uint32_t k;
+    for (k = 0u; k < n; ++k)
+        w[k] = seq << shift | k;
+}
+
+static inline uint32_t slow_seq(const uint32_t *w, uint32_t shift)
+{
+    return w[0] >> shift;
+}
+
+static inline int slow_ok0(const uint32_t *w, uint32_t n, uint32_t shift)
+{
+    uint32_t k, z = 0u, top = w[0] & ~((1u << shift) - 1u);
+    for (k = 0u; k < n; ++k)
+        z |= w[k];
+    if (z == 0u)
+        return 1;                      /* the start image */
+    if (top == 0u)
+        return 0;                      /* sequence 0 with words that are not 0 */
+    for (k = 0u; k < n; ++k)
+        if (w[k] != (top | k))
+            return 0;
+    return 1;
 }
 
 /* Per imported channel: the last sequence, New count, whether any New came. */

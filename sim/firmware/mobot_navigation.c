@@ -28,6 +28,12 @@
  * again after MOBOT_MODE_RETRY_CLOCKS if the mode did not change.  In
  * dock the controller carries no RadarMap and no Status: the map goes STALE
  * and comes back FRESH in cruise, as after a radar crash.
+ *
+ * Slow channels (sim/mobot3_slow.toml: ALB_RADARSCAN_ID, ALB_NAVLOG_ID
+ * defined): navigation imports and checks the radar's full scan RadarScan
+ * every MOBOT_SLOW_EVERY-th loop and exports its log NavLog at the start and
+ * then every MOBOT_LOG_PERIOD_CLOCKS (by now); it reports 0 only after
+ * MOBOT_SCAN_NEWS New scans too.  Both run in cruise only.
  */
 #include "albatross.h"
 #include "navigation.h"
@@ -58,6 +64,14 @@ int main(void)
     alb_sample_t smp;
     uint32_t seq = 0u, code, reported = 0u, stale = 0u, now;
     int r;
+#ifdef ALB_RADARSCAN_ID
+    static RadarScan_msg scan;
+    mobot_track_t ts = {0u, 0u, 0u, 0u};
+#endif
+#ifdef ALB_NAVLOG_ID
+    static NavLogData log;
+    uint32_t log_seq = 0u, log_at = 0u;
+#endif
 #ifdef ALB_MODE_DOCK
     static Mode_msg md;            /* the running mode (the RAM image's: cruise, since 0) */
     uint32_t want = ALB_MODE_CRUISE, asked_at = 0u, asks = 0u, switches = 0u, stay = MOBOT_CRUISE_CLOCKS;
@@ -119,11 +133,33 @@ int main(void)
             asks = 0u;
         }
 #endif
+#ifdef ALB_RADARSCAN_ID
+        if ((seq & (MOBOT_SLOW_EVERY - 1u)) == 0u) {
+            r = mobot_import(&alb_ch_RadarScan, ALB_RADARSCAN_ID, &scan, &scan.taken_at);
+            code = mobot_check(&ts, ALB_RADARSCAN_ID, r,
+                               slow_ok0(scan.value.word, ALB_RADARSCAN_WORDS, MOBOT_SCAN_SHIFT),
+                               slow_seq(scan.value.word, MOBOT_SCAN_SHIFT));
+            if (code)
+                return (int)code;
+        }
+#endif
+#ifdef ALB_NAVLOG_ID
+        if (log_seq == 0u || now - log_at >= MOBOT_LOG_PERIOD_CLOCKS) {
+            log_at = now;
+            slow_make(log.word, ALB_NAVLOG_WORDS, MOBOT_LOG_SHIFT, ++log_seq);
+            if (mobot_export(&alb_ch_NavLog, ALB_NAVLOG_ID, &log, log_seq) != ALB_OK)
+                return (int)MOBOT_CODE(7, ALB_NAVLOG_ID, log_seq);
+        }
+#endif
         motor_make(&cmd, ++seq);
         if (mobot_export(&alb_ch_MotorCmd, ALB_MOTORCMD_ID, &cmd, seq) != ALB_OK)
             return (int)MOBOT_CODE(7, ALB_MOTORCMD_ID, seq);
         if (!reported && seq >= MOBOT_EXPORTS && tr.news >= MOBOT_NEWS && tp.news >= MOBOT_NEWS &&
-            tt.news >= MOBOT_NEWS) {
+            tt.news >= MOBOT_NEWS
+#ifdef ALB_RADARSCAN_ID
+            && ts.news >= MOBOT_SCAN_NEWS
+#endif
+            ) {
             board_stat(0u, tr.news);
             board_stat(1u, tp.news);
             board_stat(2u, tt.news);

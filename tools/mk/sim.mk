@@ -14,25 +14,33 @@
 # controller's time; DRIFT makes board clocks drift (mobot_sim --drift-ppm).
 # SIM_DESC must describe the boards radar, odometry, navigation and motor and
 # the channels of sim/mobot3.toml (the firmware uses them), for
-# example sim/mobot3.toml (one schedule) or sim/mobot3_possync.toml.  The
-# default has the modes cruise and dock: the report lists every switch with
-# its latency against the compiler's, and ages.svg shows the modes as bands.
+# example sim/mobot3.toml (one schedule), sim/mobot3_possync.toml or the
+# robot with its modes (build/schedule/mobot3-modes/mobot3-modes.toml).  The
+# default has the modes cruise and dock and the slow channels of
+# sim/mobot3_slow.toml (RadarScan, 4 KB every 20 ms; NavLog, 256 bytes every
+# 100 ms; cruise only): the report lists every switch with its latency
+# against the compiler's and each slow channel's worst age against its
+# bound, and ages.svg shows the modes as bands.  Its 11,000,000 clocks
+# (220 ms: the log three times) take about 15 s.
 
 SIM_DIR      := $(BUILD)/sim
 ifneq ($(filter command line environment,$(origin SIM_DESC)),)
 override SIM_DESC := $(call caller_path,$(SIM_DESC))
 MAKEOVERRIDES += SIM_DESC=$(SIM_DESC)
 endif
-# The default: the robot with its two schedule modes (sim/mobot3.toml and
-# sim/mobot3_modes.toml, joined by tools/mk/compiler.mk): navigation asks for
-# dock and back while it runs (sim/firmware/mobot_navigation.c).
+# The default: the robot with its two schedule modes and its slow channels
+# (sim/mobot3.toml, sim/mobot3_modes.toml and sim/mobot3_slow.toml, joined by
+# tools/mk/compiler.mk): navigation asks for dock and back while it runs
+# (sim/firmware/mobot_navigation.c), the radar sends its full scan and
+# navigation its log in cruise.
 SIM_MODES_DESC := $(BUILD)/schedule/mobot3-modes/mobot3-modes.toml
-SIM_DESC     ?= $(SIM_MODES_DESC)
+SIM_SLOW_DESC  := $(BUILD)/schedule/mobot3-slow/mobot3-slow.toml
+SIM_DESC     ?= $(SIM_SLOW_DESC)
 SIM_NAME     := $(basename $(notdir $(SIM_DESC)))
 SIM_SCHED    := $(BUILD)/schedule/$(SIM_NAME)
 SIM_FWDIR    := $(PB_DIR)/$(SIM_NAME)/fw-clock
 DRIFT        ?=
-SIM_CYCLES   ?= 2000000
+SIM_CYCLES   ?= 11000000
 FAULT_RATE   ?= 0
 BURST        ?=
 CRASH        ?=
@@ -46,8 +54,10 @@ SIM_BIN      := $(PB_DIR)/$(if $(filter 1,$(TRACE)),obj-trace,obj)/Vpico_boards
 ifeq ($(call example_desc,$(SIM_DESC)),)
 ifneq ($(abspath $(SIM_DESC)),$(abspath $(SCHEDULE_DESC)))
 ifneq ($(abspath $(SIM_DESC)),$(abspath $(SIM_MODES_DESC)))
+ifneq ($(abspath $(SIM_DESC)),$(abspath $(SIM_SLOW_DESC)))
 $(SIM_SCHED)/rom.hex: $(SIM_DESC) $(SCHEDULE_SRC)
 	$(SCHEDULE) $(SIM_DESC) -o $(@D)
+endif
 endif
 endif
 endif
@@ -62,6 +72,47 @@ sim: $(SIM_BIN) $(foreach b,$(PB_BOARDS),$(SIM_FWDIR)/$(b).hex) $(SIM_SCHED)/tb_
 	    $(if $(CRASH),--crash $(CRASH)) $(if $(DRIFT),--drift-ppm $(DRIFT)) --label sim --report $(REPORTS)/sim.json --ages $(SIM_DIR)/ages.csv \
 	    $(if $(filter 1,$(TRACE)),--trace $(SIM_DIR)/mobot.vcd --trace-from $(TRACE_FROM) --trace-cycles $(TRACE_CYCLES))
 	@$(PYTHON) sim/plot_ages.py $(SIM_DIR)/ages.csv $(REPORTS)/sim.json $(SIM_DIR)/ages.svg
+
+# The slow channels (docs/robot.md "Slow channels"): the robot of make sim
+# (modes and sim/mobot3_slow.toml, fw-clock/) for 2,500,000 clocks (50 ms,
+# three scans delivered; no mode switch: cruise stays 60 ms), every check on,
+# the slow channels' ages judged against their bounds from start-up (a value
+# never delivered ages from 0) and navigation's quota holding three New scans,
+# odometry's one New log (--require-done).  Its negatives:
+#   sim-slow-negative-unpublished  RadarScan's destination at navigation never
+#                  published (--mute): caught by age (the start value's age
+#                  passes the bound at about 39 ms), freshness and liveness
+#                  (navigation never meets its quota of scans)
+#   sim-slow-negative-torn  the radar puts one word of the next scan in each
+#                  scan (sim/mutants/scan_torn.sed): caught by cpu
+#                  (navigation's word check, exit code 3 on RadarScan)
+SIM_SLOW        := $(BUILD)/schedule/mobot3-slow
+SIM_SLOW_FW     := $(PB_DIR)/mobot3-slow/fw-clock
+SIM_SLOW_CYCLES ?= 2500000
+sim_slow_args = $(call pb_args,$(SIM_SLOW),$(SIM_SLOW_FW),$(1),$(SIM_SLOW_FW)/navigation.hex) --cycles $(SIM_SLOW_CYCLES) \
+                --seed $(SEED) --require-done
+$(PB_DIR)/mutant/scan_torn/radar.elf: sim/mutants/scan_torn.sed sim/firmware/mobot_radar.c sim/firmware/mobot_check.h \
+        $(SIM_SLOW)/rom.hex $(FW_DEPS) $(PB_CLOCK_DEPS)
+	@$(DRV_RV_NEED)
+	@mkdir -p $(@D)
+	sed -f $< sim/firmware/mobot_radar.c > $(@D)/mobot_radar.c
+	@if cmp -s $(@D)/mobot_radar.c sim/firmware/mobot_radar.c; then \
+	    echo "firmware mutant scan_torn did not apply: sim/firmware/mobot_radar.c no longer has its line"; exit 1; fi
+	$(DRV_RV_CC) $(FW_CFLAGS) $(PB_CLOCK_FLAGS) -I$(SIM_SLOW) -Isim -Isim/firmware -o $@ soc/firmware/crt0.S \
+	    $(@D)/mobot_radar.c $(SIM_SLOW)/radar.c c-driver/albatross.c c-driver/alb_clock.c $(FW_LDFLAGS)
+SIM_SLOW_DEPS = $(PB_BIN) $(foreach b,$(PB_BOARDS),$(SIM_SLOW_FW)/$(b).hex) $(SIM_SLOW)/tb_plan.txt
+TESTS += sim-slow sim-slow-negative-unpublished sim-slow-negative-torn
+.PHONY: test-sim-slow test-sim-slow-negative-unpublished test-sim-slow-negative-torn
+test-sim-slow: $(SIM_SLOW_DEPS)
+	@tools/run_test.sh sim-slow $(PB_BIN) $(call sim_slow_args,$(SIM_SLOW_FW)/radar.hex) --label sim-slow \
+	    --report $(REPORTS)/sim_slow.json
+test-sim-slow-negative-unpublished: $(SIM_SLOW_DEPS)
+	@tools/run_test.sh sim-slow-negative-unpublished $(PB_BIN) $(call sim_slow_args,$(SIM_SLOW_FW)/radar.hex) \
+	    --mute RadarScan@navigation --label sim-slow-negative-unpublished --expect-caught-by age,freshness,liveness \
+	    --report $(REPORTS)/sim_slow_negative_unpublished.json
+test-sim-slow-negative-torn: $(SIM_SLOW_DEPS) $(PB_DIR)/mutant/scan_torn/radar.hex
+	@tools/run_test.sh sim-slow-negative-torn $(PB_BIN) $(call sim_slow_args,$(PB_DIR)/mutant/scan_torn/radar.hex) \
+	    --label sim-slow-negative-torn --expect-caught-by cpu --report $(REPORTS)/sim_slow_negative_torn.json
 
 # Whole-system simulation speed, Verilator against Icarus Verilog (one run each).
 SIM_ICARUS  := $(PB_DIR)/icarus/pico_boards_tb.vvp
