@@ -35,7 +35,7 @@ int usage(const char *why)
                  "                 [--require-landed-same 1] [--producer-interval CH:CLOCKS[:BURST]]\n"
                  "                 [--producer-stop CH|all:CYCLE] [--stretch-export CH:CLOCKS]\n"
                  "                 [--require-late-publication CH] [--require-skipped CH] [--require-fragments N]\n"
-                 "                 [--bounds-at-target FILE]\n"
+                 "                 [--bounds-at-target FILE] [--require-cut-fragments N]\n"
                  "                 [--stretch-import CH:BOARD:CLOCKS] [--dead-board B --dead-at C]\n"
                  "                 [--corrupt-entry K] [--flip-rom-bit WORD:BIT] [--rom FILE] [--report FILE] [--label NAME]\n"
                  "                 [--ages FILE] [--handoff-watchdog S] [--cpu-start C]\n"
@@ -191,6 +191,7 @@ int parse_options(int argc, char **argv, Options &o)
         else if (a == "--require-late-publication") o.require_late = v;
         else if (a == "--require-skipped") o.require_skipped.push_back(v);
         else if (a == "--bounds-at-target") o.bounds_at_target = v;
+        else if (a == "--require-cut-fragments" && num && x >= 0) o.require_cut = static_cast<uint64_t>(x);
         else if (a == "--require-fragments" && num && x >= 0) o.require_fragments = static_cast<uint64_t>(x);
         else if (a == "--producer-interval") {
             char name[64] = {};

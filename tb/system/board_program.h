@@ -36,6 +36,8 @@ struct Options {
                                                  // slot than the Slot store that completed it
     std::string bounds_at_target;                // --bounds-at-target FILE: each consumer's latency / age
                                                  // bound at the fault hypothesis' target (bounds_at_target.py)
+    uint64_t require_cut = 0;                    // --require-cut-fragments N: fail unless N runs of values in
+                                                 // fragments were cut (a fault: re-run, or dropped destinations)
     uint64_t require_fragments = 0;              // --require-fragments N: fail unless N values were published
                                                  // after two or more fragments, each judged (fragment_checker.h)
     std::vector<std::string> require_skipped;    // --require-skipped CH...: fail unless a value of CH was

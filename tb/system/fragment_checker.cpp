@@ -175,6 +175,7 @@ void FragmentChecker::end_run(Chan &c)
         c.prog = last ? 0 : c.run_e;
     } else {
         ++incomplete_runs;
+        if (c.frag && c.frag < c.w) ++cut_fragments;
         c.known = false;
         c.prev_s = c.run_s;
         c.prev_e = c.run_e;
@@ -190,6 +191,7 @@ void FragmentChecker::on_bus(const SystemSim::BusEvent &e)
     Chan *cp = find(e.board, e.addr, dest);
     if (!cp) return;
     Chan &c = *cp;
+    cur_ = cp;
     char m[400];
     // The minor cycle the access began in.
     const bool before = e.start < cycle_start_;
@@ -334,13 +336,28 @@ void FragmentChecker::on_bus(const SystemSim::BusEvent &e)
     b.words[w] = true;
 }
 
+void FragmentChecker::violation(SystemChecker::Kind k, const std::string &m)
+{
+    chk_.report(k, m);
+    ++caught_[std::string(SystemChecker::kind_name(k)) + " " + (cur_ ? cur_->name : "?")];
+}
+
+std::string FragmentChecker::by_channel() const
+{
+    std::string r;
+    for (const auto &kv : caught_) r += (r.empty() ? "" : ", ") + kv.first + " " + std::to_string(kv.second);
+    return r;
+}
+
 std::string FragmentChecker::json() const
 {
-    char b[300];
+    char b[340];
     std::snprintf(b, sizeof b, "{\"active\": %s, \"cluster\": %u, \"minor_cycles\": %llu, \"runs\": %llu, "
-                  "\"later_fragments\": %llu, \"fragmented_publications\": %llu, \"incomplete_runs\": %llu}",
+                  "\"later_fragments\": %llu, \"fragmented_publications\": %llu, \"incomplete_runs\": %llu, "
+                  "\"cut_fragments\": %llu}",
                   active_ ? "true" : "false", cluster_, static_cast<unsigned long long>(minor_cycles),
                   static_cast<unsigned long long>(runs), static_cast<unsigned long long>(later_fragments),
-                  static_cast<unsigned long long>(fragmented_publications), static_cast<unsigned long long>(incomplete_runs));
+                  static_cast<unsigned long long>(fragmented_publications), static_cast<unsigned long long>(incomplete_runs),
+                  static_cast<unsigned long long>(cut_fragments));
     return b;
 }

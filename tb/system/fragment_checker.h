@@ -66,7 +66,10 @@ public:
     // Figures for the report: runs seen, fragments carried, values published
     // in more than one fragment, minor cycles counted.
     uint64_t runs = 0, later_fragments = 0, fragmented_publications = 0, minor_cycles = 0, incomplete_runs = 0;
+    uint64_t cut_fragments = 0;          // incomplete runs of a channel whose values go in two or more fragments
     std::string json() const;
+    // The violations of the four checks by channel: "check channel count, ..." ("" if none).
+    std::string by_channel() const;
 
 private:
     struct Entry {
@@ -102,7 +105,7 @@ private:
         std::vector<std::vector<DestBuf>> bufs;     // by destination, buffer 1..4
     };
 
-    void violation(SystemChecker::Kind k, const std::string &m) { chk_.report(k, m); }
+    void violation(SystemChecker::Kind k, const std::string &m);
     Chan *find(int board, uint32_t addr, int &dest);
     uint32_t inst_bytes(const Chan &c, bool dest) const;
     void end_run(Chan &c);
@@ -110,6 +113,8 @@ private:
     const Entry *due_entry(const Chan &c, uint64_t n, uint64_t rel, uint64_t end_rel) const;
 
     SystemChecker &chk_;
+    std::map<std::string, uint64_t> caught_;   // "check channel" -> violations
+    const Chan *cur_ = nullptr;                // the channel on_bus judges
     bool active_ = false;
     std::string why_;
     std::vector<Entry> entries_;

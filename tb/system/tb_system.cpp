@@ -27,6 +27,8 @@
 //             [--bounds-at-target FILE]           fail if a consumer's largest latency / age exceeds
 //                                                 its bound at the fault hypothesis' target
 //                                                 (lines "at_target CH BOARD CLOCKS", bounds_at_target.py)
+//             [--require-cut-fragments N]         fail unless N runs of values in fragments were cut
+//                                                 by faults (fragment_checker.h)
 //             [--require-skipped CH]              fail unless a value of channel CH was skipped
 //                                                 (never published at a destination) and its
 //                                                 latency measured when a newer one arrived
@@ -428,6 +430,14 @@ int main(int argc, char **argv)
         std::printf("  modes: %s\n", modes.json().c_str());
     }
     if (frag_on) std::printf("  minor cycles and fragments: %s\n", frag.json().c_str());
+    if (frag_on && !frag.by_channel().empty())
+        std::printf("  minor cycles and fragments, violations by check and channel: %s\n", frag.by_channel().c_str());
+    if (o.require_cut && (!frag_on || frag.cut_fragments < o.require_cut)) {
+        std::snprintf(m, sizeof m, "fragments: expected at least %llu runs of values in fragments cut by faults, got %llu%s",
+                      static_cast<unsigned long long>(o.require_cut), static_cast<unsigned long long>(frag.cut_fragments),
+                      frag_on ? "" : " (not judged)");
+        failures.push_back(m);
+    }
     if (!o.bounds_at_target.empty()) {   // every latency / age against the report's bound at the target
         std::ifstream bf(o.bounds_at_target);
         std::string line;

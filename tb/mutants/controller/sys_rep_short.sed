@@ -1,4 +1,4 @@
-# target: rtl/albatross_sequencer.v
+# target: rtl/albatross_minor_cycles.v
 # Controller mutant: a repetition read one bit short: the due test compares
 # rep - 1 low bits of the minor-cycle count with the base instead of rep, so an
 # entry of repetition 2^rep (rep >= 1) runs in twice as many minor cycles as it
