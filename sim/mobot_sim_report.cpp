@@ -44,9 +44,12 @@ std::string series_report(const std::vector<Series> &series, const Plan &plan)
             if (s.age.max > a.max) std::printf(", up to %llu", (unsigned long long)s.age.max);
             const bool both = s.unjudged && crashed;
             if (s.unjudged)
-                std::printf(": %s%s, which carries no %s, or settling after the switch back", both ?
+                // (a channel the start-up mode carries is judged after every switch back to it)
+                std::printf(": %s%s, which carries no %s%s", both ?
                             (std::to_string(s.unjudged) + " in ").c_str() : "in ",
-                            without.empty() ? "a mode" : without.c_str(), s.ch->name.c_str());
+                            without.empty() ? "a mode" : without.c_str(), s.ch->name.c_str(),
+                            plan.modes.empty() || plan.modes[0].carries(s.ch->id) ? "" :
+                            ", or settling after the switch to a mode that first carries it");
             if (crashed)
                 std::printf("%s from a producer that crashes in this run", both ? ("; " + std::to_string(crashed)).c_str() : ":");
             std::printf("\n");

@@ -226,7 +226,8 @@ def sim_excerpt():
     """The head of `make sim`'s console report, copied from the log of a real run
     (SIM_LOG, written by make test-docs-pictures or make docs-pictures): the run's
     line, the fault rate, the modes' verdict, the table's head and its first four
-    rows (each with its line of ages not judged, if any), and the verdict; "..."
+    rows (each with its line of ages not judged, if any), the slow channels'
+    lines (their worst age against the bound), and the verdict; "..."
     where lines are left out.  make test-docs-pictures checks each line against a
     fresh run (tools/doc_facts.py --sim-log)."""
     try:
@@ -251,7 +252,8 @@ def sim_excerpt():
     while k < len(lines) and lines[k].startswith("   "):   # the last row's own line of ages not judged
         out.append(lines[k])
         k += 1
-    out += ["  ...", lines[-1]]
+    slow = [ln for ln in lines[k:] if ln.startswith("  slow channel ")]   # each slow channel's worst age and bound
+    out += (["  ..."] + slow if slow else []) + ["  ...", lines[-1]]
     return "\n".join(["```"] + out + ["```"])
 
 

@@ -2,8 +2,12 @@
 # generated files, so a test checks that the committed copies are current:
 #   docs/img/timeline.svg  one schedule cycle of sim/mobot3.toml, drawn by the
 #                          schedule compiler (make schedule)
-#   docs/img/ages.svg      the data ages of make sim with its defaults
-#                          (2,000,000 clocks, seed 1, no faults, no crash, no stalls)
+#   docs/img/ages.svg      the data ages of make sim with its defaults (the
+#                          robot with its modes and slow channels, 11,000,000
+#                          clocks, seed 1, no faults, no crash, no stalls)
+#   docs/img/timeline_cluster.svg  the cluster of minor cycles of that
+#                          description (build/schedule/mobot3-slow/), drawn by
+#                          the schedule compiler
 #   make test-docs-pictures            regenerates both (the sim run into
 #                                      build/docs/, not build/sim/) and fails if a
 #                                      committed copy differs from the fresh one
@@ -20,9 +24,10 @@
 
 DOCS_DIR      := $(BUILD)/docs
 DOCS_PICTURES := docs/img/timeline.svg $(BUILD)/schedule/mobot3/timeline.svg \
+                 docs/img/timeline_cluster.svg $(BUILD)/schedule/mobot3-slow/timeline.svg \
                  docs/img/ages.svg $(DOCS_DIR)/sim/ages.svg
 # make sim pinned to its defaults, whatever the caller's SEED, FAULT_RATE, ...
-DOCS_SIM_ARGS := SIM_DESC=$(BUILD)/schedule/mobot3-modes/mobot3-modes.toml SIM_CYCLES=2000000 FAULT_RATE=0 BURST= CRASH= STALL=0 SEED=1 TRACE=0 \
+DOCS_SIM_ARGS := SIM_DESC=$(BUILD)/schedule/mobot3-slow/mobot3-slow.toml SIM_CYCLES=11000000 FAULT_RATE=0 BURST= CRASH= STALL=0 SEED=1 TRACE=0 \
                  SIM_DIR=$(DOCS_DIR)/sim REPORTS=$(DOCS_DIR)/sim
 
 .PHONY: docs-pictures-build docs-pictures test-docs-pictures test-docs-pictures-negative
@@ -30,13 +35,14 @@ DOCS_SIM_ARGS := SIM_DESC=$(BUILD)/schedule/mobot3-modes/mobot3-modes.toml SIM_C
 docs-pictures-build:
 	@mkdir -p $(DOCS_DIR)/sim
 	@rm -f $(DOCS_DIR)/sim/ages.svg
-	@$(MAKE) -s --no-print-directory $(BUILD)/schedule/mobot3/rom.hex
+	@$(MAKE) -s --no-print-directory $(BUILD)/schedule/mobot3/rom.hex $(BUILD)/schedule/mobot3-slow/rom.hex
 	@echo "docs-pictures: make sim (defaults, seed 1) into $(DOCS_DIR)/sim/ (log $(DOCS_DIR)/sim.log)"
 	@$(MAKE) --no-print-directory sim $(DOCS_SIM_ARGS) > $(DOCS_DIR)/sim.log 2>&1 || \
 	    { tail -n 20 $(DOCS_DIR)/sim.log; echo "docs-pictures: make sim failed"; exit 1; }
 
 docs-pictures: docs-pictures-build docs-pictures-fault-rates ## refresh the committed pictures of the manual (docs/img/) from make schedule and make sim
 	cp $(BUILD)/schedule/mobot3/timeline.svg docs/img/timeline.svg
+	cp $(BUILD)/schedule/mobot3-slow/timeline.svg docs/img/timeline_cluster.svg
 	cp $(DOCS_DIR)/sim/ages.svg docs/img/ages.svg
 
 TESTS += docs-pictures docs-pictures-negative

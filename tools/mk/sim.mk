@@ -254,4 +254,5 @@ test-termination-negative-scale: $(PB_BIN) $(PB_FW) $(PB_SCHED)/tb_plan.txt
 # trace): what that needs is built by the suite as a shared build, once, not
 # inside the test's own make while other tests build the same model.
 test-docs-pictures: $(PB_BIN) $(foreach b,$(PB_BOARDS),$(PB_DIR)/mobot3/fw-clock/$(b).hex) \
-    $(BUILD)/schedule/mobot3/tb_plan.txt $(BUILD)/schedule/mobot3/rom.hex
+    $(BUILD)/schedule/mobot3/tb_plan.txt $(BUILD)/schedule/mobot3/rom.hex \
+    $(foreach b,$(PB_BOARDS),$(SIM_SLOW_FW)/$(b).hex) $(SIM_SLOW)/tb_plan.txt
