@@ -144,9 +144,9 @@ NPROC         ?= $(shell nproc 2>/dev/null || echo 2)
 # make check: the quick loop, one test of each part (built once: about 1.6
 # min of CPU time, under a minute on 2 idle cores; README, suite-times): lint, the contract, a driver unit test, the store-buffer model,
 # one co-simulation scenario, one controller scenario, one formal proof and
-# one model check, the compiler, one endpoint, one system run.
+# one model check, the compiler, one endpoint, one system run, the mutants audit.
 CHECK_TESTS   := lint contract-current driver-unit host-threads-model tb-random controller-smoke \
-                 formal-export formal-spin compiler-four_slot endpoint-import system-rigid
+                 formal-export formal-spin compiler-four_slot endpoint-import system-rigid mutants-audit
 # suite_run NAME, TESTS: run them in parallel, the costliest first (by the
 # last run's report: a long test started last would run alone at the end),
 # then the summary.  A long test whose prerequisites are a chain of builds
