@@ -17,8 +17,8 @@
 //     cluster (cluster_i) or above MAX_REP (the sequencer's count:
 //     CLUSTER_BITS), or base >= 2^rep, i.e. base's bit length (the index of
 //     its highest one + 1) above rep.  The sequencer reads E6 ahead of the
-//     fetch and keeps rep (rep_i) and base's bit length (blen_i), which
-//     blen_o gives whenever rom_i holds an E6 word.  MAX_REP 0 (no minor
+//     fetch and keeps rep (rep_i) and base's bit length (blen_i)
+//     (rtl/albatross_minor_cycles.v).  MAX_REP 0 (no minor
 //     cycles): E6 must be 0 (rep 0, bit length 0).
 //   * Clock 3: the slot ends after the cycle (end_i > H1; end_i is the
 //     register clock 2 wrote, so no adder stands between the ROM's output
@@ -54,9 +54,8 @@ module albatross_entry_check #(
     input  wire [3:0]           cluster_i,    // the running mode's cluster
     input  wire                 due_i,        // the entry is due in this cycle
     input  wire [3:0]           rep_i,        // the entry's E6 rep
-    input  wire [3:0]           blen_i,       // the bit length of the entry's E6 base (blen_o when it was read)
-    output reg                  bad_o,
-    output reg  [3:0]           blen_o        // the bit length of base, rom_i holding an E6 word
+    input  wire [3:0]           blen_i,       // the bit length of the entry's E6 base
+    output reg                  bad_o
 );
 
 `include "albatross_contract.vh"
@@ -105,15 +104,6 @@ module albatross_entry_check #(
                           (e0_kind == ALB_KIND_TIME && e0_w != 12'd1) ||
                           (rom_i[EFLAG_MODE] && (e0_kind != ALB_KIND_STATUS || e0_w != 12'd2)) ||
                           (e0_kind == ALB_KIND_STATUS && e0_w != W_STATUS && !rom_i[EFLAG_MODE]);
-    // E6: the bit length of base (a priority encoder on the ROM word, kept
-    // by the sequencer with rep: comparing two 4-bit registers at the fetch
-    // is smaller in iCE40 LUTs than a check of the whole word when it is read)
-    wire [14:0] e6_base = rom_i[ALB_ROM_E6_BASE_LSB +: 15];
-    integer     bi;
-    always @* begin
-        blen_o = 4'd0;
-        for (bi = 0; bi < 15; bi = bi + 1) if (e6_base[bi]) blen_o = bi[3:0] + 4'd1;
-    end
     wire        e6_bad  = blen_i > rep_i || rep_i > cluster_i || (MAX_REP < 15 && !below({28'd0, rep_i}, MAX_REP + 1));
     wire        e2_bad  = start_bad_i || rom_i[31:TB] != 0 || below({{(32-TB){1'b0}}, rom_i[TB-1:0]}, MIN_LEN) ||
                           ({1'b0, start_i} < prev_end_i && due_i) || e6_bad;

@@ -12,7 +12,7 @@
 //     E6 of entry ent_i, which the sequencer has moved on to that next
 //     entry), the mode table's reads (mode_rd_i at mode_adr_i) and E6 of
 //     entry ent_i for the mode load and for the header (e6_i; ent_i is 0 in
-//     the header), the last two only while no other main read runs, and
+//     the header), the last two only while no other main read runs (HAS_E6 0: no E6 read), and
 //     E7 of the entry whose transfer runs (e7_i, in its transfer's first
 //     clock: {e7_ent_i, 011}, e7_ent_i that entry + 1).  In every other clock the word is the background
 //     check's (bg_adr_i, rtl/albatross_rom_check.v).
@@ -25,7 +25,8 @@
 
 module albatross_schedule_rom #(
     parameter ROM_WORDS = 1024, // ROM depth in 32-bit words, >= 12
-    parameter ROM_FILE  = ""    // $readmemh image; simulation: +rom=FILE overrides
+    parameter ROM_FILE  = "",   // $readmemh image; simulation: +rom=FILE overrides
+    parameter HAS_E6    = 1     // 1: the E6 reads (FETCH clock 6, e6_i); 0: none (no minor cycles, no entry check)
 ) (
     input  wire              clk_i,
     input  wire [31:0]       time_i,      // global time (simulation upsets only)
@@ -70,10 +71,11 @@ module albatross_schedule_rom #(
     end
 
     // ------------------------------------------------------------ address
-    wire              fetch_rom = fetch_i && step_i <= 3'd6;
-    wire              main_rom  = header_i || start_i || fetch_rom || mode_rd_i || e6_i || e7_i;
-    wire              e6_rd     = (fetch_i && step_i == 3'd6) || e6_i;   // E6 of entry ent_i
-    wire              adr_inc   = (fetch_i && step_i >= 3'd3) || e6_i;  // E4, E5, next E1, E6
+    localparam        E6        = HAS_E6 != 0;
+    wire              e6_rd     = E6 && ((fetch_i && step_i == 3'd6) || e6_i);   // E6 of entry ent_i
+    wire              fetch_rom = fetch_i && step_i <= 3'd5;
+    wire              main_rom  = header_i || start_i || fetch_rom || mode_rd_i || e6_rd || e7_i;
+    wire              adr_inc   = (fetch_i && step_i >= 3'd3) || (E6 && e6_i);  // E4, E5, next E1, E6
     /* verilator lint_off UNUSEDSIGNAL */
     wire [7:0]        ent_sel   = adr_inc ? ent_inc_i : ent_i;
     wire [7:0]        ent_wrap  = first_i;

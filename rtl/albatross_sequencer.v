@@ -42,27 +42,25 @@
 //     "Validation" lists, the slot order, the cycle end, a bad mark) gets
 //     no go_o and adds 1 to rom_errors, once per cycle; an IDLE entry gets
 //     no go_o.
-//   * Minor cycles (HAS_MULTIRATE): n_q counts the cycles, 0 in the first
-//     cycle after start-up or a mode switch, + 1 at every other cycle,
-//     modulo 2^CLUSTER_BITS: as 2^c divides 2^CLUSTER_BITS, n_q mod 2^c is
-//     the contract's count (which wraps at 2^c, c the running mode's
-//     cluster) and n_q mod 2^rep its residue for every rep <= c.  (n_q
-//     counts for the entry in ent_q: it steps when ent_q wraps to the mode's
-//     first entry, and the mode load clears it with ent_q.)  An entry is due in a cycle when
-//     n mod 2^rep = base (E6); every entry, due or not, is fetched in every
-//     cycle exactly as above, and only a due one gets go_o: a non-due entry
-//     costs its fetch (clocks S .. S+6, no bus access, no rom_errors, no
-//     slot end for the order check), like an IDLE one.  The due test needs
-//     E6 from FETCH clock 1 on (the entry check) and in FETCH clock 5
-//     (go_q), so E6 is read ahead: entry 0's in the clock after the start-up
-//     pass (no start-up clock added), entry k's in FETCH clock 6 of the entry
-//     before it (the port is free there), the new mode's first entry's in the
-//     mode load.  The due test is made in the clock it arrives (due_q); rep
-//     and base's bit length wait in rep_q, blen_q for the entry check.  The entry register ent_q moves on
-//     to the next entry in FETCH clock 5 (so that E6 of the next entry is
-//     {ent_q + 1, 010}: the ROM's one incrementer); last_q and ent0_q keep
-//     what the rest of the slot needs of the entry that runs.  HAS_MULTIRATE
-//     0: every entry is due (E6 must be 0, else the entry is invalid).
+//   * Minor cycles (HAS_MULTIRATE; the count and the due test are
+//     rtl/albatross_minor_cycles.v's): the count is 0 in the first cycle
+//     after start-up or a mode switch, + 1 at every other cycle (it counts
+//     for the entry in ent_q: it steps when ent_q wraps to the mode's first
+//     entry, and the mode load clears it with ent_q).  An entry is due in a
+//     cycle when n mod 2^rep = base (E6); every entry, due or not, is
+//     fetched in every cycle exactly as above, and only a due one gets go_o:
+//     a non-due entry costs its fetch (clocks S .. S+6, no bus access, no
+//     rom_errors, no slot end for the order check), like an IDLE one.  The
+//     due test is needed from FETCH clock 1 on (the entry check) and in FETCH
+//     clock 5 (go_q), so E6 is read ahead: entry 0's in the clock after the
+//     start-up pass (no start-up clock added), entry k's in FETCH clock 6 of
+//     the entry before it (the port is free there), the new mode's first
+//     entry's in the mode load, and judged in the clock it arrives.  The
+//     entry register ent_q moves on to the next entry in FETCH clock 5 (so
+//     that E6 of the next entry is {ent_q + 1, 010}: the ROM's one
+//     incrementer); last_q and ent0_q keep what the rest of the slot needs
+//     of the entry that runs.  HAS_MULTIRATE 0: every entry is due (E6 must
+//     be 0, else the entry is invalid).
 //   * E7 (HAS_FRAGMENTS): read in the first clock of the entry's transfer
 //     (a main read: the background check waits a clock), frag_o is its frag
 //     field from the clock after, held until the next transfer's.
@@ -243,7 +241,8 @@ module albatross_sequencer #(
     // then) and taken in the first clock of the first cycle: the due test needs
     // it from FETCH clock 1 on, so even an entry at start 0 has it in time.
     wire               hdr_e6    = state_q == ST_CHECK && pass_done && crc_ok;
-    albatross_schedule_rom #(.ROM_WORDS(ROM_WORDS), .ROM_FILE(ROM_FILE)) u_rom (
+    albatross_schedule_rom #(.ROM_WORDS(ROM_WORDS), .ROM_FILE(ROM_FILE),
+                             .HAS_E6(HAS_MULTIRATE != 0 || HAS_ENTRY_CHECK != 0)) u_rom (
         .clk_i(clk_i), .time_i(time_q), .header_i(state_q == ST_HEADER && !hdr_last), .start_i(start_now),
         .fetch_i(state_q == ST_FETCH), .step_i(step_q), .ent_i(ent_q), .ent_inc_i(ent_inc), .last_i(last_ent),
         .first_i(m_first), .mode_rd_i(mode_rd), .mode_adr_i(mode_adr), .e6_i(mode_e6_rd || hdr_e6),
@@ -280,38 +279,21 @@ module albatross_sequencer #(
         .cycle_o(cycle_q), .drop_o(m_drop), .cluster_o(m_cluster));
 
     // ------------------------------------------------------------ minor cycles and the due test
-    // E6 of entry ent_q, read ahead (after the start-up pass, FETCH clock 6, the
-    // mode load), is taken in the clock its word is in rom_q: due_q (due in
-    // the cycle it runs in: n_q, below), and rep_q and blen_q for the entry
-    // check's E6 rules at the fetch, hold it until the next E6.  n_q is the count of the cycle entry ent_q runs in: 0 from
-    // reset and from the mode load's new first entry, + 1 (modulo
-    // 2^CLUSTER_BITS) when ent_q wraps to the mode's first entry.
-    localparam CB = CLUSTER_BITS;
+    // E6 of entry ent_q, read ahead (after the start-up pass, FETCH clock 6,
+    // the mode load), judged in the clock its word is in rom_q
+    // (rtl/albatross_minor_cycles.v): due (in the cycle it runs in), rep and
+    // base's bit length for the entry check, held until the next E6.  The
+    // count steps when ent_q wraps to the mode's first entry (FETCH clock 5
+    // of the last), and the mode load's new first entry clears it.
     localparam MR = HAS_MULTIRATE != 0;
-    reg           due_q;
-    reg  [3:0]    rep_q, blen_q;             // E6's rep and base's bit length (the entry check's)
-    reg  [CB-1:0] n_q;
-    reg           e6_hdr_q, e6_fetch_q;      // rom_q holds E6 read after the start-up pass / by FETCH clock 6
-    wire [3:0]    e6_blen;                   // (the entry check, on rom_q)
-    wire [3:0]    e6_rep  = rom_q[ALB_ROM_E6_REP_LSB +: 4];
-    wire [14:0]   e6_base = rom_q[ALB_ROM_E6_BASE_LSB +: 15];
-    // due: the low rep bits of n and base agree (agree[i]: bits 0 .. i-1 agree)
-    reg  [15:0]   agree;
-    integer       ai;
-    always @* begin
-        agree[0] = 1'b1;
-        for (ai = 1; ai < 16; ai = ai + 1)
-            agree[ai] = agree[ai-1] && (ai > CB || n_q[(ai > CB ? CB : ai) - 1] == e6_base[ai-1]);
-    end
-    always @(posedge clk_i) begin
-        e6_hdr_q   <= !rst_i && hdr_e6;
-        e6_fetch_q <= !rst_i && state_q == ST_FETCH && step_q == 3'd6;
-        if (e6_hdr_q || e6_fetch_q || mode_e6) begin
-            due_q    <= !MR || agree[e6_rep];
-            rep_q    <= e6_rep;
-            blen_q   <= e6_blen;
-        end
-    end
+    wire          due, e6_tick;
+    wire [3:0]    e6_rep, e6_blen;
+    assign e6_tick = state_q == ST_FETCH && step_q == 3'd5 && last_ent;
+    albatross_minor_cycles #(.HAS_MULTIRATE(HAS_MULTIRATE), .HAS_E6_CHECK(HAS_ENTRY_CHECK),
+                             .CLUSTER_BITS(CLUSTER_BITS)) u_minor (
+        .clk_i(clk_i), .rst_i(rst_i), .step_i(e6_tick), .clear_i(mode_first_ld), .e6_hdr_i(hdr_e6),
+        .e6_fetch_i(state_q == ST_FETCH && step_q == 3'd6), .e6_mode_i(mode_e6), .rom_i(rom_q),
+        .due_o(due), .rep_o(e6_rep), .blen_o(e6_blen));
 
     // ------------------------------------------------------------ ROM check
     // The start-up CRC and the background re-check; in the clock S of a
@@ -344,11 +326,11 @@ module albatross_sequencer #(
     wire        bad_now;
     albatross_entry_check #(.NB(NB), .ADDR_WIDTH(ADDR_WIDTH), .N_CHAN(N_CHAN), .TIME_BITS(TB),
                             .MIN_LEN(MIN_LEN_I), .HAS_ENTRY_CHECK(HAS_ENTRY_CHECK),
-                            .MAX_REP(MR ? CB : 0)) u_entry_check (
+                            .MAX_REP(MR ? CLUSTER_BITS : 0)) u_entry_check (
         .step_i(step_q), .rom_i(rom_q), .ent0_i(ent_q == 8'd0), .smode_i(smode_q), .bad_mark_i(bad_mark),
         .kind_i(kind), .four_i(four), .nd_i(nd), .e3_i(span), .start_i(start_q), .start_bad_i(start_bad_q),
-        .cycle_i(cycle_q), .prev_end_i(prev_end_q), .end_i(end_q), .cluster_i(m_cluster), .due_i(due_q),
-        .rep_i(rep_q), .blen_i(blen_q), .bad_o(bad_now), .blen_o(e6_blen));
+        .cycle_i(cycle_q), .prev_end_i(prev_end_q), .end_i(end_q), .cluster_i(m_cluster), .due_i(due),
+        .rep_i(e6_rep), .blen_i(e6_blen), .bad_o(bad_now));
 
     // ------------------------------------------------------------ control
     // rel is kept as rel + 1 (next_rel_q): each compare below reads a
@@ -380,7 +362,7 @@ module albatross_sequencer #(
     reg         go_q, in_time_q;
     wire        go_now   = go_q && !bad_q;
     always @(posedge clk_i) begin
-        go_q      <= !rst_i && state_q == ST_FETCH && step_q == 3'd5 && kind != ALB_KIND_IDLE[1:0] && due_q;
+        go_q      <= !rst_i && state_q == ST_FETCH && step_q == 3'd5 && kind != ALB_KIND_IDLE[1:0] && due;
         in_time_q <= {1'b0, next_rel_q[TB-1:0]} < end_q - MARGIN_T;
     end
 
@@ -410,7 +392,6 @@ module albatross_sequencer #(
             rerr_q    <= 16'd0;
             cycles_q  <= 16'd0;
             ent_q     <= 8'd0;            // (E6 of entry 0 is read as {ent_q + 1, 010})
-            n_q       <= {CB{1'b0}};
         end else begin
             time_q    <= time_q + 32'd1;
             next_rel_q <= {1'b0, next_rel_q[TB-1:0]} + 1'b1;
@@ -465,13 +446,12 @@ module albatross_sequencer #(
                         3'd5: begin                                             // E5: u_fields; on to the next entry
                             ent_q  <= last_ent ? m_next_first : ent_inc;     // (the mode's first: no switch mid-cycle)
                             last_q <= last_ent;
-                            if (last_ent) n_q <= n_q + 1'b1;                   // the next cycle's count
                             ent0_q <= ent_q == 8'd0;
                         end
                         default: begin                                          // E1 of the next entry (its E6 read now)
                             start_q      <= rom_q[TB-1:0];             // (entry_check is done with it)
                             start_bad_q  <= rom_q[31:TB] != 0;
-                            if (!bad_q && due_q) prev_end_q <= end_q;
+                            if (!bad_q && due) prev_end_q <= end_q;
                             if (go_now) state_q <= ST_TRANSFER;
                         end
                     endcase
@@ -481,10 +461,7 @@ module albatross_sequencer #(
                         start_q     <= rom_q[TB-1:0];
                         start_bad_q <= rom_q[31:TB] != 0;
                     end
-                    if (mode_first_ld) begin                                // the new first entry (its E6 read next)
-                        ent_q <= m_next_first;
-                        n_q   <= {CB{1'b0}};
-                    end
+                    if (mode_first_ld) ent_q <= m_next_first;              // the new first entry (its E6 read next)
                 end
                 default: ;
             endcase

@@ -35,9 +35,11 @@
 
 PARTS_DIR := $(BUILD)/parts
 PARTS     := albatross_sequencer albatross_schedule_rom albatross_rom_check albatross_entry_check albatross_mode_switch albatross_entry_fields albatross_sync_poll \
+             albatross_minor_cycles \
              albatross_bus_master albatross_counters
 # The modules albatross_sequencer instantiates.
-SEQ_SUB   := rtl/albatross_schedule_rom.v rtl/albatross_rom_check.v rtl/albatross_entry_check.v rtl/albatross_mode_switch.v rtl/albatross_entry_fields.v rtl/albatross_sync_poll.v
+SEQ_SUB   := rtl/albatross_schedule_rom.v rtl/albatross_rom_check.v rtl/albatross_entry_check.v rtl/albatross_mode_switch.v rtl/albatross_entry_fields.v rtl/albatross_sync_poll.v \
+             rtl/albatross_minor_cycles.v
 
 TESTS += parts-lint sequencer sequencer-bad-start0 sequencer-negative-slot_late \
          sequencer-modes sequencer-modes-bad sequencer-modes-negative sequencer-modes-switch \
@@ -144,5 +146,5 @@ test-sequencer-multirate-negative-$(1): $(SEQ_MR_DEPS) tb/sequencer/mutants/$(1)
 	    if grep -q "^PASS" tb.log; then echo "the bench passed the broken sequencer $(1)"; exit 1; fi; \
 	    grep -q "^FAIL" tb.log && echo "caught: $$$$(grep -m1 "^FAIL" tb.log)"'
 endef
-$(eval $(call seq_mr_negative,no_reset,albatross_sequencer.v,--multirate-modes,+modes))
+$(eval $(call seq_mr_negative,no_reset,albatross_minor_cycles.v,--multirate-modes,+modes))
 $(eval $(call seq_mr_negative,e6_unchecked,albatross_entry_check.v,--multirate,))

@@ -2,4 +2,4 @@
 # mode switch: the new mode's entries run in the minor cycles the old count
 # gives.  tb_sequencer_multirate +modes must fail (make
 # test-sequencer-multirate-negative-no_reset).
-s/                        n_q   <= {CB{1'b0}};/                        n_q   <= n_q;/
+s/else if (clear_i)  n_q <= {CB{1'b0}};/else if (clear_i)  n_q <= n_q;/
