@@ -86,6 +86,7 @@
 #include "fresh_scenario.h"
 #include "rom_scenario.h"
 #include "fragment_checker.h"
+#include "multirate_scenario.h"
 
 using namespace tbsys;
 
@@ -429,50 +430,7 @@ int main(int argc, char **argv)
         modes.finish(fault_free, g_status.corrupt, failures);
         std::printf("  modes: %s\n", modes.json().c_str());
     }
-    if (frag_on) std::printf("  minor cycles and fragments: %s\n", frag.json().c_str());
-    if (frag_on && !frag.by_channel().empty())
-        std::printf("  minor cycles and fragments, violations by check and channel: %s\n", frag.by_channel().c_str());
-    if (o.require_cut && (!frag_on || frag.cut_fragments < o.require_cut)) {
-        std::snprintf(m, sizeof m, "fragments: expected at least %llu runs of values in fragments cut by faults, got %llu%s",
-                      static_cast<unsigned long long>(o.require_cut), static_cast<unsigned long long>(frag.cut_fragments),
-                      frag_on ? "" : " (not judged)");
-        failures.push_back(m);
-    }
-    if (!o.bounds_at_target.empty()) {   // every latency / age against the report's bound at the target
-        std::ifstream bf(o.bounds_at_target);
-        std::string line;
-        int judged = 0;
-        while (std::getline(bf, line)) {
-            std::istringstream ls(line);
-            std::string tag, ch;
-            int board = -1;
-            unsigned long long bound = 0;
-            if (!(ls >> tag >> ch >> board >> bound) || tag != "at_target") continue;
-            for (size_t i = 0; i < plan.channels.size(); ++i)
-                for (size_t d = 0; d < plan.channels[i].dests.size(); ++d) {
-                    if (plan.channels[i].name != ch || plan.channels[i].dests[d].board != board) continue;
-                    const SystemChecker::DestStats &ds = chk.stats[i].dests[d];
-                    ++judged;
-                    std::printf("  at the target: %-12s board %d: largest %s %llu of %llu values, bound %llu\n", ch.c_str(), board,
-                                plan.channels[i].copy() ? "latency" : "age", static_cast<unsigned long long>(ds.latency_max),
-                                static_cast<unsigned long long>(ds.latency_n), bound);
-                    if (ds.latency_max > bound) {
-                        std::snprintf(m, sizeof m, "at the target: %s to board %d: a %s of %llu clocks, expected at most the "
-                                      "report's bound at the fault hypothesis' target, %llu", ch.c_str(), board,
-                                      plan.channels[i].copy() ? "latency" : "age",
-                                      static_cast<unsigned long long>(ds.latency_max), bound);
-                        failures.push_back(m);
-                    }
-                }
-        }
-        if (judged == 0) failures.push_back("at the target: no bound in " + o.bounds_at_target + " names a consumer of the plan");
-    }
-    if (o.require_fragments && (!frag_on || frag.fragmented_publications < o.require_fragments)) {
-        std::snprintf(m, sizeof m, "fragments: expected at least %llu values published after two or more fragments, got %llu%s",
-                      static_cast<unsigned long long>(o.require_fragments),
-                      static_cast<unsigned long long>(frag.fragmented_publications), frag_on ? "" : " (not judged)");
-        failures.push_back(m);
-    }
+    multirate_verdict(plan, o, chk, frag_on ? &frag : nullptr, failures);   // multirate_scenario.h
     if (o.corrupt_channel >= 0 && !g_corrupted) failures.push_back("the faulty producer never ran");
     if (o.corrupt_entry >= 0 && sim.rom_errors() == 0)
         failures.push_back("a corrupted ROM entry was not counted in rom_errors");
