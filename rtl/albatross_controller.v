@@ -39,7 +39,7 @@
 //     are the need field.  A slot that ends with its value going on counts
 //     only the destinations it dropped as abandoned.
 //   * The datapath's rules (order, retries, drop, cut-off) are in
-//     rtl/albatross_transfer.v.  A destination it published leaves need; at
+//     rtl/albatross_transfer_fsm.v.  A destination it published leaves need; at
 //     the slot's end each destination still in need counts as abandoned, and
 //     a later slot of the channel delivers it.  A value is published to a
 //     destination at most once, so redundant slots never show one value as

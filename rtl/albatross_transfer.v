@@ -4,83 +4,42 @@
 // mechanism on single-writer bytes) and the producer's Export (figure 4) to
 // up to 4 destinations, streaming the value word by word (one source load,
 // then one store per destination).  It replaces separate Import and Export
-// engines: one state register, one address adder, one write-data OR.
+// engines: one state register, one address adder, one write-data OR.  This
+// module composes its parts and states the datapath's contract at its ports.
 // Rules:
 //   * Fields come from the sequencer's entry registers (held for the slot):
 //     kind, four, W, places.  Per-channel state comes in from the state RAM
 //     (st_*_i) at go_i and goes out on the *_o write-back ports, valid in
 //     the done_o clock.  No per-channel state is kept here between slots.
-//   * COPY, Import (source, the controller is the consumer).  Three-buffer:
-//     load Actual; if it differs from the ReadLocked copy (0 unknown), store
-//     ReadLocked := Actual and load Actual again, until a load equals the
-//     copy (New if a store was made).  Four-slot: load the control word, c =
-//     1 + 2 pair(A) + Slot[pair(A)]; c = L: Old; else store ReadLocked := A,
-//     load the control word again, L := 1 + 2 pair(A) + Slot[pair(A)]: New.
-//     Actual naming no buffer ends the slot (corrupt; 0, not started:
-//     nothing new, no count).  In the ack clock of the final control load
-//     the value is chosen: the destinations that need it are all active ones
-//     if New (new_o: taken_at := the time now), else those still in need
-//     (st_need_i); none: the slot ends.  A cut-off after a
-//     ReadLocked store and before its confirming load forgets the copy.
-//   * REQUEST (request_i, a COPY with no destination): a New value's word 0
-//     is loaded (buffer rl, k = 0) and, in the clock of its ack, offered
-//     as a mode request (mode_req_o, mode_req_mode_o: its low 4 bits, 15 if
-//     a higher bit is set); then the slot ends.  An Old value ends the slot
-//     at once.
-//   * Export, to the destinations d in need in index order: per d, load its
-//     whole control word (both kinds: Actual with ReadLocked, so no copy of
-//     Actual is kept); an Actual equal to the buffer of a failed Actual
-//     store shows it landed: published, d leaves (four-slot: only if the Slot
-//     byte names that buffer too); four-slot, a Slot byte naming the buffer of
-//     this value's Slot store (tried) while Actual does not shows the value
-//     complete and unpublished: store Actual := that buffer at once (S_DST_PUB,
-//     no word written again: the value is never completed twice), then d
-//     leaves, published; else pick the buffer
-//     (albatross_transfer_pick: neither Actual nor ReadLocked; four-slot
-//     from ReadLocked and the Slot bytes); then per word k: one source load
-//     (COPY; TIME: the slot time; STATUS: status_i at index_o) and one store
-//     per d; then per d taken_at (word W, stride W + 1), four-slot the Slot
-//     byte, then Actual (published).  TIME and STATUS run the Export alone
-//     from go_i.
-//   * Failures (err_i, which includes the bus master's timeout): cyc drops
-//     for one clock; then the same access again if may_access_i, else the
-//     cut-off (the slot ends).  A destination access failing K = drop_run_i
-//     (below 2: 2) times in a row drops that destination for the slot (the
-//     next access follows in the clock after the K-th failure).  Source
-//     accesses are retried until the deadline.  A failed Actual store
-//     remembers the buffer it tried (st_tried_i / tried_o); four-slot, the
-//     Slot store remembers it (a cut-off or a drop may come before Actual).
-//   * Timing: every access begins in the clock after an edge where
-//     may_access_i is 1, in the clock after the previous ack (no idle bus
-//     clock inside a transfer); go_i's first access is on the bus in the
-//     next clock.  done_o is high for one clock after the last ack, the
-//     cut-off or the decision that nothing is to be done.  Reset clears
-//     control state only.
+//   * The Import (COPY), a REQUEST's mode request, the Export, failures,
+//     the drop run, the cut-off and the timing: albatross_transfer_fsm
+//     states them (one state machine).
 //   * Fragments (HAS_FRAGMENTS; a COPY with frag_i = F != 0 words per
-//     fragment): a slot carries words [p, min(p + F, W)) of the value, p the
-//     channel's progress (st_prog_i, a word offset; 0: the value's first
-//     fragment).  p = 0: the Import and the destinations' control loads and
-//     picks as above, then the fragment's words.  p != 0 (p < W): no Import
-//     and no control load: the source buffer is the held one (st_rl_i, whose
-//     ReadLocked the first fragment stored and nothing changes until the
-//     value ends), the destinations are those still in the value
-//     (st_need_i) and their buffers are the picked ones (st_buf_i).  After a
-//     fragment that is not the last: prog_o = its end, need_o = the
-//     destinations still in the value (a dropped one stays out of it), no
-//     taken_at, Slot or Actual store (nothing published).  The last
-//     fragment: taken_at, (Slot,) Actual as above, prog_o = W (none: the
-//     next run Imports afresh).  prog_o is written (prog_wr_o) only where
-//     it changes; reset makes it 0 (the state RAM's clearing).  A fragment
-//     cut off keeps p (it runs again from the same word), except the first
-//     (p stays none: the next run Imports afresh) and a last one whose
-//     publication has begun (p = W, none; the destinations not published stay in
-//     need: the next run Imports afresh and an Old value is sent again from
-//     fragment 0, its control loads seeing a landed Actual store); a value
-//     with no destination left ends (its next run Imports afresh).  gone_o: the destinations dropped
-//     in a fragment that is not the last (abandoned now, not in need).
-// Parts: albatross_transfer_dest (the per-destination registers),
-// albatross_transfer_access (address, lanes and write data of the access),
-// albatross_transfer_pick (the control-word decode and the buffer picks).
+//     fragment; albatross_transfer_frag has the word range and the
+//     progress): a slot carries words [p, min(p + F, W)) of the value, p
+//     the channel's progress (st_prog_i).  p = 0: the Import and the
+//     destinations' control loads and picks as above, then the fragment's
+//     words.  A later fragment (cont): no Import and no control load: the
+//     source buffer is the held one (st_rl_i, whose ReadLocked the first
+//     fragment stored and nothing changes until the value ends), the
+//     destinations are those still in the value (st_need_i) and their
+//     buffers are the picked ones (st_buf_i).  After a fragment that is not
+//     the last: need_o = the destinations still in the value (a dropped one
+//     stays out of it), no taken_at, Slot or Actual store (nothing
+//     published).  The last fragment: taken_at, (Slot,) Actual as above.  A
+//     last fragment cut off after its publication began ends the value (the
+//     destinations not published stay in need: the next run Imports afresh
+//     and an Old value is sent again from fragment 0, its control loads
+//     seeing a landed Actual store); a value with no destination left ends.
+//     gone_o: the destinations dropped in a fragment that is not the last
+//     (abandoned now, not in need).
+// Parts: albatross_transfer_fsm (the state machine; it holds
+// albatross_transfer_pick, the control-word decode and the buffer picks,
+// albatross_transfer_dest, the per-destination registers, and
+// albatross_transfer_order, the destinations' order),
+// albatross_transfer_frag (the word index, the fragment's range, the
+// progress), albatross_transfer_access (address, lanes and write data of the
+// access).
 `default_nettype none
 
 module albatross_transfer #(
@@ -145,8 +104,6 @@ module albatross_transfer #(
     input  wire                    err_i
 );
 
-`include "albatross_contract.vh"
-
     localparam AW      = ADDR_WIDTH;
     generate
         if (AW < 3) begin : g_param_check
@@ -154,358 +111,45 @@ module albatross_transfer #(
         end
     endgenerate
 
-    // States: bit 3 = a destination access.
-    localparam [3:0] S_IDLE     = 4'd0,
-                     S_SRC_ACT  = 4'd1,   // load the source's Actual (four-slot: control word)
-                     S_SRC_RL   = 4'd2,   // store the source's ReadLocked
-                     S_SRC_SLOT = 4'd3,   // four-slot: load the control word again, pick L
-                     S_SRC_WORD = 4'd4,   // load source word k
-                     S_WAIT     = 4'd5,   // a word is wanted and not there (bus idle)
-                     S_DST_CTRL = 4'd9,   // load d's control word (Actual, ReadLocked, Slots), pick
-                     S_DST_WORD = 4'd10,  // store word k - 1 to d
-                     S_DST_TKN  = 4'd11,  // store taken_at to d
-                     S_DST_SLOT = 4'd12,  // four-slot: store d's Slot byte
-                     S_DST_FIN  = 4'd13,  // store d's Actual
-                     S_DST_PUB  = 4'd15;  // four-slot: store d's Actual only (its value complete from a Slot store before)
+    // ------------------------------------------------------------ the state machine
+    wire        cont, last_wd, lastf, mid, start, take, cont_q, fdone, pubph, need_any;
+    wire        dst, src_act, src_rl, src_word, dst_word, dst_tkn, dst_slot, dst_fin;
+    wire [1:0]  d;
+    wire [2:0]  ald, buf_d;
+    wire [31:0] word;
+    wire [11:0] k;
+    albatross_transfer_fsm u_fsm (
+        .clk_i(clk_i), .rst_i(rst_i), .go_i(go_i), .copy_i(copy_i), .time_kind_i(time_kind_i), .four_i(four_i),
+        .request_i(request_i), .active_i(active_i), .may_access_i(may_access_i), .drop_run_i(drop_run_i),
+        .st_rl_i(st_rl_i), .st_need_i(st_need_i), .st_tried_i(st_tried_i), .st_buf_i(st_buf_i),
+        .status_i(status_i), .status_valid_i(status_valid_i),
+        .cont_i(cont), .last_wd_i(last_wd), .lastf_i(lastf), .mid_i(mid),
+        .start_o(start), .take_o(take), .cont_q_o(cont_q), .fdone_o(fdone), .pubph_o(pubph), .need_any_o(need_any),
+        .dst_o(dst), .src_act_o(src_act), .src_rl_o(src_rl), .src_word_o(src_word), .dst_word_o(dst_word),
+        .dst_tkn_o(dst_tkn), .dst_slot_o(dst_slot), .dst_fin_o(dst_fin), .d_o(d), .ald_o(ald), .buf_d_o(buf_d),
+        .word_o(word), .done_o(done_o), .imp_run_o(imp_run_o), .exp_run_o(exp_run_o), .new_o(new_o), .rl_o(rl_o),
+        .need_o(need_o), .gone_o(gone_o), .tried_o(tried_o), .buf_o(buf_o), .transfers_o(transfers_o),
+        .corrupt_o(corrupt_o), .mode_req_o(mode_req_o), .mode_req_mode_o(mode_req_mode_o),
+        .cyc_o(cyc_o), .dat_i(dat_i), .ack_i(ack_i), .err_i(err_i));
 
-    (* fsm_encoding = "none" *)
-    reg [3:0]  state_q;
-    reg        stb_q, retry_q, drop_q, done_q;
-    reg        early_q;               // the slot ended while a source load was on the bus
-    reg [7:0]  run_q;
-    reg [1:0]  d_q;
-    reg [11:0] k_q;
-    reg [31:0] word_q;
-    reg [2:0]  ald_q;                 // the source Actual last loaded
-    reg [2:0]  rl_q;
-    reg        new_q, icor_q, imp_q, exp_q;
-    reg [3:0]  serve_q, need_q, pub_q, cor_q;
-    reg        cont_q;                // fragments: the slot goes on with a value (no Import)
-    reg        fdone_q;               // a fragment not the last stored all its words
-    reg        pubph_q;               // the publication (taken_at, Slot, Actual stores) has begun
-    wire [2:0] buf_d, tried_d;
-    wire       dst      = state_q[3];
-    wire       ack      = ack_i && stb_q;
-    wire       drop_now = retry_q && drop_q;
-    wire [3:0] d_bit    = 4'b0001 << d_q;     // the current destination
-
-    // The control word just loaded and the picks (albatross_transfer_pick).
-    wire [2:0] a_byte, pick_l, pick;
-    wire       a_valid, a_zero, r_valid, r_zero, a_match, t_done;
-    albatross_transfer_pick u_pick (
-        .dat_i(dat_i), .four_i(four_i), .ald_i(ald_q), .rl_i(rl_q), .tried_i(tried_d),
-        .a_byte_o(a_byte), .a_valid_o(a_valid), .a_zero_o(a_zero), .r_valid_o(r_valid), .r_zero_o(r_zero),
-        .a_match_o(a_match), .pick_l_o(pick_l), .pick_o(pick), .t_done_o(t_done));
-    wire       ctrl_ld  = state_q == S_DST_CTRL;
-    wire       fin_st   = (state_q | 4'b0010) == S_DST_PUB;   // S_DST_FIN or S_DST_PUB: the Actual store
-    wire       t_act    = a_valid && a_byte[2:0] == tried_d;
-    // landed: Actual names the buffer tried (four-slot: and so does its Slot
-    // byte); complete: four-slot, the Slot byte does and Actual does not.
-    wire       landed   = ack && ctrl_ld && (four_i ? t_done && t_act : t_act && tried_d != 3'd0);
-    wire       complete = ack && ctrl_ld && t_done && !t_act;
-    wire       leave    = dst && (drop_now || landed || (ack && state_q == S_DST_PUB));
-    wire [3:0] need_m   = need_q & ~(leave ? d_bit : 4'd0);
-    // need_m != 0, written so that the read data (through leave) meets one
-    // gate, not a mask and a 4-input OR: others in need, or d in need and staying.
-    wire       left_any = (|(need_q & ~d_bit)) || ((|(need_q & d_bit)) && !leave);
-
-    // Order: next_d the lowest destination above d_q in need_q; first_d the
-    // lowest in need_m; first_in the lowest in a starting need.
-    wire [3:0] start_need = go_i ? active_i : need_now;
-    wire [3:0] above    = need_q & ~((d_bit << 1) - 4'd1);
-    wire       has_next = above != 4'd0;
-    wire [1:0] next_d   = above[0] ? 2'd0 : above[1] ? 2'd1 : above[2] ? 2'd2 : 2'd3;
-    wire [1:0] first_d  = need_m[0] ? 2'd0 : need_m[1] ? 2'd1 : need_m[2] ? 2'd2 : 2'd3;
-    wire [1:0] first_in = start_need[0] ? 2'd0 : start_need[1] ? 2'd1 : start_need[2] ? 2'd2 : 2'd3;
-
-    // ------------------------------------------------------------ fragments
-    wire [3:0]  c_need   = st_need_i & active_i;
-    // cont (at go_i): the slot goes on with a value, st_prog_i a word of it
-    // (0, or W after a value's last fragment: none; only a fragmented value
-    // leaves a progress: frag_i is not needed yet, it comes from the ROM
-    // after go_i).  The slot's words end at min(p + F, W) (last_wd, read
-    // where a word store ends, from 2 clocks after go_i); at W the value is
-    // whole (lastf).
-    wire        cont     = HAS_FRAGMENTS != 0 && copy_i && !request_i && st_prog_i != 12'd0 && st_prog_i < words_i &&
-                           c_need != 4'd0;
-    wire        fr_on    = HAS_FRAGMENTS != 0 && copy_i && !request_i && frag_i != 12'd0;
-    wire [11:0] f_end    = ({12{cont_q}} & st_prog_i) + frag_i;   // p + F (a fragment's end unless W comes first)
-    wire        lastf    = k_q == words_i;                        // (at last_wd: the value's last word is taken)
-
-    // ------------------------------------------------------------ steps
-    wire       adv      = ack || drop_now;
-    wire       ctrl_end = adv && (ctrl_ld ? !complete : state_q == S_DST_PUB);
-    wire       last_wd  = lastf || (fr_on && k_q == f_end);
-    wire       want     = state_q != S_WAIT && !has_next && left_any &&
-                          (ctrl_end || (adv && state_q == S_DST_WORD && !last_wd));
-    wire       word_ok  = !copy_i && (time_kind_i || status_valid_i);
-    wire       choose   = ack && ((state_q == S_SRC_ACT && a_valid && a_match) || state_q == S_SRC_SLOT);
-    wire [3:0] need_now = (new_q ? 4'hF : st_need_i) & active_i;
-    wire       req_load = request_i && new_q;         // a New request value: load its word 0
-    wire [7:0] k_run    = drop_run_i[7:1] == 7'd0 ? 8'd2 : drop_run_i;
-    wire [7:0] run_inc  = run_q + 8'd1;
-    // Cut off between the ReadLocked store and its confirming load: forget.
-    wire       forget   = state_q == S_SRC_RL || ((state_q == S_SRC_SLOT || (state_q == S_SRC_ACT && new_q)) && !choose);
-
-    // req: the main block below begins an access in this clock, branch by
-    // branch (every begin_access call and the retry: keep it in step).
-    wire       nrm      = !go_i && !(err_i && stb_q) && !(retry_q && !drop_q);
-    wire       dst_go   = complete || has_next ||
-                          (want ? (!copy_i && word_ok)
-                                : ((state_q == S_DST_WORD && last_wd && lastf) || state_q == S_DST_TKN || state_q == S_DST_SLOT));
-    wire       req      = !rst_i && ((go_i && !copy_i) || (!go_i && !(err_i && stb_q) && retry_q && !drop_q) ||
-                          (nrm && ((ack && ((state_q == S_SRC_ACT && a_valid && !a_match) || state_q == S_SRC_RL ||
-                                            (state_q == S_SRC_WORD && !request_i))) ||
-                                   (state_q == S_WAIT && word_ok) || (choose && (need_now != 4'd0 || req_load)) ||
-                                   (adv && dst && left_any && dst_go))));
-
-    // Put an access on the bus in the next clock; when may_access_i is low the
-    // slot is cut off instead, in one place after the main block (req).
-    task begin_access;
-        input [3:0] s; input [1:0] d;
-        begin
-            d_q     <= d;
-            state_q <= s;
-            stb_q   <= 1'b1;
-        end
-    endtask
-    task finish;
-        begin
-            state_q <= S_IDLE;
-            stb_q   <= 1'b0;
-            done_q  <= 1'b1;
-        end
-    endtask
-    // Start the Export to start_need.
-    task start_export;
-        begin
-            exp_q    <= 1'b1;
-            serve_q  <= start_need;
-            need_q   <= start_need;
-            run_q    <= 8'd0;
-            begin_access(S_DST_CTRL, first_in);
-        end
-    endtask
-
-    always @(posedge clk_i) begin
-        done_q <= 1'b0;
-        if (rst_i) begin
-            state_q  <= S_IDLE;
-            stb_q    <= 1'b0;
-            retry_q  <= 1'b0;
-            drop_q   <= 1'b0;
-            d_q      <= 2'd0;
-            imp_q    <= 1'b0;
-            exp_q    <= 1'b0;
-            new_q    <= 1'b0;
-            icor_q   <= 1'b0;
-            rl_q     <= 3'd0;
-            cont_q   <= 1'b0;
-            fdone_q  <= 1'b0;
-            pubph_q  <= 1'b0;
-            serve_q  <= 4'd0;
-            need_q   <= 4'd0;
-            pub_q    <= 4'd0;
-            cor_q    <= 4'd0;
-            run_q    <= 8'd0;
-        end else if (go_i) begin
-            imp_q    <= copy_i;
-            exp_q    <= 1'b0;
-            new_q    <= 1'b0;
-            icor_q   <= 1'b0;
-            pub_q    <= 4'd0;
-            cor_q    <= 4'd0;
-            retry_q  <= 1'b0;
-            drop_q   <= 1'b0;
-            rl_q     <= st_rl_i;
-            cont_q   <= cont;
-            fdone_q  <= 1'b0;
-            pubph_q  <= 1'b0;
-            if (cont) begin
-                // A fragment after the first: its first word from the held buffer.
-                imp_q   <= 1'b0;
-                exp_q   <= 1'b1;
-                serve_q <= c_need;
-                need_q  <= c_need;
-                run_q   <= 8'd0;
-                d_q     <= 2'd0;
-                if (may_access_i) begin
-                    state_q <= S_SRC_WORD;
-                    stb_q   <= 1'b1;
-                end else finish;
-            end else if (copy_i) begin
-                serve_q <= active_i;
-                d_q     <= 2'd0;
-                if (may_access_i) begin
-                    state_q <= S_SRC_ACT;
-                    stb_q   <= 1'b1;
-                end else finish;
-            end else start_export;
-        end else if (err_i && stb_q) begin
-            // A failed access: cyc low for a clock; count the run of a
-            // destination access; a failed Actual store: buffer tried.
-            stb_q   <= 1'b0;
-            retry_q <= 1'b1;
-            drop_q  <= dst && run_inc == k_run;
-            if (dst) run_q <= run_inc;
-        end else if (retry_q && !drop_q) begin
-            retry_q <= 1'b0;
-            stb_q   <= 1'b1;                       // (or the cut-off: req)
-        end else begin
-            retry_q <= 1'b0;
-            drop_q  <= 1'b0;
-            if (dst) need_q <= need_m;
-            if (adv) run_q <= 8'd0;
-            case (state_q)
-                S_SRC_ACT: if (ack) begin
-                    ald_q <= a_byte[2:0];
-                    if (!a_valid) begin
-                        icor_q <= !a_zero;
-                        finish;
-                    end else if (!a_match) begin
-                        new_q <= 1'b1;
-                        begin_access(S_SRC_RL, 2'd0);
-                    end
-                end
-                S_SRC_RL: if (ack) begin
-                    if (!four_i) rl_q <= ald_q;
-                    begin_access(four_i ? S_SRC_SLOT : S_SRC_ACT, 2'd0);
-                end
-                S_SRC_SLOT: if (ack) rl_q <= pick_l;
-                S_SRC_WORD: if (ack) begin
-                    if (request_i) finish;                              // the mode request (mode_req_o)
-                    else begin_access(S_DST_WORD, first_d);             // take word k_q
-                end
-                S_WAIT: if (word_ok) begin_access(S_DST_WORD, first_d);
-                        else if (!may_access_i || copy_i) finish;       // the cut-off (COPY: only entered without may_access_i)
-                S_DST_CTRL: if (ack && ((!r_valid && !r_zero) || (!a_valid && !a_zero))) cor_q <= cor_q | d_bit;
-                default: ;
-            endcase
-            if (landed || (ack && fin_st)) pub_q <= pub_q | d_bit;
-            // The value is chosen: New (taken_at now) or Old.
-            if (choose) begin
-                serve_q  <= need_now;
-                if (req_load) begin_access(S_SRC_WORD, 2'd0);          // word 0 (k_q is 0 from go_i)
-                else if (need_now == 4'd0) finish;
-                else start_export;
-            end
-            // The next destination access (adv is 0 outside them).
-            if (adv && dst) begin
-                if (complete) begin
-                    state_q <= S_DST_PUB;                  // d_q stays
-                    stb_q   <= 1'b1;
-                end
-                else if (!left_any) finish;
-                else if (has_next) begin_access(state_q == S_DST_PUB ? S_DST_CTRL : state_q, next_d);
-                else if (want) begin
-                    if (copy_i) begin
-                        if (may_access_i) begin
-                            state_q <= S_SRC_WORD;
-                            stb_q   <= 1'b1;
-                        end else begin
-                            state_q <= S_WAIT;
-                            stb_q   <= 1'b0;
-                        end
-                    end else if (word_ok) begin_access(S_DST_WORD, first_d);
-                    else begin
-                        state_q <= S_WAIT;
-                        stb_q   <= 1'b0;
-                    end
-                end
-                else if (state_q == S_DST_WORD) begin
-                    if (last_wd) begin
-                        if (lastf) begin
-                            begin_access(S_DST_TKN, first_d);
-                            pubph_q <= 1'b1;
-                        end else begin
-                            finish;                        // a fragment not the last: nothing published
-                            fdone_q <= 1'b1;
-                        end
-                    end
-                end
-                else if (state_q == S_DST_TKN) begin_access(four_i ? S_DST_SLOT : S_DST_FIN, first_d);
-                else if (state_q == S_DST_SLOT) begin_access(S_DST_FIN, first_d);
-                else if (state_q == S_DST_FIN) finish;
-            end
-        end
-        if (req && !may_access_i) begin                  // the cut-off
-            finish;
-            if (forget) rl_q <= 3'd0;
-        end
-        // A source word load on the bus when the deadline check fails ends the
-        // slot there (done_o); the load itself finishes (ack, or err) silently.
-        if (early_q) done_q <= 1'b0;
-        if (!rst_i && !go_i && state_q == S_SRC_WORD && !may_access_i && !early_q) begin
-            done_q  <= 1'b1;
-            early_q <= 1'b1;
-        end
-        if (rst_i || go_i) early_q <= 1'b0;
-    end
-
-    // ------------------------------------------------------------ per-destination fields
-    // albatross_transfer_dest, written with explicit enables: the events of
-    // the current destination d_q, in the branch of the main block they belong to.
-    wire       e_start  = (go_i && (!copy_i || cont)) || (nrm && choose && need_now != 4'd0);
-    // e_tried: d's Actual store failed, or (four-slot) its Slot store is on the bus.
-    wire       e_tried  = !go_i && stb_q && ((err_i && fin_st) || state_q == S_DST_SLOT);
-    wire       e_ctrl   = nrm && adv && ctrl_ld;
-    wire       e_fin    = nrm && ack && fin_st;
-    wire       no_tried = (go_i && !cont) || new_q;    // a fresh value: no failed store of it
-    albatross_transfer_dest u_dest (
-        .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start), .ld_buf_i(go_i && cont), .st_buf_i(st_buf_i),
-        .st_tried_i(st_tried_i), .fresh_i(no_tried), .d_i(d_q), .set_tried_i(e_tried),
-        .clr_tried_i((e_ctrl && ack && !complete) || e_fin), .set_buf_i(e_ctrl), .pick_i(t_done ? tried_d : pick),
-        .buf_d_o(buf_d), .tried_d_o(tried_d), .tried_o(tried_o), .buf_o(buf_o));
-
-    // ------------------------------------------------------------ the word stored
-    // word_q: the word the stores write, taken when the first store begins:
-    // the source word (its load's ack clock) or a STATUS word (TIME's value
-    // is slot_time_i itself).
-    wire take_en = (nrm && ack && state_q == S_SRC_WORD) ||
-                   (nrm && word_ok && (state_q == S_WAIT || (adv && dst && want)));
-    always @(posedge clk_i) if (take_en) word_q <= copy_i ? dat_i : status_i;
-    // k_q: the index of the next word to take; 0 from go_i and when an Export starts.
-    // (reset: 0, the progress the state RAM's clearing writes)
-    always @(posedge clk_i) if (rst_i) k_q <= 12'd0; else if (go_i && cont) k_q <= st_prog_i; else if (e_start || go_i) k_q <= 12'd0; else if (take_en) k_q <= k_q + 12'd1;
+    // ------------------------------------------------------------ the word index and the fragments
+    albatross_transfer_frag #(.HAS_FRAGMENTS(HAS_FRAGMENTS)) u_frag (
+        .clk_i(clk_i), .rst_i(rst_i), .go_i(go_i), .copy_i(copy_i), .request_i(request_i), .words_i(words_i),
+        .frag_i(frag_i), .st_prog_i(st_prog_i), .need_any_i((st_need_i & active_i) != 4'd0), .start_i(start),
+        .take_i(take), .cont_q_i(cont_q), .fdone_i(fdone), .pubph_i(pubph), .need_any_q_i(need_any),
+        .cont_o(cont), .k_o(k), .last_wd_o(last_wd), .lastf_o(lastf), .mid_o(mid), .prog_o(prog_o), .prog_wr_o(prog_wr_o));
+    assign index_o = k;
+    assign mid_o   = mid;
 
     // ------------------------------------------------------------ the access
     albatross_transfer_access #(.ADDR_WIDTH(AW)) u_access (
-        .dst_i(dst), .src_act_i(state_q == S_SRC_ACT), .src_rl_i(state_q == S_SRC_RL),
-        .src_word_i(state_q == S_SRC_WORD),
-        .dst_word_i(state_q == S_DST_WORD), .dst_tkn_i(state_q == S_DST_TKN), .dst_slot_i(state_q == S_DST_SLOT),
-        .dst_fin_i(fin_st), .copy_i(copy_i), .time_kind_i(time_kind_i), .four_i(four_i),
-        .words_i(words_i), .k_i(k_q), .d_i(d_q), .rl_i(rl_q[1:0]), .buf_i(buf_d), .ald_i(ald_q),
+        .dst_i(dst), .src_act_i(src_act), .src_rl_i(src_rl), .src_word_i(src_word),
+        .dst_word_i(dst_word), .dst_tkn_i(dst_tkn), .dst_slot_i(dst_slot),
+        .dst_fin_i(dst_fin), .copy_i(copy_i), .time_kind_i(time_kind_i), .four_i(four_i),
+        .words_i(words_i), .k_i(k), .d_i(d), .rl_i(rl_o[1:0]), .buf_i(buf_d), .ald_i(ald),
         .src_board_i(src_board_i), .src_base_i(src_base_i), .dst_board_i(dst_board_i), .dst_base_i(dst_base_i),
-        .word_i(word_q), .slot_time_i(slot_time_i), .taken_i(st_taken_i),
+        .word_i(word), .slot_time_i(slot_time_i), .taken_i(st_taken_i),
         .we_o(we_o), .adr_o(adr_o), .board_o(board_o), .sel_o(sel_o), .dat_o(dat_o));
-    assign cyc_o = stb_q;
-
-    // ------------------------------------------------------------ results
-    function [2:0] popcount4; input [3:0] v; popcount4 = {2'd0, v[0]} + {2'd0, v[1]} + {2'd0, v[2]} + {2'd0, v[3]}; endfunction
-    assign index_o     = k_q;
-    assign done_o      = done_q;
-    assign imp_run_o   = imp_q;
-    assign exp_run_o   = exp_q;
-    assign new_o       = nrm && choose && new_q;
-    assign rl_o        = rl_q;
-    // A value that goes on (a fragment not the last done, or a later fragment
-    // cut before its publication began): the destinations still in it (the
-    // dropped ones out).  Once the last fragment's publication has begun, the
-    // value ends as a whole one does (a destination not published stays in
-    // need, and the next run Imports afresh, its control load seeing a
-    // landed store).
-    // prog_o is written only where it changes (prog_wr_o): a fragment not the
-    // last done (k_q: its end), or a later fragment's publication begun (0).
-    wire   mid         = HAS_FRAGMENTS != 0 && (fdone_q || (cont_q && !pubph_q && need_q != 4'd0));
-    assign prog_o      = k_q;                             // (after the last fragment: W, no word of the value)
-    assign prog_wr_o   = HAS_FRAGMENTS != 0 && (fdone_q || (cont_q && pubph_q));
-    assign mid_o       = mid;
-    assign gone_o      = serve_q & ~need_q & ~pub_q;
-    assign need_o      = mid ? need_q : serve_q & ~pub_q;
-    assign transfers_o = exp_q ? popcount4(pub_q) : 3'd0;
-    assign corrupt_o   = {2'd0, icor_q} + popcount4(cor_q);
-    assign mode_req_o      = nrm && ack && state_q == S_SRC_WORD && request_i && !early_q;
-    assign mode_req_mode_o = (|dat_i[31:4]) ? 4'hF : dat_i[3:0];
 
 endmodule
 

@@ -58,7 +58,7 @@ LADDER = [
     ("taken_at", "the value's taken_at: its state RAM field and its store data (the store itself stays)",
      [("albatross_controller.v", ".st_taken_i(st_taken)", ".st_taken_i(32'd0)")]),
     ("drop run", "the drop of a destination after K failed attempts in a row (retries until the deadline stay)",
-     [("albatross_transfer.v", "drop_q  <= dst && run_inc == k_run;", "drop_q  <= 1'b0;")]),
+     [("albatross_transfer_fsm.v", "drop_q  <= dst && run_inc == k_run;", "drop_q  <= 1'b0;")]),
     ("destinations 2 to 4", "every entry has one destination: no order among destinations, one set of their registers",
      [("albatross_controller.v",
        "wire [3:0]         active = {nd[2], nd >= 3'd3, nd >= 3'd2, nd != 3'd0};",

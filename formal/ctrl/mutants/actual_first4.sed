@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_fsm.v
 # actual_first4 (formal/export/mutants/actual_first4.sed on the datapath): the
 # four-slot Export stores Actual before the Slot byte.  Must fail
 # dst_slot_first.  The last edit keeps req (an access begins in this clock:

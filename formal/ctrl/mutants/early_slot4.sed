@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_fsm.v
 # early_slot4 (formal/export/mutants/early_slot4.sed on the datapath): the
 # four-slot Slot byte is stored right after the last value word, before
 # taken_at.  Must fail dst_slot_complete.

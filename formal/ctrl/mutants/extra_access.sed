@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_fsm.v
 # extra_access (formal/export/mutants/extra_access.sed on the datapath): an
 # access the protocol does not need; the datapath has no read-back, so the
 # three-buffer Export loads a destination's control word a second time (the

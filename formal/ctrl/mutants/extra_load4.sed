@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_fsm.v
 # extra_load4 (formal/export/mutants/extra_load4.sed on the datapath): the
 # four-slot Export loads a destination's control word a second time (as a
 # read-back would; the flag borrows that destination's corrupt bit).  Must

@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_fsm.v
 # forget_slot4 (tb/mutants/controller/forget_slot4.sed on the datapath): the
 # four-slot control-word load never recognises a landed Slot store whose
 # Actual store was not made, and picks a buffer as for a new value: the next

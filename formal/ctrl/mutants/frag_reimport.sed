@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_frag.v
 # frag_reimport (tb/mutants/controller/frag_reimport.sed): the source's lock
 # released between fragments: every run Imports afresh.  Must fail
 # frag_held (the source's control word accessed in a later fragment).

@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_frag.v
 # frag_wrong_word (tb/mutants/controller/frag_wrong_word.sed): a later
 # fragment resumes one word early.  Must fail frag_words_src (its source
 # load is of word 0).

@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_fsm.v
 # import_no_readlocked (tb/mutants/engines/import_no_readlocked.sed on the
 # datapath): the Import takes Actual into its copy without storing
 # ReadLocked.  Must fail src_no_torn.

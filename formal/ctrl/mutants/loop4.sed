@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_fsm.v
 # loop4 (formal/import/mutants/loop4.sed on the datapath): the four-slot
 # Import loads Actual again after its ReadLocked store (not wait-free).  Must
 # fail src_wait_free.

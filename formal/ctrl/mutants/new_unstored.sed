@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_fsm.v
 # new_unstored (formal/import/mutants/new_unstored.sed on the datapath): every
 # load of Actual marks the value New, so a value chosen at that load (Old:
 # Actual is the one read last) is published as New again.  Must fail

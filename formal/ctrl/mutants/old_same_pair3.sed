@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_fsm.v
 # old_same_pair3 (tb/mutants/controller/old_same_pair3.sed): the three-buffer source
 # Import's first load answers Old whenever Actual lies in the pair of its copy
 # (Buffer1 and Buffer2, or Buffer3), whatever the buffer; the confirming

@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_fsm.v
 # skip_confirm (formal/import/mutants/skip_confirm.sed on the datapath): the
 # three-buffer Import chooses in the ack clock of its ReadLocked store,
 # without the confirming load of Actual.  Must fail src_no_torn.

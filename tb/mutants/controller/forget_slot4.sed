@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_fsm.v
 # Controller mutant: the four-slot Export's control-word load never
 # recognises a landed Slot store whose Actual store was not made (the value
 # complete, unpublished), and picks a buffer as for a new value: the next

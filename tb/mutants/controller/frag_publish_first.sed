@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_fsm.v
 # Controller mutant: a fragmented value's first fragment is taken for its
 # last (a publish after the first fragment): taken_at and the destination's
 # Actual are stored after words [0, frag) alone, before the value is whole.  The

@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_frag.v
 # Controller mutant: the source's lock released between fragments: every run
 # of a fragmented channel begins with a fresh Import (the ReadLocked store
 # and the control loads), as if no value were in progress.  The controller

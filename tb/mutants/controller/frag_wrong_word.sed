@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_frag.v
 # Controller mutant: a fragment after the first resumes one word early (its
 # word index from the progress minus one).  The controller bench's scenario
 # frag must fail (test-controller-negative-frag_wrong_word: "frag whole:

@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_fsm.v
 # Controller mutant: the transfer never offers a REQUEST entry's value as a
 # mode request (mode_req_o stays low), so no mode switch ever happens.
 # Scenario modes must fail (test-controller-negative-no_request).

@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_fsm.v
 # Controller mutant, the three-buffer analogue of old_same_pair4: the
 # three-buffer source Import's first load answers Old whenever the source's
 # Actual lies in the pair of its copy (pair(x) = (x - 1) >> 1: Buffer1 and

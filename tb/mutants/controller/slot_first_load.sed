@@ -1,4 +1,4 @@
-# target: rtl/albatross_transfer.v
+# target: rtl/albatross_transfer_fsm.v
 # Controller mutant: the four-slot source Import takes the Slot byte of the
 # announced pair from its first control-word load (kept in the word
 # register, unused until the Export) instead of the load after its
