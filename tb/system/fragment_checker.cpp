@@ -30,6 +30,7 @@ FragmentChecker::FragmentChecker(const std::string &rom, const Plan &plan, Syste
     if (H2_MODES.get(w[2]) != 0) { why_ = "an image with modes (not judged)"; return; }
     if (w.size() < ROM_HEADER_WORDS + ROM_ENTRY_WORDS * ne) { why_ = "a short ROM image"; return; }
     cluster_ = H2_CLUSTER.get(w[2]);
+    rigid_ = (H0_FLAGS.get(w[0]) & HFLAG_SYNC_MODE) == 0;
     cycle_len_ = H1_CYCLE.get(w[1]);
     for (unsigned k = 0; k < ne; ++k) {
         const uint32_t *e = &w[ROM_HEADER_WORDS + ROM_ENTRY_WORDS * k];
@@ -100,6 +101,14 @@ FragmentChecker::Chan *FragmentChecker::find(int board, uint32_t addr, int &dest
 void FragmentChecker::tick(uint64_t cycle, bool cycle_start)
 {
     if (!active_ || !cycle_start) return;
+    if (started_ && rigid_ && cycle - cycle_start_ != cycle_len_) {
+        char m[200];
+        cur_ = nullptr;
+        std::snprintf(m, sizeof m, "minor cycle %llu began %llu clocks after the one before: expected H1, %llu clocks "
+                      "(a time-rigid image)", static_cast<unsigned long long>((count_ + 1) & ((1ull << cluster_) - 1)),
+                      static_cast<unsigned long long>(cycle - cycle_start_), static_cast<unsigned long long>(cycle_len_));
+        violation(SystemChecker::DUE_CYCLE, m);
+    }
     if (started_) ++count_;
     started_ = true;
     prev_start_ = cycle_start_;
@@ -339,7 +348,7 @@ void FragmentChecker::on_bus(const SystemSim::BusEvent &e)
 void FragmentChecker::violation(SystemChecker::Kind k, const std::string &m)
 {
     chk_.report(k, m);
-    ++caught_[std::string(SystemChecker::kind_name(k)) + " " + (cur_ ? cur_->name : "?")];
+    ++caught_[std::string(SystemChecker::kind_name(k)) + " " + (cur_ ? cur_->name : "(the cycle starts)")];
 }
 
 std::string FragmentChecker::by_channel() const

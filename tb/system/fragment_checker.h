@@ -8,7 +8,8 @@
 // start-up has n = 0, n wraps at 2^H2.cluster.  Every access the controller
 // makes on its bus is given to the run it belongs to: the entry of its
 // channel id that is due in that minor cycle and whose window [S, S + E2]
-// (S = cycle start + E1) holds the access.  Four named checks
+// (S = cycle start + E1) holds the access (a time-rigid image's cycle starts
+// must be H1 apart: due_cycle too).  Four named checks
 // (SystemChecker kinds):
 //   due_cycle         every access to a channel's instance lies in the window
 //                     of an entry of that channel that is due in that minor
@@ -120,6 +121,7 @@ private:
     std::vector<Entry> entries_;
     std::map<unsigned, Chan> chans_;     // by channel id
     unsigned cluster_ = 0;
+    bool rigid_ = true;                  // time-rigid: every minor cycle is H1 long
     uint64_t cycle_len_ = 0;
     bool started_ = false;
     uint64_t cycle_start_ = 0;           // the edge of the running minor cycle's start
