@@ -7,32 +7,19 @@
 //     header's cycle length and every slot's start and length must fit in
 //     TIME_BITS bits (higher bits set: the header, or the entry, is invalid).
 //   * ROM format (rtl/albatross_contract.toml): header H0..H3, entry k at
-//     word 4 + 8k; H3 is the check word that makes the CRC of the whole
-//     image (words 0 .. 4+8*NE-1, H3 included) 0; no per-entry checksum.
-//     An image with modes (H2.modes > 0) starts in mode 0: the cycle is
-//     entries 0 .. H2.start_end - 1 (else 0 .. NE - 1).  A start_end of 0
-//     or above NE is an invalid header.
-//   * Mode switch (rtl/albatross_mode_switch.v): a request (mode_req_i) is
-//     loaded in ST_CYCLE_END from the mode's descriptor; at the next cycle
-//     boundary, and only there, the cycle takes the new mode's entries,
-//     cycle length and drop run, and its first entry starts the new cycle.
-//     A boundary waits for a load that has begun (6 clocks; the compiler
-//     leaves them free at the end of every cycle of an image with modes).  The CRC and the prefix
-//     signatures are rtl/albatross_rom_check.v's, the ROM, its loading and
-//     the word read in each clock rtl/albatross_schedule_rom.v's (their rules).
+//     word 4 + 8k; an image with modes starts in mode 0 (entries 0 ..
+//     H2.start_end - 1, else 0 .. NE - 1).  The parts keep their own rules:
+//     the ROM and the word read in each clock rtl/albatross_schedule_rom.v,
+//     the header's checks rtl/albatross_header_check.v, the start-up CRC,
+//     the prefix signatures and the background re-check (a part's first
+//     mismatch adds 1 to rom_errors and marks it bad: a bad entry is skipped
+//     as an invalid one) rtl/albatross_rom_check.v, the mode switch (loaded
+//     in ST_CYCLE_END, taken at a cycle boundary only, which waits for a
+//     load that has begun) rtl/albatross_mode_switch.v.
 //   * Start-up (after enable_i): read the header (5 clocks), then one CRC
-//     pass over the image, a word in 32 / CRC_BITS clocks (its first read
-//     issued in the header's last clock, its CRC compared one clock after
-//     its last check), storing the CRC after the header and after each
-//     entry (their prefix CRCs).  A bad magic, NE outside
-//     1..NE_MAX, a cycle that does not fit, or a CRC other than 0 raises
-//     error_o for good: the sequencer never starts a slot or a poll.
-//   * Background check: in every clock the ROM is not fetching, a part of a
-//     word (CRC_BITS bits) is re-read and the CRC carried on from the
-//     stored prefix of the previous part; at the end of each part (header,
-//     entry) it is compared with that part's stored prefix.  The first mismatch of a part adds 1 to
-//     rom_errors and marks it bad: an entry so marked is skipped (no bus
-//     access, and rom_errors + 1 once per cycle as for any invalid entry).
+//     pass over the image (its first read issued in the header's last
+//     clock).  An invalid header or a CRC other than 0 raises error_o for
+//     good: the sequencer never starts a slot or a poll.
 //   * Slot timing: S = cycle start + start (E1).  The entry is fetched in
 //     clocks S .. S+FETCH_CYCLES-2 (FETCH_CYCLES = 7) and go_o is high in
 //     clock S+FETCH_CYCLES-1 with its fields: an engine started by go_o puts its
@@ -42,25 +29,19 @@
 //     "Validation" lists, the slot order, the cycle end, a bad mark) gets
 //     no go_o and adds 1 to rom_errors, once per cycle; an IDLE entry gets
 //     no go_o.
-//   * Minor cycles (HAS_MULTIRATE; the count and the due test are
-//     rtl/albatross_minor_cycles.v's): the count is 0 in the first cycle
-//     after start-up or a mode switch, + 1 at every other cycle (it counts
-//     for the entry in ent_q: it steps when ent_q wraps to the mode's first
-//     entry, and the mode load clears it with ent_q).  An entry is due in a
-//     cycle when n mod 2^rep = base (E6); every entry, due or not, is
-//     fetched in every cycle exactly as above, and only a due one gets go_o:
-//     a non-due entry costs its fetch (clocks S .. S+6, no bus access, no
-//     rom_errors, no slot end for the order check), like an IDLE one.  The
-//     due test is needed from FETCH clock 1 on (the entry check) and in FETCH
-//     clock 5 (go_q), so E6 is read ahead: entry 0's in the clock after the
-//     start-up pass (no start-up clock added), entry k's in FETCH clock 6 of
-//     the entry before it (the port is free there), the new mode's first
-//     entry's in the mode load, and judged in the clock it arrives.  The
-//     entry register ent_q moves on to the next entry in FETCH clock 5 (so
-//     that E6 of the next entry is {ent_q + 1, 010}: the ROM's one
-//     incrementer); last_q and ent0_q keep what the rest of the slot needs
-//     of the entry that runs.  HAS_MULTIRATE 0: every entry is due (E6 must
-//     be 0, else the entry is invalid).
+//   * Minor cycles (HAS_MULTIRATE; the count and the due test:
+//     rtl/albatross_minor_cycles.v): every entry, due or not, is fetched in
+//     every cycle exactly as above, and only a due one gets go_o: a non-due
+//     entry costs its fetch (clocks S .. S+6, no bus access, no rom_errors,
+//     no slot end for the order check), like an IDLE one.  The due test is
+//     needed from FETCH clock 1 on (the entry check) and in FETCH clock 5
+//     (go_q), so E6 is read ahead: entry 0's in the clock after the start-up
+//     pass, entry k's in FETCH clock 6 of the entry before it, the new mode's
+//     first entry's in the mode load.  The entry register ent_q moves on to
+//     the next entry in FETCH clock 5 (E6 of the next entry is {ent_q + 1,
+//     010}: the ROM's one incrementer), where the count steps if it wraps to
+//     the mode's first; last_q and ent0_q keep what the rest of the slot
+//     needs of the entry that runs.
 //   * E7 (HAS_FRAGMENTS): read in the first clock of the entry's transfer
 //     (a main read: the background check waits a clock), frag_o is its frag
 //     field from the clock after, held until the next transfer's.
@@ -146,14 +127,10 @@ module albatross_sequencer #(
 
     localparam FETCH_CYCLES = 7;                // slot start to the first access on the bus
     localparam MARGIN       = TIMEOUT + 2;      // an access on the bus in clock p needs p <= D - MARGIN
-    localparam NE_FIT  = (ROM_WORDS - 4) / 8;
-    localparam NE_MAX  = (NE_FIT > 255) ? 255 : NE_FIT;
     localparam ROM_AW  = $clog2(ROM_WORDS);
     localparam TB      = TIME_BITS;
     localparam integer        MIN_LEN_I   = FETCH_CYCLES + MARGIN;
     localparam [TB:0]         MARGIN_T    = MARGIN[TB:0];
-    localparam [7:0]          NE_MAX8     = NE_MAX[7:0];
-    localparam                HFLAG_SYNC  = ALB_ROM_H0_FLAGS_LSB + ALB_ROM_HFLAG_SYNC_MODE;
 
     generate
         if (NB < 1 || NB > 16 || ADDR_WIDTH < 3 || ADDR_WIDTH > ALB_ROM_PLACE_BASE_W || N_CHAN < 1 ||
@@ -194,8 +171,9 @@ module albatross_sequencer #(
     reg [2:0]          step_q;        // clock within ST_HEADER, ST_FETCH
     reg [31:0]         time_q;
     reg [TB:0]         next_rel_q;    // rel + 1: the time within the cycle of the next clock (rel wraps at 2^TB)
-    reg [7:0]          ne_q;
-    reg                smode_q;
+    wire [7:0]         ne_q;          // H0's NE and sync flag (u_hdr, below)
+    wire               smode_q;
+    wire               hdr_bad;       // a header word is invalid
     reg [TB-1:0]       start_q;       // E1 of entry ent_q; from FETCH clock 6 on, of entry ent_q + 1
                                       // (of entry 0 after the last entry and after the header)
     reg                start_bad_q;   // ... did not fit in TIME_BITS
@@ -208,7 +186,7 @@ module albatross_sequencer #(
     reg                switched_q;    // the boundary of the last clock took a loaded mode
     reg [31:0]         since_q;       // the first clock of the running mode's first cycle
     reg [31:0]         slot_time_q;
-    reg                err_q;
+    reg                err_q;         // the start-up CRC failed
     reg [15:0]         rerr_q;
     reg [15:0]         cycles_q;
     reg                cycle_q1;      // cycle_o
@@ -234,7 +212,6 @@ module albatross_sequencer #(
     wire [ROM_AW-1:0]  bg_adr;        // the ROM check's next word
     wire [7:0]         ent_inc   = ent_q + 8'd1;
     wire               last_ent  = ent_inc == m_end;
-    wire               h2_modes  = rom_q[ALB_ROM_H2_MODES_LSB +: ALB_ROM_H2_MODES_W] != 0;   // (H2 in header step 3)
     wire               pass_done, crc_ok, mism_new, bad_mark;   // (the ROM check, below)
     // E6 of entry 0 ({ent_q + 1, 010}, ent_q 0 since reset) is read in the
     // clock after the start-up pass (its CRC compare; the check issues no read
@@ -249,6 +226,11 @@ module albatross_sequencer #(
         .e7_i(e7_rd_q && state_q == ST_TRANSFER), .e7_ent_i(last_q ? m_end : ent_q),
         .bg_adr_i(bg_adr),
         .main_o(main_rom), .dat_o(rom_q));
+
+    // The header's fields and checks (rtl/albatross_header_check.v).
+    albatross_header_check #(.ROM_WORDS(ROM_WORDS), .TIME_BITS(TB)) u_hdr (
+        .clk_i(clk_i), .rst_i(rst_i), .hdr_i(state_q == ST_HEADER), .step_i(step_q), .rom_i(rom_q),
+        .ne_o(ne_q), .smode_o(smode_q), .bad_o(hdr_bad));
 
     // ------------------------------------------------------------ the running schedule and its modes
     // The cycle's entries (m_first .. m_end - 1), its length and drop run come
@@ -399,30 +381,10 @@ module albatross_sequencer #(
             case (state_q)
                 ST_HEADER: if (enable_i || step_q != 3'd0) begin
                     step_q <= step_q + 3'd1;
-                    case (step_q)
-                        3'd1: begin                                             // H0
-                            ne_q    <= rom_q[ALB_ROM_H0_NE_LSB +: 8];
-                            smode_q <= rom_q[HFLAG_SYNC];
-                            if (rom_q[ALB_ROM_H0_MAGIC_LSB +: 16] != ALB_ROM_MAGIC ||
-                                rom_q[ALB_ROM_H0_NE_LSB +: 8] == 8'd0 || rom_q[ALB_ROM_H0_NE_LSB +: 8] > NE_MAX8)
-                                err_q <= 1'b1;
-                        end
-                        3'd2: begin                                             // H1
-                            // (H1's upper half is the start-up mode's next mask: rtl/albatross_mode_switch.v)
-                            if ((rom_q[ALB_ROM_H1_CYCLE_LSB +: 16] >> TB) != 16'd0 || rom_q[TB-1:0] == {TB{1'b0}})
-                                err_q <= 1'b1;
-                        end
-                        3'd3: begin                                             // H2
-                            if (h2_modes && (rom_q[ALB_ROM_H2_START_END_LSB +: 8] == 8'd0 ||
-                                             rom_q[ALB_ROM_H2_START_END_LSB +: 8] > ne_q))
-                                err_q <= 1'b1;
-                        end
-                        default: ;
-                    endcase
                     if (step_q == 3'd4) begin                                   // E1 of entry 0 (E6 read now)
                         start_q       <= rom_q[TB-1:0];
                         start_bad_q   <= rom_q[31:TB] != 0;
-                        state_q       <= err_q ? ST_ERROR : ST_CHECK;
+                        state_q       <= hdr_bad ? ST_ERROR : ST_CHECK;
                     end
                 end
                 ST_CHECK: if (pass_done) begin
@@ -495,7 +457,7 @@ module albatross_sequencer #(
     assign may_access_o = (state_q == ST_TRANSFER || go_now) && in_time_q;   // c + 1 + MARGIN <= D (D >= MIN_LEN > MARGIN)
     assign time_o       = time_q;
     assign cycle_o      = cycle_q1;
-    assign error_o      = err_q;
+    assign error_o      = err_q || hdr_bad;
     assign rom_errors_o = rerr_q;
     assign cycles_o     = cycles_q;
     assign drop_run_o   = m_drop;
