@@ -369,3 +369,5 @@ void scenario_deadline();
 void scenario_race4();
 // ctrl_scenarios_frag.cpp
 void scenario_frag();
+// ctrl_scenarios_fragswitch.cpp
+void scenario_fragswitch();

@@ -64,6 +64,12 @@
 //            (group 2; ctrl_scenarios_frag.cpp; negatives
 //            controller-negative-frag_publish_first, -frag_reimport,
 //            -frag_wrong_word)
+//   fragswitch  a mode switch between the fragments of a value: the value
+//            goes on whole when its channel next runs (in the new mode, or
+//            back in the old one), from its word, with the held source
+//            buffer and fragment 0's taken_at (group 2;
+//            ctrl_scenarios_fragswitch.cpp; negative
+//            controller-negative-fragswitch)
 // Each check prints what it expected and what it got.  Exit status 0 if all
 // pass, else 64 + a bit mask of the failed groups (1 timing, 2 data, 4 rom,
 // 8 faults, 16 dead, 32 abandon).  --inject=timing makes the timing checker expect one
@@ -73,7 +79,8 @@
 // Files: ctrl_bench.h/.cpp (checks, ROM builder, model wrapper, CPU protocol),
 //        ctrl_scenarios_data.cpp (basic, corrupt, four), ctrl_scenarios_faults.cpp (faults, dead,
 //        droprun, sync, abandon), ctrl_scenarios_cold.cpp (cold), ctrl_scenarios_modes.cpp (modes),
-//        ctrl_scenarios_race.cpp (deadline, race4), ctrl_scenarios_frag.cpp (frag).
+//        ctrl_scenarios_race.cpp (deadline, race4), ctrl_scenarios_frag.cpp (frag),
+//        ctrl_scenarios_fragswitch.cpp (fragswitch).
 #include "ctrl_bench.h"
 
 // ------------------------------------------------------------------ main
@@ -93,7 +100,7 @@ int main(int argc, char **argv) {
             }
         }
         else {
-            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|droprun|sync|four|abandon|cold|modes|deadline|race4|frag]\n",
+            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|droprun|sync|four|abandon|cold|modes|deadline|race4|frag|fragswitch]\n",
                          argv[0]);
             return 2;
         }
@@ -104,7 +111,7 @@ int main(int argc, char **argv) {
         {"droprun", scenario_droprun},
         {"sync", scenario_sync}, {"four", scenario_four}, {"abandon", scenario_abandon}, {"cold", scenario_cold},
         {"modes", scenario_modes}, {"deadline", scenario_deadline}, {"race4", scenario_race4},
-        {"frag", scenario_frag}};
+        {"frag", scenario_frag}, {"fragswitch", scenario_fragswitch}};
     for (auto &x : sc)
         if (only.empty() || only == x.name) x.fn();
     std::printf("test_controller: %u checks, %u failed%s\n", g_checks, g_fails,

@@ -27,7 +27,8 @@ CTRL_BIN := $(CTRL_DIR)/obj/Vtb_system
 CTRL_CPP := tb/controller/test_controller.cpp tb/controller/ctrl_bench.cpp \
             tb/controller/ctrl_scenarios_data.cpp tb/controller/ctrl_scenarios_faults.cpp \
             tb/controller/ctrl_scenarios_cold.cpp tb/controller/ctrl_scenarios_modes.cpp \
-            tb/controller/ctrl_scenarios_race.cpp tb/controller/ctrl_scenarios_frag.cpp
+            tb/controller/ctrl_scenarios_race.cpp tb/controller/ctrl_scenarios_frag.cpp \
+            tb/controller/ctrl_scenarios_fragswitch.cpp
 CTRL_SRC := tb/system/tb_system.v tb/common/bus_fault_injector.v $(CORE_soc_system) $(CTRL_CPP) tb/controller/ctrl_bench.h \
             $(RTL_INC) tb/common/albatross_contract.h
 
@@ -212,3 +213,23 @@ test-controller-frag: $(CTRL_BIN)
 $(eval $(call ctrl_race_negative,frag_publish_first,frag,66,frag whole: fragment 0 publishes nothing,the controller that publishes after the first fragment of a value))
 $(eval $(call ctrl_race_negative,frag_reimport,frag,66,frag whole: fragment 1 makes no access to the source.s control word,the controller that Imports afresh at every fragment))
 $(eval $(call ctrl_race_negative,frag_wrong_word,frag,66,frag whole: fragment 1 resumes at word 2,the controller that resumes a fragment one word early))
+
+# A mode switch between the fragments of a value (ctrl_scenarios_fragswitch.cpp):
+# scenario fragswitch (the value goes on whole when its channel next runs, in
+# the new mode or back in the old one, from its word, with the held source
+# buffer and fragment 0's taken_at).  Its negative runs it on the
+# forget_switch mutant (every channel's state forgotten in a mode's first 100
+# clocks: the held buffer lost at the switch), which must fail it (exit 66).
+TESTS += controller-fragswitch controller-negative-fragswitch
+.PHONY: test-controller-fragswitch test-controller-negative-fragswitch
+test-controller-fragswitch: $(CTRL_BIN)
+	@tools/run_test.sh controller-fragswitch $(CTRL_BIN) --dir=$(CTRL_DIR)/fragswitch --scenario=fragswitch
+test-controller-negative-fragswitch: $(CTRL_DIR)/mutant-forget_switch/obj/Vtb_system
+	@tools/run_test.sh controller-negative-fragswitch bash -c '$< --dir=$(CTRL_DIR)/mutant-forget_switch/fragswitch \
+	    --scenario=fragswitch > $(CTRL_DIR)/mutant-forget_switch/fragswitch.log 2>&1; rc=$$?; \
+	    grep -m 3 "^FAIL" $(CTRL_DIR)/mutant-forget_switch/fragswitch.log | sed "s/^FAIL/  caught:/"; \
+	    if [ $$rc -eq 66 ] && grep -q "^FAIL fragswitch on: the run after the switch (mode 1, frag 3) goes on at word 2" \
+	        $(CTRL_DIR)/mutant-forget_switch/fragswitch.log; then \
+	        echo "the controller that forgets the held buffer at a switch fails scenario fragswitch, as it must (exit 66)"; \
+	    else echo "expected scenario fragswitch to fail with exit 66 and: the run after the switch goes on at word 2, came exit $$rc"; \
+	        tail -n 5 $(CTRL_DIR)/mutant-forget_switch/fragswitch.log; exit 1; fi'
