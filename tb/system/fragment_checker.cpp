@@ -227,12 +227,19 @@ void FragmentChecker::on_bus(const SystemSim::BusEvent &e)
         violation(SystemChecker::DUE_CYCLE, m);
     }
     if (c.kind != KIND_COPY) return;
-    const int entry = x ? x->index : -1;
+    // A run outside every due entry is still told apart by the window that
+    // holds it (an entry run in a cycle it is not due in).
+    const Entry *wx = x;
+    for (size_t k = 0; !wx && k < c.entries.size(); ++k) {
+        const Entry &y = entries_[c.entries[k]];
+        if (rel >= y.start && end_rel <= y.start + y.length + kWindowSlack) wx = &y;
+    }
+    const int entry = wx ? wx->index : -1;
     if (cnt != c.run_cycle || entry != c.run_entry) {
         end_run(c);
         begin_run(c, cnt, entry, src_control);
     }
-    const uint32_t frag = x ? x->frag : c.frag;
+    const uint32_t frag = wx ? wx->frag : c.frag;
     if (src_control) {
         if (!c.run_import) {
             std::snprintf(m, sizeof m, "%s: a later fragment's run (entry %d, minor cycle %llu) accessed the "
