@@ -158,7 +158,6 @@ void FragmentChecker::begin_run(Chan &c, uint64_t cyc, int entry, bool import)
 void FragmentChecker::end_run(Chan &c)
 {
     if (c.run_entry < -1 || c.kind != KIND_COPY) return;
-    const Entry *x = c.run_entry >= 0 ? &entries_[c.run_entry] : nullptr;
     if (!c.run_words) {
         // Nothing carried: an Import that found nothing to send (or was cut)
         // leaves no value in progress; a later fragment cut before its first
@@ -189,7 +188,6 @@ void FragmentChecker::end_run(Chan &c)
         c.prev_s = c.run_s;
         c.prev_e = c.run_e;
     }
-    (void)x;
     c.run_entry = -2;
 }
 
@@ -203,7 +201,7 @@ void FragmentChecker::on_bus(const SystemSim::BusEvent &e)
     cur_ = cp;
     char m[400];
     // The minor cycle the access began in.
-    const bool before = e.start < cycle_start_;
+    const bool before = e.start < cycle_start_ && count_ > 0;
     const uint64_t cs = before ? prev_start_ : cycle_start_, cnt = before ? count_ - 1 : count_;
     const uint64_t n = cnt & ((1ull << cluster_) - 1);
     const uint64_t rel = e.start - cs, end_rel = e.end - cs;
