@@ -35,9 +35,11 @@
 //                   free cycle starts one with probability 1/P, 1..1024
 //                   cycles; 0 = none, the default), so cores drift
 //   --crash B@C     board B crashes in the middle of its first Export that
-//                   begins at or after cycle C: once half the value's words
+//                   begins at or after cycle C of its first data channel (by
+//                   id: the radar's RadarMap): once half the value's words
 //                   are stored, the core is frozen for good (its Actual is
-//                   never stored).  The checks expect it.
+//                   never stored).  The checks expect it: the ages of every
+//                   channel B produces count toward no verdict.
 //   --hang B@C      board B freezes at cycle C without telling the checks
 //                   (the negative test of the liveness check)
 //   --age-scale X   check ages against X times the bound (negative test)
@@ -303,8 +305,11 @@ int main(int argc, char **argv)
     uint32_t crash_words = 0, crash_need = 0, crash_seq = 0;
     uint64_t crash_cycle = 0;
     const Producer *crash_prod = nullptr;
-    for (auto &p : producers)  // (not the mode request: it is not a data channel)
-        if (p.second.ch->src_board == o.crash_board && p.second.ch->id != plan.mode_request) crash_prod = &p.second;
+    // the board's first data channel by id (the radar: RadarMap, before its slow RadarScan);
+    // not the mode request: it is not a data channel
+    for (auto &p : producers)
+        if (!crash_prod && p.second.ch->src_board == o.crash_board && p.second.ch->id != plan.mode_request)
+            crash_prod = &p.second;
     if (o.crash_board >= 0 && !crash_prod)
         return usage(("--crash: board " + plan.board_names[o.crash_board] + " produces no copy channel").c_str());
     LocalClock clocks[NB];
@@ -407,7 +412,9 @@ int main(int argc, char **argv)
                     const uint64_t gap = s->ch->copy() ? producers[s->ch->id].gap_so_far(cycle) : 0;
                     int how = 0;
                     if (modes.bound_at(*s->ch, gap, t_load, bound, &how)) {
-                        s->judge(age, bound, k, o.age_scale, crash_prod && crash_prod->ch == s->ch, how == 2);
+                        // (every channel of a crashing producer's board counts toward no verdict: its ages grow)
+                        s->judge(age, bound, k, o.age_scale, crash_prod && s->ch->src_board == crash_prod->ch->src_board,
+                                 how == 2);
                         s->settling += how == 1;
                         s->comeback += how == 2;
                     } else

@@ -47,7 +47,10 @@ void ModeTrack::request(uint64_t now)
 void ModeTrack::published(int m, uint32_t since)
 {
     ++mode_events;
-    if (m == 0 && switches.empty()) return;  // the start-up mode (its since: the first cycle)
+    // the start-up mode (its since: the first cycle, before any switch), also
+    // when imported after a switch (published before it: a Mode published
+    // once in many minor cycles, or delayed by faults, reaches a board late)
+    if (m == 0 && (switches.empty() || since < uint32_t(switches[0].time))) return;
     for (ModeSwitch &s : switches)
         if (s.to == m && uint32_t(s.time) == since) {
             s.published = true;

@@ -74,11 +74,11 @@ std::string series_report(const std::vector<Series> &series, const Plan &plan)
          .raw("import_cycles", s.import_cycles.json()).raw("termination", termination_json(s.term));
         append(js, e);
     }
-    // The slow channels (a guaranteed period of 10 ms or more), in ms: the
+    // The slow channels (a guaranteed period of 1 ms or more), in ms: the
     // worst judged age against the bound in force at that Import.
     const double ms = 1e3 / plan.clock_hz;
     for (const Series &s : series) {
-        if (double(s.ch->period) < plan.clock_hz / 100) continue;
+        if (double(s.ch->period) < plan.clock_hz / 1000) continue;
         std::printf("  slow channel %s at %s: period %.2f ms, latency bound %.2f ms; %llu New, %llu ages judged",
                     s.ch->name.c_str(), plan.board_names[s.board].c_str(), double(s.ch->period) * ms,
                     double(s.ch->latency_retry) * ms, (unsigned long long)s.news, (unsigned long long)s.judged_age.n);
