@@ -29,15 +29,16 @@
 //     and the current value's taken_at, written with time_o in the clock a
 //     New value is chosen (the datapath's taken_at stores read it back from
 //     the RAM).
-//   * Fragments (HAS_FRAGMENTS): a second state RAM keeps, per channel id,
-//     the progress of a value carried in fragments (its next word; 0 or W:
-//     none)
-//     and each destination's picked buffer, written at a slot's end where
-//     the progress changes and cleared with the rest after reset (a value cut by a reset restarts
-//     with a fresh Import; nothing partial is published).  The source buffer
-//     held is the ReadLocked copy, and the destinations still in the value
-//     are the need field.  A slot that ends with its value going on counts
-//     only the destinations it dropped as abandoned.
+//   * Fragments (HAS_FRAGMENTS): the state word also keeps the progress of
+//     a value carried in fragments (its next word; 0 or W: none), written
+//     at a slot's end where it changes and cleared with the rest after
+//     reset (a value cut by a reset restarts with a fresh Import; nothing
+//     partial is published); a mode switch keeps it (the value goes on
+//     whole when its channel next runs).  The source buffer held is the
+//     ReadLocked copy, the destinations still in the value are the need
+//     field and their picked buffers the tried field.  A slot that ends
+//     with its value going on counts only the destinations it dropped as
+//     abandoned.
 //   * The datapath's rules (order, retries, drop, cut-off) are in
 //     rtl/albatross_transfer_fsm.v.  A destination it published leaves need; at
 //     the slot's end each destination still in need counts as abandoned, and
@@ -94,9 +95,11 @@ module albatross_controller #(
 
     localparam AW      = ADDR_WIDTH;
     localparam CH_BITS = (N_CHAN > 1) ? $clog2(N_CHAN) : 1;
-    localparam ST_W    = 12 + 4 + 3 + 32;               // {tried, need, rl, taken}
+    localparam ST_W    = 12 + 12 + 4 + 3 + 32;          // {progress, tried, need, rl, taken}
     // The state RAM has at least 32 words from N_CHAN = 4 up (Yosys maps a RAM
-    // of only a few words to flip-flops; 32 x 51 bits is block RAM), a power
+    // of only a few words to flip-flops; 32 x 63 bits is block RAM, 4 iCE40
+    // RAM blocks of 16 bits as 51 bits were; without HAS_FRAGMENTS the
+    // progress field is never written nor read), a power
     // of two above 32; fewer channels (the formal harness) keep N_CHAN words.
     localparam ST_DEPTH = (N_CHAN > 32) ? (1 << CH_BITS) : (N_CHAN >= 4) ? 32 : N_CHAN;
     localparam ST_AW    = (ST_DEPTH > 1) ? $clog2(ST_DEPTH) : 1;
@@ -176,12 +179,13 @@ module albatross_controller #(
     // is what st_d holds after reset (its sources are reset).
     wire              st_wr   = !ready_q || slot_end || tr_new;
     wire [ST_AW-1:0]  st_wa   = ready_q ? st_ix : clr_ix;
-    wire              wr_exp, wr_imp, wr_tkn;
+    wire              wr_exp, wr_imp, wr_tkn, wr_frg;
     always @(posedge clk_i) begin
         if (st_wr) begin
             if (wr_tkn) st_mem[st_wa][31:0]  <= st_d[31:0];
             if (wr_imp) st_mem[st_wa][34:32] <= st_d[34:32];
             if (wr_exp) st_mem[st_wa][50:35] <= st_d[50:35];
+            if (wr_frg) st_mem[st_wa][62:51] <= st_d[62:51];
         end else begin
             st_q <= st_mem[st_ix];
         end
@@ -191,28 +195,19 @@ module albatross_controller #(
     wire [2:0]  st_rl    = st_q[34:32];
     wire [31:0] st_taken = st_q[31:0];
 
-    // Fragments: {buffers, progress} per channel, a RAM of its own beside
-    // the other fields (same addresses, same read and write clocks).
-    wire [11:0] st_prog, st_buf, tr_prog, tr_buf;
+    // Fragments: the progress, a field of the state word written where it
+    // changes (wr_frg); a later fragment's destination buffers are the
+    // tried field (the picks of the value's first fragment).
+    wire [11:0] st_prog, tr_prog;
     wire        tr_prog_wr;
-    wire        wr_frg = !ready_q || (slot_end && tr_prog_wr);
     generate
         if (HAS_FRAGMENTS != 0) begin : g_frag_state
-            reg [23:0] fr_mem [0:ST_DEPTH-1];
-            reg [23:0] fr_q;
-            always @(posedge clk_i) begin
-                if (st_wr) begin
-                    if (wr_frg) fr_mem[st_wa] <= {tr_buf, tr_prog};   // (clearing: tr_prog is 0 after reset)
-                end else begin
-                    fr_q <= fr_mem[st_ix];
-                end
-            end
-            assign st_prog = fr_q[11:0];
-            assign st_buf  = fr_q[23:12];
+            assign st_prog = st_q[62:51];
+            assign wr_frg  = !ready_q || (slot_end && tr_prog_wr);   // (clearing: tr_prog is 0 after reset)
         end else begin : g_no_frag_state
             assign st_prog = 12'd0;
-            assign st_buf  = 12'd0;
-            wire unused_frag = &{1'b0, tr_prog, tr_buf, wr_frg};
+            assign wr_frg  = 1'b0;
+            wire unused_frag = &{1'b0, st_q[62:51], tr_prog_wr};
         end
     endgenerate
 
@@ -243,7 +238,7 @@ module albatross_controller #(
         .src_board_i(src_board), .src_base_i(src_base), .dst_board_i(dst_board), .dst_base_i(dst_base),
         .slot_time_i(slot_time), .may_access_i(may_access), .drop_run_i(drop_run),
         .st_rl_i(st_rl), .st_need_i(st_need), .st_tried_i(st_tried), .st_taken_i(st_taken),
-        .st_prog_i(st_prog), .st_buf_i(st_buf), .prog_o(tr_prog), .prog_wr_o(tr_prog_wr), .buf_o(tr_buf), .mid_o(tr_mid), .gone_o(tr_gone),
+        .st_prog_i(st_prog), .prog_o(tr_prog), .prog_wr_o(tr_prog_wr), .mid_o(tr_mid), .gone_o(tr_gone),
         .status_i(tr_status), .status_valid_i(tr_status_valid), .index_o(tr_index),
         .done_o(tr_done), .imp_run_o(tr_imp), .exp_run_o(tr_exp), .new_o(tr_new), .rl_o(tr_rl),
         .need_o(tr_need), .tried_o(tr_tried),
@@ -278,6 +273,7 @@ module albatross_controller #(
         st_d[34:32] = tr_rl;
         st_d[38:35] = tr_need;
         st_d[50:39] = tr_tried;
+        st_d[62:51] = tr_prog;
     end
     assign wr_exp = !ready_q || (slot_end && tr_exp);
     assign wr_imp = !ready_q || (slot_end && tr_imp);

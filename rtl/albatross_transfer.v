@@ -23,7 +23,8 @@
 //     source buffer is the held one (st_rl_i, whose ReadLocked the first
 //     fragment stored and nothing changes until the value ends), the
 //     destinations are those still in the value (st_need_i) and their
-//     buffers are the picked ones (st_buf_i).  After a fragment that is not
+//     buffers are the picked ones (st_tried_i: a destination's buffer
+//     picked is its buffer tried, tried_o).  After a fragment that is not
 //     the last: need_o = the destinations still in the value (a dropped one
 //     stays out of it), no taken_at, Slot or Actual store (nothing
 //     published).  The last fragment: taken_at, (Slot,) Actual as above.  A
@@ -67,10 +68,9 @@ module albatross_transfer #(
     // the channel's state (state RAM, valid at go_i and through the slot)
     input  wire [2:0]              st_rl_i,        // ReadLocked copy / four-slot L (0 unknown)
     input  wire [3:0]              st_need_i,      // destinations that still need the current value
-    input  wire [11:0]             st_tried_i,     // buffers of failed Actual stores (0 none), d at [3d +: 3]
+    input  wire [11:0]             st_tried_i,     // buffers tried: picked, Actual (four-slot: Slot) store made (0 none), d at [3d +: 3]
     input  wire [31:0]             st_taken_i,     // taken_at of the current value
     input  wire [11:0]             st_prog_i,      // fragments: the next word of the value (0: its first fragment)
-    input  wire [11:0]             st_buf_i,       // fragments: each destination's picked buffer, d at [3d +: 3]
     // STATUS words
     input  wire [31:0]             status_i,
     input  wire                    status_valid_i,
@@ -84,8 +84,7 @@ module albatross_transfer #(
     output wire [3:0]              need_o,         // destinations still in need after the Export
     output wire [11:0]             tried_o,
     output wire [11:0]             prog_o,         // fragments: the progress after the slot
-    output wire                    prog_wr_o,      // fragments: prog_o and buf_o changed (else the state keeps them)
-    output wire [11:0]             buf_o,          // fragments: the picked buffers, d at [3d +: 3]
+    output wire                    prog_wr_o,      // fragments: prog_o changed (else the state keeps it)
     output wire                    mid_o,          // fragments: the value goes on (prog_o != 0)
     output wire [3:0]              gone_o,         // fragments: destinations dropped in a fragment not the last
     output wire [2:0]              transfers_o,    // destinations published
@@ -121,14 +120,14 @@ module albatross_transfer #(
     albatross_transfer_fsm u_fsm (
         .clk_i(clk_i), .rst_i(rst_i), .go_i(go_i), .copy_i(copy_i), .time_kind_i(time_kind_i), .four_i(four_i),
         .request_i(request_i), .active_i(active_i), .may_access_i(may_access_i), .drop_run_i(drop_run_i),
-        .st_rl_i(st_rl_i), .st_need_i(st_need_i), .st_tried_i(st_tried_i), .st_buf_i(st_buf_i),
+        .st_rl_i(st_rl_i), .st_need_i(st_need_i), .st_tried_i(st_tried_i),
         .status_i(status_i), .status_valid_i(status_valid_i),
         .cont_i(cont), .last_wd_i(last_wd), .lastf_i(lastf), .mid_i(mid),
         .start_o(start), .take_o(take), .cont_q_o(cont_q), .fdone_o(fdone), .pubph_o(pubph), .need_any_o(need_any),
         .dst_o(dst), .src_act_o(src_act), .src_rl_o(src_rl), .src_word_o(src_word), .dst_word_o(dst_word),
         .dst_tkn_o(dst_tkn), .dst_slot_o(dst_slot), .dst_fin_o(dst_fin), .d_o(d), .ald_o(ald), .buf_d_o(buf_d),
         .word_o(word), .done_o(done_o), .imp_run_o(imp_run_o), .exp_run_o(exp_run_o), .new_o(new_o), .rl_o(rl_o),
-        .need_o(need_o), .gone_o(gone_o), .tried_o(tried_o), .buf_o(buf_o), .transfers_o(transfers_o),
+        .need_o(need_o), .gone_o(gone_o), .tried_o(tried_o), .transfers_o(transfers_o),
         .corrupt_o(corrupt_o), .mode_req_o(mode_req_o), .mode_req_mode_o(mode_req_mode_o),
         .cyc_o(cyc_o), .dat_i(dat_i), .ack_i(ack_i), .err_i(err_i));
 

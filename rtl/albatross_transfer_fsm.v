@@ -44,9 +44,11 @@
 //     cut-off (the slot ends).  A destination access failing K = drop_run_i
 //     (below 2: 2) times in a row drops that destination for the slot (the
 //     next access follows in the clock after the K-th failure).  Source
-//     accesses are retried until the deadline.  A failed Actual store
-//     remembers the buffer it tried (st_tried_i / tried_o); four-slot, the
-//     Slot store remembers it (a cut-off or a drop may come before Actual).
+//     accesses are retried until the deadline.  A destination's buffer
+//     picked is its buffer tried (st_tried_i / tried_o), from its control
+//     load until its Actual store is answered: a failed Actual store, or a
+//     cut-off or a drop after its (four-slot) Slot store, leaves it for the
+//     next control load to recognise.
 //   * Timing: every access begins in the clock after an edge where
 //     may_access_i is 1, in the clock after the previous ack (no idle bus
 //     clock inside a transfer); go_i's first access is on the bus in the
@@ -56,7 +58,7 @@
 //   * Fragments (albatross_transfer_frag: cont_i, last_wd_i, lastf_i,
 //     mid_i): at go_i, cont_i (a later fragment) starts with the source
 //     word load from the held buffer (st_rl_i) into the picked buffers
-//     (st_buf_i) of the destinations still in the value (st_need_i): no
+//     (st_tried_i) of the destinations still in the value (st_need_i): no
 //     Import, no control load.  A word store ending with last_wd_i and not
 //     lastf_i ends the slot (fdone_o: nothing published); with lastf_i the
 //     publication begins (pubph_o).  need_o after a value that goes on
@@ -77,7 +79,7 @@ module albatross_transfer_fsm (
     // the channel's state (state RAM, valid at go_i and through the slot)
     input  wire [2:0]  st_rl_i,
     input  wire [3:0]  st_need_i,
-    input  wire [11:0] st_tried_i, st_buf_i,
+    input  wire [11:0] st_tried_i,
     input  wire [31:0] status_i,       // STATUS words
     input  wire        status_valid_i,
     // albatross_transfer_frag: a later fragment (at go_i), the slot's words'
@@ -99,7 +101,7 @@ module albatross_transfer_fsm (
     output wire        done_o, imp_run_o, exp_run_o, new_o,
     output wire [2:0]  rl_o,
     output wire [3:0]  need_o, gone_o,
-    output wire [11:0] tried_o, buf_o,
+    output wire [11:0] tried_o,
     output wire [2:0]  transfers_o, corrupt_o,
     output wire        mode_req_o,
     output wire [3:0]  mode_req_mode_o,
@@ -246,7 +248,7 @@ module albatross_transfer_fsm (
             end else start_export;
         end else if (err_i && stb_q) begin
             // A failed access: cyc low for a clock; count the run of a
-            // destination access; a failed Actual store: buffer tried.
+            // destination access.
             stb_q   <= 1'b0;
             retry_q <= 1'b1;
             drop_q  <= dst && run_inc == k_run;
@@ -349,16 +351,16 @@ module albatross_transfer_fsm (
     // albatross_transfer_dest, written with explicit enables: the events of
     // the current destination d_q, in the branch of the main block they belong to.
     assign     e_start  = (go_i && (!copy_i || cont)) || (nrm && choose && need_now != 4'd0);
-    // e_tried: d's Actual store failed, or (four-slot) its Slot store is on the bus.
-    wire       e_tried  = !go_i && stb_q && ((err_i && fin_st) || state_q == S_DST_SLOT);
-    wire       e_ctrl   = nrm && adv && ctrl_ld;
+    // e_pick: d's control load picks its buffer (unless its Slot byte names
+    // the buffer tried: then that buffer stays, landed or complete).  A
+    // later fragment's buffers are the first fragment's picks (st_tried_i).
+    wire       e_pick   = nrm && ack && ctrl_ld && !t_done;
     wire       e_fin    = nrm && ack && fin_st;
-    wire       no_tried = (go_i && !cont) || new_q;    // a fresh value: no failed store of it
+    wire       no_tried = (go_i && !cont) || new_q;    // a fresh value: no store of it, no pick
     albatross_transfer_dest u_dest (
-        .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start), .ld_buf_i(go_i && cont), .st_buf_i(st_buf_i),
-        .st_tried_i(st_tried_i), .fresh_i(no_tried), .d_i(d_q), .set_tried_i(e_tried),
-        .clr_tried_i((e_ctrl && ack && !complete) || e_fin), .set_buf_i(e_ctrl), .pick_i(t_done ? tried_d : pick),
-        .buf_d_o(buf_d), .tried_d_o(tried_d), .tried_o(tried_o), .buf_o(buf_o));
+        .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start), .st_tried_i(st_tried_i), .fresh_i(no_tried), .d_i(d_q),
+        .set_pick_i(e_pick), .clr_i(e_fin), .pick_i(pick), .tried_d_o(tried_d), .tried_o(tried_o));
+    assign     buf_d    = tried_d;                     // d's buffer picked is its buffer tried
 
     // ------------------------------------------------------------ the word stored
     // word_q: the word the stores write, taken when the first store begins:

@@ -4,4 +4,4 @@
 # Actual store was not made, and picks a buffer as for a new value: the next
 # slot completes the same value a second time.  Must fail dst_new_once.
 s/    wire       complete = ack \&\& ctrl_ld \&\& t_done \&\& !t_act;/    wire       complete = 1'b0 \&\& ack \&\& ctrl_ld \&\& t_done \&\& !t_act;/
-s/\.pick_i(t_done ? tried_d : pick)/.pick_i(pick)/
+s/    wire       e_pick   = nrm \&\& ack \&\& ctrl_ld \&\& !t_done;/    wire       e_pick   = nrm \&\& ack \&\& ctrl_ld;/

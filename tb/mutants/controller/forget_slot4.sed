@@ -8,4 +8,4 @@
 # and by the controller-top proof's dst_new_once
 # (test-formal-ctrl-negative-forget_slot4).
 s/    wire       complete = ack \&\& ctrl_ld \&\& t_done \&\& !t_act;/    wire       complete = 1'b0 \&\& ack \&\& ctrl_ld \&\& t_done \&\& !t_act;/
-s/\.pick_i(t_done ? tried_d : pick)/.pick_i(pick)/
+s/    wire       e_pick   = nrm \&\& ack \&\& ctrl_ld \&\& !t_done;/    wire       e_pick   = nrm \&\& ack \&\& ctrl_ld;/
