@@ -15,7 +15,8 @@
 //     progress: frag_i is not needed yet, it comes from the ROM after go_i)
 //     and a destination of the entry still in it (need_any_i).  last_wd_o
 //     (read where a word store ends, from 2 clocks after go_i): the slot's
-//     words end, at p + F or at W; lastf_o: at W, the value is whole.
+//     words end, its F-th word taken (a count of the slot's words, so at
+//     p + F) or word W - 1; lastf_o: at W, the value is whole.
 //   * After the slot (with done): mid_o, the value goes on (a fragment not
 //     the last done, fdone_i, or a later fragment, cont_q_i, cut before its
 //     publication began, pubph_i, with a destination still in it,
@@ -56,16 +57,19 @@ module albatross_transfer_frag #(
 );
 
     reg  [11:0] k_q;
+    reg  [11:0] n_q;                  // the words taken in this slot
 
     wire        cont     = HAS_FRAGMENTS != 0 && copy_i && !request_i && st_prog_i != 12'd0 && st_prog_i < words_i &&
                            need_any_i;
-    wire        fr_on    = HAS_FRAGMENTS != 0 && copy_i && !request_i && frag_i != 12'd0;
-    wire [11:0] f_end    = ({12{cont_q_i}} & st_prog_i) + frag_i;   // p + F (a fragment's end unless W comes first)
+    // A fragment ends when it has taken F words (n_q, from 1 after the first
+    // take; F = 0: never, n_q <= W < 2^12), or at W.
+    wire        fr_on    = HAS_FRAGMENTS != 0 && copy_i && !request_i;
     wire        lastf    = k_q == words_i;                          // (at last_wd: the value's last word is taken)
-    wire        last_wd  = lastf || (fr_on && k_q == f_end);
+    wire        last_wd  = lastf || (fr_on && n_q == frag_i);
 
     // (reset: 0, the progress the state RAM's clearing writes)
     always @(posedge clk_i) if (rst_i) k_q <= 12'd0; else if (go_i && cont) k_q <= st_prog_i; else if (start_i || go_i) k_q <= 12'd0; else if (take_i) k_q <= k_q + 12'd1;
+    always @(posedge clk_i) if (go_i) n_q <= 12'd0; else if (take_i) n_q <= n_q + 12'd1;
 
     assign cont_o    = cont;
     assign k_o       = k_q;
