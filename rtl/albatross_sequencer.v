@@ -183,15 +183,9 @@ module albatross_sequencer #(
     reg                last_q;        // the entry that runs is its mode's last (from FETCH clock 6 on)
     reg                ent0_q;        // the entry that runs is entry 0 (from FETCH clock 6 on)
     reg                bad_q;         // the entry being fetched is invalid
-    reg                switched_q;    // the boundary of the last clock took a loaded mode
-    reg [31:0]         since_q;       // the first clock of the running mode's first cycle
     reg [31:0]         slot_time_q;
     reg                err_q;         // the start-up CRC failed
-    reg [15:0]         rerr_q;
-    reg [15:0]         cycles_q;
     reg                cycle_q1;      // cycle_o
-    reg                e7_rd_q, e7_q; // E7 of the running entry: read now / in rom_q now
-    reg [11:0]         frag_q;        // E7.frag of the running entry
 
     // ------------------------------------------------------------ ROM and its read port
     wire               start_now = state_q == ST_WAIT && next_rel_q > {1'b0, start_q};   // rel >= start: clock S (late only after an overrun)
@@ -213,6 +207,8 @@ module albatross_sequencer #(
     wire [7:0]         ent_inc   = ent_q + 8'd1;
     wire               last_ent  = ent_inc == m_end;
     wire               pass_done, crc_ok, mism_new, bad_mark;   // (the ROM check, below)
+    wire               e7_rd;         // E7 of the entry that runs is read now (u_fields, below) ...
+    wire [7:0]         e7_ent;        // ... at {e7_ent, 011}
     // E6 of entry 0 ({ent_q + 1, 010}, ent_q 0 since reset) is read in the
     // clock after the start-up pass (its CRC compare; the check issues no read
     // then) and taken in the first clock of the first cycle: the due test needs
@@ -223,7 +219,7 @@ module albatross_sequencer #(
         .clk_i(clk_i), .time_i(time_q), .header_i(state_q == ST_HEADER && !hdr_last), .start_i(start_now),
         .fetch_i(state_q == ST_FETCH), .step_i(step_q), .ent_i(ent_q), .ent_inc_i(ent_inc), .last_i(last_ent),
         .first_i(m_first), .mode_rd_i(mode_rd), .mode_adr_i(mode_adr), .e6_i(mode_e6_rd || hdr_e6),
-        .e7_i(e7_rd_q && state_q == ST_TRANSFER), .e7_ent_i(last_q ? m_end : ent_q),
+        .e7_i(e7_rd && state_q == ST_TRANSFER), .e7_ent_i(e7_ent),
         .bg_adr_i(bg_adr),
         .main_o(main_rom), .dat_o(rom_q));
 
@@ -239,12 +235,6 @@ module albatross_sequencer #(
     // waits for the cycle end, and the boundary waits for a load that has
     // begun (mode_hold).
     wire               mode_rd, mode_e1, mode_hold, mode_commit, mode_first_ld, mode_e6_rd, mode_e6;
-    // since: time_o in the first clock of a cycle whose boundary took a loaded
-    // mode (the start-up's first cycle too: the header's load of mode 0)
-    always @(posedge clk_i) begin
-        switched_q <= !rst_i && mode_commit;
-        if (switched_q) since_q <= time_q;
-    end
     wire               new_cycle;     // the cycle boundary (control, below)
     wire [ROM_AW-1:0]  mode_adr;
     wire [7:0]         m_first, m_end, m_next_first, m_drop;
@@ -288,7 +278,8 @@ module albatross_sequencer #(
         .mism_o(mism_new), .bad_o(bad_mark));
 
     // ------------------------------------------------------------ field checks at fetch
-    // The entry's fields, taken in the fetch clocks (rtl/albatross_entry_fields.v).
+    // The entry's fields, taken in the fetch clocks, and E7 of the entry that runs
+    // (rtl/albatross_entry_fields.v).
     wire [1:0]          kind;
     wire                sflag, four, request, mode_info;
     wire [6:0]          chan;
@@ -299,8 +290,9 @@ module albatross_sequencer #(
     wire [ADDR_WIDTH-1:0] sbase;
     wire [15:0]         dbrd;
     wire [4*ADDR_WIDTH-1:0] dbase;
-    albatross_entry_fields #(.ADDR_WIDTH(ADDR_WIDTH), .HAS_MODES(HAS_MODES)) u_fields (
-        .clk_i(clk_i), .fetch_i(state_q == ST_FETCH), .step_i(step_q), .rom_i(rom_q),
+    albatross_entry_fields #(.ADDR_WIDTH(ADDR_WIDTH), .HAS_MODES(HAS_MODES), .HAS_FRAGMENTS(HAS_FRAGMENTS)) u_fields (
+        .clk_i(clk_i), .rst_i(rst_i), .fetch_i(state_q == ST_FETCH), .step_i(step_q), .rom_i(rom_q),
+        .ent_inc_i(ent_inc), .go_i(go_now), .e7_rd_o(e7_rd), .e7_ent_o(e7_ent), .frag_o(frag_o),
         .kind_o(kind), .sync_o(sflag), .four_o(four), .request_o(request), .mode_info_o(mode_info),
         .chan_o(chan), .nd_o(nd), .words_o(words), .span_o(span), .src_board_o(sbrd), .src_base_o(sbase),
         .dst_board_o(dbrd), .dst_base_o(dbase));
@@ -348,21 +340,11 @@ module albatross_sequencer #(
         in_time_q <= {1'b0, next_rel_q[TB-1:0]} < end_q - MARGIN_T;
     end
 
-    // ------------------------------------------------------------ E7 of the running entry
-    // E7 is read in the first clock of the entry's transfer (the fetch's
-    // clocks are all taken; the entry + 1 is ent_q there, m_end after the
-    // mode's last), so frag_o is the ROM word in the clock after it, and
-    // holds it to the next transfer.
-    always @(posedge clk_i) begin
-        e7_rd_q <= !rst_i && HAS_FRAGMENTS != 0 && go_now;
-        e7_q    <= !rst_i && e7_rd_q;
-        if (e7_q) frag_q <= rom_q[ALB_ROM_E7_FRAG_LSB +: 12];
-    end
-    assign frag_o = HAS_FRAGMENTS == 0 ? 12'd0 : e7_q ? rom_q[ALB_ROM_E7_FRAG_LSB +: 12] : frag_q;
-    // Saturating counters: the carry out of the increment says the count is at its top.
-    wire        rerr_up  = mism_new | (entry_over && state_q == ST_FETCH && bad_q);
-    wire [16:0] rerr_inc = {1'b0, rerr_q} + 17'd1;   // (rerr_up enables it: the event is not on the carry chain)
-    wire [16:0] cyc_inc  = {1'b0, cycles_q} + 17'd1;
+    // rom_errors, cycles (saturating) and the running mode's since (rtl/albatross_seq_status.v).
+    albatross_seq_status u_status (
+        .clk_i(clk_i), .rst_i(rst_i), .err_i(mism_new | (entry_over && state_q == ST_FETCH && bad_q)),
+        .cycle_i(new_cycle), .commit_i(mode_commit), .time_i(time_q),
+        .rom_errors_o(rom_errors_o), .cycles_o(cycles_o), .since_o(mode_since_o));
 
     always @(posedge clk_i) begin
         cycle_q1 <= 1'b0;
@@ -371,13 +353,10 @@ module albatross_sequencer #(
             step_q    <= 3'd0;
             time_q    <= 32'd0;
             err_q     <= 1'b0;
-            rerr_q    <= 16'd0;
-            cycles_q  <= 16'd0;
             ent_q     <= 8'd0;            // (E6 of entry 0 is read as {ent_q + 1, 010})
         end else begin
             time_q    <= time_q + 32'd1;
             next_rel_q <= {1'b0, next_rel_q[TB-1:0]} + 1'b1;
-            if (rerr_up && !rerr_inc[16]) rerr_q <= rerr_inc[15:0];
             case (state_q)
                 ST_HEADER: if (enable_i || step_q != 3'd0) begin
                     step_q <= step_q + 3'd1;
@@ -434,7 +413,6 @@ module albatross_sequencer #(
                 prev_end_q  <= {(TB+1){1'b0}};
                 state_q     <= ST_WAIT;
                 cycle_q1    <= 1'b1;
-                if (!cyc_inc[16]) cycles_q <= cyc_inc[15:0];
             end
         end
     end
@@ -453,13 +431,10 @@ module albatross_sequencer #(
     assign four_o       = four;
     assign request_o    = request;
     assign mode_info_o  = mode_info;
-    assign mode_since_o = since_q;
     assign may_access_o = (state_q == ST_TRANSFER || go_now) && in_time_q;   // c + 1 + MARGIN <= D (D >= MIN_LEN > MARGIN)
     assign time_o       = time_q;
     assign cycle_o      = cycle_q1;
     assign error_o      = err_q || hdr_bad;
-    assign rom_errors_o = rerr_q;
-    assign cycles_o     = cycles_q;
     assign drop_run_o   = m_drop;
 
 endmodule

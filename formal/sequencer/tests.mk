@@ -20,7 +20,7 @@ FSBY_MUTANTS += sequencer:slot_late sequencer:deadline_late sequencer:start_bad_
                 sequencer:count_early:albatross_minor_cycles.v sequencer:count_stuck:albatross_minor_cycles.v
 FSBY_RTL_sequencer := rtl/albatross_sequencer.v rtl/albatross_schedule_rom.v rtl/albatross_rom_check.v \
                       rtl/albatross_entry_check.v rtl/albatross_mode_switch.v rtl/albatross_entry_fields.v rtl/albatross_sync_poll.v \
-                      rtl/albatross_minor_cycles.v rtl/albatross_header_check.v
+                      rtl/albatross_minor_cycles.v rtl/albatross_header_check.v rtl/albatross_seq_status.v
 
 # The ROM images of the proofs and their decoded fields, written by gen_rom.py with the
 # schedule compiler's encoder and CRC (sequencer.sby reads them from this folder).
