@@ -473,7 +473,7 @@ int main(int argc, char **argv)
             std::printf("  [%3llu%%] cycle %9llu  exports", (unsigned long long)(100 * cycle / o.cycles),
                         (unsigned long long)cycle);
             for (auto &p : producers) std::printf(" %s %llu", p.second.ch->name.c_str(), (unsigned long long)p.second.exports);
-            std::printf("  faults %llu  worst age/bound %.2f\n", (unsigned long long)faults, worst_pm / 1000.0);
+            std::printf("  faults %llu  worst age/bound %.3f\n", (unsigned long long)faults, worst_pm / 1000.0);
             std::fflush(stdout);
             next_progress += o.cycles / o.progress;
         }

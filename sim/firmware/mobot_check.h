@@ -6,6 +6,8 @@
  *   RadarShot      range_mm[0..1] = seq, [2..30] = mix words, [31] = rotate-xor sum
  *   RobotPosition  x = seq, y = mix(seq), heading = x ^ y ^ SALT
  *   MotorCommand   left/right = seq low/high half, flags = mix(seq) ^ SALT
+ *   RadarScanData, NavLogData (the slow channels, sim/mobot3_slow.toml)
+ *                  word k = seq << shift | k (slow_make, slow_ok0 below)
  * The all-zero start value of the RAM images counts as sequence 0 and is
  * accepted once, as the first New (the controller's cold-start Import
  * delivers it).  Exit code (TOHOST) = check | channel id << 4 | seq << 12:
