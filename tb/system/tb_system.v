@@ -161,7 +161,7 @@ module tb_system #(
     // has no port for it); the harness times every switch with it.
 `ifndef SYNTHESIS
     assign mode_o = u_sys.u_ctrl.mode;
-    assign cycle_o = u_sys.u_ctrl.cycle_start;
+    assign cycle_o = u_sys.u_ctrl.u_seq.cycle_o;   // the sequencer's port: the controller need not use it
 `else
     assign mode_o = 4'd0;
     assign cycle_o = 1'b0;
