@@ -42,9 +42,10 @@
 //     010}: the ROM's one incrementer), where the count steps if it wraps to
 //     the mode's first; last_q and ent0_q keep what the rest of the slot
 //     needs of the entry that runs.
-//   * E7 (HAS_FRAGMENTS): read in the first clock of the entry's transfer
-//     (a main read: the background check waits a clock), frag_o is its frag
-//     field from the clock after, held until the next transfer's.
+//   * E7 (HAS_FRAGMENTS; rtl/albatross_entry_fields.v): read in the first
+//     clock of the entry's transfer (a main read: the background check waits
+//     a clock), frag_o is its frag field from the clock after, held until the
+//     next transfer's.
 //   * Deadline D = cycle start + start + length.  may_access_o is high in a
 //     clock c of a slot when an access put on the bus in clock c+1 ends
 //     before D even if it times out: c + 1 <= D - TIMEOUT - 2.  go_o and
@@ -57,7 +58,7 @@
 //     poll port, and the next cycle starts in the clock after a poll's ack
 //     that shows a valid Actual other than sync_rl_i, or at cycle start + H1
 //     (a poll still on the bus is then dropped).  cycle_o pulses at each cycle
-//     start; cycles_o counts them (16-bit, saturating).
+//     start; cycles_o counts them (16-bit, saturating: rtl/albatross_seq_status.v).
 //   * Reset (synchronous) clears control state; RAMs are never reset.
 `default_nettype none
 
