@@ -537,8 +537,19 @@ int main(int argc, char **argv)
         fail("staleness", b);
     }
     // Schedule modes: check mode and the modes' part of staleness (sim/mobot_sim_modes.cpp).
+    // Navigation reports RadarMap stale at its first Import after the map's age
+    // passes MOBOT_RADAR_SCAN_CLOCKS + the latency (sim/firmware/mobot_check.h:
+    // 20,000 clocks, 100,000 in a build with the slow channels): a stay without
+    // it longer than that and two of navigation's longest gaps between those
+    // Imports must see a report (at least 50,000 clocks).
+    uint64_t long_run = 50000;
+    if (const PlanChannel *rm = plan.by_name("RadarMap"))
+        for (const Series &s : series)
+            if (s.ch == rm)
+                long_run = std::max<uint64_t>(long_run, (plan.by_name("RadarScan") ? 100000 : 20000) +
+                                                            rm->latency_retry + 2 * s.max_import_gap);
     for (const auto &f : modes.verdict(o, cycle, m->time_o, check_ages, cpu_failed, stale_in_mode,
-                                       crash_phase == 3 ? crash_cycle : 0))
+                                       crash_phase == 3 ? crash_cycle : 0, long_run))
         fail(f.first.c_str(), f.second);
     // The injected rate per access against the nominal one (tb/common/fault_model.h).
     const double rate_measured = requests ? double(faults) / double(requests) : 0;

@@ -161,10 +161,12 @@ struct ModeTrack {
     std::string report(const std::string &indent) const;    // the JSON array of switches
     // The failures (check, message) of check "mode" and of the modes' part of
     // "staleness" at the end of a run; judge_latency: a fault-free run;
-    // crash_cycle: a producer crashed then (0: none).
+    // crash_cycle: a producer crashed then (0: none); long_run: a stay without
+    // RadarMap longer than this must see navigation report it stale.
     std::vector<std::pair<std::string, std::string>> verdict(const Options &o, uint64_t cycle, uint64_t time_now,
                                                              bool judge_latency, bool cpu_failed,
-                                                             uint64_t stale_in_mode, uint64_t crash_cycle) const;
+                                                             uint64_t stale_in_mode, uint64_t crash_cycle,
+                                                             uint64_t long_run) const;
     // The console lines; the switch nearest its bound (latency, bound).
     void summary(uint64_t stale_in_mode, uint64_t &worst, uint64_t &worst_bound) const;
 };

@@ -133,13 +133,14 @@ std::string ModeTrack::report(const std::string &indent) const
 }
 
 // A mode without RadarMap long enough for navigation's threshold
-// (MOBOT_RADAR_SCAN_CLOCKS and the latency, about 20,500 clocks), entered
+// (MOBOT_RADAR_SCAN_CLOCKS and the latency, about 20,500 clocks; long_run), entered
 // before any crash, is seen stale; every switch came from a request within the compiler's
 // switch_latency of the mode it left, and reached the boards as Mode with
 // its time.
 std::vector<std::pair<std::string, std::string>> ModeTrack::verdict(const Options &o, uint64_t cycle, uint64_t time_now,
                                                                     bool judge_latency, bool cpu_failed,
-                                                                    uint64_t stale_in_mode, uint64_t crash_cycle) const
+                                                                    uint64_t stale_in_mode, uint64_t crash_cycle,
+                                                                    uint64_t long_run) const
 {
     std::vector<std::pair<std::string, std::string>> out;
     char b[512];
@@ -150,7 +151,7 @@ std::vector<std::pair<std::string, std::string>> ModeTrack::verdict(const Option
             const ModeSwitch &sw = switches[k];
             const uint64_t end = k + 1 < switches.size() ? switches[k + 1].time : time_now;
             // (after a crash of its producer the map is stale already: no new report)
-            if (!(sw.to < int(plan->modes.size()) && plan->modes[sw.to].carries(radar->id)) && end - sw.time > 50000 &&
+            if (!(sw.to < int(plan->modes.size()) && plan->modes[sw.to].carries(radar->id)) && end - sw.time > long_run &&
                 !(crash_cycle && sw.cycle >= crash_cycle))
                 ++long_absences;
         }

@@ -74,11 +74,14 @@ sim: $(SIM_BIN) $(foreach b,$(PB_BOARDS),$(SIM_FWDIR)/$(b).hex) $(SIM_SCHED)/tb_
 	@$(PYTHON) sim/plot_ages.py $(SIM_DIR)/ages.csv $(REPORTS)/sim.json $(SIM_DIR)/ages.svg
 
 # The slow channels (docs/robot.md "Slow channels"): the robot of make sim
-# (modes and sim/mobot3_slow.toml, fw-clock/) for 2,500,000 clocks (50 ms,
-# three scans delivered; no mode switch: cruise stays 60 ms), every check on,
-# the slow channels' ages judged against their bounds from start-up (a value
-# never delivered ages from 0) and navigation's quota holding three New scans,
-# odometry's one New log (--require-done).  Its negatives:
+# (modes and sim/mobot3_slow.toml, fw-clock/) for 4,500,000 clocks (90 ms:
+# scans delivered in the first cruise stay of about 62 ms, a stay in dock, and
+# 21 ms of cruise after it, where the values cut by the switch go on and the
+# ages are judged by the bound before it plus the time since), every check
+# on, the slow channels' ages judged against their bounds from start-up (a
+# value never delivered ages from 0) and navigation's quota holding three New
+# scans, odometry's one New log (--require-done).  Its negatives (2,500,000
+# clocks, no switch):
 #   sim-slow-negative-unpublished  RadarScan's destination at navigation never
 #                  published (--mute): caught by age (the start value's age
 #                  passes the bound at about 39 ms), freshness and liveness
@@ -88,9 +91,9 @@ sim: $(SIM_BIN) $(foreach b,$(PB_BOARDS),$(SIM_FWDIR)/$(b).hex) $(SIM_SCHED)/tb_
 #                  (navigation's word check, exit code 3 on RadarScan)
 SIM_SLOW        := $(BUILD)/schedule/mobot3-slow
 SIM_SLOW_FW     := $(PB_DIR)/mobot3-slow/fw-clock
-SIM_SLOW_CYCLES ?= 2500000
-sim_slow_args = $(call pb_args,$(SIM_SLOW),$(SIM_SLOW_FW),$(1),$(SIM_SLOW_FW)/navigation.hex) --cycles $(SIM_SLOW_CYCLES) \
-                --seed $(SEED) --require-done
+SIM_SLOW_CYCLES ?= 4500000
+SIM_SLOW_NEG_CYCLES ?= 2500000
+sim_slow_args = $(call pb_args,$(SIM_SLOW),$(SIM_SLOW_FW),$(1),$(SIM_SLOW_FW)/navigation.hex) --seed $(SEED) --require-done
 $(PB_DIR)/mutant/scan_torn/radar.elf: sim/mutants/scan_torn.sed sim/firmware/mobot_radar.c sim/firmware/mobot_check.h \
         $(SIM_SLOW)/rom.hex $(FW_DEPS) $(PB_CLOCK_DEPS)
 	@$(DRV_RV_NEED)
@@ -104,15 +107,15 @@ SIM_SLOW_DEPS = $(PB_BIN) $(foreach b,$(PB_BOARDS),$(SIM_SLOW_FW)/$(b).hex) $(SI
 TESTS += sim-slow sim-slow-negative-unpublished sim-slow-negative-torn
 .PHONY: test-sim-slow test-sim-slow-negative-unpublished test-sim-slow-negative-torn
 test-sim-slow: $(SIM_SLOW_DEPS)
-	@tools/run_test.sh sim-slow $(PB_BIN) $(call sim_slow_args,$(SIM_SLOW_FW)/radar.hex) --label sim-slow \
-	    --report $(REPORTS)/sim_slow.json
+	@tools/run_test.sh sim-slow $(PB_BIN) $(call sim_slow_args,$(SIM_SLOW_FW)/radar.hex) --cycles $(SIM_SLOW_CYCLES) \
+	    --min-switches 2 --label sim-slow --report $(REPORTS)/sim_slow.json
 test-sim-slow-negative-unpublished: $(SIM_SLOW_DEPS)
 	@tools/run_test.sh sim-slow-negative-unpublished $(PB_BIN) $(call sim_slow_args,$(SIM_SLOW_FW)/radar.hex) \
-	    --mute RadarScan@navigation --label sim-slow-negative-unpublished --expect-caught-by age,freshness,liveness \
+	    --cycles $(SIM_SLOW_NEG_CYCLES) --mute RadarScan@navigation --label sim-slow-negative-unpublished --expect-caught-by age,freshness,liveness \
 	    --report $(REPORTS)/sim_slow_negative_unpublished.json
 test-sim-slow-negative-torn: $(SIM_SLOW_DEPS) $(PB_DIR)/mutant/scan_torn/radar.hex
 	@tools/run_test.sh sim-slow-negative-torn $(PB_BIN) $(call sim_slow_args,$(PB_DIR)/mutant/scan_torn/radar.hex) \
-	    --label sim-slow-negative-torn --expect-caught-by cpu --report $(REPORTS)/sim_slow_negative_torn.json
+	    --cycles $(SIM_SLOW_NEG_CYCLES) --label sim-slow-negative-torn --expect-caught-by cpu --report $(REPORTS)/sim_slow_negative_torn.json
 
 # Whole-system simulation speed, Verilator against Icarus Verilog (one run each).
 SIM_ICARUS  := $(PB_DIR)/icarus/pico_boards_tb.vvp
