@@ -16,7 +16,7 @@ period is tried: the planner places everything with it)."""
 from __future__ import annotations
 
 from .model import ScheduleError, System, us
-from .multirate import MAX_REP, Attempt, attempt, minor_clocks
+from .multirate import MAX_REP, Attempt, attempt, fragmentable, item_for, minor_clocks, usable
 from .plan import slot_length
 
 # The exact search's deterministic time in all, the candidate minor cycles
@@ -77,7 +77,7 @@ def reject(system: System, tries: list, skip: int, out_of_budget: bool) -> Multi
     for t in tries[:6]:
         lines.append(f"minor cycle {t.minor} clocks ({us(t.minor, hz):g} us): {t.reason}")
     more = f" (and {len(tries) - 6} more)" if len(tries) > 6 else ""
-    fix = relax_hint(system, best, skip) if best is not None else ""
+    fix = relax_hint(system, best, skip) if best is not None else room_hint(system, tries, skip)
     if proof:
         return MultiRateRejection(
             [f"{src}: infeasible plan (proof on the grid): {proof}; the planner, which may also split values into "
@@ -87,6 +87,39 @@ def reject(system: System, tries: list, skip: int, out_of_budget: bool) -> Multi
         [f"{src}: no plan found: the multi-rate planner gave up without a proof ({why}; the demand, "
          f"{100 * demand(system):.1f} % of the bus, is not above it): " + "; ".join(lines) + more + ". " + fix],
         "gave-up")
+
+
+def room_hint(system: System, tries: list, skip: int) -> str:
+    """What would make it fit when no candidate minor cycle holds every
+    channel's slot, however finely its value is split: the minor cycle the
+    longest such slot needs beside the others' skip costs, and where that
+    slot's clocks go (its retry budget under a fault hypothesis)."""
+    bus, hz = system.bus, system.clock_hz
+    m = max((t.minor for t in tries), default=None)
+    if m is None:
+        return ""
+    others = skip * (len(system.channels) - 1) + (m - usable(system, m))
+
+    def smallest(ch):
+        return item_for(ch, bus, m, ch.words if fragmentable(ch) else 1).length
+    ch = max(system.channels, key=smallest)
+    length = smallest(ch)
+    need = length + others
+    top = (1 << bus.time_bits) - 1
+    budget = bus.retry_budget_of(ch)
+    why = (f"channel '{ch.name}''s slot needs at least {length} clocks even in fragments of one word "
+           f"({budget} of them its retry budget of {bus.retries_of(ch)} retries"
+           + (", sized for the fault hypothesis" if system.faults is not None else "") + ")")
+    faults = (" or plan for a milder fault hypothesis (a smaller retry budget)"
+              if system.faults is not None else f" or give '{ch.name}' fewer retries")
+    if need > top:
+        return (f"To fit: {why}, more than a minor cycle can hold beside the others' skip costs ({top} clocks "
+                f"at most): shrink that slot: fewer destinations{faults}")
+    need_us = -(-need * 1_000_000 // hz)
+    if minor_clocks(system) is not None:
+        return (f"To fit: {why}: raise [bus] minor_cycle_us to at least {need_us} us ({need} clocks){faults}")
+    return (f"To fit: {why}, and the shortest max_period_us allows minor cycles of at most {m} clocks: relax "
+            f"the shortest periods to at least {need_us} us{faults}")
 
 
 def relax_hint(system: System, best: Attempt, skip: int) -> str:

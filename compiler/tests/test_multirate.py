@@ -14,6 +14,7 @@ cost.  Cost: a few seconds."""
 
 import dataclasses
 import json
+import re
 import random
 import unittest
 from unittest import mock
@@ -117,7 +118,8 @@ def period_oracle(rep):
             out.append(f"{ch['name']}: no run")
             continue
         f = ch["fragments"]
-        ext = runs + [r + span for r in runs] + [r + 2 * span for r in runs]
+        # enough turns of the cluster for the F-th successor of every run (F may exceed the runs of one turn)
+        ext = [r + k * span for k in range(2 + f // len(runs)) for r in runs]
         worst = max(ext[i + f] - ext[i] for i in range(len(runs)))
         if worst > ch["max_period"]["clocks"]:
             out.append(f"{ch['name']}: {f} runs span {worst} > max_period {ch['max_period']['clocks']}")
@@ -337,6 +339,23 @@ class Overrides(unittest.TestCase, Checks):
         with self.assertRaises(ScheduleError) as cm:
             plan_of(system("wide", self.ROBOT, bus={"minor_cycle_us": 2000}))
         self.assertIn("a minor cycle is 1 .. 65535 clocks", "\n".join(cm.exception.messages))
+
+    def test_no_minor_cycle_holds_a_slot_names_the_one_that_would(self):
+        # a fault hypothesis sizes the big value's retry budget (kept by each
+        # fragment's slot) past the fixed minor cycle of 8 us
+        data = system("budget", [chan("fast", 8, "a", ["b"], 50), chan("big", 512, "a", ["b"], 10_000)],
+                      bus={"minor_cycle_us": 4})
+        data["faults"] = {"rate": 0.05, "probability": 0.999999}
+        with self.assertRaises(ScheduleError) as cm:
+            plan_of(data, redundancy=False)
+        msg = "\n".join(cm.exception.messages)
+        self.assertRegex(msg, r"To fit: channel 'big''s slot needs at least \d+ clocks even in fragments of one word "
+                         r"\(\d+ of them its retry budget of \d+ retries, sized for the fault hypothesis\): raise "
+                         r"\[bus\] minor_cycle_us to at least \d+ us", msg)
+        need_us = int(re.search(r"minor_cycle_us to at least (\d+) us", msg).group(1))
+        data["bus"]["minor_cycle_us"] = need_us
+        s, plan, rom, rep = plan_of(data, redundancy=False)
+        self.assert_plan_ok(s, plan, rom, rep)
 
     def test_fixed_repetition_is_honoured(self):
         chans = [dict(self.ROBOT[0]), dict(self.ROBOT[1], max_period_us=1000, repetition=4)]
