@@ -356,7 +356,9 @@ module albatross_transfer_fsm (
     // later fragment's buffers are the first fragment's picks (st_tried_i).
     wire       e_pick   = nrm && ack && ctrl_ld && !t_done;
     wire       e_fin    = nrm && ack && fin_st;
-    wire       no_tried = (go_i && !cont) || new_q;    // a fresh value: no store of it, no pick
+    // a fresh value: no store of it, no pick (at go_i: all but a later
+    // fragment, whose picks come in; at the choice: New)
+    wire       no_tried = go_i ? !cont : new_q;
     albatross_transfer_dest u_dest (
         .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start), .st_tried_i(st_tried_i), .fresh_i(no_tried), .d_i(d_q),
         .set_pick_i(e_pick), .clr_i(e_fin), .pick_i(pick), .tried_d_o(tried_d), .tried_o(tried_o));
