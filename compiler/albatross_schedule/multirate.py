@@ -64,6 +64,10 @@ PACK_BUDGET = 600
 MAX_CANDIDATES = 24
 
 
+# The further splits of a fragmented entry tried for room for redundant entries.
+FINER_STEPS = 3
+
+
 def floor_pow2(x: int) -> int:
     """The largest power of two <= x (0 when x < 1)."""
     return 1 << (int(x).bit_length() - 1) if x >= 1 else 0
@@ -397,7 +401,44 @@ def build_multirate_plan(system: System) -> Plan:
     if found is None:
         from .rejection import reject
         raise reject(system, tries, skip, budget[0] <= 0)
-    return make_plan(system, found, skip)
+    return make_plan(system, finer_for_redundancy(system, found, skip, runs), skip)
+
+
+def _redundant_entries(system: System, a: Attempt, skip: int) -> int:
+    from .spare import add_redundancy
+    entries = [(i, b, s, False) for i, b, s in a.placed]
+    add_redundancy(system, a.items, entries, list(a.ends), a.cap, skip,
+                   getattr(system, "entry_cap", None) or MAX_ENTRIES)
+    return len(entries) - len(a.placed)
+
+
+def finer_for_redundancy(system: System, a: Attempt, skip: int, runs=None) -> Attempt:
+    """The placement split only as far as it must be leaves the busiest
+    minor cycle (the one a large fragment runs in) with little room for the
+    skip cost of the redundant entries, which every minor cycle pays: split
+    the longest fragmented entry further (up to FINER_STEPS times) while
+    that lets more redundant entries in, and keep the plan with the most
+    (the fewest fragments among equals)."""
+    best, best_red = a, _redundant_entries(system, a, skip)
+    items = list(a.items)
+    for _ in range(FINER_STEPS):
+        split = [i for i in range(len(items)) if items[i].frag and items[i].fragments < items[i].ch.words]
+        if not split:
+            break
+        i = max(split, key=lambda i: (items[i].length, -items[i].ch.index))
+        new = item_for(items[i].ch, system.bus, a.minor, 2 * items[i].fragments, runs)
+        if not new.rep or new.length >= items[i].length:
+            break
+        items = items[:i] + [new] + items[i + 1:]
+        top, placed, ends = pack(items, skip)
+        if top > a.cap:
+            continue
+        b = Attempt(a.minor, a.cap, list(items), average_load(items, skip), ok=True, placed=placed, ends=ends,
+                    top=top)
+        red = _redundant_entries(system, b, skip)
+        if red > best_red:
+            best, best_red = b, red
+    return best
 
 
 def make_plan(system: System, a: Attempt, skip: int) -> Plan:

@@ -175,6 +175,25 @@ class HandCases(unittest.TestCase, Checks):
                     if not red:
                         self.assertEqual(len(plan.slots), len(s.channels), "one entry per channel")
 
+    def test_finer_fragments_make_room_for_redundancy(self):
+        # the 3 KB map split only as far as it must be leaves its minor cycle
+        # too full for the redundant entries' skip costs; split further, the
+        # fast channel gets them (the plan still passes every oracle)
+        import albatross_schedule.multirate as MR
+        saved = MR.FINER_STEPS
+        try:
+            MR.FINER_STEPS = 0
+            _, plain, _, _ = plan_of(fast_beside_map())
+        finally:
+            MR.FINER_STEPS = saved
+        s, plan, rom, rep = plan_of(fast_beside_map())
+        self.assert_plan_ok(s, plan, rom, rep)
+        by = {c["name"]: c for c in rep["channels"]}
+        self.assertGreater(plan.redundancy["planned"], plain.redundancy["planned"],
+                           "expected more redundant entries with the map split further")
+        plain_fragments = next(x.channel.fragments for x in plain.slots if x.channel.name == "map")
+        self.assertGreater(by["map"]["fragments"], plain_fragments, "expected the map in more fragments")
+
     def test_hand_case_shapes(self):
         s, plan, rom, rep = plan_of(fast_beside_slow(), redundancy=False)
         by = {c["name"]: c for c in rep["channels"]}
