@@ -92,7 +92,14 @@ def k_allowed(n, p):
 def consumer_bounds(report, chan, cons):
     """[(m, B_m clocks, p_m)] for one consumer of one channel (report.json)."""
     C = report["cycle"]["clocks"]
-    starts = sorted(s["start"] for s in chan["slots"])
+    if report.get("planner") == "multi-rate":
+        # the channel's runs over the cluster (its entries in the minor cycles they are due in)
+        cluster = report["cluster"]["minor_cycles"]
+        mine = [e for e in report["entries_list"] if e["channel"] == chan["name"]]
+        starts = sorted(k * C + e["start"] for e in mine for k in range(cluster) if k % e["repetition"] == e["base"])
+        C = C * cluster
+    else:
+        starts = sorted(s["start"] for s in chan["slots"])
     n = len(starts)
     f = cons["faults"]
     q = f["slot_delivery_probability"]
