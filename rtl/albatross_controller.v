@@ -216,8 +216,8 @@ module albatross_controller #(
     // first cycle began} instead of the counters' words.
     wire [31:0] tr_status;
     wire        tr_status_valid;
-    wire        tr_done, tr_imp, tr_exp, tr_new, tr_mid;
-    wire [3:0]  tr_gone;
+    wire        tr_done, tr_imp, tr_exp, tr_new;
+    wire [3:0]  tr_aband;
     wire [11:0] frag;           // E7.frag of the running entry (from 2 clocks after go)
     wire [2:0]  tr_rl, tr_xfers, tr_corrupt;
     wire [3:0]  tr_need;
@@ -238,7 +238,7 @@ module albatross_controller #(
         .src_board_i(src_board), .src_base_i(src_base), .dst_board_i(dst_board), .dst_base_i(dst_base),
         .slot_time_i(slot_time), .may_access_i(may_access), .drop_run_i(drop_run),
         .st_rl_i(st_rl), .st_need_i(st_need), .st_tried_i(st_tried), .st_taken_i(st_taken),
-        .st_prog_i(st_prog), .prog_o(tr_prog), .prog_wr_o(tr_prog_wr), .mid_o(tr_mid), .gone_o(tr_gone),
+        .st_prog_i(st_prog), .prog_o(tr_prog), .prog_wr_o(tr_prog_wr), .aband_o(tr_aband),
         .status_i(tr_status), .status_valid_i(tr_status_valid), .index_o(tr_index),
         .done_o(tr_done), .imp_run_o(tr_imp), .exp_run_o(tr_exp), .new_o(tr_new), .rl_o(tr_rl),
         .need_o(tr_need), .tried_o(tr_tried),
@@ -296,7 +296,7 @@ module albatross_controller #(
     // ------------------------------------------------------------ counters
     // need after the slot: the state RAM's copy if the Export did not run.
     // (a value that goes on: the destinations dropped in this slot.)
-    wire [3:0] need_end = (HAS_FRAGMENTS != 0 && tr_mid) ? tr_gone : tr_exp ? tr_need : st_need;
+    wire [3:0] need_end = tr_exp ? tr_aband : st_need;
     wire [2:0] abandons = popcount4(need_end & active);
     // A rejected mode request (the clock of its REQUEST slot's end) counts as
     // a corrupt value of the request channel.

@@ -32,8 +32,9 @@
 //     destinations not published stay in need: the next run Imports afresh
 //     and an Old value is sent again from fragment 0, its control loads
 //     seeing a landed Actual store); a value with no destination left ends.
-//     gone_o: the destinations dropped in a fragment that is not the last
-//     (abandoned now, not in need).
+//     aband_o: the destinations abandoned in this slot (not published;
+//     after a fragment that is not the last, those dropped in it: the
+//     others are still in the value, not in need).
 // Parts: albatross_transfer_fsm (the state machine; it holds
 // albatross_transfer_pick, the control-word decode and the buffer picks,
 // albatross_transfer_dest, the per-destination registers, and
@@ -85,8 +86,7 @@ module albatross_transfer #(
     output wire [11:0]             tried_o,
     output wire [11:0]             prog_o,         // fragments: the progress after the slot
     output wire                    prog_wr_o,      // fragments: prog_o changed (else the state keeps it)
-    output wire                    mid_o,          // fragments: the value goes on (prog_o != 0)
-    output wire [3:0]              gone_o,         // fragments: destinations dropped in a fragment not the last
+    output wire [3:0]              aband_o,        // destinations abandoned in this slot (when the Export ran)
     output wire [2:0]              transfers_o,    // destinations published
     output wire [2:0]              corrupt_o,      // control bytes that named no buffer
     output wire                    mode_req_o,     // one clock: a mode request (REQUEST entries)
@@ -127,7 +127,7 @@ module albatross_transfer #(
         .dst_o(dst), .src_act_o(src_act), .src_rl_o(src_rl), .src_word_o(src_word), .dst_word_o(dst_word),
         .dst_tkn_o(dst_tkn), .dst_slot_o(dst_slot), .dst_fin_o(dst_fin), .d_o(d), .ald_o(ald), .buf_d_o(buf_d),
         .word_o(word), .done_o(done_o), .imp_run_o(imp_run_o), .exp_run_o(exp_run_o), .new_o(new_o), .rl_o(rl_o),
-        .need_o(need_o), .gone_o(gone_o), .tried_o(tried_o), .transfers_o(transfers_o),
+        .need_o(need_o), .aband_o(aband_o), .tried_o(tried_o), .transfers_o(transfers_o),
         .corrupt_o(corrupt_o), .mode_req_o(mode_req_o), .mode_req_mode_o(mode_req_mode_o),
         .cyc_o(cyc_o), .dat_i(dat_i), .ack_i(ack_i), .err_i(err_i));
 
@@ -138,7 +138,6 @@ module albatross_transfer #(
         .take_i(take), .cont_q_i(cont_q), .fdone_i(fdone), .pubph_i(pubph), .need_any_q_i(need_any),
         .cont_o(cont), .k_o(k), .last_wd_o(last_wd), .lastf_o(lastf), .mid_o(mid), .prog_o(prog_o), .prog_wr_o(prog_wr_o));
     assign index_o = k;
-    assign mid_o   = mid;
 
     // ------------------------------------------------------------ the access
     albatross_transfer_access #(.ADDR_WIDTH(AW)) u_access (

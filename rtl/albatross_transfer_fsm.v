@@ -62,7 +62,7 @@
 //     Import, no control load.  A word store ending with last_wd_i and not
 //     lastf_i ends the slot (fdone_o: nothing published); with lastf_i the
 //     publication begins (pubph_o).  need_o after a value that goes on
-//     (mid_i): the destinations still in it; gone_o: those dropped.
+//     (mid_i): the destinations still in it; aband_o: those dropped.
 // Parts: albatross_transfer_pick (the control-word decode and the buffer
 // picks), albatross_transfer_dest (the per-destination registers),
 // albatross_transfer_order (the destinations' order).
@@ -100,7 +100,7 @@ module albatross_transfer_fsm (
     // results, valid with done_o (albatross_transfer's ports)
     output wire        done_o, imp_run_o, exp_run_o, new_o,
     output wire [2:0]  rl_o,
-    output wire [3:0]  need_o, gone_o,
+    output wire [3:0]  need_o, aband_o,
     output wire [11:0] tried_o,
     output wire [2:0]  transfers_o, corrupt_o,
     output wire        mode_req_o,
@@ -358,7 +358,7 @@ module albatross_transfer_fsm (
     wire       e_fin    = nrm && ack && fin_st;
     // a fresh value: no store of it, no pick (at go_i: all but a later
     // fragment, whose picks come in; at the choice: New)
-    wire       no_tried = go_i ? !cont : new_q;
+    wire       no_tried = go_i ? !copy_i : new_q;
     albatross_transfer_dest u_dest (
         .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start), .st_tried_i(st_tried_i), .fresh_i(no_tried), .d_i(d_q),
         .set_pick_i(e_pick), .clr_i(e_fin), .pick_i(pick), .tried_d_o(tried_d), .tried_o(tried_o));
@@ -392,7 +392,7 @@ module albatross_transfer_fsm (
     // value ends as a whole one does (a destination not published stays in
     // need, and the next run Imports afresh, its control load seeing a
     // landed store).
-    assign gone_o      = serve_q & ~need_q & ~pub_q;
+    assign aband_o     = serve_q & ~pub_q & ~(need_q & {4{mid}});
     assign need_o      = mid ? need_q : serve_q & ~pub_q;
     assign transfers_o = exp_q ? popcount4(pub_q) : 3'd0;
     assign corrupt_o   = {2'd0, icor_q} + popcount4(cor_q);

@@ -7,4 +7,4 @@
 # channel's own stored need.  Caught by test_controller's cold scenario (a zero
 # source Actual ends the Import with no choice; nothing may count as abandoned):
 # make test-controller-negative-stale_need.
-s/wire \[3:0\] need_end = (HAS_FRAGMENTS != 0 \&\& tr_mid) ? tr_gone : tr_exp ? tr_need : st_need;/wire [3:0] need_end = (HAS_FRAGMENTS != 0 \&\& tr_mid) ? tr_gone : tr_need;/
+s/wire \[3:0\] need_end = tr_exp ? tr_aband : st_need;/wire [3:0] need_end = tr_aband;/
