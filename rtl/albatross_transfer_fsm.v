@@ -348,17 +348,14 @@ module albatross_transfer_fsm (
     end
 
     // ------------------------------------------------------------ per-destination fields
-    // albatross_transfer_dest, written with explicit enables: the events of
-    // the current destination d_q, in the branch of the main block they belong to.
+    // albatross_transfer_dest, on the events of the current destination d_q.
     assign     e_start  = (go_i && (!copy_i || cont)) || (nrm && choose && need_now != 4'd0);
     // e_pick: d's control load picks its buffer (unless its Slot byte names
     // the buffer tried: then that buffer stays, landed or complete).  A
     // later fragment's buffers are the first fragment's picks (st_tried_i).
     wire       e_pick   = nrm && ack && ctrl_ld && !t_done;
     wire       e_fin    = nrm && ack && fin_st;
-    // a fresh value: no store of it, no pick (at go_i: all but a later
-    // fragment, whose picks come in; at the choice: New)
-    wire       no_tried = go_i ? !copy_i : new_q;
+    wire       no_tried = go_i ? !copy_i : new_q;   // a fresh value (a later fragment's picks come in)
     albatross_transfer_dest u_dest (
         .clk_i(clk_i), .rst_i(rst_i), .start_i(e_start), .st_tried_i(st_tried_i), .fresh_i(no_tried), .d_i(d_q),
         .set_pick_i(e_pick), .clr_i(e_fin), .pick_i(pick), .tried_d_o(tried_d), .tried_o(tried_o));
