@@ -2,8 +2,8 @@
 // ROM, the cycle and slot timing, the deadline and the global time
 // (docs/controller.md "Execution").
 // Rules:
-//   * Global time: time_o counts clocks since reset (32 bits).  Time within a
-//     cycle (rel) is TIME_BITS wide and counts from the cycle start; the
+//   * Global time, time within a cycle (rel, TIME_BITS wide, from the cycle
+//     start), S, D and the deadline check: rtl/albatross_slot_timing.v.  The
 //     header's cycle length and every slot's start and length must fit in
 //     TIME_BITS bits (higher bits set: the header, or the entry, is invalid).
 //   * ROM format (rtl/albatross_contract.toml): header H0..H3, entry k at
@@ -49,8 +49,7 @@
 //   * Deadline D = cycle start + start + length.  may_access_o is high in a
 //     clock c of a slot when an access put on the bus in clock c+1 ends
 //     before D even if it times out: c + 1 <= D - TIMEOUT - 2.  go_o and
-//     the deadline check are registers, decided in the clock before, so the
-//     transfer's decisions start at a register.
+//     the deadline check are registers, decided in the clock before.
 //   * The slot ends at slot_done_i; the next entry waits for its start.
 //     After the last entry: time-rigid, the next cycle starts at cycle start
 //     + H1; position-synchronised (H0 flag, entry 0 a valid SYNC COPY), the
@@ -131,7 +130,6 @@ module albatross_sequencer #(
     localparam ROM_AW  = $clog2(ROM_WORDS);
     localparam TB      = TIME_BITS;
     localparam integer        MIN_LEN_I   = FETCH_CYCLES + MARGIN;
-    localparam [TB:0]         MARGIN_T    = MARGIN[TB:0];
 
     generate
         if (NB < 1 || NB > 16 || ADDR_WIDTH < 3 || ADDR_WIDTH > ALB_ROM_PLACE_BASE_W || N_CHAN < 1 ||
@@ -170,26 +168,26 @@ module albatross_sequencer #(
 
     reg [2:0]          state_q;
     reg [2:0]          step_q;        // clock within ST_HEADER, ST_FETCH
-    reg [31:0]         time_q;
-    reg [TB:0]         next_rel_q;    // rel + 1: the time within the cycle of the next clock (rel wraps at 2^TB)
     wire [7:0]         ne_q;          // H0's NE and sync flag (u_hdr, below)
     wire               smode_q;
     wire               hdr_bad;       // a header word is invalid
-    reg [TB-1:0]       start_q;       // E1 of entry ent_q; from FETCH clock 6 on, of entry ent_q + 1
-                                      // (of entry 0 after the last entry and after the header)
-    reg                start_bad_q;   // ... did not fit in TIME_BITS
-    reg [TB:0]         end_q;         // start + length: the deadline D in rel
-    reg [TB:0]         prev_end_q;    // the previous valid slot's end
     reg [7:0]          ent_q;         // the entry fetched; from FETCH clock 6 on, the next one
     reg                last_q;        // the entry that runs is its mode's last (from FETCH clock 6 on)
     reg                ent0_q;        // the entry that runs is entry 0 (from FETCH clock 6 on)
     reg                bad_q;         // the entry being fetched is invalid
-    reg [31:0]         slot_time_q;
     reg                err_q;         // the start-up CRC failed
     reg                cycle_q1;      // cycle_o
 
+    // The clocks (u_time, below): time_q is time_o; start_now the clock S of
+    // a slot; start_q is E1 of entry ent_q, from FETCH clock 6 on of entry
+    // ent_q + 1 (of entry 0 after the last entry and after the header); end_q
+    // is D in rel; cycle_end: rel >= H1 - 1 (late only if a slot overran).
+    wire [31:0]        time_q;
+    wire [TB-1:0]      start_q;
+    wire               start_bad_q, start_now, cycle_end;
+    wire [TB:0]        end_q, prev_end_q;
+
     // ------------------------------------------------------------ ROM and its read port
-    wire               start_now = state_q == ST_WAIT && next_rel_q > {1'b0, start_q};   // rel >= start: clock S (late only after an overrun)
     wire               main_rom;      // a main read: the background check waits
     wire [31:0]        rom_q;         // the word read in the previous clock
     // The start-up pass issues its first read in the header's last clock
@@ -280,37 +278,32 @@ module albatross_sequencer #(
 
     // ------------------------------------------------------------ field checks at fetch
     // The entry's fields, taken in the fetch clocks, and E7 of the entry that runs
-    // (rtl/albatross_entry_fields.v).
-    wire [1:0]          kind;
-    wire                sflag, four, request, mode_info;
-    wire [6:0]          chan;
-    wire [2:0]          nd;
-    wire [11:0]         words;
+    // (rtl/albatross_entry_fields.v), straight on the slot command's ports.
     wire [13:0]         span;          // 3 * W (four-slot: 4 * W)
-    wire [3:0]          sbrd;
-    wire [ADDR_WIDTH-1:0] sbase;
-    wire [15:0]         dbrd;
-    wire [4*ADDR_WIDTH-1:0] dbase;
     albatross_entry_fields #(.ADDR_WIDTH(ADDR_WIDTH), .HAS_MODES(HAS_MODES), .HAS_FRAGMENTS(HAS_FRAGMENTS)) u_fields (
         .clk_i(clk_i), .rst_i(rst_i), .fetch_i(state_q == ST_FETCH), .step_i(step_q), .rom_i(rom_q),
         .ent_inc_i(ent_inc), .go_i(go_now), .e7_rd_o(e7_rd), .e7_ent_o(e7_ent), .frag_o(frag_o),
-        .kind_o(kind), .sync_o(sflag), .four_o(four), .request_o(request), .mode_info_o(mode_info),
-        .chan_o(chan), .nd_o(nd), .words_o(words), .span_o(span), .src_board_o(sbrd), .src_base_o(sbase),
-        .dst_board_o(dbrd), .dst_base_o(dbase));
-    wire [TB:0] e2_end  = {1'b0, start_q} + {1'b0, rom_q[TB-1:0]};
+        .kind_o(kind_o), .sync_o(sync_entry_o), .four_o(four_o), .request_o(request_o), .mode_info_o(mode_info_o),
+        .chan_o(chan_o), .nd_o(nd_o), .words_o(words_o), .span_o(span), .src_board_o(src_board_o),
+        .src_base_o(src_base_o), .dst_board_o(dst_board_o), .dst_base_o(dst_base_o));
     wire        bad_now;
     albatross_entry_check #(.NB(NB), .ADDR_WIDTH(ADDR_WIDTH), .N_CHAN(N_CHAN), .TIME_BITS(TB),
                             .MIN_LEN(MIN_LEN_I), .HAS_ENTRY_CHECK(HAS_ENTRY_CHECK),
                             .MAX_REP(MR ? CLUSTER_BITS : 0)) u_entry_check (
         .step_i(step_q), .rom_i(rom_q), .ent0_i(ent_q == 8'd0), .smode_i(smode_q), .bad_mark_i(bad_mark),
-        .kind_i(kind), .four_i(four), .nd_i(nd), .e3_i(span), .start_i(start_q), .start_bad_i(start_bad_q),
+        .kind_i(kind_o), .four_i(four_o), .nd_i(nd_o), .e3_i(span), .start_i(start_q), .start_bad_i(start_bad_q),
         .cycle_i(cycle_q), .prev_end_i(prev_end_q), .end_i(end_q), .cluster_i(m_cluster), .due_i(due),
         .rep_i(e6_rep), .blen_i(e6_blen), .bad_o(bad_now));
 
     // ------------------------------------------------------------ control
-    // rel is kept as rel + 1 (next_rel_q): each compare below reads a
-    // register, with no incrementer in front of it.
-    wire cycle_end  = next_rel_q >= {1'b0, cycle_q};  // rel >= H1 - 1 (late only if a slot overran: recover)
+    // The global time, rel, S, D and the deadline check (rtl/albatross_slot_timing.v).
+    wire fetch6     = state_q == ST_FETCH && (step_q == 3'd0 || step_q >= 3'd6);   // FETCH clock 6 (0, 7: never)
+    albatross_slot_timing #(.TIME_BITS(TB), .MARGIN(MARGIN)) u_time (
+        .clk_i(clk_i), .rst_i(rst_i), .rom_i(rom_q), .e1_i(hdr_last || fetch6 || (state_q == ST_CYCLE_END && mode_e1)),
+        .e2_i(state_q == ST_FETCH && step_q == 3'd2), .ran_i(fetch6 && !bad_q && due), .wait_i(state_q == ST_WAIT),
+        .run_i(state_q == ST_TRANSFER || go_now), .new_cycle_i(new_cycle), .cycle_i(cycle_q),
+        .time_o(time_q), .slot_time_o(slot_time_o), .at_start_o(start_now), .cycle_end_o(cycle_end),
+        .may_access_o(may_access_o), .start_o(start_q), .start_bad_o(start_bad_q), .end_o(end_q), .prev_end_o(prev_end_q));
     wire poll_hit;     // a poll shows a new position (u_poll, below)
     wire entry_over = (state_q == ST_FETCH && step_q == 3'd6 && !go_now) ||     // invalid, IDLE or not due
                       (state_q == ST_TRANSFER && slot_done_i);
@@ -321,25 +314,19 @@ module albatross_sequencer #(
     // in its fetch's last clock, is loaded every POLL clocks while the
     // sequencer waits for the cycle end.
     albatross_sync_poll #(.ADDR_WIDTH(ADDR_WIDTH), .POLL(POLL), .HAS_SYNC(HAS_SYNC)) u_poll (
-        .clk_i(clk_i), .rst_i(rst_i),
-        .capture_i(state_q == ST_FETCH && !(step_q >= 3'd1 && step_q <= 3'd5) && ent0_q),
-        .sync_i(!bad_q && sflag), .board_i(sbrd), .base_i(sbase), .smode_i(smode_q),
+        .clk_i(clk_i), .rst_i(rst_i), .capture_i(fetch6 && ent0_q),
+        .sync_i(!bad_q && sync_entry_o), .board_i(src_board_o), .base_i(src_base_o), .smode_i(smode_q),
         .wait_i(state_q == ST_CYCLE_END), .entry_over_i(entry_over), .new_cycle_i(new_cycle),
         .poll_dat_i(poll_dat_i), .poll_ack_i(poll_ack_i), .poll_err_i(poll_err_i), .sync_rl_i(sync_rl_i),
         .poll_cyc_o(poll_cyc_o), .poll_board_o(poll_board_o), .poll_adr_o(poll_adr_o), .hit_o(poll_hit));
-    // go and the deadline check are registered, decided a clock ahead, so that
-    // the transfer's decisions start at registers: go_q in FETCH clock 5 from
-    // the entry's kind and the due test (go = go_q and not bad_q: the entry's
-    // checks are all in bad_q in clock 6), in_time_q from rel + 1 and D of the clock before
-    // (rel + 2 <= D - MARGIN, that is rel + 1 < D - MARGIN; used only in
-    // FETCH clock 6 and in the transfer, where neither a new cycle nor a new
-    // D comes between).
-    reg         go_q, in_time_q;
+    // go is a register, decided a clock ahead (as the deadline check, u_time),
+    // so that the transfer's decisions start at registers: go_q in FETCH clock
+    // 5 from the entry's kind and the due test (go = go_q and not bad_q: the
+    // entry's checks are all in bad_q in clock 6).
+    reg         go_q;
     wire        go_now   = go_q && !bad_q;
-    always @(posedge clk_i) begin
-        go_q      <= !rst_i && state_q == ST_FETCH && step_q == 3'd5 && kind != ALB_KIND_IDLE[1:0] && due;
-        in_time_q <= {1'b0, next_rel_q[TB-1:0]} < end_q - MARGIN_T;
-    end
+    always @(posedge clk_i)
+        go_q      <= !rst_i && state_q == ST_FETCH && step_q == 3'd5 && kind_o != ALB_KIND_IDLE[1:0] && due;
 
     // rom_errors, cycles (saturating) and the running mode's since (rtl/albatross_seq_status.v).
     albatross_seq_status u_status (
@@ -352,20 +339,13 @@ module albatross_sequencer #(
         if (rst_i) begin
             state_q   <= ST_HEADER;
             step_q    <= 3'd0;
-            time_q    <= 32'd0;
             err_q     <= 1'b0;
             ent_q     <= 8'd0;            // (E6 of entry 0 is read as {ent_q + 1, 010})
         end else begin
-            time_q    <= time_q + 32'd1;
-            next_rel_q <= {1'b0, next_rel_q[TB-1:0]} + 1'b1;
             case (state_q)
                 ST_HEADER: if (enable_i || step_q != 3'd0) begin
                     step_q <= step_q + 3'd1;
-                    if (step_q == 3'd4) begin                                   // E1 of entry 0 (E6 read now)
-                        start_q       <= rom_q[TB-1:0];
-                        start_bad_q   <= rom_q[31:TB] != 0;
-                        state_q       <= hdr_bad ? ST_ERROR : ST_CHECK;
-                    end
+                    if (step_q == 3'd4) state_q <= hdr_bad ? ST_ERROR : ST_CHECK;  // u_time takes E1 of entry 0 (E6 read now)
                 end
                 ST_CHECK: if (pass_done) begin
                     if (!crc_ok) begin                                    // else new_cycle
@@ -376,42 +356,27 @@ module albatross_sequencer #(
                 ST_WAIT: if (start_now) begin
                     state_q     <= ST_FETCH;
                     step_q      <= 3'd1;
-                    slot_time_q <= time_q;
                     bad_q       <= 1'b0;
                 end
                 ST_FETCH: begin
                     step_q <= step_q + 3'd1;
                     if (bad_now) bad_q <= 1'b1;
                     case (step_q)
-                        3'd1, 3'd3, 3'd4: ;                                     // E0, E3, E4: u_fields
-                        3'd2: end_q <= e2_end;                                  // E2
+                        3'd1, 3'd2, 3'd3, 3'd4: ;                               // E0, E2..E4: u_fields, u_time (D)
                         3'd5: begin                                             // E5: u_fields; on to the next entry
                             ent_q  <= last_ent ? m_next_first : ent_inc;     // (the mode's first: no switch mid-cycle)
                             last_q <= last_ent;
                             ent0_q <= ent_q == 8'd0;
                         end
-                        default: begin                                          // E1 of the next entry (its E6 read now)
-                            start_q      <= rom_q[TB-1:0];             // (entry_check is done with it)
-                            start_bad_q  <= rom_q[31:TB] != 0;
-                            if (!bad_q && due) prev_end_q <= end_q;
-                            if (go_now) state_q <= ST_TRANSFER;
-                        end
+                        default: if (go_now) state_q <= ST_TRANSFER;            // u_time takes E1 of the next entry (its E6 read now)
                     endcase
                 end
-                ST_CYCLE_END: begin
-                    if (mode_e1) begin                                      // E1 of the new mode's first entry
-                        start_q     <= rom_q[TB-1:0];
-                        start_bad_q <= rom_q[31:TB] != 0;
-                    end
-                    if (mode_first_ld) ent_q <= m_next_first;              // the new first entry (its E6 read next)
-                end
+                ST_CYCLE_END: if (mode_first_ld) ent_q <= m_next_first;    // the new first entry (its E6 read next; u_time its E1)
                 default: ;
             endcase
             if (entry_over) state_q <= last_q ? ST_CYCLE_END : ST_WAIT;
             if (new_cycle) begin
-                next_rel_q  <= {{TB{1'b0}}, 1'b1};
                 ent_q       <= m_next_first;
-                prev_end_q  <= {(TB+1){1'b0}};
                 state_q     <= ST_WAIT;
                 cycle_q1    <= 1'b1;
             end
@@ -419,20 +384,6 @@ module albatross_sequencer #(
     end
 
     assign go_o         = go_now;
-    assign kind_o       = kind;
-    assign chan_o       = chan;
-    assign nd_o         = nd;
-    assign words_o      = words;
-    assign src_board_o  = sbrd;
-    assign src_base_o   = sbase;
-    assign dst_board_o  = dbrd;
-    assign dst_base_o   = dbase;
-    assign slot_time_o  = slot_time_q;
-    assign sync_entry_o = sflag;
-    assign four_o       = four;
-    assign request_o    = request;
-    assign mode_info_o  = mode_info;
-    assign may_access_o = (state_q == ST_TRANSFER || go_now) && in_time_q;   // c + 1 + MARGIN <= D (D >= MIN_LEN > MARGIN)
     assign time_o       = time_q;
     assign cycle_o      = cycle_q1;
     assign error_o      = err_q || hdr_bad;

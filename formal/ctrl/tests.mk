@@ -13,7 +13,7 @@
 FCTRL_SRC     := $(filter-out rtl/albatross_sequencer.v rtl/albatross_schedule_rom.v rtl/albatross_rom_check.v \
                               rtl/albatross_entry_check.v rtl/albatross_mode_switch.v rtl/albatross_entry_fields.v rtl/albatross_sync_poll.v \
                               rtl/albatross_minor_cycles.v rtl/albatross_header_check.v \
-                              rtl/albatross_seq_status.v,$(CTRL_RTL))
+                              rtl/albatross_seq_status.v rtl/albatross_slot_timing.v,$(CTRL_RTL))
 FCTRL_DIR     := $(BUILD)/formal/sby/ctrl-rtl
 FSBY_RTL_ctrl := $(FCTRL_SRC) formal/ctrl/fseq_contract.v $(wildcard formal/alb/*.v)
 # The negatives: VARIANT:PROPERTY (the property that keeps the old mutant's

@@ -15,12 +15,14 @@ FSBY_TESTS_SPEC += \
     formal-sequencer-negative-rep_short:sequencer:neg_rep_short:go_time \
     formal-sequencer-negative-count_early:sequencer:neg_count_early:go_time \
     formal-sequencer-negative-count_stuck:sequencer:neg_count_stuck:go_given
-FSBY_MUTANTS += sequencer:slot_late sequencer:deadline_late sequencer:start_bad_crc \
+FSBY_MUTANTS += sequencer:slot_late:albatross_slot_timing.v sequencer:deadline_late:albatross_slot_timing.v \
+                sequencer:start_bad_crc \
                 sequencer:wrong_cycle:albatross_minor_cycles.v sequencer:rep_short:albatross_minor_cycles.v \
                 sequencer:count_early:albatross_minor_cycles.v sequencer:count_stuck:albatross_minor_cycles.v
 FSBY_RTL_sequencer := rtl/albatross_sequencer.v rtl/albatross_schedule_rom.v rtl/albatross_rom_check.v \
                       rtl/albatross_entry_check.v rtl/albatross_mode_switch.v rtl/albatross_entry_fields.v rtl/albatross_sync_poll.v \
-                      rtl/albatross_minor_cycles.v rtl/albatross_header_check.v rtl/albatross_seq_status.v
+                      rtl/albatross_minor_cycles.v rtl/albatross_header_check.v rtl/albatross_seq_status.v \
+                      rtl/albatross_slot_timing.v
 
 # The ROM images of the proofs and their decoded fields, written by gen_rom.py with the
 # schedule compiler's encoder and CRC (sequencer.sby reads them from this folder).

@@ -35,11 +35,12 @@
 
 PARTS_DIR := $(BUILD)/parts
 PARTS     := albatross_sequencer albatross_schedule_rom albatross_rom_check albatross_entry_check albatross_mode_switch albatross_entry_fields albatross_sync_poll \
-             albatross_minor_cycles albatross_header_check albatross_seq_status \
+             albatross_minor_cycles albatross_header_check albatross_seq_status albatross_slot_timing \
              albatross_bus_master albatross_counters
 # The modules albatross_sequencer instantiates.
 SEQ_SUB   := rtl/albatross_schedule_rom.v rtl/albatross_rom_check.v rtl/albatross_entry_check.v rtl/albatross_mode_switch.v rtl/albatross_entry_fields.v rtl/albatross_sync_poll.v \
-             rtl/albatross_minor_cycles.v rtl/albatross_header_check.v rtl/albatross_seq_status.v
+             rtl/albatross_minor_cycles.v rtl/albatross_header_check.v rtl/albatross_seq_status.v \
+             rtl/albatross_slot_timing.v
 
 TESTS += parts-lint sequencer sequencer-bad-start0 sequencer-negative-slot_late \
          sequencer-modes sequencer-modes-bad sequencer-modes-negative sequencer-modes-switch \

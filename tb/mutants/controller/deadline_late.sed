@@ -1,4 +1,4 @@
-# target: rtl/albatross_sequencer.v
+# target: rtl/albatross_slot_timing.v
 # Controller mutant (formal/sequencer/mutants/deadline_late.sed on the
 # controller): the deadline check allows one clock more than it should, so
 # an access may begin in D - TIMEOUT - 1 and, timing out, end at the
