@@ -253,7 +253,33 @@ def verify_rom(words, n_chan=16, n_boards=16, ram_words=1024, sync_expected=None
         if start + length > cycle:
             problems.append(f"{tag}: ends at {start + length}, after the cycle ({cycle})")
         earlier.append((k, rep, due_base, start + length))
+    problems += same_channel_everywhere(entries)
     return problems, entries
+
+
+def same_channel_everywhere(entries) -> list:
+    """The controller keeps a channel's state by its id across entries and
+    modes (its progress in fragments, its buffers, its counters): every
+    entry of an id, in every mode, must name the same kind, four-slot,
+    request and mode flags, W, source and destinations (docs/controller.md
+    "Fragments": a value cut by a mode switch goes on in the next mode that
+    runs its channel).  [problems]"""
+    keep = FLAG_FOUR_SLOT | FLAG_REQUEST | FLAG_MODE
+    first, out = {}, []
+    for k, e in enumerate(entries):
+        if e["kind"] == "idle":
+            continue
+        shape = (e["kind"], e["flags"] & keep, e["w"], e["src"] if e["kind"] == "copy" else None, tuple(e["dst"]))
+        if e["id"] not in first:
+            first[e["id"]] = (k, e["mode"], shape)
+            continue
+        j, mj, was = first[e["id"]]
+        if shape != was:
+            what = [n for n, a, b in zip(("kind", "flags", "W", "source", "destinations"), shape, was) if a != b]
+            out.append(f"entry {k} (mode {e['mode']}): channel id {e['id']} has another {', '.join(what)} than "
+                       f"entry {j} (mode {mj}); a channel's state is kept by its id, so every entry of it must "
+                       "carry the same value between the same places")
+    return out
 
 
 def mode_ranges(words, ne, cycle, drop_run):

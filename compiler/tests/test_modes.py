@@ -229,6 +229,24 @@ class ModePlanTests(unittest.TestCase):
             problems, _ = S.verify_rom(bad)
             self.assertTrue(any(words in p for p in problems), f"expected a problem '{words}', got {problems}")
 
+    def test_verify_rom_catches_a_channel_id_that_differs_between_modes(self):
+        # the controller keeps a channel's state (a value's fragments, its
+        # buffers) by id across modes: an entry of mode 1 whose W differs from
+        # mode 0's entry of the same id must be named
+        e0 = self.rep["modes"][0]["entries"]
+        e1 = self.rep["modes"][1]["entries"]
+        entries = S.verify_rom(self.rom)[1]
+        ids0 = {e["id"] for e in entries[:e0] if e["kind"] == "copy"}
+        k = next(k for k in range(e0, e0 + e1) if entries[k]["kind"] == "copy" and entries[k]["id"] in ids0)
+        bad = list(self.rom)
+        at = 4 + 8 * k                        # E0: W in bits [11:0] (docs/controller.md)
+        bad[at] = (bad[at] & ~0xFFF) | ((bad[at] & 0xFFF) + 1)
+        bad[3] = contract.load().check_word(bad)
+        problems, _ = S.verify_rom(bad)
+        want = f"channel id {entries[k]['id']} has another W than entry"
+        self.assertTrue(any(want in p for p in problems), f"expected a problem '{want}', got {problems}")
+        self.assertEqual([p for p in S.verify_rom(self.rom)[0]], [], "the good image has none")
+
     def test_outputs(self):
         self.assertEqual(self.plan.cycle, self.plan1.cycle)
         files = S.generate(self.system, self.plan, self.rom, self.rep)
