@@ -1,5 +1,50 @@
-// mobot_sim_options.cpp -- the command line of sim/mobot_sim.cpp (see its
-// head comment) and the text of a core's failure code.
+// mobot_sim_options.cpp -- the command line of sim/mobot_sim.cpp (the run and
+// its checks: that file's head comment) and the text of a core's failure code.
+//
+//   mobot_sim --plan tb_plan.txt +fw0..3=FILE +ram0..3=FILE +rom=FILE
+//             [--cycles N] [--seed S] [--stall P] [--fault-rate R] [--burst L]
+//             [--fault-clocking access|clock]
+//             [--crash BOARD@CYCLE] [--hang BOARD@CYCLE]
+//             [--trace FILE.vcd [--trace-from N] [--trace-cycles N]]
+//             [--report FILE] [--ages FILE.csv] [--label NAME] [--progress K]
+//             [--age-samples FILE.csv]  every imported age (channel,board,cycle,age,producer_gap)
+//             [--age-scale X] [--require-done] [--expect-caught-by CHECK]
+//             [--drift-ppm BOARD=PPM[,/BOARD=PPM...]|random:MAX] [--clock-scale X]
+//             [--termination-scale X] [--min-switches N] [--switch-scale X]
+//
+//   --burst L       faults come in runs of mean length L accesses
+//   --fault-clocking clock  the fault process advances every clock instead
+//                   of every access (the old injector; negative test of the
+//                   rate check)
+//   --stall P       every core's local RAM is held in random bursts (each
+//                   free cycle starts one with probability 1/P, 1..1024
+//                   cycles; 0 = none, the default), so cores drift
+//   --crash B@C     board B crashes in the middle of its first Export that
+//                   begins at or after cycle C of its first data channel (by
+//                   id: the radar's RadarMap): once half the value's words
+//                   are stored, the core is frozen for good (its Actual is
+//                   never stored).  The checks expect it: the ages of every
+//                   channel B produces count toward no verdict.
+//   --hang B@C      board B freezes at cycle C without telling the checks
+//                   (the negative test of the liveness check)
+//   --age-scale X   check ages against X times the bound (negative test)
+//   --min-switches N  a description with schedule modes: fail (check mode)
+//                   on fewer than N switches
+//   --switch-scale X  check switch latencies against X times the compiler's
+//                   switch_latency (negative test)
+//   --mute CH@B     every controller store to the control word of channel
+//                   CH's destination on board B is lost (sim/pico_boards.v
+//                   +mute_board/+mute_word): that destination is never
+//                   published, and its consumer keeps the RAM image's value
+//                   (taken_at 0); the negative test of the age check after
+//                   start-up
+//   --drift-ppm S   the boards' clocks drift against the controller's: the
+//                   named boards' TIMERs run PPM parts per million fast (> 0)
+//                   or slow (board_memmap +drift<c>=PPM); random:MAX draws
+//                   each board's from the seed in [-MAX, MAX]
+//   --clock-scale X check local-time errors against X times their bounds
+//   --termination-scale X  check each Import's passes and accesses against X
+//                   times the compiler's bound (negative test)
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
