@@ -242,6 +242,21 @@ struct Sim {
             if (a.start >= t0 && a.start < t1) v.push_back(a);
         return v;
     }
+    // The RAM operations ram[from, to) on board's word adr: all of them, or the
+    // stores of its byte 0 (a control word's Actual byte: a publication).
+    unsigned ops_at(int board, uint32_t adr, size_t from, size_t to) const {
+        unsigned n = 0;
+        for (size_t i = from; i < to && i < ram.size(); ++i) n += ram[i].board == board && ram[i].adr == adr;
+        return n;
+    }
+    unsigned actual_stores(int board, uint32_t adr, size_t from, size_t to) const {
+        unsigned n = 0;
+        for (size_t i = from; i < to && i < ram.size(); ++i) {
+            const RamOp &r = ram[i];
+            n += r.board == board && r.we && r.adr == adr && (r.sel & 1);
+        }
+        return n;
+    }
 };
 
 // ------------------------------------------------------------------ the CPUs' three-buffer protocol

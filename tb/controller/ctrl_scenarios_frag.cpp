@@ -51,19 +51,8 @@ struct Frag {
     }
     uint64_t cyc(unsigned c) const { return t0 + (uint64_t)c * H1; }
     // RAM operations (index range) of the controller on the destination's Actual byte.
-    unsigned dst_publishes(size_t from, size_t to) const {
-        unsigned n = 0;
-        for (size_t i = from; i < to && i < s.ram.size(); ++i) {
-            const RamOp &r = s.ram[i];
-            n += r.board == 1 && r.we && r.adr == DST_BASE && (r.sel & 1);
-        }
-        return n;
-    }
-    unsigned src_ctrl(size_t from, size_t to) const {
-        unsigned n = 0;
-        for (size_t i = from; i < to && i < s.ram.size(); ++i) n += s.ram[i].board == 0 && s.ram[i].adr == SRC_BASE;
-        return n;
-    }
+    unsigned dst_publishes(size_t from, size_t to) const { return s.actual_stores(1, DST_BASE, from, to); }
+    unsigned src_ctrl(size_t from, size_t to) const { return s.ops_at(0, SRC_BASE, from, to); }
     // The word offsets in buffer b of the source loads in [from, to).
     std::vector<unsigned> src_words(size_t from, size_t to, unsigned b) const {
         std::vector<unsigned> v;

@@ -86,14 +86,7 @@ struct Bench {
         cons.rl = 1;
     }
     // RAM operations of the controller in [from, to): Actual stores to channel 0's destination.
-    unsigned dst_publishes(size_t from, size_t to) const {
-        unsigned n = 0;
-        for (size_t i = from; i < to && i < s.ram.size(); ++i) {
-            const RamOp &r = s.ram[i];
-            n += r.board == 1 && r.we && r.adr == DST_BASE && (r.sel & 1);
-        }
-        return n;
-    }
+    unsigned dst_publishes(size_t from, size_t to) const { return s.actual_stores(1, DST_BASE, from, to); }
     // ... any access to channel 0's places (source or destination).
     unsigned ch0_ops(size_t from, size_t to) const {
         unsigned n = 0;
@@ -104,11 +97,7 @@ struct Bench {
         }
         return n;
     }
-    unsigned src_ctrl(size_t from, size_t to) const {
-        unsigned n = 0;
-        for (size_t i = from; i < to && i < s.ram.size(); ++i) n += s.ram[i].board == 0 && s.ram[i].adr == SRC_BASE;
-        return n;
-    }
+    unsigned src_ctrl(size_t from, size_t to) const { return s.ops_at(0, SRC_BASE, from, to); }
     // The word offsets in buffer b of channel 0's source loads in [from, to) (100 + address: another buffer's).
     std::string src_words(size_t from, size_t to, unsigned b) const {
         std::string v;
