@@ -211,11 +211,14 @@ bench-system: $(SYS_BIN) $(BUILD)/schedule/bus_bench/tb_plan.txt
 # value's stores land on it (ownership; the controller also counts corrupt
 # control bytes).  Since a destination's picked buffer is its buffer tried,
 # no driver reads an invalid index back (driver_error stays 0).
+# actual_corrupt: every Actual store writes 7, no buffer: the consumers' Imports
+# find the control bytes corrupt and return an error (driver_error).
 SYS_NEGATIVE := \
   latency:real:latency_bound:--latency-scale,0.9 \
   ignore_readlocked:mutant-ignore_readlocked:actuality \
   never_delivered:mutant-never_delivered:duplicate_new \
   bad_index:mutant-bad_index:ownership \
+  actual_corrupt:mutant-actual_corrupt:driver_error \
   wrong_lane:mutant-wrong_lane:ownership \
   time_wraps:mutant-time_wraps:global_time \
   taken_at_end:mutant-taken_at_end:taken_at:--fault-rate,0.15 \
