@@ -29,9 +29,10 @@
 //     and the current value's taken_at, written with time_o in the clock a
 //     New value is chosen (the datapath's taken_at stores read it back from
 //     the RAM).
-//   * Fragments (HAS_FRAGMENTS): the state word also keeps the progress of
-//     a value carried in fragments (its next word; 0 or W: none), written
-//     at a slot's end where it changes and cleared with the rest after
+//   * Fragments (HAS_FRAGMENTS): the state word also keeps whether a value
+//     carried over several runs goes on and its progress (the first word
+//     not yet stored to every destination in it), each written at a slot's
+//     end where it changes and cleared with the rest after
 //     reset (a value cut by a reset restarts with a fresh Import; nothing
 //     partial is published); a mode switch keeps it (the value goes on
 //     whole when its channel next runs).  The source buffer held is the
@@ -95,11 +96,11 @@ module albatross_controller #(
 
     localparam AW      = ADDR_WIDTH;
     localparam CH_BITS = (N_CHAN > 1) ? $clog2(N_CHAN) : 1;
-    localparam ST_W    = 12 + 12 + 4 + 3 + 32;          // {progress, tried, need, rl, taken}
+    localparam ST_W    = 1 + 12 + 12 + 4 + 3 + 32;      // {goes on, progress, tried, need, rl, taken}
     // The state RAM has at least 32 words from N_CHAN = 4 up (Yosys maps a RAM
-    // of only a few words to flip-flops; 32 x 63 bits is block RAM, 4 iCE40
+    // of only a few words to flip-flops; 32 x 64 bits is block RAM, 4 iCE40
     // RAM blocks of 16 bits as 51 bits were; without HAS_FRAGMENTS the
-    // progress field is never written nor read), a power
+    // fragment fields are never written nor read), a power
     // of two above 32; fewer channels (the formal harness) keep N_CHAN words.
     localparam ST_DEPTH = (N_CHAN > 32) ? (1 << CH_BITS) : (N_CHAN >= 4) ? 32 : N_CHAN;
     localparam ST_AW    = (ST_DEPTH > 1) ? $clog2(ST_DEPTH) : 1;
@@ -149,7 +150,7 @@ module albatross_controller #(
         .clk_i(clk_i), .rst_i(rst_i), .enable_i(ready_q && cnt_ready),
         .go_o(go), .kind_o(kind), .chan_o(chan7), .nd_o(nd), .words_o(words),
         .src_board_o(src_board), .src_base_o(src_base), .dst_board_o(dst_board), .dst_base_o(dst_base),
-        .slot_time_o(slot_time), .frag_o(frag), .sync_entry_o(sync_entry), .four_o(four), .request_o(request), .mode_info_o(mode_info),
+        .slot_time_o(slot_time), .frag_on_o(frag_on), .sync_entry_o(sync_entry), .four_o(four), .request_o(request), .mode_info_o(mode_info),
         .may_access_o(may_access), .slot_done_i(slot_end),
         .poll_cyc_o(poll_cyc), .poll_board_o(poll_board), .poll_adr_o(poll_adr), .poll_dat_i(bus_rdat),
         .poll_ack_i(r_ack[1]), .poll_err_i(r_err[1]), .sync_rl_i(sync_rl_q),
@@ -179,13 +180,14 @@ module albatross_controller #(
     // is what st_d holds after reset (its sources are reset).
     wire              st_wr   = !ready_q || slot_end || tr_new;
     wire [ST_AW-1:0]  st_wa   = ready_q ? st_ix : clr_ix;
-    wire              wr_exp, wr_imp, wr_tkn, wr_frg;
+    wire              wr_exp, wr_imp, wr_tkn, wr_frg, wr_on;
     always @(posedge clk_i) begin
         if (st_wr) begin
             if (wr_tkn) st_mem[st_wa][31:0]  <= st_d[31:0];
             if (wr_imp) st_mem[st_wa][34:32] <= st_d[34:32];
             if (wr_exp) st_mem[st_wa][50:35] <= st_d[50:35];
             if (wr_frg) st_mem[st_wa][62:51] <= st_d[62:51];
+            if (wr_on)  st_mem[st_wa][63]    <= st_d[63];
         end else begin
             st_q <= st_mem[st_ix];
         end
@@ -195,19 +197,24 @@ module albatross_controller #(
     wire [2:0]  st_rl    = st_q[34:32];
     wire [31:0] st_taken = st_q[31:0];
 
-    // Fragments: the progress, a field of the state word written where it
-    // changes (wr_frg); a later fragment's destination buffers are the
-    // tried field (the picks of the value's first fragment).
+    // Fragments: whether a value goes on and its progress, fields of the
+    // state word each written where it changes (wr_on, wr_frg); the
+    // destination buffers of a run that goes on are the tried field (the
+    // picks of the value's first run).
     wire [11:0] st_prog, tr_prog;
-    wire        tr_prog_wr;
+    wire        st_on, tr_on, tr_on_wr, tr_prog_wr;
     generate
         if (HAS_FRAGMENTS != 0) begin : g_frag_state
+            assign st_on   = st_q[63];
             assign st_prog = st_q[62:51];
+            assign wr_on   = !ready_q || (slot_end && tr_on_wr);     // (clearing: tr_on is 0 after reset)
             assign wr_frg  = !ready_q || (slot_end && tr_prog_wr);   // (clearing: tr_prog is 0 after reset)
         end else begin : g_no_frag_state
+            assign st_on   = 1'b0;
             assign st_prog = 12'd0;
+            assign wr_on   = 1'b0;
             assign wr_frg  = 1'b0;
-            wire unused_frag = &{1'b0, st_q[62:51], tr_prog_wr};
+            wire unused_frag = &{1'b0, st_q[63:51], tr_on_wr, tr_prog_wr};
         end
     endgenerate
 
@@ -218,7 +225,7 @@ module albatross_controller #(
     wire        tr_status_valid;
     wire        tr_done, tr_imp, tr_exp, tr_new;
     wire [3:0]  tr_aband;
-    wire [11:0] frag;           // E7.frag of the running entry (from 2 clocks after go)
+    wire        frag_on;        // E7.frag != 0 for the running entry (from 2 clocks after go)
     wire [2:0]  tr_rl, tr_xfers, tr_corrupt;
     wire [3:0]  tr_need;
     wire [11:0] tr_tried, tr_index;
@@ -234,11 +241,11 @@ module albatross_controller #(
     albatross_transfer #(.ADDR_WIDTH(AW), .HAS_FRAGMENTS(HAS_FRAGMENTS)) u_transfer (
         .clk_i(clk_i), .rst_i(rst_i),
         .go_i(go), .copy_i(k_copy), .time_kind_i(k_time), .four_i(four), .request_i(request), .active_i(active),
-        .words_i(words), .frag_i(frag),
+        .words_i(words), .frag_on_i(frag_on),
         .src_board_i(src_board), .src_base_i(src_base), .dst_board_i(dst_board), .dst_base_i(dst_base),
         .slot_time_i(slot_time), .may_access_i(may_access), .drop_run_i(drop_run),
         .st_rl_i(st_rl), .st_need_i(st_need), .st_tried_i(st_tried), .st_taken_i(st_taken),
-        .st_prog_i(st_prog), .prog_o(tr_prog), .prog_wr_o(tr_prog_wr), .aband_o(tr_aband),
+        .st_on_i(st_on), .st_prog_i(st_prog), .on_o(tr_on), .on_wr_o(tr_on_wr), .prog_o(tr_prog), .prog_wr_o(tr_prog_wr), .aband_o(tr_aband),
         .status_i(tr_status), .status_valid_i(tr_status_valid), .index_o(tr_index),
         .done_o(tr_done), .imp_run_o(tr_imp), .exp_run_o(tr_exp), .new_o(tr_new), .rl_o(tr_rl),
         .need_o(tr_need), .tried_o(tr_tried),
@@ -274,6 +281,7 @@ module albatross_controller #(
         st_d[38:35] = tr_need;
         st_d[50:39] = tr_tried;
         st_d[62:51] = tr_prog;
+        st_d[63]    = tr_on;
     end
     assign wr_exp = !ready_q || (slot_end && tr_exp);
     assign wr_imp = !ready_q || (slot_end && tr_imp);

@@ -10,9 +10,9 @@
 //   * E7 (HAS_FRAGMENTS): the fetch clocks are all taken, so E7 of the
 //     entry that runs is read in the first clock of its transfer (e7_rd_o,
 //     the clock after go_i, at {e7_ent_o, 011}: e7_ent_o is the entry + 1,
-//     taken in FETCH clock 5); frag_o is its frag field from the clock after
-//     that read (the ROM word itself, then a register), held until the next
-//     transfer's.  HAS_FRAGMENTS 0: no read, frag_o 0.
+//     taken in FETCH clock 5); frag_on_o, its frag field is not 0, from the
+//     clock after that read (of the ROM word itself, then a register), held
+//     until the next transfer's.  HAS_FRAGMENTS 0: no read, frag_on_o 0.
 //   * Data registers: never reset (the sequencer starts no slot before a
 //     fetch has written them); reset clears the E7 read strobes.
 `default_nettype none
@@ -20,7 +20,7 @@
 module albatross_entry_fields #(
     parameter ADDR_WIDTH = 10, // word-address bits of a board RAM
     parameter HAS_MODES  = 1,  // 1: the REQUEST and MODE flags; 0: read as 0
-    parameter HAS_FRAGMENTS = 1 // 1: E7.frag of the entry that runs; 0: frag_o is 0
+    parameter HAS_FRAGMENTS = 1 // 1: E7.frag != 0 of the entry that runs; 0: frag_on_o is 0
 ) (
     input  wire                    clk_i,
     input  wire                    rst_i,          // synchronous, active high (the E7 strobes)
@@ -31,7 +31,7 @@ module albatross_entry_fields #(
     input  wire                    go_i,           // one clock: the entry's transfer starts
     output wire                    e7_rd_o,        // read E7 of the entry that runs now (at {e7_ent_o, 011})
     output reg  [7:0]              e7_ent_o,       // the entry that runs + 1
-    output wire [11:0]             frag_o,         // E7.frag of the entry that runs (2 clocks after go_i on)
+    output wire                    frag_on_o,      // E7.frag != 0 for the entry that runs (2 clocks after go_i on)
     output reg  [1:0]              kind_o,
     output reg                     sync_o,         // E0 flag SYNC
     output reg                     four_o,         // E0 flag FOUR_SLOT
@@ -87,16 +87,17 @@ module albatross_entry_fields #(
         endcase
     end
 
-    // E7 of the entry that runs: read now / in rom_i now; its frag
+    // E7 of the entry that runs: read now / in rom_i now; its frag is not 0
+    wire        e7_on = rom_i[ALB_ROM_E7_FRAG_LSB +: 12] != 12'd0;
     reg         e7_rd_q, e7_q;
-    reg  [11:0] frag_q;
+    reg         frag_q;
     always @(posedge clk_i) begin
         e7_rd_q <= !rst_i && HAS_FRAGMENTS != 0 && go_i;
         e7_q    <= !rst_i && e7_rd_q;
-        if (e7_q) frag_q <= rom_i[ALB_ROM_E7_FRAG_LSB +: 12];
+        if (e7_q) frag_q <= e7_on;
     end
     assign e7_rd_o = e7_rd_q;
-    assign frag_o  = HAS_FRAGMENTS == 0 ? 12'd0 : e7_q ? rom_i[ALB_ROM_E7_FRAG_LSB +: 12] : frag_q;
+    assign frag_on_o = HAS_FRAGMENTS != 0 && (e7_q ? e7_on : frag_q);
 
 endmodule
 

@@ -44,8 +44,8 @@
 //     needs of the entry that runs.
 //   * E7 (HAS_FRAGMENTS; rtl/albatross_entry_fields.v): read in the first
 //     clock of the entry's transfer (a main read: the background check waits
-//     a clock), frag_o is its frag field from the clock after, held until the
-//     next transfer's.
+//     a clock), frag_on_o (its frag field is not 0) from the clock after,
+//     held until the next transfer's.
 //   * Deadline D = cycle start + start + length.  may_access_o is high in a
 //     clock c of a slot when an access put on the bus in clock c+1 ends
 //     before D even if it times out: c + 1 <= D - TIMEOUT - 2.  go_o and
@@ -77,7 +77,7 @@ module albatross_sequencer #(
     parameter HAS_MODES  = 1,    // 1: mode switches on request (albatross_mode_switch); 0: the start-up mode only
     parameter HAS_MULTIRATE = 1, // 1: entries run in the minor cycles of their E6 (base, rep); 0: every entry in every cycle
     parameter CLUSTER_BITS  = 15, // bits of the minor-cycle count: reps up to CLUSTER_BITS (1..15)
-    parameter HAS_FRAGMENTS = 1  // 1: E7.frag of the running entry on frag_o; 0: frag_o is 0
+    parameter HAS_FRAGMENTS = 1  // 1: E7.frag != 0 of the running entry on frag_on_o; 0: frag_on_o is 0
 ) (
     input  wire                    clk_i,
     input  wire                    rst_i,          // synchronous, active high
@@ -93,7 +93,7 @@ module albatross_sequencer #(
     output wire [15:0]             dst_board_o,    // destination d at [4d +: 4]
     output wire [4*ADDR_WIDTH-1:0] dst_base_o,     // destination d at [d*ADDR_WIDTH +: ADDR_WIDTH]
     output wire [31:0]             slot_time_o,    // S, the slot's nominal start
-    output wire [11:0]             frag_o,         // E7.frag of the running entry, valid from 2 clocks after go_o
+    output wire                    frag_on_o,      // E7.frag != 0 for the running entry, valid from 2 clocks after go_o
     output wire                    sync_entry_o,   // the entry is the SYNC COPY (entry 0, sync mode)
     output wire                    four_o,         // E0 flag FOUR_SLOT: the channel is of the four-slot kind
     output wire                    request_o,      // E0 flag REQUEST: a COPY whose New value is a mode request
@@ -282,7 +282,7 @@ module albatross_sequencer #(
     wire [13:0]         span;          // 3 * W (four-slot: 4 * W)
     albatross_entry_fields #(.ADDR_WIDTH(ADDR_WIDTH), .HAS_MODES(HAS_MODES), .HAS_FRAGMENTS(HAS_FRAGMENTS)) u_fields (
         .clk_i(clk_i), .rst_i(rst_i), .fetch_i(state_q == ST_FETCH), .step_i(step_q), .rom_i(rom_q),
-        .ent_inc_i(ent_inc), .go_i(go_now), .e7_rd_o(e7_rd), .e7_ent_o(e7_ent), .frag_o(frag_o),
+        .ent_inc_i(ent_inc), .go_i(go_now), .e7_rd_o(e7_rd), .e7_ent_o(e7_ent), .frag_on_o(frag_on_o),
         .kind_o(kind_o), .sync_o(sync_entry_o), .four_o(four_o), .request_o(request_o), .mode_info_o(mode_info_o),
         .chan_o(chan_o), .nd_o(nd_o), .words_o(words_o), .span_o(span), .src_board_o(src_board_o),
         .src_base_o(src_base_o), .dst_board_o(dst_board_o), .dst_base_o(dst_base_o));

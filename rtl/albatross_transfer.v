@@ -14,27 +14,32 @@
 //   * The Import (COPY), a REQUEST's mode request, the Export, failures,
 //     the drop run, the cut-off and the timing: albatross_transfer_fsm
 //     states them (one state machine).
-//   * Fragments (HAS_FRAGMENTS; a COPY with frag_i = F != 0 words per
-//     fragment; albatross_transfer_frag has the word range and the
-//     progress): a slot carries words [p, min(p + F, W)) of the value, p
-//     the channel's progress (st_prog_i).  p = 0: the Import and the
-//     destinations' control loads and picks as above, then the fragment's
-//     words.  A later fragment (cont): no Import and no control load: the
-//     source buffer is the held one (st_rl_i, whose ReadLocked the first
-//     fragment stored and nothing changes until the value ends), the
+//   * Values over several runs ("fragments"; HAS_FRAGMENTS; a COPY whose
+//     entry has frag_on_i, E7.frag != 0; albatross_transfer_frag has the
+//     word index and the progress): a run stores the value's words from
+//     its first until the value's last or until the deadline cuts the slot
+//     off; the channel's state says whether a value goes on (st_on_i) and
+//     its progress p (st_prog_i), the first word not yet stored to every
+//     destination still in it.  A first run: the Import and the
+//     destinations' control loads and picks as above, then words from 0.
+//     A run that goes on (cont): no Import and no control load: words from
+//     p; the source buffer is the held one (st_rl_i, whose ReadLocked the
+//     first run stored and nothing changes until the value ends), the
 //     destinations are those still in the value (st_need_i) and their
 //     buffers are the picked ones (st_tried_i: a destination's buffer
-//     picked is its buffer tried, tried_o).  After a fragment that is not
-//     the last: need_o = the destinations still in the value (a dropped one
-//     stays out of it), no taken_at, Slot or Actual store (nothing
-//     published).  The last fragment: taken_at, (Slot,) Actual as above.  A
-//     last fragment cut off after its publication began ends the value (the
-//     destinations not published stay in need: the next run Imports afresh
-//     and an Old value is sent again from fragment 0, its control loads
-//     seeing a landed Actual store); a value with no destination left ends.
-//     aband_o: the destinations abandoned in this slot (not published;
-//     after a fragment that is not the last, those dropped in it: the
-//     others are still in the value, not in need).
+//     picked is its buffer tried, tried_o).  A run cut off before the
+//     publication began, with a destination still in the value (and, for a
+//     first run, a word stored to all): the value goes on (on_o, on_wr_o;
+//     prog_o, prog_wr_o where a word's stores ended in the slot), need_o =
+//     the destinations still in it (a dropped one stays out of it), no
+//     taken_at, Slot or Actual store (nothing published).  After the last
+//     word: taken_at, (Slot,) Actual as above.  A run cut off after its
+//     publication began ends the value (the destinations not published
+//     stay in need: the next run Imports afresh and an Old value is sent
+//     again from word 0, its control loads seeing a landed Actual store); a
+//     value with no destination left ends.  aband_o: the destinations
+//     abandoned in this slot (not published; when the value goes on, those
+//     dropped in it: the others are still in the value, not in need).
 // Parts: albatross_transfer_fsm (the state machine; it holds
 // albatross_transfer_pick, the control-word decode and the buffer picks,
 // albatross_transfer_dest, the per-destination registers, and
@@ -46,7 +51,7 @@
 
 module albatross_transfer #(
     parameter ADDR_WIDTH    = 10, // word-address bits of a board RAM
-    parameter HAS_FRAGMENTS = 1   // 1: a COPY's value may go in fragments (frag_i); 0: frag_i is ignored
+    parameter HAS_FRAGMENTS = 1   // 1: a COPY's value may go over several runs (frag_on_i); 0: frag_on_i is ignored
 ) (
     input  wire                    clk_i,
     input  wire                    rst_i,          // synchronous, active high
@@ -58,7 +63,7 @@ module albatross_transfer #(
     input  wire                    request_i,      // a REQUEST COPY: its New value is a mode request
     input  wire [3:0]              active_i,       // the destinations of the entry
     input  wire [11:0]             words_i,        // W
-    input  wire [11:0]             frag_i,         // words per fragment (E7.frag; 0: one fragment), valid from 2 clocks after go_i
+    input  wire                    frag_on_i,      // E7.frag != 0: the value may go over several runs; valid from 2 clocks after go_i
     input  wire [3:0]              src_board_i,
     input  wire [ADDR_WIDTH-1:0]   src_base_i,
     input  wire [15:0]             dst_board_i,    // d at [4d +: 4]
@@ -71,7 +76,8 @@ module albatross_transfer #(
     input  wire [3:0]              st_need_i,      // destinations that still need the current value
     input  wire [11:0]             st_tried_i,     // buffers tried: picked, Actual (four-slot: Slot) store made (0 none), d at [3d +: 3]
     input  wire [31:0]             st_taken_i,     // taken_at of the current value
-    input  wire [11:0]             st_prog_i,      // fragments: the next word of the value (0: its first fragment)
+    input  wire                    st_on_i,        // fragments: a value goes on
+    input  wire [11:0]             st_prog_i,      // ... its progress: the first word not stored to every destination in it
     // STATUS words
     input  wire [31:0]             status_i,
     input  wire                    status_valid_i,
@@ -84,8 +90,10 @@ module albatross_transfer #(
     output wire [2:0]              rl_o,           // the copy after the slot
     output wire [3:0]              need_o,         // destinations still in need after the Export
     output wire [11:0]             tried_o,
+    output wire                    on_o,           // fragments: the value goes on after the slot
+    output wire                    on_wr_o,        // ... on_o is written (else the state keeps it)
     output wire [11:0]             prog_o,         // fragments: the progress after the slot
-    output wire                    prog_wr_o,      // fragments: prog_o changed (else the state keeps it)
+    output wire                    prog_wr_o,      // ... prog_o is written (else the state keeps it)
     output wire [3:0]              aband_o,        // destinations abandoned in this slot (when the Export ran)
     output wire [2:0]              transfers_o,    // destinations published
     output wire [2:0]              corrupt_o,      // control bytes that named no buffer
@@ -111,7 +119,7 @@ module albatross_transfer #(
     endgenerate
 
     // ------------------------------------------------------------ the state machine
-    wire        cont, last_wd, lastf, mid, start, take, cont_q, fdone, pubph, need_any;
+    wire        cont, lastf, mid, start, take, cont_q, wend, pubph, need_any;
     wire        dst, src_act, src_rl, src_word, dst_word, dst_tkn, dst_slot, dst_fin;
     wire [1:0]  d;
     wire [2:0]  ald, buf_d;
@@ -122,8 +130,8 @@ module albatross_transfer #(
         .request_i(request_i), .active_i(active_i), .may_access_i(may_access_i), .drop_run_i(drop_run_i),
         .st_rl_i(st_rl_i), .st_need_i(st_need_i), .st_tried_i(st_tried_i),
         .status_i(status_i), .status_valid_i(status_valid_i),
-        .cont_i(cont), .last_wd_i(last_wd), .lastf_i(lastf), .mid_i(mid),
-        .start_o(start), .take_o(take), .cont_q_o(cont_q), .fdone_o(fdone), .pubph_o(pubph), .need_any_o(need_any),
+        .cont_i(cont), .lastf_i(lastf), .mid_i(mid),
+        .start_o(start), .take_o(take), .cont_q_o(cont_q), .wend_o(wend), .pubph_o(pubph), .need_any_o(need_any),
         .dst_o(dst), .src_act_o(src_act), .src_rl_o(src_rl), .src_word_o(src_word), .dst_word_o(dst_word),
         .dst_tkn_o(dst_tkn), .dst_slot_o(dst_slot), .dst_fin_o(dst_fin), .d_o(d), .ald_o(ald), .buf_d_o(buf_d),
         .word_o(word), .done_o(done_o), .imp_run_o(imp_run_o), .exp_run_o(exp_run_o), .new_o(new_o), .rl_o(rl_o),
@@ -131,12 +139,13 @@ module albatross_transfer #(
         .corrupt_o(corrupt_o), .mode_req_o(mode_req_o), .mode_req_mode_o(mode_req_mode_o),
         .cyc_o(cyc_o), .dat_i(dat_i), .ack_i(ack_i), .err_i(err_i));
 
-    // ------------------------------------------------------------ the word index and the fragments
+    // ------------------------------------------------------------ the word index and the progress
     albatross_transfer_frag #(.HAS_FRAGMENTS(HAS_FRAGMENTS)) u_frag (
         .clk_i(clk_i), .rst_i(rst_i), .go_i(go_i), .copy_i(copy_i), .request_i(request_i), .words_i(words_i),
-        .frag_i(frag_i), .st_prog_i(st_prog_i), .need_any_i((st_need_i & active_i) != 4'd0), .start_i(start),
-        .take_i(take), .cont_q_i(cont_q), .fdone_i(fdone), .pubph_i(pubph), .need_any_q_i(need_any),
-        .cont_o(cont), .k_o(k), .last_wd_o(last_wd), .lastf_o(lastf), .mid_o(mid), .prog_o(prog_o), .prog_wr_o(prog_wr_o));
+        .frag_on_i(frag_on_i), .st_on_i(st_on_i), .st_prog_i(st_prog_i), .need_any_i((st_need_i & active_i) != 4'd0),
+        .start_i(start), .take_i(take), .wend_i(wend), .cont_q_i(cont_q), .pubph_i(pubph), .need_any_q_i(need_any),
+        .cont_o(cont), .k_o(k), .lastf_o(lastf), .mid_o(mid), .on_wr_o(on_wr_o), .prog_o(prog_o), .prog_wr_o(prog_wr_o));
+    assign on_o    = mid;
     assign index_o = k;
 
     // ------------------------------------------------------------ the access

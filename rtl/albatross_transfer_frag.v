@@ -1,83 +1,91 @@
-// albatross_transfer_frag -- the word index and the fragment's range of the
+// albatross_transfer_frag -- the word index and the progress of the
 // transfer datapath (albatross_transfer): which word of the value a slot
-// takes next, where the slot's words end, and the channel's progress after
-// the slot (values in fragments, HAS_FRAGMENTS).
+// takes next, and whether and where the value goes on after the slot
+// (values carried over several runs, HAS_FRAGMENTS).
 // Rules:
 //   * k_o, the index of the next word to take: 0 from go_i and when an
-//     Export starts (start_i), the progress st_prog_i from go_i of a later
-//     fragment (cont_o), + 1 per word taken (take_i); reset: 0, the
-//     progress the state RAM's clearing writes.
-//   * A COPY with frag_i = F != 0 words per fragment carries words
-//     [p, min(p + F, W)) of the value in a slot, p the channel's progress
-//     (st_prog_i, a word offset; 0: the value's first fragment).  cont_o (at
-//     go_i): the slot goes on with a value, p a word of it (0, or W after a
-//     value's last fragment: none; only a fragmented value leaves a
-//     progress: frag_i is not needed yet, it comes from the ROM after go_i)
-//     and a destination of the entry still in it (need_any_i).  last_wd_o
-//     (read where a word store ends, from 2 clocks after go_i): the slot's
-//     words end, its F-th word taken (a count of the slot's words, so at
-//     p + F) or word W - 1; lastf_o: at W, the value is whole.
-//   * After the slot (with done): mid_o, the value goes on (a fragment not
-//     the last done, fdone_i, or a later fragment, cont_q_i, cut before its
-//     publication began, pubph_i, with a destination still in it,
-//     need_any_q_i).  prog_o = k_o is written (prog_wr_o) only where it
-//     changes: a fragment not the last done (its end), or a later
-//     fragment's publication begun (W: none, the next run Imports afresh).
-//     A fragment cut off keeps p (it runs again from the same word); a
-//     first fragment cut off leaves p none.
-//   * HAS_FRAGMENTS 0: cont_o, mid_o and prog_wr_o are 0, last_wd_o is
-//     lastf_o (every value whole).
+//     Export starts (start_i), the progress st_prog_i from go_i of a run
+//     that goes on with a value (cont_o), + 1 per word taken (take_i);
+//     lastf_o: k_o = W (read where a word's stores end: the value's last
+//     word is stored).  Reset: 0.
+//   * A COPY whose entry has frag_on_i (E7.frag != 0) may carry its value
+//     over several runs: a run stores words from its first until the
+//     value's last or until its slot is cut off by the deadline.  The
+//     channel's state keeps whether a value goes on (st_on_i) and its
+//     progress p (st_prog_i): the first word not yet stored to every
+//     destination still in the value.  cont_o (at go_i): st_on_i, a COPY
+//     that is not a REQUEST, and a destination of the entry still in the
+//     value (need_any_i).
+//   * wend_i: the stores of the word k_o - 1 have ended (every destination
+//     still in the value has it): the progress so far is k_o (kept, with
+//     a mark that a word ended in this slot; go_i clears the mark).
+//   * After the slot (with done): mid_o, the value goes on: its
+//     publication has not begun (pubph_i), a destination is still in it
+//     (need_any_q_i), and the slot either went on with it (cont_q_i: cut
+//     before its end, with or without a word stored) or began it on an
+//     entry with frag_on_i and stored a word to all (a first run cut before
+//     any word ended leaves no value going on: the next run Imports
+//     afresh).  on_wr_o: the flag is written (value mid_o) where it may
+//     change: mid_o, or a run that went on with a value began its
+//     publication (the value ends).  prog_wr_o: the progress is written
+//     (prog_o, the last kept) where a value goes on and a word ended in
+//     this slot; else the state keeps it (a run cut before a word ended
+//     resumes at the same word).
+//   * frag_on_i comes from the ROM two clocks after go_i; it is read only
+//     with the mark (a word ended: later).
+//   * HAS_FRAGMENTS 0: cont_o, mid_o, on_wr_o and prog_wr_o are 0 (every
+//     value whole: one run).
 `default_nettype none
 
 module albatross_transfer_frag #(
-    parameter HAS_FRAGMENTS = 1   // 1: a COPY's value may go in fragments (frag_i); 0: frag_i is ignored
+    parameter HAS_FRAGMENTS = 1   // 1: a COPY's value may go over several runs (frag_on_i); 0: frag_on_i is ignored
 ) (
     input  wire        clk_i,
     input  wire        rst_i,          // synchronous, active high
     input  wire        go_i,           // one clock: the slot's transfer starts
     input  wire        copy_i,         // kind COPY
-    input  wire        request_i,      // a REQUEST COPY (never fragmented)
+    input  wire        request_i,      // a REQUEST COPY (never over several runs)
     input  wire [11:0] words_i,        // W
-    input  wire [11:0] frag_i,         // words per fragment (E7.frag; 0: one fragment), valid from 2 clocks after go_i
-    input  wire [11:0] st_prog_i,      // the channel's progress (state RAM, valid at go_i)
+    input  wire        frag_on_i,      // E7.frag != 0, valid from 2 clocks after go_i
+    input  wire        st_on_i,        // the channel's state: a value goes on (valid at go_i)
+    input  wire [11:0] st_prog_i,      // ... its progress: the first word not stored to all
     input  wire        need_any_i,     // at go_i: a destination of the entry is still in the value
     input  wire        start_i,        // an Export starts: k := 0
     input  wire        take_i,         // a word is taken: k + 1
+    input  wire        wend_i,         // the stores of word k - 1 have ended
     input  wire        cont_q_i,       // the slot goes on with a value (cont_o registered at go_i)
-    input  wire        fdone_i,        // a fragment not the last stored all its words
     input  wire        pubph_i,        // the publication (taken_at, Slot, Actual stores) has begun
     input  wire        need_any_q_i,   // a destination is still in the value now
-    output wire        cont_o,         // at go_i: a fragment after the first
+    output wire        cont_o,         // at go_i: the slot goes on with a value
     output wire [11:0] k_o,            // the index of the next word to take
-    output wire        last_wd_o,      // at a word store's end: the slot's words end
-    output wire        lastf_o,        // with last_wd_o: the value's last word is taken
-    output wire        mid_o,          // after the slot: the value goes on
+    output wire        lastf_o,        // k_o = W: with wend, the value's last word is stored
+    output wire        mid_o,          // after the slot: the value goes on (the flag's value)
+    output wire        on_wr_o,        // the flag is written
     output wire [11:0] prog_o,         // the progress after the slot
-    output wire        prog_wr_o       // prog_o changed (else the state keeps it)
+    output wire        prog_wr_o       // prog_o is written (else the state keeps it)
 );
 
+    localparam FR = HAS_FRAGMENTS != 0;
+
     reg  [11:0] k_q;
-    reg  [11:0] n_q;                  // the words taken in this slot
+    reg  [11:0] kdone_q;              // k at the last wend: the words stored to all
+    reg         wdone_q;              // a word's stores ended in this slot
 
-    wire        cont     = HAS_FRAGMENTS != 0 && copy_i && !request_i && st_prog_i != 12'd0 && st_prog_i < words_i &&
-                           need_any_i;
-    // A fragment ends when it has taken F words (n_q, from 1 after the first
-    // take; F = 0: never, n_q <= W < 2^12), or at W.
-    wire        fr_on    = HAS_FRAGMENTS != 0 && copy_i && !request_i;
-    wire        lastf    = k_q == words_i;                          // (at last_wd: the value's last word is taken)
-    wire        last_wd  = lastf || (fr_on && n_q == frag_i);
+    wire        cont  = FR && copy_i && !request_i && st_on_i && need_any_i;
+    wire        mid   = FR && !pubph_i && need_any_q_i && (cont_q_i || (copy_i && !request_i && frag_on_i && wdone_q));
 
-    // (reset: 0, the progress the state RAM's clearing writes)
     always @(posedge clk_i) if (rst_i) k_q <= 12'd0; else if (go_i && cont) k_q <= st_prog_i; else if (start_i || go_i) k_q <= 12'd0; else if (take_i) k_q <= k_q + 12'd1;
-    always @(posedge clk_i) if (go_i) n_q <= 12'd0; else if (take_i) n_q <= n_q + 12'd1;
+    // (reset: 0, the progress the state RAM's clearing writes)
+    always @(posedge clk_i) if (rst_i) kdone_q <= 12'd0; else if (wend_i) kdone_q <= k_q;
+    always @(posedge clk_i) if (rst_i || go_i) wdone_q <= 1'b0; else if (wend_i) wdone_q <= 1'b1;
 
     assign cont_o    = cont;
     assign k_o       = k_q;
-    assign last_wd_o = last_wd;
-    assign lastf_o   = lastf;
-    assign mid_o     = HAS_FRAGMENTS != 0 && (fdone_i || (cont_q_i && !pubph_i && need_any_q_i));
-    assign prog_o    = k_q;                             // (after the last fragment: W, no word of the value)
-    assign prog_wr_o = HAS_FRAGMENTS != 0 && (fdone_i || (cont_q_i && pubph_i));
+    assign lastf_o   = k_q == words_i;
+    assign mid_o     = mid;
+    assign on_wr_o   = FR && (mid || (cont_q_i && pubph_i));
+    assign prog_o    = kdone_q;
+    assign prog_wr_o = mid && wdone_q;
 
 endmodule
 

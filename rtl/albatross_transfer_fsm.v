@@ -55,14 +55,15 @@
 //     next clock.  done_o is high for one clock after the last ack, the
 //     cut-off or the decision that nothing is to be done.  Reset clears
 //     control state only.
-//   * Fragments (albatross_transfer_frag: cont_i, last_wd_i, lastf_i,
-//     mid_i): at go_i, cont_i (a later fragment) starts with the source
-//     word load from the held buffer (st_rl_i) into the picked buffers
-//     (st_tried_i) of the destinations still in the value (st_need_i): no
-//     Import, no control load.  A word store ending with last_wd_i and not
-//     lastf_i ends the slot (fdone_o: nothing published); with lastf_i the
-//     publication begins (pubph_o).  need_o after a value that goes on
-//     (mid_i): the destinations still in it; aband_o: those dropped.
+//   * Values over several runs (albatross_transfer_frag: cont_i, lastf_i,
+//     mid_i): at go_i, cont_i (a run that goes on with a value) starts with
+//     the source word load from the held buffer (st_rl_i) into the picked
+//     buffers (st_tried_i) of the destinations still in the value
+//     (st_need_i): no Import, no control load.  wend_o: the stores of a
+//     word have ended (every destination still in the value has it); with
+//     lastf_i the publication begins (pubph_o), else the next word follows
+//     until the deadline cuts the slot off.  need_o after a value that goes
+//     on (mid_i): the destinations still in it; aband_o: those dropped.
 // Parts: albatross_transfer_pick (the control-word decode and the buffer
 // picks), albatross_transfer_dest (the per-destination registers),
 // albatross_transfer_order (the destinations' order).
@@ -82,13 +83,13 @@ module albatross_transfer_fsm (
     input  wire [11:0] st_tried_i,
     input  wire [31:0] status_i,       // STATUS words
     input  wire        status_valid_i,
-    // albatross_transfer_frag: a later fragment (at go_i), the slot's words'
-    // end and the value's, the value goes on
-    input  wire        cont_i, last_wd_i, lastf_i, mid_i,
+    // albatross_transfer_frag: the slot goes on with a value (at go_i), the
+    // value's last word is taken, the value goes on (after the slot)
+    input  wire        cont_i, lastf_i, mid_i,
     output wire        start_o,        // an Export starts (the word index := 0)
     output wire        take_o,         // a word is taken (the word index + 1)
     output wire        cont_q_o,       // the slot goes on with a value (cont_i at go_i)
-    output wire        fdone_o,        // a fragment not the last stored all its words
+    output wire        wend_o,         // the stores of a word have ended
     output wire        pubph_o,        // the publication has begun
     output wire        need_any_o,     // a destination is in the value
     // the access (albatross_transfer_access): one strobe per access kind
@@ -137,8 +138,7 @@ module albatross_transfer_fsm (
     reg [2:0]  rl_q;
     reg        new_q, icor_q, imp_q, exp_q;
     reg [3:0]  serve_q, need_q, pub_q, cor_q;
-    reg        cont_q;                // fragments: the slot goes on with a value (no Import)
-    reg        fdone_q;               // a fragment not the last stored all its words
+    reg        cont_q;                // the slot goes on with a value (no Import)
     reg        pubph_q;               // the publication (taken_at, Slot, Actual stores) has begun
     wire [2:0] buf_d, tried_d;
     wire       dst      = state_q[3];
@@ -175,15 +175,15 @@ module albatross_transfer_fsm (
         .need_q_i(need_q), .d_i(d_q), .leave_i(leave), .start_need_i(start_need[2:0]), .need_m_o(need_m),
         .left_any_o(left_any), .has_next_o(has_next), .next_d_o(next_d), .first_d_o(first_d), .first_in_o(first_in));
 
-    // ------------------------------------------------------------ fragments
+    // ------------------------------------------------------------ values over several runs
     wire [3:0] c_need   = st_need_i & active_i;
-    wire       cont = cont_i, last_wd = last_wd_i, lastf = lastf_i, mid = mid_i;   // (albatross_transfer_frag)
+    wire       cont = cont_i, lastf = lastf_i, mid = mid_i;   // (albatross_transfer_frag)
 
     // ------------------------------------------------------------ steps
     wire       adv      = ack || drop_now;
     wire       ctrl_end = adv && (ctrl_ld ? !complete : state_q == S_DST_PUB);
     wire       want     = state_q != S_WAIT && !has_next && left_any &&
-                          (ctrl_end || (adv && state_q == S_DST_WORD && !last_wd));
+                          (ctrl_end || (adv && state_q == S_DST_WORD && !lastf));
     wire       word_ok  = !copy_i && (time_kind_i || status_valid_i);
     wire       choose   = ack && ((state_q == S_SRC_ACT && a_valid && a_match) || state_q == S_SRC_SLOT);
     wire       req_load = request_i && new_q;         // a New request value: load its word 0
@@ -197,7 +197,7 @@ module albatross_transfer_fsm (
     wire       nrm      = !go_i && !(err_i && stb_q) && !(retry_q && !drop_q);
     wire       dst_go   = complete || has_next ||
                           (want ? (!copy_i && word_ok)
-                                : ((state_q == S_DST_WORD && last_wd && lastf) || state_q == S_DST_TKN || state_q == S_DST_SLOT));
+                                : ((state_q == S_DST_WORD && lastf) || state_q == S_DST_TKN || state_q == S_DST_SLOT));
     wire       req      = !rst_i && ((go_i && !copy_i) || (!go_i && !(err_i && stb_q) && retry_q && !drop_q) ||
                           (nrm && ((ack && ((state_q == S_SRC_ACT && a_valid && !a_match) || state_q == S_SRC_RL ||
                                             (state_q == S_SRC_WORD && !request_i))) ||
@@ -223,15 +223,15 @@ module albatross_transfer_fsm (
             d_q      <= 2'd0;
             rl_q     <= 3'd0;
             run_q    <= 8'd0;
-            {stb_q, retry_q, drop_q, imp_q, exp_q, new_q, icor_q, cont_q, fdone_q, pubph_q} <= 10'd0;
+            {stb_q, retry_q, drop_q, imp_q, exp_q, new_q, icor_q, cont_q, pubph_q} <= 9'd0;
             {serve_q, need_q, pub_q, cor_q} <= 16'd0;
         end else if (go_i) begin
             imp_q    <= copy_i;
             rl_q     <= st_rl_i;
             cont_q   <= cont;
-            {exp_q, new_q, icor_q, retry_q, drop_q, fdone_q, pubph_q, pub_q, cor_q} <= 15'd0;
+            {exp_q, new_q, icor_q, retry_q, drop_q, pubph_q, pub_q, cor_q} <= 14'd0;
             if (cont) begin
-                // A fragment after the first: its first word from the held buffer.
+                // A run that goes on with a value: its first word from the held buffer.
                 imp_q   <= 1'b0;
                 exp_q   <= 1'b1;
                 serve_q <= c_need;
@@ -317,16 +317,9 @@ module albatross_transfer_fsm (
                         stb_q   <= 1'b0;
                     end
                 end
-                else if (state_q == S_DST_WORD) begin
-                    if (last_wd) begin
-                        if (lastf) begin
-                            begin_access(S_DST_TKN, first_d);
-                            pubph_q <= 1'b1;
-                        end else begin
-                            finish;                        // a fragment not the last: nothing published
-                            fdone_q <= 1'b1;
-                        end
-                    end
+                else if (state_q == S_DST_WORD && lastf) begin
+                    begin_access(S_DST_TKN, first_d);
+                    pubph_q <= 1'b1;
                 end
                 else if (state_q == S_DST_TKN) begin_access(four_i ? S_DST_SLOT : S_DST_FIN, first_d);
                 else if (state_q == S_DST_SLOT) begin_access(S_DST_FIN, first_d);
@@ -374,7 +367,10 @@ module albatross_transfer_fsm (
     assign {dst_word_o, dst_tkn_o, dst_slot_o, dst_fin_o} = {state_q == S_DST_WORD, state_q == S_DST_TKN, state_q == S_DST_SLOT, fin_st};
     assign {d_o, ald_o, buf_d_o, word_o, cyc_o} = {d_q, ald_q, buf_d, word_q, stb_q};
     // (albatross_transfer_frag)
-    assign {start_o, take_o, cont_q_o, fdone_o, pubph_o, need_any_o} = {e_start, take_en, cont_q, fdone_q, pubph_q, need_q != 4'd0};
+    // wend: the last destination's store of a word is answered or dropped
+    // (no destination after it: the next word or the publication follows).
+    wire       wend     = nrm && adv && state_q == S_DST_WORD && !has_next;
+    assign {start_o, take_o, cont_q_o, wend_o, pubph_o, need_any_o} = {e_start, take_en, cont_q, wend, pubph_q, need_q != 4'd0};
 
     // ------------------------------------------------------------ results
     function [2:0] popcount4; input [3:0] v; popcount4 = {2'd0, v[0]} + {2'd0, v[1]} + {2'd0, v[2]} + {2'd0, v[3]}; endfunction
@@ -383,10 +379,9 @@ module albatross_transfer_fsm (
     assign exp_run_o   = exp_q;
     assign new_o       = nrm && choose && new_q;
     assign rl_o        = rl_q;
-    // A value that goes on (a fragment not the last done, or a later fragment
-    // cut before its publication began): the destinations still in it (the
-    // dropped ones out).  Once the last fragment's publication has begun, the
-    // value ends as a whole one does (a destination not published stays in
+    // A value that goes on (cut before its publication began): the
+    // destinations still in it (the dropped ones out).  Once its
+    // publication has begun, the value ends as a whole one does (a destination not published stays in
     // need, and the next run Imports afresh, its control load seeing a
     // landed store).
     assign aband_o     = serve_q & ~pub_q & ~(need_q & {4{mid}});
