@@ -17,20 +17,24 @@
 //     that is not a REQUEST, and a destination of the entry still in the
 //     value (need_any_i).
 //   * wend_i: the stores of the word k_o - 1 have ended (every destination
-//     still in the value has it): the progress so far is k_o (kept, with
-//     a mark that a word ended in this slot; go_i clears the mark).
-//   * After the slot (with done): mid_o, the value goes on: its
-//     publication has not begun (pubph_i), a destination is still in it
-//     (need_any_q_i), and the slot either went on with it (cont_q_i: cut
-//     before its end, with or without a word stored) or began it on an
-//     entry with frag_on_i and stored a word to all (a first run cut before
-//     any word ended leaves no value going on: the next run Imports
+//     still in the value has it).  Unless it is the value's last word
+//     (lastf_o), the progress so far is k_o: kept, with a mark that a word
+//     ended in this slot (go_i clears the mark).  The last word is not
+//     counted: a value cut off in its publication goes on from word W - 1,
+//     whose load and stores lead to the publication again.
+//   * After the slot (with done): mid_o, the value goes on: a destination
+//     is still in it and not published (need_any_q_i), none of those has
+//     had a Slot or Actual store begun in the slot (safe_i: a begun one may
+//     have landed, which only the control load of a fresh Import can
+//     tell), and the slot either went on with it (cont_q_i: cut before its
+//     end, with or without a word stored) or began it on an entry with
+//     frag_on_i and stored a word other than the last to all (a first run
+//     cut before that leaves no value going on: the next run Imports
 //     afresh).  on_wr_o: the flag is written (value mid_o) where it may
-//     change: mid_o, or a run that went on with a value began its
-//     publication (the value ends).  prog_wr_o: the progress is written
-//     (prog_o, the last kept) where a value goes on and a word ended in
-//     this slot; else the state keeps it (a run cut before a word ended
-//     resumes at the same word).
+//     change: mid_o, or a run that went on with a value (which ends unless
+//     mid_o).  prog_wr_o: the progress is written (prog_o, the last kept)
+//     where a value goes on and a word was counted in this slot; else the
+//     state keeps it (a run cut before resumes at the same word).
 //   * frag_on_i comes from the ROM two clocks after go_i; it is read only
 //     with the mark (a word ended: later).
 //   * HAS_FRAGMENTS 0: cont_o, mid_o, on_wr_o and prog_wr_o are 0 (every
@@ -54,8 +58,8 @@ module albatross_transfer_frag #(
     input  wire        take_i,         // a word is taken: k + 1
     input  wire        wend_i,         // the stores of word k - 1 have ended
     input  wire        cont_q_i,       // the slot goes on with a value (cont_o registered at go_i)
-    input  wire        pubph_i,        // the publication (taken_at, Slot, Actual stores) has begun
-    input  wire        need_any_q_i,   // a destination is still in the value now
+    input  wire        safe_i,         // no Slot or Actual store begun for a destination still in the value
+    input  wire        need_any_q_i,   // a destination is still in the value now, not published
     output wire        cont_o,         // at go_i: the slot goes on with a value
     output wire [11:0] k_o,            // the index of the next word to take
     output wire        lastf_o,        // k_o = W: with wend, the value's last word is stored
@@ -72,18 +76,19 @@ module albatross_transfer_frag #(
     reg         wdone_q;              // a word's stores ended in this slot
 
     wire        cont  = FR && copy_i && !request_i && st_on_i && need_any_i;
-    wire        mid   = FR && !pubph_i && need_any_q_i && (cont_q_i || (copy_i && !request_i && frag_on_i && wdone_q));
+    wire        lastf = k_q == words_i;
+    wire        mid   = FR && safe_i && need_any_q_i && (cont_q_i || (copy_i && !request_i && frag_on_i && wdone_q));
 
     always @(posedge clk_i) if (rst_i) k_q <= 12'd0; else if (go_i && cont) k_q <= st_prog_i; else if (start_i || go_i) k_q <= 12'd0; else if (take_i) k_q <= k_q + 12'd1;
     // (reset: 0, the progress the state RAM's clearing writes)
-    always @(posedge clk_i) if (rst_i) kdone_q <= 12'd0; else if (wend_i) kdone_q <= k_q;
-    always @(posedge clk_i) if (rst_i || go_i) wdone_q <= 1'b0; else if (wend_i) wdone_q <= 1'b1;
+    always @(posedge clk_i) if (rst_i) kdone_q <= 12'd0; else if (wend_i && !lastf) kdone_q <= k_q;
+    always @(posedge clk_i) if (rst_i || go_i) wdone_q <= 1'b0; else if (wend_i && !lastf) wdone_q <= 1'b1;
 
     assign cont_o    = cont;
     assign k_o       = k_q;
-    assign lastf_o   = k_q == words_i;
+    assign lastf_o   = lastf;
     assign mid_o     = mid;
-    assign on_wr_o   = FR && (mid || (cont_q_i && pubph_i));
+    assign on_wr_o   = FR && (mid || cont_q_i);
     assign prog_o    = kdone_q;
     assign prog_wr_o = mid && wdone_q;
 

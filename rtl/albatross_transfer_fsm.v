@@ -61,9 +61,13 @@
 //     buffers (st_tried_i) of the destinations still in the value
 //     (st_need_i): no Import, no control load.  wend_o: the stores of a
 //     word have ended (every destination still in the value has it); with
-//     lastf_i the publication begins (pubph_o), else the next word follows
-//     until the deadline cuts the slot off.  need_o after a value that goes
-//     on (mid_i): the destinations still in it; aband_o: those dropped.
+//     lastf_i the publication follows, else the next word, until the
+//     deadline cuts the slot off.  need_any_o: a destination is still in
+//     the value and not published; safe_o: none of those has had a Slot or
+//     Actual store begun in this slot (a value may go on only then: a
+//     begun one may have landed, which only a control load can tell).
+//     need_o after a value that goes on (mid_i): the destinations still in
+//     it, not published; aband_o: those dropped.
 // Parts: albatross_transfer_pick (the control-word decode and the buffer
 // picks), albatross_transfer_dest (the per-destination registers),
 // albatross_transfer_order (the destinations' order).
@@ -90,8 +94,8 @@ module albatross_transfer_fsm (
     output wire        take_o,         // a word is taken (the word index + 1)
     output wire        cont_q_o,       // the slot goes on with a value (cont_i at go_i)
     output wire        wend_o,         // the stores of a word have ended
-    output wire        pubph_o,        // the publication has begun
-    output wire        need_any_o,     // a destination is in the value
+    output wire        safe_o,         // no Slot or Actual store begun for a destination still in the value
+    output wire        need_any_o,     // a destination is in the value, not published
     // the access (albatross_transfer_access): one strobe per access kind
     output wire        dst_o, src_act_o, src_rl_o, src_word_o, dst_word_o, dst_tkn_o, dst_slot_o, dst_fin_o,
     output wire [1:0]  d_o,            // the current destination
@@ -139,7 +143,7 @@ module albatross_transfer_fsm (
     reg        new_q, icor_q, imp_q, exp_q;
     reg [3:0]  serve_q, need_q, pub_q, cor_q;
     reg        cont_q;                // the slot goes on with a value (no Import)
-    reg        pubph_q;               // the publication (taken_at, Slot, Actual stores) has begun
+    reg [3:0]  att_q;                 // destinations with a Slot or Actual store begun in this slot
     wire [2:0] buf_d, tried_d;
     wire       dst      = state_q[3];
     wire       ack      = ack_i && stb_q;
@@ -223,13 +227,14 @@ module albatross_transfer_fsm (
             d_q      <= 2'd0;
             rl_q     <= 3'd0;
             run_q    <= 8'd0;
-            {stb_q, retry_q, drop_q, imp_q, exp_q, new_q, icor_q, cont_q, pubph_q} <= 9'd0;
+            {stb_q, retry_q, drop_q, imp_q, exp_q, new_q, icor_q, cont_q} <= 8'd0;
+            att_q    <= 4'd0;
             {serve_q, need_q, pub_q, cor_q} <= 16'd0;
         end else if (go_i) begin
             imp_q    <= copy_i;
             rl_q     <= st_rl_i;
             cont_q   <= cont;
-            {exp_q, new_q, icor_q, retry_q, drop_q, pubph_q, pub_q, cor_q} <= 14'd0;
+            {exp_q, new_q, icor_q, retry_q, drop_q, att_q, pub_q, cor_q} <= 17'd0;
             if (cont) begin
                 // A run that goes on with a value: its first word from the held buffer.
                 imp_q   <= 1'b0;
@@ -317,10 +322,7 @@ module albatross_transfer_fsm (
                         stb_q   <= 1'b0;
                     end
                 end
-                else if (state_q == S_DST_WORD && lastf) begin
-                    begin_access(S_DST_TKN, first_d);
-                    pubph_q <= 1'b1;
-                end
+                else if (state_q == S_DST_WORD && lastf) begin_access(S_DST_TKN, first_d);
                 else if (state_q == S_DST_TKN) begin_access(four_i ? S_DST_SLOT : S_DST_FIN, first_d);
                 else if (state_q == S_DST_SLOT) begin_access(S_DST_FIN, first_d);
                 else if (state_q == S_DST_FIN) finish;
@@ -338,6 +340,7 @@ module albatross_transfer_fsm (
             early_q <= 1'b1;
         end
         if (rst_i || go_i) early_q <= 1'b0;
+        if (!rst_i && !go_i && stb_q && (state_q == S_DST_SLOT || fin_st)) att_q <= att_q | d_bit;
     end
 
     // ------------------------------------------------------------ per-destination fields
@@ -370,7 +373,10 @@ module albatross_transfer_fsm (
     // wend: the last destination's store of a word is answered or dropped
     // (no destination after it: the next word or the publication follows).
     wire       wend     = nrm && adv && state_q == S_DST_WORD && !has_next;
-    assign {start_o, take_o, cont_q_o, wend_o, pubph_o, need_any_o} = {e_start, take_en, cont_q, wend, pubph_q, need_q != 4'd0};
+    wire [3:0] live     = need_q & ~pub_q;    // still in the value, not published
+    assign {start_o, take_o, cont_q_o, wend_o} = {e_start, take_en, cont_q, wend};
+    assign safe_o      = (att_q & live) == 4'd0;
+    assign need_any_o  = live != 4'd0;
 
     // ------------------------------------------------------------ results
     function [2:0] popcount4; input [3:0] v; popcount4 = {2'd0, v[0]} + {2'd0, v[1]} + {2'd0, v[2]} + {2'd0, v[3]}; endfunction
@@ -385,7 +391,7 @@ module albatross_transfer_fsm (
     // need, and the next run Imports afresh, its control load seeing a
     // landed store).
     assign aband_o     = serve_q & ~pub_q & ~(need_q & {4{mid}});
-    assign need_o      = mid ? need_q : serve_q & ~pub_q;
+    assign need_o      = (mid ? need_q : serve_q) & ~pub_q;
     assign transfers_o = exp_q ? popcount4(pub_q) : 3'd0;
     assign corrupt_o   = {2'd0, icor_q} + popcount4(cor_q);
     assign mode_req_o      = nrm && ack && state_q == S_SRC_WORD && request_i && !early_q;

@@ -30,18 +30,23 @@
 // (the observers' PROTO = 0): the proof of the bus rules, the slot timing, the
 // retry and drop rule and every access's place and lanes, without the
 // producer's and consumers' state.
-// With F_FRAG (and F_FIXED: W = 2) the value goes in two fragments of one
-// word (fseq_contract's frag_o = 1; the negatives: formal/ctrl/tests.mk): a slot continues the value when the
-// controller's progress at go (f_prog, its state RAM, joined by the script)
-// is a word of it, else it starts a value (s_vgo).  The observers take s_vgo
-// as their slot start (an Import and an Export span the value's slots), and
-//   frag_words_src, frag_words_dst  every source word load and destination word store of a slot
-//               is of its fragment's word (0 in the first, the progress in a
-//               later one: the fragment resumes at the right word), and a
-//               taken_at store comes only in the last fragment;
-//   frag_held   a slot that continues a value makes no access to the
+// With F_FRAG (and F_FIXED: W = 2) the value may go over several runs
+// (fseq_contract's frag_on_o = 1; a run stores words until the value's end
+// or the free deadline; the negatives: formal/ctrl/tests.mk): a slot goes
+// on with the value when the controller's state says so at go (f_on and
+// the progress f_prog, its state RAM, joined by the script), else it
+// starts a value (s_vgo).  The observers take s_vgo as their slot start (an
+// Import and an Export span the value's runs), and
+//   frag_words_src, frag_words_dst  every source word load and destination
+//               word store of a run that goes on is of a word at or after
+//               the progress (the run resumes at the right word, never
+//               before it; a word skipped leaves a buffer incomplete, which
+//               dst_publish_complete refuses);
+//   frag_held   a slot that goes on with a value makes no access to the
 //               source's control word (its ReadLocked stays held from the
-//               first fragment to the last);
+//               first run to the last);
+//   frag_prog   a slot goes on with a value only from a word of it after
+//               its first (0 < progress < W);
 // with falb_dst's dst_publish_complete (an Actual store only of a buffer
 // whose words were all stored since the value's start) nothing is
 // published before the last fragment, and dst_no_held_write keeps every
@@ -100,13 +105,14 @@ module fctrl #(
     (* keep *) wire [7:0]    e_drop_run;
     (* keep *) wire          s_go, s_may;
     (* keep *) wire [11:0]   f_prog;         // the controller's progress of channel 0 (its state RAM)
+    (* keep *) wire          f_on;           // ... and its flag: a value goes on
 `ifdef F_FRAG
-    // a slot continues the value when the progress at go is a word of it
-    wire          s_cont = s_go && f_prog != 12'd0 && f_prog < e_words;
+    // a slot goes on with the value when the state says so at go
+    wire          s_cont = s_go && f_on;
     wire          s_vgo  = s_go && !s_cont;
 `else
     wire          s_vgo  = s_go;
-    wire          unused_prog = &{1'b0, f_prog};
+    wire          unused_prog = &{1'b0, f_prog, f_on};
 `endif
     wire [WW-1:0] w = e_words[WW-1:0];
 
@@ -180,18 +186,16 @@ module fctrl #(
     always @* if (!init_q) bus_board: assert(!req || s_hit || d0_hit || d1_hit);
 
 `ifdef F_FRAG
-    // ------------------------------------------------------------ fragments (W = 2, one word each)
-    reg       cont_q, last_q;
-    reg       p_q;                         // the slot's word: 0 or 1
+    // ------------------------------------------------------------ runs (W = 2)
+    reg          cont_q;
+    reg [WW-1:0] p_q;                      // the run's first word: 0, or the progress at go
     always @(posedge clk_i) begin
         if (rst_i) begin
             cont_q <= 1'b0;
-            last_q <= 1'b1;
-            p_q    <= 1'b0;
+            p_q    <= {WW{1'b0}};
         end else if (s_go) begin
             cont_q <= s_cont;
-            last_q <= s_cont;                  // W = 2: the second fragment is the last
-            p_q    <= s_cont;
+            p_q    <= s_cont ? f_prog[WW-1:0] : {WW{1'b0}};
         end
     end
     // word offsets of the access in its buffer: source stride 2, destination stride 3
@@ -201,12 +205,14 @@ module fctrl #(
     always @* begin
         if (!init_q && req) begin
             if (s_hit && !m_we && m_adr[AW-1:0] != e_src_base)
-                frag_words_src: assert(s_off[0] == p_q);
+                frag_words_src: assert(s_off[0] >= p_q[0]);
             if ((d0_hit && !d0_ctrl || d1_hit && !d1_ctrl) && m_we)
-                frag_words_dst: assert(d_m == 2 ? last_q : d_m[0] == p_q);
+                frag_words_dst: assert(d_m == 2 || d_m[0] >= p_q[0]);
             if (cont_q)
                 frag_held: assert(!(s_hit && m_adr[AW-1:0] == e_src_base));
         end
+        // a value goes on only from a word of it after its first
+        if (!init_q && s_cont) frag_prog: assert(f_prog != 12'd0 && f_prog < e_words);
     end
 `endif
 

@@ -9,7 +9,8 @@
 // The schedule is one COPY entry (channel 0, ND = 2, source and destination
 // places, W, the four-slot flag and the drop run K as free constants e_*,
 // joined by the script to the harness's observers; with F_FIXED one fixed
-// image: W = 2, every base 0, K = 2; F_FRAG: E7.frag = 1, two fragments); time-rigid only (no
+// image: W = 2, every base 0, K = 2; F_FRAG: E7.frag != 0, the value over
+// several runs, cut by the free deadline); time-rigid only (no
 // SYNC entry, no poll).  Rules of the environment (the sequencer's
 // guarantees, assumed):
 //   * go_o only after enable_i has been high, never while a slot runs (from
@@ -35,7 +36,7 @@ module fseq_contract #(
     parameter HAS_ENTRY_CHECK = 1,  // unused
     parameter CRC_BITS        = 4,  // unused
     parameter HAS_MODES       = 1,  // unused (no mode request: no REQUEST entry)
-    parameter HAS_FRAGMENTS   = 1,  // unused (E7.frag: frag_o, below)
+    parameter HAS_FRAGMENTS   = 1,  // unused (E7.frag != 0: frag_on_o, below)
     parameter HAS_MULTIRATE   = 1,  // unused (every go_o is the entry's: the sequencer's proof covers the due rule)
     parameter CLUSTER_BITS    = 15  // unused
 ) (
@@ -52,7 +53,7 @@ module fseq_contract #(
     output wire [15:0]             dst_board_o,
     output wire [4*ADDR_WIDTH-1:0] dst_base_o,
     output wire [31:0]             slot_time_o,
-    output wire [11:0]             frag_o,         // E7.frag: 0, with F_FRAG 1 (a constant: valid from go_o on, earlier than the 2 clocks after go_o the contract gives)
+    output wire                    frag_on_o,      // E7.frag != 0: 0, with F_FRAG 1 (a constant: valid from go_o on, earlier than the 2 clocks after go_o the contract gives)
     output wire                    sync_entry_o,
     output wire                    four_o,
     output wire                    request_o,      // (modes: not modelled, no REQUEST entry)
@@ -136,9 +137,9 @@ module fseq_contract #(
     assign dst_base_o   = {{(2*AW){1'b0}}, e_dst_base1, e_dst_base0};
     assign slot_time_o  = f_slot_time;
 `ifdef F_FRAG
-    assign frag_o       = 12'd1;                 // (F_FIXED: W = 2) two fragments of one word
+    assign frag_on_o    = 1'b1;                  // (F_FIXED: W = 2) the value may go over several runs
 `else
-    assign frag_o       = 12'd0;                 // every value in one slot
+    assign frag_on_o    = 1'b0;                  // every value in one run
 `endif
     assign sync_entry_o = 1'b0;
     assign four_o       = e_four;

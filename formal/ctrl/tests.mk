@@ -53,7 +53,8 @@ FCTRL_NEG := \
     old_same_pair3:src_fresh \
     frag_publish_first:frag_words_dst|dst_publish_complete \
     frag_reimport:frag_held \
-    frag_wrong_word:frag_words_src
+    frag_wrong_word:frag_words_src \
+    frag_progress_early:frag_prog|dst_publish_complete
 # Each mutant is formal/ctrl/mutants/VARIANT.sed, an edit of the controller
 # file its '# target:' line names (CORE:VARIANT:FILE).
 fctrl_target  = $(notdir $(shell sed -n 's/^# target: *//p' formal/ctrl/mutants/$(1).sed))
@@ -78,7 +79,7 @@ FSBY_TESTS_SPEC += \
     formal-ctrl-shape-negative-drop_total:ctrl:neg_shape_drop_total:retry_same|drop_k \
     $(foreach n,$(FCTRL_NEG),$(if $(filter $(call neg_field,$(n),1),$(FCTRL_SLOW)),,$(call fctrl_neg_spec,$(n))))
 FSBY_SLOW_SPEC += formal-ctrl-cover3:ctrl:cover3:pass formal-ctrl-cover4:ctrl:cover4:pass
-# A value in two fragments (F_FRAG, fctrl.v's frag_* properties): the
+# A value over several runs (F_FRAG, fctrl.v's frag_* properties): the
 # proofs (abc pdr: three-buffer about 2 CPU minutes; four-slot not within
 # 15 minutes so far, bounded by the long timeout) run with make
 # test-slow; their negatives (frag_*) in make test.

@@ -1,6 +1,9 @@
 # target: rtl/albatross_transfer_fsm.v
-# frag_publish_first (tb/mutants/controller/frag_publish_first.sed): a
-# fragmented value's first fragment is taken for its last, so the first slot
-# publishes a buffer holding its first word only.  Must fail frag_words_dst
-# (a taken_at store in a slot that is not the last) or dst_publish_complete.
-s/                        if (lastf) begin/                        if (lastf || !cont_q) begin/
+# frag_publish_first (tb/mutants/controller/frag_publish_first.sed): the
+# first run of a value that may go over several runs publishes after its
+# first word, so it publishes a buffer holding its first word only (the
+# three edits keep the next-access logic in step).  Must fail
+# dst_publish_complete (or frag_words_dst).
+s/                else if (state_q == S_DST_WORD \&\& lastf) begin/                else if (state_q == S_DST_WORD \&\& (lastf || !cont_q)) begin/
+s/: ((state_q == S_DST_WORD \&\& lastf) ||/: ((state_q == S_DST_WORD \&\& (lastf || !cont_q)) ||/
+s/(adv \&\& state_q == S_DST_WORD \&\& !lastf))/(adv \&\& state_q == S_DST_WORD \&\& !(lastf || !cont_q)))/
