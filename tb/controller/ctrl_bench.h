@@ -75,7 +75,7 @@ struct Entry {
     uint32_t start, len;
     unsigned sbrd, sbase;
     std::vector<Dst> dst;
-    unsigned frag = 0;                  // E7.frag: words per fragment (0: one fragment)
+    unsigned frag = 0;                  // E7.frag: not 0, the value may go over several runs (0: one run)
 };
 enum { IDLE = C::KIND_IDLE, COPY = C::KIND_COPY, TIME = C::KIND_TIME, STATUS = C::KIND_STATUS };
 
@@ -384,5 +384,6 @@ void scenario_deadline();
 void scenario_race4();
 // ctrl_scenarios_frag.cpp
 void scenario_frag();
+void scenario_fragedge();
 // ctrl_scenarios_fragswitch.cpp
 void scenario_fragswitch();
