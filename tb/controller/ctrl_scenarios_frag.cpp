@@ -75,20 +75,13 @@ bool write_frag_rom() {
     return true;
 }
 
-std::string words_str(const std::vector<unsigned> &v) {
-    std::string r;
-    for (unsigned x : v) r += (r.empty() ? "" : " ") + std::to_string(x);
-    return r.empty() ? "none" : r;
-}
-
 struct Frag {
     bool rom = write_frag_rom();      // (before the model, which reads it)
     Sim s;
     Producer prod{0, SRC_BASE, FW};
     Consumer cons{1, DST_BASE, FW + 1};
     uint64_t t0 = 0;
-    std::vector<bool> stored = std::vector<bool>(FW, false);   // words of the value stored to the destination
-    unsigned bd = 0;                  // the destination buffer of the value's word stores (0: none yet)
+    ValueRuns v{s, 0, SRC_BASE, 1, DST_BASE, FW};   // the value's words per run
     Frag() {
         prod.init(s);
         s.wr(1, DST_BASE, 0x3, 0x0101);   // Actual = ReadLocked = Buffer1
@@ -100,76 +93,6 @@ struct Frag {
     // RAM operations (index range) of the controller on the destination's Actual byte.
     unsigned dst_publishes(size_t from, size_t to) const { return s.actual_stores(1, DST_BASE, from, to); }
     unsigned src_ctrl(size_t from, size_t to) const { return s.ops_at(0, SRC_BASE, from, to); }
-    // The word offsets in buffer b of the source loads in [from, to) (100 + address: another buffer's).
-    std::vector<unsigned> src_words(size_t from, size_t to, unsigned b) const {
-        std::vector<unsigned> v;
-        const unsigned lo = SRC_BASE + 1 + (b - 1) * FW;
-        for (size_t i = from; i < to && i < s.ram.size(); ++i) {
-            const RamOp &r = s.ram[i];
-            if (r.board == 0 && !r.we && r.adr >= SRC_BASE + 1) {
-                if (r.adr >= lo && r.adr < lo + FW) v.push_back(r.adr - lo);
-                else v.push_back(100 + r.adr);   // a word of another buffer
-            }
-        }
-        return v;
-    }
-    // The destination's buffer of the first value-word store in [from, to) (0: none).
-    unsigned dst_buf(size_t from, size_t to) const {
-        for (size_t i = from; i < to && i < s.ram.size(); ++i) {
-            const RamOp &r = s.ram[i];
-            if (r.board == 1 && r.we && r.adr > DST_BASE && r.adr < DST_BASE + 1 + 3 * (FW + 1) &&
-                (r.adr - DST_BASE - 1) % (FW + 1) < FW)
-                return (r.adr - DST_BASE - 1) / (FW + 1) + 1;
-        }
-        return 0;
-    }
-    // The word offsets in buffer b of the destination's value-word stores in
-    // [from, to) (100 + address: a word of another buffer; taken_at stores not counted).
-    std::vector<unsigned> dst_words(size_t from, size_t to, unsigned b) const {
-        std::vector<unsigned> v;
-        const unsigned lo = DST_BASE + 1 + (b - 1) * (FW + 1);
-        for (size_t i = from; i < to && i < s.ram.size(); ++i) {
-            const RamOp &r = s.ram[i];
-            if (r.board != 1 || !r.we || r.adr <= DST_BASE || r.adr >= DST_BASE + 1 + 3 * (FW + 1)) continue;
-            if (b != 0 && r.adr >= lo && r.adr < lo + FW) v.push_back(r.adr - lo);
-            else if ((r.adr - DST_BASE - 1) % (FW + 1) < FW) v.push_back(100 + r.adr);
-        }
-        return v;
-    }
-    // The first word of the value not yet stored to the destination (FW: all).
-    unsigned first_unstored() const {
-        unsigned k = 0;
-        while (k < FW && stored[k]) ++k;
-        return k;
-    }
-    // A new value: nothing of it stored yet.
-    void fresh() {
-        stored.assign(FW, false);
-        bd = 0;
-    }
-    // Check one run of the value in ram[from, to) whose first word is `first`
-    // (why: what makes it so), source buffer b: its source loads are
-    // consecutive words of b from `first`; its destination stores are the
-    // same words, in order, to the buffer of the value's first store (all of
-    // them, or all but a last load cut off by the deadline before its store).
-    // Records the words stored; returns how many.
-    unsigned check_run(const char *what, size_t from, size_t to, unsigned b, unsigned first, const char *why) {
-        const std::vector<unsigned> ld = src_words(from, to, b);
-        std::vector<unsigned> exp;
-        for (unsigned i = 0; i < ld.size() || exp.empty(); ++i) exp.push_back(first + i);
-        check(G_DATA, ld == exp, "%s at %s: expected source loads of consecutive words of buffer %u from word %u, "
-              "got %s", what, why, b, first, words_str(ld).c_str());
-        if (bd == 0) bd = dst_buf(from, to);
-        const std::vector<unsigned> st = dst_words(from, to, bd);
-        const bool ok = st.size() <= ld.size() && st.size() + 1 >= ld.size() && std::equal(st.begin(), st.end(),
-                                                                                             ld.begin());
-        check(G_DATA, ok, "%s stores each word it loads to the destination's buffer %u (a last load cut off by the "
-              "deadline may have no store): expected stores of words %s (or all but the last), got %s", what, bd,
-              words_str(ld).c_str(), words_str(st).c_str());
-        for (unsigned x : st)
-            if (x < FW) stored[x] = true;
-        return (unsigned)st.size();
-    }
     // Run to the end of cycle c's slot work (its tail); return the RAM index there.
     size_t to_tail(unsigned c) {
         s.run_until(cyc(c) + TAIL);
@@ -178,8 +101,8 @@ struct Frag {
     // Run until the destination has n more value-word stores from ram[from]
     // (bounded: at most to the end of cycle c's slot); return how many came.
     unsigned run_to_stores(size_t from, unsigned n, unsigned c) {
-        while (s.now < cyc(c) + S_COPY + L_FRAG && dst_words(from, s.ram.size(), bd).size() < n) s.tick();
-        return (unsigned)dst_words(from, s.ram.size(), bd).size();
+        while (s.now < cyc(c) + S_COPY + L_FRAG && v.dst_words(from, s.ram.size(), v.bd).size() < n) s.tick();
+        return (unsigned)v.dst_words(from, s.ram.size(), v.bd).size();
     }
 };
 
@@ -204,8 +127,8 @@ void part_whole() {
              f.dst_publishes(i0, e0));
     check(G_DATA, f.src_ctrl(i0, e0) > 0, "frag whole: run 0 Imports: expected source control accesses, got %u",
           f.src_ctrl(i0, e0));
-    f.check_run("frag whole: run 0 starts", i0, e0, b0, 0, FIRST_RUN);
-    const unsigned p0 = f.first_unstored();
+    f.v.check_run("frag whole: run 0 starts", i0, e0, b0, 0, FIRST_RUN);
+    const unsigned p0 = f.v.first_unstored();
     check(G_DATA, p0 > 0 && p0 < FW, "frag whole: run 0 stores a part of the value (the slot is too short for the "
           "whole): expected the first word not stored in 1..%u, got %u", FW - 1, p0);
     std::vector<Attempt> a0 = f.s.attempts(f.cyc(0), f.cyc(0) + H1);
@@ -220,8 +143,8 @@ void part_whole() {
     CHECK_EQ(G_DATA, "frag whole: run 1 publishes nothing", 0, f.dst_publishes(i1, e1));
     CHECK_EQ(G_DATA, "frag whole: run 1 makes no access to the source's control word (its lock held)", 0,
              f.src_ctrl(i1, e1));
-    f.check_run("frag whole: run 1 goes on", i1, e1, b0, p0, GOES_ON);
-    const unsigned p1 = f.first_unstored();
+    f.v.check_run("frag whole: run 1 goes on", i1, e1, b0, p0, GOES_ON);
+    const unsigned p1 = f.v.first_unstored();
     check(G_DATA, p1 > p0 && p1 < FW, "frag whole: run 1 stores more of the value but not its end (RUNS = %u): "
           "expected the first word not stored in %u..%u, got %u", RUNS, p0 + 1, FW - 1, p1);
     isnew = f.cons.import(f.s, got);
@@ -230,9 +153,9 @@ void part_whole() {
     const size_t e2 = f.to_tail(2);
     CHECK_EQ(G_DATA, "frag whole: run 2 makes no access to the source's control word (its lock held)", 0,
              f.src_ctrl(i2, e2));
-    f.check_run("frag whole: run 2 goes on", i2, e2, b0, p1, GOES_ON);
+    f.v.check_run("frag whole: run 2 goes on", i2, e2, b0, p1, GOES_ON);
     CHECK_EQ(G_DATA, "frag whole: run 2 stores the rest of the value (the first word not stored)", FW,
-             f.first_unstored());
+             f.v.first_unstored());
     CHECK_EQ(G_DATA, "frag whole: the value's last run publishes once (Actual stores)", 1, f.dst_publishes(i2, e2));
     isnew = f.cons.import(f.s, got);
     CHECK_EQ(G_DATA, "frag whole: after the value's last run the consumer's Import returns New", 1, isnew);
@@ -240,12 +163,12 @@ void part_whole() {
     CHECK_EQ(G_DATA, "frag whole: taken_at = the time of run 0's Import (its choosing load)", taken,
              got.size() > FW ? got[FW] : 0);
     // The next value: a fresh Import, from word 0, then RUNS - 1 runs that go on.
-    f.fresh();
+    f.v.fresh();
     const size_t i3 = f.s.ram.size();
     const size_t e3 = f.to_tail(RUNS);
     check(G_DATA, f.src_ctrl(i3, e3) > 0, "frag whole: the next value starts with a fresh Import: expected source "
           "control accesses in cycle %u, got %u", RUNS, f.src_ctrl(i3, e3));
-    f.check_run("frag whole: the next value's first run starts", i3, e3, b1, 0, FIRST_RUN);
+    f.v.check_run("frag whole: the next value's first run starts", i3, e3, b1, 0, FIRST_RUN);
     f.to_tail(2 * RUNS - 1);
     CHECK_EQ(G_DATA, "frag whole: the next value published once, in its last run (Actual stores, cycles 3..5)", 1,
              f.dst_publishes(i3, f.s.ram.size()));
@@ -260,14 +183,14 @@ void part_retry() {
     const unsigned b0 = f.prod.publish(f.s, fvalue(0));
     const size_t i0 = f.s.ram.size();
     const size_t e0 = f.to_tail(0);
-    f.check_run("frag retry: run 0 starts", i0, e0, b0, 0, FIRST_RUN);
-    const unsigned p0 = f.first_unstored();
+    f.v.check_run("frag retry: run 0 starts", i0, e0, b0, 0, FIRST_RUN);
+    const unsigned p0 = f.v.first_unstored();
     // Cycle 1: the source's link is down for the whole slot.
     f.s.top->fi_dead_i = 1u << 0;
     const size_t e1 = f.to_tail(1);
     f.s.top->fi_dead_i = 0;
     CHECK_EQ(G_DATA, "frag retry: the run with the source dead stores nothing (value-word stores to the destination)",
-             0, f.dst_words(e0, e1, f.bd).size());
+             0, f.v.dst_words(e0, e1, f.v.bd).size());
     // Cycle 2: the run goes on at the same word; the source dies once it has
     // stored CUT words (2: the run after it then has room for the rest and
     // the publication; 1 would leave it the value's last words and taken_at
@@ -282,21 +205,21 @@ void part_retry() {
              f.dst_publishes(i0, e2));
     CHECK_EQ(G_DATA, "frag retry: the run after the failed one makes no access to the source's control word", 0,
              f.src_ctrl(e0, e2));
-    const unsigned c2 = f.check_run("frag retry: the run after the failed one goes on", i2, e2, b0, p0,
+    const unsigned c2 = f.v.check_run("frag retry: the run after the failed one goes on", i2, e2, b0, p0,
                                     "the word the failed run was to store");
-    check(G_DATA, n2 == CUT && c2 == CUT && f.first_unstored() < FW, "frag retry: the run cut off by the source's "
+    check(G_DATA, n2 == CUT && c2 == CUT && f.v.first_unstored() < FW, "frag retry: the run cut off by the source's "
           "death stores %u words and leaves the value unfinished: expected %u words stored before the source died, "
           "%u in the run, a word not stored; got %u, %u, the first word not stored %u", CUT, CUT, CUT, n2, c2,
-          f.first_unstored());
+          f.v.first_unstored());
     // Cycle 3: the run after the cut one starts after the words it stored.
-    const unsigned p2 = f.first_unstored();
+    const unsigned p2 = f.v.first_unstored();
     check(G_DATA, p2 == p0 + c2, "frag retry: the cut run keeps the words it stored: expected the first word not "
           "stored %u (after them), got %u", p0 + c2, p2);
     const size_t i3 = f.s.ram.size();
     const size_t e3 = f.to_tail(3);
-    f.check_run("frag retry: the run after the cut one goes on", i3, e3, b0, p2, GOES_ON);
+    f.v.check_run("frag retry: the run after the cut one goes on", i3, e3, b0, p2, GOES_ON);
     CHECK_EQ(G_DATA, "frag retry: the run after the cut one stores the rest (the first word not stored)", FW,
-             f.first_unstored());
+             f.v.first_unstored());
     CHECK_EQ(G_DATA, "frag retry: the value published once, in cycle 3 (Actual stores)", 1, f.dst_publishes(e2, e3));
     bool isnew = f.cons.import(f.s, got);
     CHECK_EQ(G_DATA, "frag retry: the consumer's Import returns New", 1, isnew);
@@ -318,7 +241,7 @@ void part_firstcut() {
           "frag firstcut: run 0 Imports and loads the destination's control word: expected source control accesses "
           "and 1 destination control load, got %u and %u", f.src_ctrl(i0, e0), f.s.ops_at(1, DST_BASE, i0, e0));
     CHECK_EQ(G_DATA, "frag firstcut: run 0 stores no word (value-word stores to the destination)", 0,
-             f.dst_words(i0, e0, 0).size());
+             f.v.dst_words(i0, e0, 0).size());
     // The producer publishes v1 (the next run's Import takes it: New, so its
     // runs are as in part whole; Imported again Old, the value would be cut
     // where scenario fragedge shows).
@@ -327,7 +250,7 @@ void part_firstcut() {
     const size_t e1 = f.to_tail(1);
     check(G_DATA, f.src_ctrl(e0, e1) > 0, "frag firstcut: the run after a first run that stored no word Imports "
           "afresh: expected source control accesses, got %u", f.src_ctrl(e0, e1));
-    f.check_run("frag firstcut: the run after it starts", e0, e1, b1, 0, FIRST_RUN);
+    f.v.check_run("frag firstcut: the run after it starts", e0, e1, b1, 0, FIRST_RUN);
     const size_t e3 = f.to_tail(RUNS);
     CHECK_EQ(G_DATA, "frag firstcut: the value published once, in cycles 1..3 (Actual stores)", 1,
              f.dst_publishes(i0, e3));
@@ -342,7 +265,7 @@ void part_reset() {
     f.prod.publish(f.s, fvalue(0));
     const size_t i0 = f.s.ram.size();
     f.to_tail(1);                                  // runs 0 and 1 of v0
-    check(G_DATA, f.dst_buf(i0, f.s.ram.size()) != 0, "frag reset: runs 0 and 1 store words of v0: expected value-"
+    check(G_DATA, f.v.dst_buf(i0, f.s.ram.size()) != 0, "frag reset: runs 0 and 1 store words of v0: expected value-"
           "word stores to the destination, got none");
     f.s.top->rst_i = 1;
     for (int i = 0; i < 3; ++i) f.s.edge();
@@ -354,7 +277,7 @@ void part_reset() {
     const size_t e0 = f.to_tail(0);
     check(G_DATA, f.src_ctrl(r0, e0) > 0, "frag reset: the first run after the reset Imports afresh: expected "
           "source control accesses, got %u", f.src_ctrl(r0, e0));
-    f.check_run("frag reset: the first run after the reset starts", r0, e0, b1, 0, FIRST_RUN);
+    f.v.check_run("frag reset: the first run after the reset starts", r0, e0, b1, 0, FIRST_RUN);
     f.to_tail(RUNS - 2);
     bool isnew = f.cons.import(f.s, got);
     CHECK_EQ(G_DATA, "frag reset: nothing of the cut value, nor of the next before its last run, is published "
@@ -377,15 +300,11 @@ std::string run_summary(Frag &f, unsigned c0, unsigned c1) {
             if (f.s.ram[i].t < f.cyc(c)) from = i + 1;
             if (f.s.ram[i].t < f.cyc(c) + H1) to = i + 1;
         }
-        const unsigned bd = f.dst_buf(from, to);
-        unsigned tkn = 0;
-        for (size_t i = from; i < to; ++i) {
-            const RamOp &o = f.s.ram[i];
-            tkn += o.board == 1 && o.we && o.adr > DST_BASE && (o.adr - DST_BASE - 1) % (FW + 1) == FW;
-        }
+        const unsigned bd = f.v.dst_buf(from, to);
+        const unsigned tkn = f.v.taken_stores(from, to);
         char b[160];
         std::snprintf(b, sizeof b, "%scycle %u: %s, words %s, taken_at %u, Actual %u", r.empty() ? "" : "; ", c,
-                      f.src_ctrl(from, to) ? "Import" : "goes on", words_str(f.dst_words(from, to, bd)).c_str(), tkn,
+                      f.src_ctrl(from, to) ? "Import" : "goes on", words_str(f.v.dst_words(from, to, bd)).c_str(), tkn,
                       f.dst_publishes(from, to));
         r += b;
     }
@@ -432,7 +351,7 @@ void edge_retry() {
     f.to_tail(1);
     f.s.top->fi_dead_i = 0;
     const size_t i2 = f.s.ram.size();
-    f.bd = f.dst_buf(0, i2);
+    f.v.bd = f.v.dst_buf(0, i2);
     f.run_to_stores(i2, 1, 2);
     f.s.top->fi_dead_i = 1u << 0;
     f.to_tail(2);
