@@ -129,7 +129,8 @@ std::vector<unsigned> ValueRuns::src_words(size_t from, size_t to, unsigned b) c
     const unsigned lo = sbase + 1 + (b - 1) * w;
     for (size_t i = from; i < to && i < s.ram.size(); ++i) {
         const RamOp &r = s.ram[i];
-        if (r.board != sb || r.we || r.adr <= sbase || r.adr >= sbase + 1 + 3 * w) continue;
+        // (the buffers, and a buffer's length either side: a buffer index 0 or 4)
+        if (r.board != sb || r.we || r.adr == sbase || r.adr + w < sbase + 1 || r.adr >= sbase + 1 + 4 * w) continue;
         v.push_back(b != 0 && r.adr >= lo && r.adr < lo + w ? r.adr - lo : 100 + r.adr);
     }
     return v;
@@ -163,6 +164,23 @@ unsigned ValueRuns::taken_stores(size_t from, size_t to) const {
         const RamOp &r = s.ram[i];
         n += r.board == db && r.we && r.adr > dbase && r.adr < dbase + 1 + 3 * (w + 1) &&
              (r.adr - dbase - 1) % (w + 1) == w;
+    }
+    return n;
+}
+
+unsigned ValueRuns::pub_stores(size_t from, size_t to) const {
+    unsigned n = 0, off = ~0u;
+    uint32_t dat = 0;
+    for (size_t i = from; i < to && i < s.ram.size(); ++i) {
+        const RamOp &r = s.ram[i];
+        if (r.board == sb && !r.we && r.adr > sbase && r.adr < sbase + 1 + 3 * w) {
+            off = (r.adr - sbase - 1) % w;          // a source word load: its offset and word
+            dat = r.rdat;
+        } else if (r.board == db && r.we && r.adr == dbase) {
+            n += r.sel & 1;                         // an Actual store
+        } else if (r.board == db && r.we && r.adr > dbase && r.adr < dbase + 1 + 3 * (w + 1)) {
+            n += !((r.adr - dbase - 1) % (w + 1) == off && r.wdat == dat);
+        }
     }
     return n;
 }

@@ -384,7 +384,8 @@ struct ValueRuns {
     ValueRuns(const Sim &sim, int sboard, unsigned sb_, int dboard, unsigned db_, unsigned words)
         : s(sim), sb(sboard), sbase(sb_), db(dboard), dbase(db_), w(words), stored(words, false) {}
     // The word offsets in source buffer b of the loads in ram[from, to) of
-    // the source's buffers (100 + address: a word of another buffer).
+    // the source's buffers (100 + address: a word of another buffer, or
+    // within a buffer's length of them).
     std::vector<unsigned> src_words(size_t from, size_t to, unsigned b) const;
     // The destination's buffer of the first value-word store in ram[from, to) (0: none).
     unsigned dst_buf(size_t from, size_t to) const;
@@ -393,6 +394,11 @@ struct ValueRuns {
     std::vector<unsigned> dst_words(size_t from, size_t to, unsigned b) const;
     // taken_at stores to the destination in ram[from, to).
     unsigned taken_stores(size_t from, size_t to) const;
+    // The stores of a publication in ram[from, to): stores of the
+    // destination's Actual byte, and stores to its buffers of anything but
+    // the source word just loaded at the same offset (taken_at, wherever it
+    // goes).
+    unsigned pub_stores(size_t from, size_t to) const;
     // The first word of the value not yet stored to the destination (w: all).
     unsigned first_unstored() const;
     void fresh();                 // a new value: nothing of it stored yet

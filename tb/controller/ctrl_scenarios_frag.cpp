@@ -123,8 +123,8 @@ void part_whole() {
     const unsigned b0 = f.prod.publish(f.s, fvalue(0));
     const size_t i0 = f.s.ram.size();
     const size_t e0 = f.to_tail(0);
-    CHECK_EQ(G_DATA, "frag whole: run 0 publishes nothing (Actual stores to the destination)", 0,
-             f.dst_publishes(i0, e0));
+    CHECK_EQ(G_DATA, "frag whole: run 0 publishes nothing (taken_at and Actual stores to the destination)", 0,
+             f.v.pub_stores(i0, e0));
     check(G_DATA, f.src_ctrl(i0, e0) > 0, "frag whole: run 0 Imports: expected source control accesses, got %u",
           f.src_ctrl(i0, e0));
     f.v.check_run("frag whole: run 0 starts", i0, e0, b0, 0, FIRST_RUN);
@@ -140,7 +140,7 @@ void part_whole() {
           "than %u, got %u", b0, b1);
     const size_t i1 = f.s.ram.size();
     const size_t e1 = f.to_tail(1);
-    CHECK_EQ(G_DATA, "frag whole: run 1 publishes nothing", 0, f.dst_publishes(i1, e1));
+    CHECK_EQ(G_DATA, "frag whole: run 1 publishes nothing (taken_at and Actual stores)", 0, f.v.pub_stores(i1, e1));
     CHECK_EQ(G_DATA, "frag whole: run 1 makes no access to the source's control word (its lock held)", 0,
              f.src_ctrl(i1, e1));
     f.v.check_run("frag whole: run 1 goes on", i1, e1, b0, p0, GOES_ON);
@@ -157,6 +157,8 @@ void part_whole() {
     CHECK_EQ(G_DATA, "frag whole: run 2 stores the rest of the value (the first word not stored)", FW,
              f.v.first_unstored());
     CHECK_EQ(G_DATA, "frag whole: the value's last run publishes once (Actual stores)", 1, f.dst_publishes(i2, e2));
+    CHECK_EQ(G_DATA, "frag whole: the value's last run stores taken_at and Actual once each (the publication's "
+             "stores)", 2, f.v.pub_stores(i2, e2));
     isnew = f.cons.import(f.s, got);
     CHECK_EQ(G_DATA, "frag whole: after the value's last run the consumer's Import returns New", 1, isnew);
     check_value("frag whole: the value delivered whole, the one held since run 0 (v0)", got, fvalue(0));
