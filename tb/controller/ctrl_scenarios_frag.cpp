@@ -19,7 +19,7 @@
 //             yet stored; the next value starts with a fresh Import.
 //   retry     the source board is dead in the second run's slot: that run
 //             stores nothing and the next one goes on at the same word; in
-//             that next run the source dies again after it stored a word:
+//             that next run the source dies again after it stored 2 words:
 //             the run, cut off by the deadline, keeps the words it stored
 //             (the run after it starts after them); the value is published
 //             once, whole.
@@ -51,12 +51,14 @@ const unsigned FW = 5, FRAG = 1;
 // 0 here: S + F is odd in every cycle), and an access begins only if it
 // would end before the deadline D = S + L even if it timed out
 // (S + F + 2(k - 1) <= D - TMO - 2): a slot of 30 clocks begins 7 accesses.
-// A first run: 3 for the Import, 1 control load of the destination, then 2
-// per word (load, store); a run that goes on: 2 per word; the last run 2
-// more (taken_at, Actual).  So the first run stores 1 word, the second 3,
-// the third the last and publishes: RUNS = 3 (asserted by the checks on the
-// progress and the publications below; the words each run carries are read
-// from the stores the bench sees, not from this comment).
+// A first run: 3 for the Import of a New value (1 for an Old one), 1
+// control load of the destination, then 2 per word (load, store); a run
+// that goes on: 2 per word; the last run 2 more (taken_at, Actual).  So the
+// first run of a New value stores 1 word (and loads word 1, cut off before
+// its store), the second 3, the third the last and publishes: RUNS = 3
+// (asserted by the checks on the progress and the publications below; the
+// words each run carries are read from the stores the bench sees, not from
+// this comment).
 const uint32_t L_FRAG = 30;
 const unsigned RUNS = 3;
 static_assert(S_COPY + L_FRAG <= S_TIME, "frag: the COPY slot ends before the next one");
@@ -275,6 +277,7 @@ void part_reset() {
     f.s.top->eval();
     f.s.now = f.s.top->time_o;
     const unsigned b1 = f.prod.publish(f.s, fvalue(1));   // published while the controller starts up
+    f.v.fresh();
     const size_t r0 = f.s.ram.size();
     const size_t e0 = f.to_tail(0);
     check(G_DATA, f.src_ctrl(r0, e0) > 0, "frag reset: the first run after the reset Imports afresh: expected "
