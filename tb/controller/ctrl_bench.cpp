@@ -116,3 +116,99 @@ void check_slot_timing(const char *what, const std::vector<Attempt> &v, uint64_t
         CHECK_EQ(G_TIMING, buf, F + 2 * expect_n + phi + skew, v.back().end + 1 - S);
     }
 }
+
+// ------------------------------------------------------------------ values over several runs
+std::string words_str(const std::vector<unsigned> &v) {
+    std::string r;
+    for (unsigned x : v) r += (r.empty() ? "" : " ") + std::to_string(x);
+    return r.empty() ? "none" : r;
+}
+
+std::vector<unsigned> ValueRuns::src_words(size_t from, size_t to, unsigned b) const {
+    std::vector<unsigned> v;
+    const unsigned lo = sbase + 1 + (b - 1) * w;
+    for (size_t i = from; i < to && i < s.ram.size(); ++i) {
+        const RamOp &r = s.ram[i];
+        // (the buffers, and a buffer's length either side: a buffer index 0 or 4)
+        if (r.board != sb || r.we || r.adr == sbase || r.adr + w < sbase + 1 || r.adr >= sbase + 1 + 4 * w) continue;
+        v.push_back(b != 0 && r.adr >= lo && r.adr < lo + w ? r.adr - lo : 100 + r.adr);
+    }
+    return v;
+}
+
+unsigned ValueRuns::dst_buf(size_t from, size_t to) const {
+    for (size_t i = from; i < to && i < s.ram.size(); ++i) {
+        const RamOp &r = s.ram[i];
+        if (r.board == db && r.we && r.adr > dbase && r.adr < dbase + 1 + 3 * (w + 1) &&
+            (r.adr - dbase - 1) % (w + 1) < w)
+            return (r.adr - dbase - 1) / (w + 1) + 1;
+    }
+    return 0;
+}
+
+std::vector<unsigned> ValueRuns::dst_words(size_t from, size_t to, unsigned b) const {
+    std::vector<unsigned> v;
+    const unsigned lo = dbase + 1 + (b - 1) * (w + 1);
+    for (size_t i = from; i < to && i < s.ram.size(); ++i) {
+        const RamOp &r = s.ram[i];
+        if (r.board != db || !r.we || r.adr <= dbase || r.adr >= dbase + 1 + 3 * (w + 1)) continue;
+        if (b != 0 && r.adr >= lo && r.adr < lo + w) v.push_back(r.adr - lo);
+        else if ((r.adr - dbase - 1) % (w + 1) < w) v.push_back(100 + r.adr);
+    }
+    return v;
+}
+
+unsigned ValueRuns::taken_stores(size_t from, size_t to) const {
+    unsigned n = 0;
+    for (size_t i = from; i < to && i < s.ram.size(); ++i) {
+        const RamOp &r = s.ram[i];
+        n += r.board == db && r.we && r.adr > dbase && r.adr < dbase + 1 + 3 * (w + 1) &&
+             (r.adr - dbase - 1) % (w + 1) == w;
+    }
+    return n;
+}
+
+unsigned ValueRuns::pub_stores(size_t from, size_t to) const {
+    unsigned n = 0, off = ~0u;
+    uint32_t dat = 0;
+    for (size_t i = from; i < to && i < s.ram.size(); ++i) {
+        const RamOp &r = s.ram[i];
+        if (r.board == sb && !r.we && r.adr > sbase && r.adr < sbase + 1 + 3 * w) {
+            off = (r.adr - sbase - 1) % w;          // a source word load: its offset and word
+            dat = r.rdat;
+        } else if (r.board == db && r.we && r.adr == dbase) {
+            n += r.sel & 1;                         // an Actual store
+        } else if (r.board == db && r.we && r.adr > dbase && r.adr < dbase + 1 + 3 * (w + 1)) {
+            n += !((r.adr - dbase - 1) % (w + 1) == off && r.wdat == dat);
+        }
+    }
+    return n;
+}
+
+unsigned ValueRuns::first_unstored() const {
+    unsigned k = 0;
+    while (k < w && stored[k]) ++k;
+    return k;
+}
+
+void ValueRuns::fresh() {
+    stored.assign(w, false);
+    bd = 0;
+}
+
+unsigned ValueRuns::check_run(const char *what, size_t from, size_t to, unsigned b, unsigned first, const char *why) {
+    const std::vector<unsigned> ld = src_words(from, to, b);
+    std::vector<unsigned> exp;
+    for (unsigned i = 0; i < ld.size() || exp.empty(); ++i) exp.push_back(first + i);
+    check(G_DATA, ld == exp, "%s at %s: expected source loads of consecutive words of buffer %u from word %u, got %s",
+          what, why, b, first, words_str(ld).c_str());
+    if (bd == 0) bd = dst_buf(from, to);
+    const std::vector<unsigned> st = dst_words(from, to, bd);
+    const bool ok = st.size() <= ld.size() && st.size() + 1 >= ld.size() && std::equal(st.begin(), st.end(), ld.begin());
+    check(G_DATA, ok, "%s stores each word it loads to the destination's buffer %u (a last load cut off by the "
+          "deadline may have no store): expected stores of words %s (or all but the last), got %s", what, bd,
+          words_str(ld).c_str(), words_str(st).c_str());
+    for (unsigned x : st)
+        if (x < w) stored[x] = true;
+    return (unsigned)st.size();
+}

@@ -75,7 +75,7 @@ struct Entry {
     uint32_t start, len;
     unsigned sbrd, sbase;
     std::vector<Dst> dst;
-    unsigned frag = 0;                  // E7.frag: words per fragment (0: one fragment)
+    unsigned frag = 0;                  // E7.frag: not 0, the value may go over several runs (0: one run)
 };
 enum { IDLE = C::KIND_IDLE, COPY = C::KIND_COPY, TIME = C::KIND_TIME, STATUS = C::KIND_STATUS };
 
@@ -364,6 +364,53 @@ uint32_t ba(unsigned brd, unsigned word);
 // Exact fault-free timing of the attempts of one slot (all acked, back to back).
 void check_slot_timing(const char *what, const std::vector<Attempt> &v, uint64_t S, size_t expect_n);
 
+// ------------------------------------------------------------------ values over several runs
+// A three-buffer COPY of W words whose value goes over several runs
+// (scenarios frag, fragswitch): the words a run loads from the source's
+// buffers and stores to the (one) destination's, and the words of the value
+// stored so far.  A run's first word is what the controller's rule makes it:
+// 0 for a run that Imports, else the first word not yet stored to the
+// destination; check_run checks a run against it from the stores seen.
+std::string words_str(const std::vector<unsigned> &v);   // "0 1 2", "none"
+
+struct ValueRuns {
+    const Sim &s;
+    int sb;                       // source board and control word
+    unsigned sbase;
+    int db;                       // destination board and control word
+    unsigned dbase, w;
+    std::vector<bool> stored;     // words of the value stored to the destination
+    unsigned bd = 0;              // the destination buffer of the value's word stores (0: none yet)
+    ValueRuns(const Sim &sim, int sboard, unsigned sb_, int dboard, unsigned db_, unsigned words)
+        : s(sim), sb(sboard), sbase(sb_), db(dboard), dbase(db_), w(words), stored(words, false) {}
+    // The word offsets in source buffer b of the loads in ram[from, to) of
+    // the source's buffers (100 + address: a word of another buffer, or
+    // within a buffer's length of them).
+    std::vector<unsigned> src_words(size_t from, size_t to, unsigned b) const;
+    // The destination's buffer of the first value-word store in ram[from, to) (0: none).
+    unsigned dst_buf(size_t from, size_t to) const;
+    // The word offsets in destination buffer b of the value-word stores in
+    // ram[from, to) (100 + address: another buffer's; taken_at not counted).
+    std::vector<unsigned> dst_words(size_t from, size_t to, unsigned b) const;
+    // taken_at stores to the destination in ram[from, to).
+    unsigned taken_stores(size_t from, size_t to) const;
+    // The stores of a publication in ram[from, to): stores of the
+    // destination's Actual byte, and stores to its buffers of anything but
+    // the source word just loaded at the same offset (taken_at, wherever it
+    // goes).
+    unsigned pub_stores(size_t from, size_t to) const;
+    // The first word of the value not yet stored to the destination (w: all).
+    unsigned first_unstored() const;
+    void fresh();                 // a new value: nothing of it stored yet
+    // Check one run in ram[from, to) whose first word is `first` (why: what
+    // makes it so), source buffer b: its source loads are consecutive words
+    // of b from `first`, its destination stores the same words in order to
+    // the buffer of the value's first store (all, or all but a last load cut
+    // off by the deadline before its store).  Records the words stored;
+    // returns how many.  Failure messages start with `what`.
+    unsigned check_run(const char *what, size_t from, size_t to, unsigned b, unsigned first, const char *why);
+};
+
 // ------------------------------------------------------------------ scenarios
 // ctrl_scenarios_data.cpp
 void scenario_basic();
@@ -384,5 +431,6 @@ void scenario_deadline();
 void scenario_race4();
 // ctrl_scenarios_frag.cpp
 void scenario_frag();
+void scenario_fragedge();
 // ctrl_scenarios_fragswitch.cpp
 void scenario_fragswitch();

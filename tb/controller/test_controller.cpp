@@ -57,19 +57,26 @@
 //   race4    a four-slot value completed between the Import's two
 //            control-word loads is the one taken, with the second load's
 //            time (group 2; negative controller-negative-slot_first_load)
-//   frag     a value in 3 fragments: published once, after its last
-//            fragment, whole; the source's lock held (no control access) and
-//            each fragment at its word; a failed fragment run again from its
-//            word; a reset in the middle publishes nothing of the cut value
-//            (group 2; ctrl_scenarios_frag.cpp; negatives
+//   frag     a value over 3 runs (a slot too short for the whole): each run
+//            at its word (0 after an Import, else the first word not yet
+//            stored to the destination, from the stores seen), published
+//            once, after its last word, whole; the source's lock held (no
+//            control access) in the runs that go on; a failed run stores
+//            nothing and the next goes on at the same word; a run cut off
+//            keeps the words it stored; a first run cut before a word leaves
+//            no value going on; a reset in the middle publishes nothing of
+//            the cut value (group 2; ctrl_scenarios_frag.cpp; negatives
 //            controller-negative-frag_publish_first, -frag_reimport,
 //            -frag_wrong_word)
-//   fragswitch  a mode switch between the fragments of a value: the value
-//            goes on whole when its channel next runs (in the new mode, or
-//            back in the old one), from its word, with the held source
-//            buffer and fragment 0's taken_at (group 2;
-//            ctrl_scenarios_fragswitch.cpp; negative
+//   fragswitch  a mode switch while a value goes over several runs: the
+//            value goes on whole when its channel next runs (in the new
+//            mode, or back in the old one), at the first word not stored,
+//            with the held source buffer and its first run's taken_at
+//            (group 2; ctrl_scenarios_fragswitch.cpp; negative
 //            controller-negative-fragswitch)
+//   fragedge (only by name) a run cut off between the value's taken_at and
+//            Actual stores: the value must still be published; it is not on
+//            the controller of 6858719 (ctrl_scenarios_frag.cpp)
 // Each check prints what it expected and what it got.  Exit status 0 if all
 // pass, else 64 + a bit mask of the failed groups (1 timing, 2 data, 4 rom,
 // 8 faults, 16 dead, 32 abandon).  --inject=timing makes the timing checker expect one
@@ -79,7 +86,7 @@
 // Files: ctrl_bench.h/.cpp (checks, ROM builder, model wrapper, CPU protocol),
 //        ctrl_scenarios_data.cpp (basic, corrupt, four), ctrl_scenarios_faults.cpp (faults, dead,
 //        droprun, sync, abandon), ctrl_scenarios_cold.cpp (cold), ctrl_scenarios_modes.cpp (modes),
-//        ctrl_scenarios_race.cpp (deadline, race4), ctrl_scenarios_frag.cpp (frag),
+//        ctrl_scenarios_race.cpp (deadline, race4), ctrl_scenarios_frag.cpp (frag, fragedge),
 //        ctrl_scenarios_fragswitch.cpp (fragswitch).
 #include "ctrl_bench.h"
 
@@ -100,20 +107,21 @@ int main(int argc, char **argv) {
             }
         }
         else {
-            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|droprun|sync|four|abandon|cold|modes|deadline|race4|frag|fragswitch]\n",
+            std::fprintf(stderr, "usage: %s [--dir=DIR] [--inject=timing] [--scenario=basic|corrupt|faults|dead|droprun|sync|four|abandon|cold|modes|deadline|race4|frag|fragswitch|fragedge]\n",
                          argv[0]);
             return 2;
         }
     }
     if (g_inject_timing) std::printf("injected: the timing checker expects every completion one clock late\n");
-    struct { const char *name; void (*fn)(); } sc[] = {
+    // (fragedge: only by name; it fails on the controller of 6858719, see ctrl_scenarios_frag.cpp)
+    struct { const char *name; void (*fn)(); bool by_name = false; } sc[] = {
         {"basic", scenario_basic}, {"corrupt", scenario_corrupt}, {"faults", scenario_faults}, {"dead", scenario_dead},
         {"droprun", scenario_droprun},
         {"sync", scenario_sync}, {"four", scenario_four}, {"abandon", scenario_abandon}, {"cold", scenario_cold},
         {"modes", scenario_modes}, {"deadline", scenario_deadline}, {"race4", scenario_race4},
-        {"frag", scenario_frag}, {"fragswitch", scenario_fragswitch}};
+        {"frag", scenario_frag}, {"fragswitch", scenario_fragswitch}, {"fragedge", scenario_fragedge, true}};
     for (auto &x : sc)
-        if (only.empty() || only == x.name) x.fn();
+        if (only.empty() ? !x.by_name : only == x.name) x.fn();
     std::printf("test_controller: %u checks, %u failed%s\n", g_checks, g_fails,
                 g_fails ? "" : " -- PASS");
     return g_fails ? 64 + (int)g_failed_groups : 0;
