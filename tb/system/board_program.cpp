@@ -192,6 +192,7 @@ int parse_options(int argc, char **argv, Options &o)
         else if (a == "--require-skipped") o.require_skipped.push_back(v);
         else if (a == "--bounds-at-target") o.bounds_at_target = v;
         else if (a == "--require-cut-fragments" && num && x >= 0) o.require_cut = static_cast<uint64_t>(x);
+        else if (a == "--require-fragments" && std::string(v) == "plan") o.require_fragments_plan = true;
         else if (a == "--require-fragments" && num && x >= 0) o.require_fragments = static_cast<uint64_t>(x);
         else if (a == "--producer-interval") {
             char name[64] = {};

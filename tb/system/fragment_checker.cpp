@@ -14,6 +14,9 @@ namespace {
 // Clocks an access may end after its entry's deadline S + E2: none (the
 // sequencer lets an access start only if it ends by D even when it times out).
 const uint64_t kWindowSlack = 0;
+// The fewest clocks of one bus access: the request and the answer in the next
+// clock (the compiler's bus.access_cycles).
+const uint64_t kMinAccessClocks = 2;
 }
 
 FragmentChecker::FragmentChecker(const std::string &rom, const Plan &plan, SystemChecker &chk) : chk_(chk)
@@ -502,6 +505,31 @@ std::string FragmentChecker::by_channel() const
     std::string r;
     for (const auto &kv : caught_) r += (r.empty() ? "" : ", ") + kv.first + " " + std::to_string(kv.second);
     return r;
+}
+
+uint64_t FragmentChecker::values_over_runs(const Plan &plan, uint64_t clocks, std::string &why) const
+{
+    uint64_t total = 0;
+    why.clear();
+    for (const auto &kv : chans_) {
+        const Chan &c = kv.second;
+        if (c.kind != KIND_COPY) continue;
+        unsigned frag = 0, longest = 0;
+        for (int k : c.entries) frag = std::max(frag, entries_[k].frag), longest = std::max(longest, entries_[k].length);
+        const uint64_t least = kMinAccessClocks * (1 + c.dst.size()) * c.w;
+        if (frag == 0 || least <= longest) continue;
+        for (const PlanChannel &pc : plan.channels) {
+            if (pc.id != static_cast<int>(c.id) || pc.period == 0) continue;
+            const uint64_t n = clocks / pc.period > 0 ? clocks / pc.period - 1 : 0;
+            total += n;
+            char b[160];
+            std::snprintf(b, sizeof b, "%s%s %llu (a value needs over %llu clocks, its longest slot %u; period %llu)",
+                          why.empty() ? "" : ", ", c.name.c_str(), static_cast<unsigned long long>(n),
+                          static_cast<unsigned long long>(least), longest, static_cast<unsigned long long>(pc.period));
+            why += b;
+        }
+    }
+    return total;
 }
 
 std::string FragmentChecker::json() const

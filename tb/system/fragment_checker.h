@@ -95,6 +95,14 @@ public:
                                          // planned words and the value not ended, or a destination dropped
     uint64_t min_judged = 0;             // runs whose planned words (E7.frag) were judged (no fault hit them)
     std::string json() const;
+    // The values the plan guarantees to publish in `clocks` clocks that must
+    // go over two or more runs: for every channel with an entry of E7.frag
+    // != 0 whose whole value cannot go in its longest slot (one source load
+    // and a store per destination for each word, kMinAccessClocks each, more
+    // than E2), floor(clocks / its guaranteed period) - 1 (the plan's
+    // period, within its fault hypothesis; one lost to the start-up).  why:
+    // the channels and counts.
+    uint64_t values_over_runs(const Plan &plan, uint64_t clocks, std::string &why) const;
     // The violations of the four checks by channel: "check channel count, ..." ("" if none).
     std::string by_channel() const;
 

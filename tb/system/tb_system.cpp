@@ -22,13 +22,13 @@
 //             [--require-late-publication CH]     fail unless the controller published a value of
 //                                                 four-slot channel CH with an Actual store in a
 //                                                 later slot than the Slot store that completed it
-//             [--require-fragments N]             fail unless N values were published after two or
-//                                                 more fragments (fragment_checker.h)
+//             [--require-fragments N|plan]        fail unless N values were published after two or
+//                                                 more runs (plan: N from the plan; multirate_scenario.h)
 //             [--bounds-at-target FILE]           fail if a consumer's largest latency / age exceeds
 //                                                 its bound at the fault hypothesis' target
 //                                                 (lines "at_target CH BOARD CLOCKS", bounds_at_target.py)
-//             [--require-cut-fragments N]         fail unless N runs of values in fragments were cut
-//                                                 by faults (fragment_checker.h)
+//             [--require-cut-fragments N]         fail unless N runs of E7.frag != 0 entries were cut
+//                                                 short by faults (fragment_checker.h)
 //             [--require-skipped CH]              fail unless a value of channel CH was skipped
 //                                                 (never published at a destination) and its
 //                                                 latency measured when a newer one arrived
