@@ -34,7 +34,7 @@ int usage(const char *why)
                  "                 [--fault-clocking access|clock] [--land-actual P] [--land-kind 3|1|13]\n"
                  "                 [--require-landed-same 1] [--producer-interval CH:CLOCKS[:BURST]]\n"
                  "                 [--producer-stop CH|all:CYCLE] [--stretch-export CH:CLOCKS]\n"
-                 "                 [--require-late-publication CH] [--require-skipped CH] [--require-fragments N]\n"
+                 "                 [--require-late-publication CH] [--require-skipped CH] [--require-fragments N|plan]\n"
                  "                 [--bounds-at-target FILE] [--require-cut-fragments N]\n"
                  "                 [--stretch-import CH:BOARD:CLOCKS] [--dead-board B --dead-at C]\n"
                  "                 [--corrupt-entry K] [--flip-rom-bit WORD:BIT] [--rom FILE] [--report FILE] [--label NAME]\n"
