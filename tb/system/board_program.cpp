@@ -34,7 +34,7 @@ int usage(const char *why)
                  "                 [--fault-clocking access|clock] [--land-actual P] [--land-kind 3|1|13]\n"
                  "                 [--require-landed-same 1] [--producer-interval CH:CLOCKS[:BURST]]\n"
                  "                 [--producer-stop CH|all:CYCLE] [--stretch-export CH:CLOCKS]\n"
-                 "                 [--require-late-publication CH] [--require-skipped CH] [--require-fragments N]\n"
+                 "                 [--require-late-publication CH] [--require-skipped CH] [--require-fragments N|plan]\n"
                  "                 [--bounds-at-target FILE] [--require-cut-fragments N]\n"
                  "                 [--stretch-import CH:BOARD:CLOCKS] [--dead-board B --dead-at C]\n"
                  "                 [--corrupt-entry K] [--flip-rom-bit WORD:BIT] [--rom FILE] [--report FILE] [--label NAME]\n"
@@ -192,6 +192,7 @@ int parse_options(int argc, char **argv, Options &o)
         else if (a == "--require-skipped") o.require_skipped.push_back(v);
         else if (a == "--bounds-at-target") o.bounds_at_target = v;
         else if (a == "--require-cut-fragments" && num && x >= 0) o.require_cut = static_cast<uint64_t>(x);
+        else if (a == "--require-fragments" && std::string(v) == "plan") o.require_fragments_plan = true;
         else if (a == "--require-fragments" && num && x >= 0) o.require_fragments = static_cast<uint64_t>(x);
         else if (a == "--producer-interval") {
             char name[64] = {};

@@ -40,6 +40,7 @@ struct Options {
                                                  // fragments were cut (a fault: re-run, or dropped destinations)
     uint64_t require_fragments = 0;              // --require-fragments N: fail unless N values were published
                                                  // after two or more fragments, each judged (fragment_checker.h)
+    bool require_fragments_plan = false;         // --require-fragments plan: N from the plan (multirate_scenario.h)
     std::vector<std::string> require_skipped;    // --require-skipped CH...: fail unless a value of CH was
                                                  // skipped and its latency measured (a later one arrived)
     std::string slow_channel;                    // --producer-interval CH:CLOCKS[:BURST]: channel CH's

@@ -20,31 +20,50 @@
 //                     the Actual store; four-slot: the Slot store that
 //                     completes it) only when every word of the value and
 //                     taken_at have been stored into that buffer, all of one
-//                     value (the words' tags): never after a first fragment;
-//   source_lock       from a value's first fragment (a run with the Import,
-//                     its ReadLocked store) to its last, no run touches the
+//                     value (the words' tags): never while the value goes on;
+//   source_lock       from a value's first run (the one with the Import, its
+//                     ReadLocked store) to its last, no run touches the
 //                     source's control word (no ReadLocked store, no new
-//                     Import), and every later fragment loads its words from
-//                     the buffer fragment 0 loaded, holding the same value
-//                     (the words' tags);
-//   fragment_word     each run carries one fragment: words [s, min(s + frag,
-//                     W)) with s a multiple of frag (E7.frag; 0: the whole
-//                     value); a run with an Import starts at word 0; a run
-//                     without one continues the value in progress at its next
-//                     fragment (the word after the previous run's fragment,
-//                     or the previous run's first word when that run was cut:
-//                     a word load or store missing its ack); each word goes to
-//                     the destination offset it came from (its tag's index);
-//                     taken_at only with the last fragment.
-// A run is "complete" when every word of its fragment was loaded from the
-// source and stored at every destination with an ack.  After a run that is
-// not (a fault cut it, a destination was dropped), the checker does not know
-// whether the controller counts the fragment as done: it accepts either the
-// same fragment again, the next one, or a fresh Import, until the next run
-// with an Import resets what it knows.  Fault-free, every run is complete
-// and every check is exact.
-// Not judged: images with modes (a switch clears the progress; each mode has
-// its own cluster), the SYNC source's polls (outside any slot).
+//                     Import), and every run that goes on with the value
+//                     loads its words from the buffer the first run loaded,
+//                     holding the same value (the words' tags);
+//   fragment_word     a run loads consecutive words of the source buffer
+//                     (a failed load again, else the next): from word 0 in a
+//                     run with an Import, from p in a run that goes on with
+//                     a value, p the first word not yet stored to every
+//                     destination still in the value; it stores only the word
+//                     it loaded last, to its own offset (its tag's index),
+//                     and, going on with a value, only to the destinations
+//                     still in it; taken_at only after the value's last
+//                     word; a run without an Import only while a value goes
+//                     on; and a run of an entry with E7.frag = F != 0 that no
+//                     fault hit stores at least F words to every destination
+//                     still in the value, unless the value ends first (the
+//                     compiler plans each run for at least F words under its
+//                     fault hypothesis; judged in every run with no faulted
+//                     access in its window, so in every run of a fault-free
+//                     scenario).
+// The value in progress, as the controller keeps it (rtl/albatross_transfer.v
+// "Values over several runs"), is derived from what the checker saw: a run
+// stores words until the value's last or until its deadline; the words whose
+// stores ended are those stored (acked) to every destination still in the
+// value; a destination is out of the value once one of its accesses failed
+// K = H2.drop_run times in a row (tb_system gives the checker every faulted
+// request, on_fault, timeouts included); the progress p after a run that
+// goes on is the first word, from the run's first, not stored in that run to
+// every destination still in the value; a run that goes on and keeps no
+// destination leaves the state as it was (the controller does not write it).
+// A value goes on after a run that stored a word to all and did not reach the
+// value's last word, if the run went on with it or its entry has E7.frag !=
+// 0.  Where a first run stored word 0 and nothing after it, without storing
+// it to every destination it had loaded the control word of, the checker
+// cannot tell whether word 0's stores ended (a destination whose earlier
+// store landed leaves silently): it accepts an Import, or a run going on from
+// the p that those stores give.  A faulted access whose address the checker
+// is not told (a dead board) leaves the progress unknown until the next
+// Import (no judgement of where runs start, or of Imports, until then).
+// Not judged: images with modes (each mode has its own cluster), the SYNC
+// source's polls (outside any slot).
 #pragma once
 #include <cstdint>
 #include <map>
@@ -64,11 +83,26 @@ public:
     void tick(uint64_t cycle, bool cycle_start);
     // Every access the controller saw answered (ok or not).
     void on_bus(const SystemSim::BusEvent &e);
-    // Figures for the report: runs seen, fragments carried, values published
-    // in more than one fragment, minor cycles counted.
+    // A request of the controller that the injector faulted (any kind, a
+    // timeout too), begun at clock cycle; addressed false: to a dead board,
+    // address not known.  Call after on_bus for the same clock.
+    void on_fault(uint64_t cycle, bool addressed, int board, uint32_t addr);
+    // Figures for the report: runs seen, runs that went on with a value,
+    // values published after two or more runs, minor cycles counted, runs
+    // a fault hit.
     uint64_t runs = 0, later_fragments = 0, fragmented_publications = 0, minor_cycles = 0, incomplete_runs = 0;
-    uint64_t cut_fragments = 0;          // incomplete runs of a channel whose values go in two or more fragments
+    uint64_t cut_fragments = 0;          // runs of E7.frag != 0 entries that faults cut short: fewer than their
+                                         // planned words and the value not ended, or a destination dropped
+    uint64_t min_judged = 0;             // runs whose planned words (E7.frag) were judged (no fault hit them)
     std::string json() const;
+    // The values the plan guarantees to publish in `clocks` clocks that must
+    // go over two or more runs: for every channel with an entry of E7.frag
+    // != 0 whose whole value cannot go in its longest slot (one source load
+    // and a store per destination for each word, kMinAccessClocks each, more
+    // than E2), floor(clocks / its guaranteed period) - 1 (the plan's
+    // period, within its fault hypothesis; one lost to the start-up).  why:
+    // the channels and counts.
+    uint64_t values_over_runs(const Plan &plan, uint64_t clocks, std::string &why) const;
     // The violations of the four checks by channel: "check channel count, ..." ("" if none).
     std::string by_channel() const;
 
@@ -82,27 +116,41 @@ private:
         uint32_t seq = ~0u;              // the value whose words it holds (tag seq)
         std::vector<bool> words;         // words 0..W-1 stored, and taken_at (index W)
     };
+    // Whether a value goes on after the last run: no; yes (in, prog exact);
+    // maybe (an Import, or going on from prog to in); unknown (a fault at an
+    // address not told: nothing judged until the next Import).
+    enum On { ON_NO, ON_YES, ON_MAYBE, ON_UNKNOWN };
     struct Chan {
-        unsigned id = 0, w = 0, kind = 0, frag = 0;   // frag: its first entry's E7.frag
+        unsigned id = 0, w = 0, kind = 0;
         std::string name;
         bool four = false, sync = false;
         Place src{-1, 0};
         std::vector<Place> dst;
         std::vector<int> entries;        // indexes into entries_
         // the value in progress
-        bool known = true;               // the checker knows the progress exactly
-        uint32_t prog = 0;               // next word (0: no value in progress)
-        uint32_t prev_s = 0, prev_e = 0; // the previous run's fragment (when !known)
-        int held_buffer = 0;             // the source buffer fragment 0 loaded from
+        On on = ON_NO;
+        uint32_t prog = 0;               // p: the first word not yet stored to every destination in it
+        std::vector<bool> in;            // the destinations still in it
+        unsigned value_runs = 0;         // runs that carried it so far
+        int held_buffer = 0;             // the source buffer its first run loaded from
         uint32_t held_seq = ~0u;         // ... and its value's tag seq
         // the current run
         uint64_t run_cycle = ~0ull;      // minor cycle count (absolute) and entry of the run
         int run_entry = -2;              // (-2: no run yet; -1: a run in no due entry's window)
+        unsigned run_frag = 0;           // its entry's E7.frag
+        uint64_t run_ws = 0, run_we = 0; // its window [S, S + E2] in clocks
+        bool run_hit = false;            // a faulted request began in its window
+        bool run_blind = false;          // ... one whose address the checker was not told
         bool run_import = false, run_words = false;
-        size_t run_published = 0;        // acked publishing stores (three-buffer Actual; four-slot Actual)
-        uint32_t run_s = 0, run_e = 0;   // its fragment [s, e)
-        std::vector<bool> run_loaded;    // acked source loads, by word
-        std::vector<std::vector<bool>> run_stored;  // acked stores, by destination and word
+        uint32_t run_p0 = 0;             // its first word (0, or p going on)
+        int64_t ld_next = -1;            // the word its next source load must be (-1: not known)
+        int64_t ld_word = -1;            // the word its last acked source load took (-1: none)
+        int64_t ld_max = -1;             // the highest word it began to load
+        unsigned fail_run = 0;           // faulted destination accesses in a row
+        std::vector<bool> run_ctrl;      // destinations whose control word it accessed
+        std::vector<bool> run_dropped;   // destinations dropped (K failures in a row)
+        std::vector<bool> run_pub;       // destinations whose publishing store was acked
+        std::vector<std::vector<bool>> run_stored;  // acked word stores, by destination and word
         std::vector<std::vector<DestBuf>> bufs;     // by destination, buffer 1..4
     };
 
@@ -112,6 +160,14 @@ private:
     void end_run(Chan &c);
     void begin_run(Chan &c, uint64_t cyc, int entry, bool import);
     const Entry *due_entry(const Chan &c, uint64_t n, uint64_t rel, uint64_t end_rel) const;
+    // The run an access begun at start and ended at end belongs to: minor
+    // cycle count cnt (n = cnt mod 2^cluster), the due entry x (or null),
+    // the entry whose window holds it (or null), the cycle's start cs.
+    const Entry *locate(const Chan &c, uint64_t start, uint64_t end, uint64_t &cnt, uint64_t &cs, const Entry *&x) const;
+    void switch_run(Chan &c, uint64_t cnt, uint64_t cs, const Entry *wx, bool src_control);
+    uint32_t first_missing(const Chan &c, size_t d, uint32_t from) const;   // in the current run
+    std::string dest_list(const Chan &c, const std::vector<bool> &set) const;
+    bool faulted(uint64_t from, uint64_t to, bool unaddressed_only) const;
 
     SystemChecker &chk_;
     std::map<std::string, uint64_t> caught_;   // "check channel" -> violations
@@ -127,4 +183,6 @@ private:
     uint64_t cycle_start_ = 0;           // the edge of the running minor cycle's start
     uint64_t prev_start_ = 0;            // ... and of the one before
     uint64_t count_ = 0;                 // its count since start-up (n = count mod 2^cluster)
+    unsigned drop_run_ = 2;              // K (H2.drop_run; below 2: 2)
+    std::vector<std::pair<uint64_t, bool>> faults_;   // recent faulted requests: clock, address told
 };

@@ -49,9 +49,18 @@ void multirate_verdict(const Plan &plan, const Options &o, const SystemChecker &
         }
         if (judged == 0) failures.push_back("at the target: no bound in " + o.bounds_at_target + " names a consumer of the plan");
     }
-    if (o.require_fragments && (!frag || frag->fragmented_publications < o.require_fragments)) {
-        std::snprintf(m, sizeof m, "fragments: expected at least %llu values published after two or more fragments, got %llu%s",
-                      static_cast<unsigned long long>(o.require_fragments),
+    uint64_t need = o.require_fragments;
+    std::string why;
+    if (o.require_fragments_plan && frag) {
+        need = frag->values_over_runs(plan, o.cycles, why);
+        std::printf("  values the plan publishes over two or more runs in %llu clocks: %llu (%s)\n",
+                    static_cast<unsigned long long>(o.cycles), static_cast<unsigned long long>(need),
+                    why.empty() ? "no channel" : why.c_str());
+        if (need == 0) failures.push_back("fragments: the plan has no channel whose values go over two or more runs");
+    }
+    if ((need || o.require_fragments_plan) && (!frag || frag->fragmented_publications < need)) {
+        std::snprintf(m, sizeof m, "fragments: expected at least %llu values published after two or more runs%s, got %llu%s",
+                      static_cast<unsigned long long>(need), o.require_fragments_plan ? " (the plan's)" : "",
                       static_cast<unsigned long long>(frag ? frag->fragmented_publications : 0), frag ? "" : " (not judged)");
         failures.push_back(m);
     }

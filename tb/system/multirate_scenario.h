@@ -1,10 +1,15 @@
 // multirate_scenario.h -- what tb_system asks of a run on a multi-rate image
 // with fragments (tools/mk/system.mk "Multi-rate"), beyond the checkers:
 //   --require-fragments N      at least N values published after two or more
-//                              fragments, each judged (fragment_checker.h);
-//   --require-cut-fragments N  at least N runs of such values cut by faults
-//                              (a fragment re-run from its word, destinations
-//                              dropped for the rest of a value);
+//                              runs, each judged (fragment_checker.h);
+//   --require-fragments plan   N from the plan: the values it guarantees in
+//                              the run's clocks for the channels whose values
+//                              cannot go in one slot (fragment_checker.h
+//                              values_over_runs);
+//   --require-cut-fragments N  at least N runs of E7.frag != 0 entries cut
+//                              short by faults (fewer words than planned and
+//                              the value not ended, or a destination dropped
+//                              for the rest of a value);
 //   --bounds-at-target FILE    every consumer's largest latency (copy) or age
 //                              (time, status) within its bound at the fault
 //                              hypothesis' target (the compiler's report.json,

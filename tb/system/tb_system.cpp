@@ -22,13 +22,13 @@
 //             [--require-late-publication CH]     fail unless the controller published a value of
 //                                                 four-slot channel CH with an Actual store in a
 //                                                 later slot than the Slot store that completed it
-//             [--require-fragments N]             fail unless N values were published after two or
-//                                                 more fragments (fragment_checker.h)
+//             [--require-fragments N|plan]        fail unless N values were published after two or
+//                                                 more runs (plan: N from the plan; multirate_scenario.h)
 //             [--bounds-at-target FILE]           fail if a consumer's largest latency / age exceeds
 //                                                 its bound at the fault hypothesis' target
 //                                                 (lines "at_target CH BOARD CLOCKS", bounds_at_target.py)
-//             [--require-cut-fragments N]         fail unless N runs of values in fragments were cut
-//                                                 by faults (fragment_checker.h)
+//             [--require-cut-fragments N]         fail unless N runs of E7.frag != 0 entries were cut
+//                                                 short by faults (fragment_checker.h)
 //             [--require-skipped CH]              fail unless a value of channel CH was skipped
 //                                                 (never published at a destination) and its
 //                                                 latency measured when a newer one arrived
@@ -288,6 +288,14 @@ int main(int argc, char **argv)
                 std::uniform_real_distribution<double>(0, 1)(land_rng) < o.land_actual)
                 sim.force_fault(o.land_kind == 13 ? (sim.forced_faults % 2 ? 1u : 3u) : static_cast<unsigned>(o.land_kind));
         }
+        // The controller's new request, for fragment_checker.h's faults
+        // (the injector's counters tell, after the edge, whether it was faulted).
+        int fq_board = -1;
+        uint32_t fq_addr = 0;
+        bool fq_we = false;
+        uint8_t fq_sel = 0;
+        const bool fq_told = frag_on && sim.next_request(fq_board, fq_addr, fq_we, fq_sel);
+        const uint64_t fq_faults = sim.fault_injected + sim.forced_faults + sim.dead_accesses;
         unsigned done = sim.tick();
         modes.tick();
         chk.tick(sim.cycle());
@@ -309,6 +317,8 @@ int main(int argc, char **argv)
             chk.on_bus(sim.bus_event);
             if (frag_on) frag.on_bus(sim.bus_event);
         }
+        if (frag_on && sim.fault_injected + sim.forced_faults + sim.dead_accesses != fq_faults)
+            frag.on_fault(sim.cycle(), fq_told, fq_board, fq_addr);
         for (int b = 0; b < SystemSim::kBoards; ++b)
             if (done & (1u << b)) wait[b] = static_cast<uint64_t>((rng() % 3) * period[b]);
         if (sim.time() < last_time) time_monotonic = false;
