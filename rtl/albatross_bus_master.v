@@ -6,19 +6,21 @@
 // Rules:
 //   * Requesters are Wishbone B4 classic masters on a word address plus a
 //     board field; the master adds the board field (m_adr_o = {board, word}).
-//   * The system bus obeys Wishbone classic whatever the requesters do.  An
-//     access (the bus request m_*) starts with the owner's fields, passed
-//     through in the clock it is raised (no idle bus clock is added); from
-//     its second clock on, m_we_o, m_adr_o, m_sel_o and m_dat_o (HOLD_DAT 1) come from a
-//     register holding the first clock's values, until ack, err or the
-//     timeout ends the access.  So an owner that changes its fields in the
-//     middle of an access cannot change the slave's request.  An owner that
-//     drops cyc before the answer abandons the access: m_cyc_o/m_stb_o drop
-//     in that clock (a Wishbone abort), the owner loses the bus, and another
-//     requester gets it at the earliest in the next clock.  Between two
-//     accesses there is therefore either an answer (ack/err) or at least one
-//     clock with cyc low: a requester raising cyc in the clock in which the
-//     owner drops it never inherits the owner's access.
+//   * The system bus obeys Wishbone classic whatever the requesters do
+//     (HOLD_FIELDS 1), or as long as each owner keeps its fields
+//     (HOLD_FIELDS 0, below).  An access (the bus request m_*) starts with
+//     the owner's fields, passed through in the clock it is raised (no idle
+//     bus clock is added); with HOLD_FIELDS 1, from its second clock on,
+//     m_we_o, m_adr_o, m_sel_o and m_dat_o come from a register holding the
+//     first clock's values, until ack, err or the timeout ends the access,
+//     so an owner that changes its fields in the middle of an access cannot
+//     change the slave's request.  An owner that drops cyc before the
+//     answer abandons the access: m_cyc_o/m_stb_o drop in that clock (a
+//     Wishbone abort), the owner loses the bus, and another requester gets
+//     it at the earliest in the next clock.  Between two accesses there is
+//     therefore either an answer (ack/err) or at least one clock with cyc
+//     low: a requester raising cyc in the clock in which the owner drops it
+//     never inherits the owner's access.
 //   * Arbitration: at most one requester is expected to hold cyc at a time
 //     (the word stream between the engines guarantees it).  The master makes
 //     it explicit and safe: a free bus goes to the lowest-indexed requester
@@ -27,11 +29,14 @@
 //     ack nor err) and overlap_o goes high for good (a design error that a
 //     test or proof can watch for).  ack and err go only to the owner, and
 //     only in a clock in which it holds cyc.
-//   * HOLD_DAT 0 (the controller): m_dat_o is always the owner's r_dat_i,
-//     not held; the requesters keep their store data stable until the
-//     answer themselves (the controller's datapath does: formal/ctrl proves
-//     Wishbone classic at the controller's port, store data included).
-//     we, adr and sel are held whatever HOLD_DAT is.
+//   * HOLD_FIELDS 0 (the controller): m_we_o, m_adr_o, m_sel_o and m_dat_o
+//     are always the owner's r_we_i, {r_board_i, r_adr_i}, r_sel_i and
+//     r_dat_i, nothing held; the requesters keep them stable from an
+//     access's first clock until its answer themselves (the controller's
+//     do: formal/ctrl proves Wishbone classic at the controller's port for
+//     the datapath, fields and store data included, and formal/sequencer's
+//     poll_when that the poll's board and address are entry 0's source
+//     while it polls).
 //   * Timeout: an access that sees neither ack nor err in TIMEOUT clocks of
 //     cyc fails: the owner gets err in the TIMEOUT-th clock, and the request
 //     is dropped at the slave.
@@ -40,15 +45,15 @@
 //     the failure clock and fails_o counts failures (16-bit, saturating).
 //   * Reset (synchronous) clears the owner, the pending access, the timeout
 //     and the counters (not the held fields: they are used only while an
-//     access is pending); cyc stays low in the clock after a reset clock.
+//     access is pending, and never with HOLD_FIELDS 0); cyc stays low in the clock after a reset clock.
 `default_nettype none
 
 module albatross_bus_master #(
-    parameter ADDR_WIDTH = 10, // word-address bits of a board RAM
-    parameter BOARD_BITS = 4,  // bits of the board field (high address bits)
-    parameter REQS       = 3,  // requesters, 1..4
-    parameter TIMEOUT    = 8,  // clocks of cyc without ack/err before an access fails, >= 2
-    parameter HOLD_DAT   = 1   // 1: store data held like the other fields; 0: passed through (the requesters hold them)
+    parameter ADDR_WIDTH  = 10, // word-address bits of a board RAM
+    parameter BOARD_BITS  = 4,  // bits of the board field (high address bits)
+    parameter REQS        = 3,  // requesters, 1..4
+    parameter TIMEOUT     = 8,  // clocks of cyc without ack/err before an access fails, >= 2
+    parameter HOLD_FIELDS = 1   // 1: we, adr, sel, data held from an access's second clock; 0: passed through (the requesters keep them)
 ) (
     input  wire                           clk_i,
     input  wire                           rst_i,       // synchronous, active high
@@ -115,12 +120,12 @@ module albatross_bus_master #(
     // A pending access keeps its owner; it ends (an abort) if the owner drops cyc.
     wire [OWN_BITS-1:0] owner = (pend_q || (busy_q && r_cyc_i[owner_q])) ? owner_q : first;
     wire                cyc   = r_cyc_i[owner] && !gap_q;
-    // The bus fields: the owner's in an access's first clock, then held.
+    // The bus fields: the owner's in an access's first clock, then held
+    // (HOLD_FIELDS 0: always the owner's).
     wire [FW-1:0]       live  = {r_we_i[owner],
                                  r_board_i[owner*BOARD_BITS +: BOARD_BITS], r_adr_i[owner*ADDR_WIDTH +: ADDR_WIDTH],
                                  r_sel_i[owner*4 +: 4], r_dat_i[owner*32 +: 32]};
-    wire [FW-1:0]       field = pend_q ? held_q : live;
-    wire [31:0]         wdat  = (HOLD_DAT != 0) ? field[31:0] : live[31:0];
+    wire [FW-1:0]       field = (HOLD_FIELDS != 0 && pend_q) ? held_q : live;
     wire                tmo   = cyc && !m_ack_i && !m_err_i && tmo_q == TMO_LAST;
     wire                fail  = cyc && !m_ack_i && (m_err_i || tmo);
     wire                ack   = cyc && m_ack_i;
@@ -146,14 +151,14 @@ module albatross_bus_master #(
         end
     end
 
-    always @(posedge clk_i) held_q <= field;   // data only: used while pend_q
+    always @(posedge clk_i) held_q <= field;   // data only: used while pend_q (HOLD_FIELDS 0: never)
 
     assign m_cyc_o   = cyc;
     assign m_stb_o   = cyc;
     assign m_we_o    = field[FW-1];
     assign m_adr_o   = field[36 +: BOARD_BITS + ADDR_WIDTH];
     assign m_sel_o   = field[32 +: 4];
-    assign m_dat_o   = wdat;
+    assign m_dat_o   = field[31:0];
     assign r_dat_o   = m_dat_i;
     assign r_ack_o   = {{(REQS-1){1'b0}}, ack} << owner;
     assign r_err_o   = {{(REQS-1){1'b0}}, fail} << owner;

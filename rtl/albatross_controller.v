@@ -15,8 +15,9 @@
 //                         destinations, TIME and STATUS, on one requester
 //   albatross_bus_master  the one bus port: board field, timeout; its
 //                         requesters are the datapath (0) and the poll (1);
-//                         store data pass through (HOLD_DAT 0: the datapath
-//                         keeps them stable until the answer)
+//                         every field passes through (HOLD_FIELDS 0: both
+//                         keep we, address, sel and store data stable
+//                         until the answer)
 //   albatross_counters    per-channel counters and the STATUS words
 //                         (HAS_STATUS)
 // Rules:
@@ -265,7 +266,7 @@ module albatross_controller #(
     wire        fail;
     wire [15:0] fails_total;
     wire        overlap;
-    albatross_bus_master #(.ADDR_WIDTH(AW), .BOARD_BITS(4), .REQS(2), .TIMEOUT(TIMEOUT), .HOLD_DAT(0)) u_bus (
+    albatross_bus_master #(.ADDR_WIDTH(AW), .BOARD_BITS(4), .REQS(2), .TIMEOUT(TIMEOUT), .HOLD_FIELDS(0)) u_bus (
         .clk_i(clk_i), .rst_i(rst_i),
         .r_cyc_i(r_cyc), .r_we_i(r_we), .r_adr_i(r_adr), .r_board_i(r_board),
         .r_sel_i(r_sel), .r_dat_i(r_wdat), .r_dat_o(bus_rdat), .r_ack_o(r_ack), .r_err_o(r_err),

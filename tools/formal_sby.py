@@ -125,8 +125,15 @@ def main():
         f.write(" ".join(cmd) + f" < {a.sby} (timeouts x {scale:.1f}: load)\n" + out)
     m = re.findall(r"DONE \((\w+)", out)
     status = m[-1] if m else "ERROR"
+    # The log's summary names at most five failed assertions per trace ("and
+    # N further assertions"); the task's summary file (<workdir>/<STATUS>)
+    # names them all.
+    full = ""
+    if re.fullmatch(r"[A-Z]+", status) and os.path.isfile(os.path.join(workdir, status)):
+        with open(os.path.join(workdir, status)) as f:
+            full = f.read()
     failed, seen = [], set()
-    for prop, where, step in re.findall(r"failed assertion (\S+) at (\S+)(?: step (\d+))?", out):
+    for prop, where, step in re.findall(r"failed assertion (\S+) at (\S+)(?: step (\d+))?", out + "\n" + full):
         if (prop, step) not in seen and step:
             seen.add((prop, step))
             failed.append({"property": prop, "at": where, "step": int(step)})

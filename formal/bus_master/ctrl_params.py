@@ -134,7 +134,7 @@ def main():
                 notes.append(f"{p}: the controller's {via[0]} at its {a.at}imum")
         elif p in master:
             params[p] = resolve(p, master[p], master)[0]
-    missing = [p for p in ("REQS", "HOLD_DAT", "TIMEOUT", "ADDR_WIDTH", "BOARD_BITS") if p not in params]
+    missing = [p for p in ("REQS", "HOLD_FIELDS", "TIMEOUT", "ADDR_WIDTH", "BOARD_BITS") if p not in params]
     if missing:
         fail(f"no value for {', '.join(missing)} (neither the controller's instance nor the bus master's defaults)")
     sets = " ".join(f"-set {p} {v}" for p, v in sorted(params.items()))

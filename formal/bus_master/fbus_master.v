@@ -5,12 +5,13 @@
 // requester behaviour, including the ones Wishbone forbids (changing its fields
 // in the middle of an access, dropping cyc before the answer while another
 // requester raises it in the same clock, raising cyc in the clock after reset).
-// One exception, with HOLD_DAT 0 only (the controller's configuration): the
-// bus master then passes the store data through instead of holding them, and
-// its rule is that the requesters hold them, so dat_kept assumes it: while a
-// write access is pending and its owner holds cyc, the owner's r_dat_i is what
-// it was in the last clock (the owner may still change its address, we and
-// sel, and any requester's data while it is not the pending write's owner).
+// One exception, with HOLD_FIELDS 0 only (the controller's configuration): the
+// bus master then passes every field through instead of holding them, and
+// its rule is that the requesters keep them, so fields_kept assumes it: while
+// an access is pending and its owner holds cyc, the owner's r_we_i, r_board_i,
+// r_adr_i, r_sel_i and (a write) r_dat_i are what they were in the last clock
+// (a read's data are free, and so is every field of a requester that is not
+// the pending access's owner, and of an owner that drops cyc).
 // The system-bus slave answers as a classic slave may, or never
 // (formal/wb/fwb_master.v on m_*, which asserts the master's requests: stb only
 // with cyc, cyc low after reset, and req_stable -- a request carried over an
@@ -22,7 +23,7 @@
 // reset.  Reset is high in the first clock only: the RTL's registers start
 // unconstrained, so this is a reset from any state.  One clock.
 // Defaults REQS = 3, ADDR_WIDTH = 2, BOARD_BITS = 2, TIMEOUT = 5 (3 counter
-// bits, so a timeout one clock late is representable), HOLD_DAT = 1; the
+// bits, so a timeout one clock late is representable), HOLD_FIELDS = 1; the
 // script's ctrl tasks set the controller's own parameters instead
 // (ctrl_params.py reads them from rtl/albatross_controller.v).
 // A reference model (f_*) states the rules of the RTL header:
@@ -45,19 +46,20 @@
 //               clock): a request passes in the clock it is raised, and a
 //               failure drops cyc for exactly one clock.
 //   fail_gap    in the clock after a failure m_cyc_o is low.
-//   own_fields  in an access's first clock, m_we_o, m_sel_o (HOLD_DAT 1: and
-//               m_dat_o) are the owner's.
-//   dat_pass    (HOLD_DAT 0) in every clock with m_cyc_o, m_dat_o is the
-//               present owner's r_dat_i: the data pass through, from the
-//               owner only (in a hand-over, the new owner's from its
-//               access's first clock).
+//   own_fields  in an access's first clock, m_we_o, m_sel_o (HOLD_FIELDS 1:
+//               and m_dat_o) are the owner's.
+//   fld_pass    (HOLD_FIELDS 0) in every clock with m_cyc_o, m_we_o, m_adr_o,
+//               m_sel_o and m_dat_o are the present owner's r_we_i,
+//               {r_board_i, r_adr_i}, r_sel_i and r_dat_i: every field
+//               passes through, from the owner only (in a hand-over, the new
+//               owner's from its access's first clock).
 //   adr_owner   in an access's first clock, m_adr_o = {owner's board, owner's
 //               word}.
 //   hold_fields while an access is pending, m_* keep the last clock's fields
-//               (whatever the owner now drives; HOLD_DAT 0: m_we_o, m_adr_o,
-//               m_sel_o only, the data being dat_pass's; req_stable of
-//               fwb_master says the same from the slave's side, store data
-//               included).
+//               (HOLD_FIELDS 1: whatever the owner now drives; HOLD_FIELDS 0:
+//               as fields_kept's owner keeps them, a read's data aside;
+//               req_stable of fwb_master says the same from the slave's
+//               side, store data included).
 //   handover    a different owner's access never follows another's without an
 //               answer or an idle clock between them.
 //   own_silent  a requester other than the owner sees neither ack nor err.
@@ -76,12 +78,13 @@
 //               clock after reset.
 //   own_range   the model's owner is a requester (< REQS): its own invariant.
 //   we_model    while an access is pending, the model's write flag of the
-//               access (f_we_q, which dat_kept reads) is m_we_o of the last
+//               access (f_we_q, which fields_kept reads) is m_we_o of the last
 //               clock: its own invariant.
 // Induction strengthening (white-box): with -DF_PROBE the script connects f_busy,
 // f_owner, f_gap, f_tmo, f_pend and f_held to the RTL's busy_q, owner_q, gap_q,
 // tmo_q, pend_q, held_q (Yosys has no hierarchical references: joined after
-// flatten); inv_* tie them to the model.
+// flatten); inv_* tie them to the model (inv_held with HOLD_FIELDS 1 only:
+// with 0 held_q is never read, and synthesis removes it).
 `default_nettype none
 
 module fbus_master #(
@@ -89,7 +92,7 @@ module fbus_master #(
     parameter ADDR_WIDTH = 2,  // word-address bits
     parameter BOARD_BITS = 2,  // board-field bits
     parameter TIMEOUT    = 5,  // clocks of cyc without ack/err before an access fails
-    parameter HOLD_DAT   = 1   // the bus master's HOLD_DAT (0: store data passed through, dat_kept assumed)
+    parameter HOLD_FIELDS = 1  // the bus master's HOLD_FIELDS (0: every field passed through, fields_kept assumed)
 ) (
     input  wire                         clk_i,
     input  wire                         rst_i,
@@ -119,7 +122,7 @@ module fbus_master #(
     wire [15:0]     fails_o;
 
     albatross_bus_master #(.ADDR_WIDTH(ADDR_WIDTH), .BOARD_BITS(BOARD_BITS), .REQS(REQS),
-                           .TIMEOUT(TIMEOUT), .HOLD_DAT(HOLD_DAT)) dut (
+                           .TIMEOUT(TIMEOUT), .HOLD_FIELDS(HOLD_FIELDS)) dut (
         .clk_i(clk_i), .rst_i(rst_i),
         .r_cyc_i(r_cyc_i), .r_we_i(r_we_i), .r_adr_i(r_adr_i), .r_board_i(r_board_i),
         .r_sel_i(r_sel_i), .r_dat_i(r_dat_i), .r_dat_o(r_dat_o), .r_ack_o(r_ack_o),
@@ -170,7 +173,7 @@ module fbus_master #(
     localparam FW = 1 + AW + 4 + 32;
     reg  [FW-1:0] f_fld_q;          // m_* fields of the last clock
     reg         f_gap2_q  = 1'b0;   // the clock before the last was a failure (covers)
-    reg  [REQS*32-1:0] f_rdat_q;    // r_dat_i of the last clock (dat_kept)
+    reg  [FW-1:0] f_live_q;         // f_live of the last clock (fields_kept)
     reg         f_we_q    = 1'b0;   // the present access is a write (its first clock's we, kept while pending)
     wire        f_pend = m_out && !f_gap_q;
     wire [1:0]  f_own  = (f_pend || (f_hold_q && cyc4[f_own_q])) ? f_own_q : f_first;
@@ -178,8 +181,13 @@ module fbus_master #(
     wire [FW-1:0] m_fld = {m_we_o, m_adr_o, m_sel_o, m_dat_o};
     wire        f_fail = m_req && !m_ack_i && (m_err_i || m_wait == TIMEOUT - 1);
     wire        f_we   = f_pend ? f_we_q : r_we_i[f_own];
-    // the fields that are held while an access is pending (HOLD_DAT 0: not the data)
-    localparam [FW-1:0] HELD = (HOLD_DAT != 0) ? {FW{1'b1}} : {{(FW-32){1'b1}}, 32'd0};
+    // the model owner's fields now, in m_fld's order
+    wire [FW-1:0] f_live = {r_we_i[f_own], r_board_i[f_own*BOARD_BITS +: BOARD_BITS],
+                            r_adr_i[f_own*ADDR_WIDTH +: ADDR_WIDTH], r_sel_i[f_own*4 +: 4], r_dat_i[f_own*32 +: 32]};
+    // the fields a pending access keeps: all but a read's data (HOLD_FIELDS 1:
+    // all), and those of the RTL's held_q (HOLD_FIELDS 0: none, never read)
+    wire [FW-1:0] f_kept = {{(FW-32){1'b1}}, {32{HOLD_FIELDS != 0 || f_we_q}}};
+    localparam [FW-1:0] HELD = (HOLD_FIELDS != 0) ? {FW{1'b1}} : {FW{1'b0}};
     always @(posedge clk_i) begin
         if (rst_i) begin
             f_hold_q  <= 1'b0;
@@ -201,15 +209,15 @@ module fbus_master #(
         f_abort_q <= f_pend && !cyc4[f_own] && !rst_i;
         f_fld_q  <= m_fld;
         f_gap2_q <= f_gap_q && !rst_i;
-        f_rdat_q <= r_dat_i;
+        f_live_q <= f_live;
         f_we_q   <= f_we;
     end
 
-    // HOLD_DAT 0: the requesters keep a pending write's data (the bus master's rule).
+    // HOLD_FIELDS 0: the owner of a pending access keeps its fields (the bus
+    // master's rule; f_own is the last clock's owner while f_pend).
     always @* begin
-        if (HOLD_DAT == 0 && !init_q)
-            dat_kept: assume(!(f_pend && cyc4[f_own] && f_we_q) ||
-                             r_dat_i[f_own*32 +: 32] == f_rdat_q[f_own*32 +: 32]);
+        if (HOLD_FIELDS == 0 && !init_q)
+            fields_kept: assume(!(f_pend && cyc4[f_own]) || (f_live & f_kept) == (f_live_q & f_kept));
     end
 
     // ------------------------------------------------------------ properties
@@ -226,9 +234,9 @@ module fbus_master #(
             pass_now:    assert(m_cyc_o == (cyc4[f_own] && !f_gap_q && !f_rst_q) && m_stb_o == m_cyc_o);
             fail_gap:    assert(!f_gap_q || !m_cyc_o);
             own_fields:  assert(!m_cyc_o || f_pend || (m_we_o == r_we_i[f_own] && m_sel_o == r_sel_i[f_own*4 +: 4] &&
-                                             (HOLD_DAT == 0 || m_dat_o == r_dat_i[f_own*32 +: 32])));
-            dat_pass:    assert(HOLD_DAT != 0 || !m_cyc_o || m_dat_o == r_dat_i[f_own*32 +: 32]);
-            hold_fields: assert(!m_cyc_o || !f_pend || (m_fld & HELD) == (f_fld_q & HELD));
+                                             (HOLD_FIELDS == 0 || m_dat_o == r_dat_i[f_own*32 +: 32])));
+            fld_pass:    assert(HOLD_FIELDS != 0 || !m_cyc_o || m_fld == f_live);
+            hold_fields: assert(!m_cyc_o || !f_pend || (m_fld & f_kept) == (f_fld_q & f_kept));
             handover:    assert(!(m_cyc_o && f_mcyc_q && !f_mans_q) || f_pend);
             adr_owner:   assert(!m_cyc_o || f_pend || m_adr_o == {r_board_i[f_own*BOARD_BITS +: BOARD_BITS],
                                                         r_adr_i[f_own*ADDR_WIDTH +: ADDR_WIDTH]});
@@ -282,9 +290,16 @@ module fbus_master #(
             cover_fails2:   cover(fails_o == 16'd2 && overlap_o);
             // an ack in an access's first clock (the pass-through path)
             cover_first:    cover(!f_pend && m_req && m_ack_i && !r_ack_o[0]);
-            // an ack of a held access whose owner now drives another address
-            cover_held:     cover(f_pend && m_req && m_ack_i &&
+            // HOLD_FIELDS 1: an ack of a held access whose owner now drives
+            // another address (with 0 the owner keeps it: fields_kept)
+            if (HOLD_FIELDS != 0)
+                cover_held: cover(f_pend && m_req && m_ack_i &&
                                   m_adr_o != {r_board_i[f_own*BOARD_BITS +: BOARD_BITS], r_adr_i[f_own*ADDR_WIDTH +: ADDR_WIDTH]});
+            // HOLD_FIELDS 0: an ack of a read pending for a clock whose owner
+            // changed its (free) data: passed through, nothing held (with 1
+            // the held data cannot change)
+            if (HOLD_FIELDS == 0)
+                cover_pass: cover(f_pend && m_req && !m_we_o && m_ack_i && m_dat_o != f_fld_q[31:0]);
             // a slave err passed to the owner
             cover_err:      cover(m_req && m_err_i && r_err_o[1]);
             // the owner dropped a pending access while another raised cyc in
@@ -293,7 +308,7 @@ module fbus_master #(
             // a reset with a requester holding cyc, then its access acked
             cover_reset:    cover(f_rst_q && r_cyc_i[0]);
             // a write acked after a clock pending, its data those of its first
-            // clock (HOLD_DAT 0: dat_kept leaves such a write possible)
+            // clock (HOLD_FIELDS 0: passed through, fields_kept keeping them)
             cover_write_held: cover(f_pend && m_req && m_we_o && m_ack_i && m_dat_o == f_fld_q[31:0]);
             // the hand-over in one clock: the owner, answered in the last
             // clock, drops cyc in the clock in which another requester raises

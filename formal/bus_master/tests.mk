@@ -26,7 +26,7 @@ FSBY_MUTANTS += bus_master:no_gap bus_master:tmo_late bus_master:tmo_early \
 FSBY_SLOW_SPEC += formal-bus_master-pdr:bus_master:prove_pdr:pass
 
 # The bus master as the controller instantiates it (tasks with the tag ctrl):
-# ctrl_params.py reads REQS, HOLD_DAT, TIMEOUT, ADDR_WIDTH and BOARD_BITS from
+# ctrl_params.py reads REQS, HOLD_FIELDS, TIMEOUT, ADDR_WIDTH and BOARD_BITS from
 # rtl/albatross_controller.v's instance into a Yosys chparam script that the
 # tasks run, so the proof follows the controller's configuration; the
 # ctrlmin/ctrlmax tasks take the controller's TIMEOUT and ADDR_WIDTH at the
@@ -41,7 +41,7 @@ FBM_CTRL_SPEC := \
     formal-bus_master-ctrl-min:bus_master:prove_ctrl_min:pass \
     formal-bus_master-ctrl-max:bus_master:prove_ctrl_max:pass \
     formal-bus_master-cover-ctrl:bus_master:cover_ctrl:pass \
-    formal-bus_master-negative-ctrl-dat_owner_q:bus_master:neg_ctrl_dat_owner_q:dat_pass \
+    formal-bus_master-negative-ctrl-dat_owner_q:bus_master:neg_ctrl_dat_owner_q:fld_pass \
     formal-bus_master-negative-ctrl-no_abort:bus_master:neg_ctrl_no_abort:pass_now
 # The second proof (abc pdr, no probes) and the old master's mutant, which
 # the harness at the defaults already catches, run with make formal-slow.
@@ -56,14 +56,14 @@ $(foreach t,$(FBM_CTRL_SPEC) $(FBM_CTRL_SLOW),test-$(call neg_field,$(t),1)): $(
 # ctrl_params.py on doctored copies of the controller: an instance with REQS 3
 # must give REQS 3 (the proof follows the controller), TIMEOUT's range ending
 # at 50 must give TIMEOUT 50 with --at max, and a value it cannot resolve
-# (HOLD_DAT an expression) must be refused, naming the parameter.
+# (HOLD_FIELDS an expression) must be refused, naming the parameter.
 FBM_CTRL_NEG := $(BUILD)/formal/sby/bus_master-ctrl/negative
 TESTS += formal-bus_master-ctrl-params-negative
 .PHONY: test-formal-bus_master-ctrl-params-negative
 test-formal-bus_master-ctrl-params-negative: formal/bus_master/ctrl_params.py rtl/albatross_controller.v
 	@tools/run_test.sh formal-bus_master-ctrl-params-negative bash -c 'set -u; d=$(FBM_CTRL_NEG); rm -rf $$d; mkdir -p $$d; \
 	    sed "s/\(albatross_bus_master #(.*\)\.REQS(2)/\1.REQS(3)/" rtl/albatross_controller.v > $$d/reqs3.v; \
-	    sed "s/\(albatross_bus_master #(.*\)\.HOLD_DAT(0)/\1.HOLD_DAT(HAS_SYNC - 1)/" rtl/albatross_controller.v > $$d/expr.v; \
+	    sed "s/\(albatross_bus_master #(.*\)\.HOLD_FIELDS(0)/\1.HOLD_FIELDS(HAS_SYNC - 1)/" rtl/albatross_controller.v > $$d/expr.v; \
 	    sed "s/\(^ *parameter TIMEOUT *=.*\)3\.\.60/\13..50/" rtl/albatross_controller.v > $$d/tmo50.v; \
 	    for f in reqs3 expr tmo50; do if cmp -s $$d/$$f.v rtl/albatross_controller.v; then \
 	        echo "the edit $$f did not apply: the bus master instance in rtl/albatross_controller.v no longer has the field it changes"; exit 1; fi; done; \
@@ -76,6 +76,6 @@ test-formal-bus_master-ctrl-params-negative: formal/bus_master/ctrl_params.py rt
 	    else echo "FAIL: expected -set TIMEOUT 50 with --at max from a TIMEOUT declared 3..50, came: $$(cat $$d/tmo50.ys 2>/dev/null)"; fail=1; fi; \
 	    $(PYTHON) formal/bus_master/ctrl_params.py $$d/expr.ys --controller $$d/expr.v 2> $$d/expr.log; rc=$$?; \
 	    sed "s/^/  /" $$d/expr.log; \
-	    if [ $$rc = 2 ] && grep -q "HOLD_DAT to .HAS_SYNC - 1." $$d/expr.log; then echo "  an expression is refused, naming HOLD_DAT"; \
-	    else echo "FAIL: expected status 2 and a message naming HOLD_DAT for .HOLD_DAT(HAS_SYNC - 1), came status $$rc"; fail=1; fi; \
+	    if [ $$rc = 2 ] && grep -q "HOLD_FIELDS to .HAS_SYNC - 1." $$d/expr.log; then echo "  an expression is refused, naming HOLD_FIELDS"; \
+	    else echo "FAIL: expected status 2 and a message naming HOLD_FIELDS for .HOLD_FIELDS(HAS_SYNC - 1), came status $$rc"; fail=1; fi; \
 	    exit $$fail'

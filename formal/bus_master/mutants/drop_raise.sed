@@ -7,4 +7,4 @@
 # and the second one would be reported done without being performed.
 # Must fail req_stable of formal/wb/fwb_master.v (bus_master.sby neg_drop_raise).
 s/wire \[OWN_BITS-1:0\] owner = (pend_q || (busy_q \&\& r_cyc_i\[owner_q\])) ? owner_q : first;/wire [OWN_BITS-1:0] owner = (busy_q \&\& r_cyc_i[owner_q]) ? owner_q : first;/
-s/wire \[FW-1:0\]       field = pend_q ? held_q : live;/wire [FW-1:0]       field = live;/
+s/wire \[FW-1:0\]       field = (HOLD_FIELDS != 0 \&\& pend_q) ? held_q : live;/wire [FW-1:0]       field = live;/
