@@ -5,4 +5,4 @@
 # progress past a word some destination lacks.  Must fail frag_prog (the
 # next run would go on from W) or dst_publish_complete (a buffer published
 # without that word).
-s/else if (wend_i) kdone_q <= k_q;/else if (take_i) kdone_q <= k_q + 12'd1;/
+s/else if (wend_i \&\& !lastf) kdone_q <= k_q;/else if (take_i) kdone_q <= k_q + 12'd1;/
