@@ -15,11 +15,11 @@
 //     valid, due entry's; prev_end_i: entries of disjoint due sets may share
 //     a window); or the entry's E6 breaks its rules: rep above the mode's
 //     cluster (cluster_i) or above MAX_REP (the sequencer's count:
-//     CLUSTER_BITS), or base >= 2^rep, i.e. base's bit length (the index of
-//     its highest one + 1) above rep.  The sequencer reads E6 ahead of the
-//     fetch and keeps rep (rep_i) and base's bit length (blen_i)
-//     (rtl/albatross_minor_cycles.v).  MAX_REP 0 (no minor
-//     cycles): E6 must be 0 (rep 0, bit length 0).
+//     CLUSTER_BITS).  The sequencer reads E6 ahead of the fetch and keeps
+//     rep (rep_i) (rtl/albatross_minor_cycles.v).  E6's base is not checked:
+//     the due test reads only its low rep bits (base < 2^rep is a rule of the
+//     image that the compiler checks).  MAX_REP 0 (no minor cycles): E6 must
+//     be 0 (the sequencer then gives rep 1 for any E6 other than 0).
 //   * Clock 3: the slot ends after the cycle (end_i > H1; end_i is the
 //     register clock 2 wrote, so no adder stands between the ROM's output
 //     and this compare).
@@ -53,8 +53,7 @@ module albatross_entry_check #(
     input  wire [TIME_BITS:0]   end_i,        // start + length (E2's, from clock 3 on)
     input  wire [3:0]           cluster_i,    // the running mode's cluster
     input  wire                 due_i,        // the entry is due in this cycle
-    input  wire [3:0]           rep_i,        // the entry's E6 rep
-    input  wire [3:0]           blen_i,       // the bit length of the entry's E6 base
+    input  wire [3:0]           rep_i,        // the entry's E6 rep (MAX_REP 0: 1 when E6 is not 0)
     output reg                  bad_o
 );
 
@@ -104,7 +103,7 @@ module albatross_entry_check #(
                           (e0_kind == ALB_KIND_TIME && e0_w != 12'd1) ||
                           (rom_i[EFLAG_MODE] && (e0_kind != ALB_KIND_STATUS || e0_w != 12'd2)) ||
                           (e0_kind == ALB_KIND_STATUS && e0_w != W_STATUS && !rom_i[EFLAG_MODE]);
-    wire        e6_bad  = blen_i > rep_i || rep_i > cluster_i || (MAX_REP < 15 && !below({28'd0, rep_i}, MAX_REP + 1));
+    wire        e6_bad  = rep_i > cluster_i || (MAX_REP < 15 && !below({28'd0, rep_i}, MAX_REP + 1));
     wire        e2_bad  = start_bad_i || rom_i[31:TB] != 0 || below({{(32-TB){1'b0}}, rom_i[TB-1:0]}, MIN_LEN) ||
                           ({1'b0, start_i} < prev_end_i && due_i) || e6_bad;
     wire        end_bad = end_i > {1'b0, cycle_i};

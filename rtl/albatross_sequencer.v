@@ -252,19 +252,19 @@ module albatross_sequencer #(
     // ------------------------------------------------------------ minor cycles and the due test
     // E6 of entry ent_q, read ahead (after the start-up pass, FETCH clock 6,
     // the mode load), judged in the clock its word is in rom_q
-    // (rtl/albatross_minor_cycles.v): due (in the cycle it runs in), rep and
-    // base's bit length for the entry check, held until the next E6.  The
-    // count steps when ent_q wraps to the mode's first entry (FETCH clock 5
-    // of the last), and the mode load's new first entry clears it.
+    // (rtl/albatross_minor_cycles.v): due (in the cycle it runs in) and rep
+    // for the entry check, held until the next E6.  The count steps when
+    // ent_q wraps to the mode's first entry (FETCH clock 5 of the last), and
+    // the mode load's new first entry clears it.
     localparam MR = HAS_MULTIRATE != 0;
     wire          due, e6_tick;
-    wire [3:0]    e6_rep, e6_blen;
+    wire [3:0]    e6_rep;
     assign e6_tick = state_q == ST_FETCH && step_q == 3'd5 && last_ent;
     albatross_minor_cycles #(.HAS_MULTIRATE(HAS_MULTIRATE), .HAS_E6_CHECK(HAS_ENTRY_CHECK),
                              .CLUSTER_BITS(CLUSTER_BITS)) u_minor (
         .clk_i(clk_i), .rst_i(rst_i), .step_i(e6_tick), .clear_i(mode_first_ld), .e6_hdr_i(hdr_e6),
         .e6_fetch_i(state_q == ST_FETCH && step_q == 3'd6), .e6_mode_i(mode_e6), .rom_i(rom_q),
-        .due_o(due), .rep_o(e6_rep), .blen_o(e6_blen));
+        .due_o(due), .rep_o(e6_rep));
 
     // ------------------------------------------------------------ ROM check
     // The start-up CRC and the background re-check; in the clock S of a
@@ -293,7 +293,7 @@ module albatross_sequencer #(
         .step_i(step_q), .rom_i(rom_q), .ent0_i(ent_q == 8'd0), .smode_i(smode_q), .bad_mark_i(bad_mark),
         .kind_i(kind_o), .four_i(four_o), .nd_i(nd_o), .e3_i(span), .start_i(start_q), .start_bad_i(start_bad_q),
         .cycle_i(cycle_q), .prev_end_i(prev_end_q), .end_i(end_q), .cluster_i(m_cluster), .due_i(due),
-        .rep_i(e6_rep), .blen_i(e6_blen), .bad_o(bad_now));
+        .rep_i(e6_rep), .bad_o(bad_now));
 
     // ------------------------------------------------------------ control
     // The global time, rel, S, D and the deadline check (rtl/albatross_slot_timing.v).

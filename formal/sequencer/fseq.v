@@ -21,8 +21,10 @@
 //   * Minor cycles: n is the harness's count of the cycles, 0 in the first
 //     one, + 1 at each later cycle start, modulo 2^c (c = H2.cluster, F_CL):
 //     the contract's count.  Entry k is due in a cycle when n mod 2^rep_k =
-//     base_k (E6).  The images' two slots do not share a window, so an entry
-//     that is not due (its fetch only, 7 clocks) moves no other's start.
+//     base_k mod 2^rep_k (E6: the controller reads only base's low rep bits;
+//     the images, verify_rom-clean, have base_k < 2^rep_k).  The images'
+//     two slots do not share a window, so an entry that is not due (its
+//     fetch only, 7 clocks) moves no other's start.
 // Properties (labels; S_k = E1 of entry k, D_k = S_k + E2 of entry k,
 // MARGIN = TIMEOUT + 2, FETCH = 7):
 //   go_time        go_o only in a clock with crel = S_k + FETCH - 1 of a cycle
@@ -146,8 +148,8 @@ module fseq (
     // the count of this clock's cycle: 0 in the first cycle, + 1 modulo 2^c at every later start
     localparam [7:0] CL_MASK = (8'd1 << F_CL) - 8'd1;
     wire [7:0]    n_cur  = !cycle_o ? n_q : started_q ? ((n_q + 8'd1) & CL_MASK) : 8'd0;
-    wire          due0   = (n_cur & ((8'd1 << F_R0) - 8'd1)) == F_B0[7:0];
-    wire          due1   = (n_cur & ((8'd1 << F_R1) - 8'd1)) == F_B1[7:0];
+    wire          due0   = ((n_cur ^ F_B0[7:0]) & ((8'd1 << F_R0) - 8'd1)) == 8'd0;   // n = base mod 2^rep
+    wire          due1   = ((n_cur ^ F_B1[7:0]) & ((8'd1 << F_R1) - 8'd1)) == 8'd0;
     wire          hit    = poll_cyc_o && poll_ack_i && actual != 8'd0 && actual[7:2] == 6'd0 &&
                            actual[1:0] != sync_rl_i;
 
@@ -290,20 +292,12 @@ module fseq (
     (* keep *) wire [31:0]         f_rom_q;       // the ROM's read register
     (* keep *) wire                f_lastq, f_ent0q;   // the entry that runs is the last / entry 0
     (* keep *) wire                f_dueq;        // the due test on the E6 read ahead
-    (* keep *) wire [3:0]          f_rep, f_blen; // its rep and base's bit length (the entry check's)
+    (* keep *) wire [3:0]          f_rep;         // its rep (the entry check's)
     (* keep *) wire [F_CLB-1:0]    f_nq;          // the sequencer's minor-cycle count (of entry f_ent's cycle)
     (* keep *) wire                f_e6h, f_e6f;  // rom_q holds E6 read after the start-up pass / by FETCH clock 6
     (* keep *) wire [3:0]          f_cl;          // the loaded mode's cluster
 
     wire          run    = started_q || cycle_o;        // start-up is over
-    function [3:0] blen;                                // the bit length of a base
-        input [31:0] b;
-        integer i;
-        begin
-            blen = 4'd0;
-            for (i = 0; i < 15; i = i + 1) if (b[i]) blen = i[3:0] + 4'd1;
-        end
-    endfunction
     wire          fetch  = f_state == ST_FETCH;
     wire          xfer   = f_state == ST_TRANSFER;
     // The entry register moves on to the next entry (entry 0 after the last) in
@@ -323,10 +317,9 @@ module fseq (
     wire          e6_of1 = f_e6f ? f_ent == 8'd0 : fetch ? e1 : f_ent == 8'd1;
     wire          wrapped = (fetch && f_step == 3'd6 && e1) || (xfer && e1) || f_state == ST_CYCLE_END;
     wire [7:0]    n_nxt  = (n_cur + 8'd1) & CL_MASK;
-    wire          due0n  = (n_nxt & ((8'd1 << F_R0) - 8'd1)) == F_B0[7:0];
+    wire          due0n  = ((n_nxt ^ F_B0[7:0]) & ((8'd1 << F_R0) - 8'd1)) == 8'd0;
     wire          due_want = e6_of1 ? due1 : (wrapped && !f_e6f) ? due0n : due0;
     wire [3:0]    e6_rep_w  = e6_of1 ? F_R1[3:0] : F_R0[3:0];
-    wire [3:0]    e6_blen_w = e6_of1 ? blen(F_B1) : blen(F_B0);
     // the slots run so far in the cycle (prev_end: the last due one's end)
     wire [F_TB:0] pe1    = due0 ? D0[F_TB:0] : {(F_TB+1){1'b0}};
     wire [F_TB:0] pe2    = due1 ? D1[F_TB:0] : pe1;
@@ -436,7 +429,7 @@ module fseq (
                 // the due test's inputs: the count (count_wrap), the cluster, the due fields
                 count_wrap: assert(f_nq == (wrapped ? n_nxt[F_CLB-1:0] : n_cur[F_CLB-1:0]));
                 inv_cl:     assert(f_cl == F_CL[3:0]);
-                inv_due: assert(f_e6h || (f_dueq == due_want && f_rep == e6_rep_w && f_blen == e6_blen_w));
+                inv_due: assert(f_e6h || (f_dueq == due_want && f_rep == e6_rep_w));
                 inv_e6f: assert(!f_e6f || (crel32 == (f_ent == 8'd1 ? F_S0 : F_S1) + FETCH && f_state != ST_FETCH));
                 // the entry that runs, from FETCH clock 6 on
                 if ((fetch && f_step == 3'd6) || xfer || f_state == ST_CYCLE_END) begin

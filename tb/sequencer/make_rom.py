@@ -11,8 +11,11 @@ the sequencer must run the three entries only.  --modes-bad: the same with
 H2.start_end beyond NE, an invalid header).  --multirate: the image of
 tb_sequencer_multirate.v: cluster 8 (256 minor cycles of 400 clocks), entries
 of repetitions 1 to 2^8 and several bases, three of them sharing one window
-(their due sets disjoint), one with a base not below 2^rep and one with a rep
-above the cluster (both invalid: never run, counted in rom_errors every cycle).
+(their due sets disjoint), one with a base not below 2^rep (the controller
+reads only base's low rep bits: it runs in the minor cycles n with n mod 2^rep
+= base mod 2^rep; verify_rom would refuse the image, the controller does not
+check that rule) and one with a rep above the cluster (invalid: never runs,
+counted in rom_errors every cycle).
 --multirate-modes: the same as mode 0 of an image whose mode 1 has cluster 2
 (4 minor cycles of 300 clocks) and two entries sharing a window.  Bit
 positions are docs/controller.md's, written here as literals."""
@@ -46,7 +49,7 @@ def multirate(args):
             entry(C, 2, 1, 2, 120, 70, src, [d1], rep=2, base=0),        # 0 mod 4     } due sets
             entry(C, 3, 1, 1, 120, 77, src, [d1], rep=2, base=2),        # 2 mod 4     } disjoint
             entry(S, 2, 1, 9, 200, 80, 0, [d2], rep=3, base=5),          # cycle 5
-            entry(C, 0, 1, 1, 290, 40, src, [d1], rep=2, base=5),        # invalid: base 5 >= 4
+            entry(C, 0, 1, 1, 290, 40, src, [d1], rep=2, base=5),        # base 5 >= 4: 1 mod 4 (5 mod 4)
             entry(C, 0, 1, 1, 340, 40, src, [d1], rep=9, base=3),        # invalid: rep 9 > cluster 8
             entry(C, 3, 1, 1, 340, 50, src, [d1], rep=8, base=3)]        # cycle 3 of 256, behind the invalid one
     h2 = (8 << 20) | 2                                                   # cluster 8, drop run 2

@@ -5,8 +5,12 @@
 //   * the minor-cycle count n is 0 in the first cycle after start-up and
 //     after a mode switch, + 1 at each other cycle start, modulo 2^c (c: the
 //     running mode's cluster, H2[23:20] or its descriptor's D2[23:20]);
-//   * an entry is valid when base < 2^rep and rep <= c (E6: base [14:0],
-//     rep [19:16]); it is due when n mod 2^rep = base;
+//   * an entry is valid when rep <= c (E6: base [14:0], rep [19:16]); it is
+//     due when n mod 2^rep = base mod 2^rep: the controller reads only
+//     base's low rep bits (base < 2^rep is a rule of the image that
+//     verify_rom checks, not the controller), so an entry with base >= 2^rep
+//     runs in those cycles: the image has one, and the bench fails unless it
+//     ran (and every entry ran in exactly the cycles the model counts);
 //   * every entry is fetched in every cycle, at S = max(cycle start + E1, the
 //     clock after the previous entry ended): a valid due entry gets go_o at
 //     S + 6 with slot_time_o = S and its fields, and its accesses stop TIMEOUT
@@ -64,18 +68,19 @@ module tb_sequencer_multirate;
         end
     end
     function valid; input integer j; input integer m;
-        valid = e_base[j] < (1 << e_rep[j]) && e_rep[j] <= m_cl[m];
+        valid = e_rep[j] <= m_cl[m];
     endfunction
     function due; input integer j; input integer n;
-        due = n % (1 << e_rep[j]) == e_base[j];
+        due = n % (1 << e_rep[j]) == e_base[j] % (1 << e_rep[j]);
     endfunction
 
     // ------------------------------------------------------------ the model, checked at every go and cycle start
     integer errors = 0, gos = 0, cyc_n = 0, cur_mode = 0, n = 0, cstart = -1, k = 0, t_free = 0, s = 0, j = 0;
     integer cur = 0, last_may = 0, in_slot = 0, rerr0 = 0, bad_n = 0, rejects = 0, skipped = 0;
     integer runs [0:15];            // go count per entry
-    integer wraps = 0;
-    initial for (i = 0; i < 16; i = i + 1) runs[i] = 0;
+    integer exp_runs [0:15];        // the model's: the cycles that ended in which the entry was valid and due
+    integer wraps = 0, high_runs = 0;
+    initial for (i = 0; i < 16; i = i + 1) begin runs[i] = 0; exp_runs[i] = 0; end
     always @(posedge clk) if (!rst) begin
         done <= 1'b0;
         if (errors >= 12) begin
@@ -93,7 +98,8 @@ module tb_sequencer_multirate;
                 bad_n = 0;
                 for (j = m_first[cur_mode]; j < m_end[cur_mode]; j = j + 1) begin
                     if (!valid(j, cur_mode)) bad_n = bad_n + 1;
-                    else if (j >= k && due(j, n)) begin
+                    else if (due(j, n)) exp_runs[j] = exp_runs[j] + 1;
+                    if (valid(j, cur_mode) && j >= k && due(j, n)) begin
                         $display("FAIL entry %0d (mode %0d) is due in minor cycle %0d and did not run", j, cur_mode, n);
                         errors = errors + 1;
                     end
@@ -169,7 +175,23 @@ module tb_sequencer_multirate;
         if (error || wraps < 1) begin
             $display("FAIL error %0d, the count wrapped %0d times (expected 1 or more)", error, wraps); errors = errors + 1;
         end
-        for (i = 0; i < ne && i < 16; i = i + 1) $display("entry %0d: rep %0d base %0d: %0d runs", i, e_rep[i], e_base[i], runs[i]);
+        for (i = 0; i < ne && i < 16; i = i + 1) begin
+            $display("entry %0d: rep %0d base %0d: %0d runs", i, e_rep[i], e_base[i], runs[i]);
+            if (runs[i] != exp_runs[i]) begin
+                $display("FAIL entry %0d ran %0d times, expected %0d (the cycles n with n mod %0d = %0d it was due in)",
+                         i, runs[i], exp_runs[i], 1 << e_rep[i], e_base[i] % (1 << e_rep[i]));
+                errors = errors + 1;
+            end
+            if (e_base[i] >= (1 << e_rep[i])) begin
+                $display("entry %0d: base %0d >= 2^rep = %0d ran in the %0d cycles with n mod %0d = %0d",
+                         i, e_base[i], 1 << e_rep[i], runs[i], 1 << e_rep[i], e_base[i] % (1 << e_rep[i]));
+                high_runs = high_runs + runs[i];
+            end
+        end
+        if (high_runs == 0) begin
+            $display("FAIL no entry with base >= 2^rep ran: expected the image's one to run (the due rule reads base mod 2^rep)");
+            errors = errors + 1;
+        end
         $display("%0d cycles, %0d slots, %0d entries skipped (not due or invalid), rom_errors %0d, %0d wraps of the count",
                  cyc_n - 1, gos, skipped, rerr, wraps);
         if (errors == 0) $display("PASS tb_sequencer_multirate");

@@ -23,14 +23,19 @@
 #                               cluster 8, reps 0 to 8, three entries in one
 #                               window): every go and every cycle against the
 #                               bench's model of the due rule, the count's wrap,
-#                               invalid E6 entries counted in rom_errors
+#                               invalid E6 entries (rep above the cluster)
+#                               counted in rom_errors, an entry whose base is not
+#                               below 2^rep run in the cycles n mod 2^rep =
+#                               base mod 2^rep
 #   make test-sequencer-multirate-modes
 #                               the same with a mode switch to a cluster of 4
 #                               and back: the count restarts at each switch
-#   make test-sequencer-multirate-negative-no_reset, -e6_unchecked
+#   make test-sequencer-multirate-negative-no_reset, -e6_unchecked, -base_high
 #                               the bench on a sequencer whose count does not
-#                               restart at a switch, or whose entry check
-#                               forgets E6 (tb/sequencer/mutants/): must fail
+#                               restart at a switch, whose entry check forgets
+#                               E6 (rep above the cluster), or whose due test
+#                               asks base < 2^rep too (tb/sequencer/mutants/):
+#                               must fail
 # Outputs in build/parts/.
 
 PARTS_DIR := $(BUILD)/parts
@@ -45,11 +50,13 @@ SEQ_SUB   := rtl/albatross_schedule_rom.v rtl/albatross_rom_check.v rtl/albatros
 TESTS += parts-lint sequencer sequencer-bad-start0 sequencer-negative-slot_late \
          sequencer-modes sequencer-modes-bad sequencer-modes-negative sequencer-modes-switch \
          sequencer-modes-switch-negative sequencer-multirate sequencer-multirate-modes \
-         sequencer-multirate-negative-no_reset sequencer-multirate-negative-e6_unchecked
+         sequencer-multirate-negative-no_reset sequencer-multirate-negative-e6_unchecked \
+         sequencer-multirate-negative-base_high
 .PHONY: test-parts-lint test-sequencer test-sequencer-bad-start0 test-sequencer-negative-slot_late \
         test-sequencer-modes test-sequencer-modes-bad test-sequencer-modes-negative test-sequencer-modes-switch \
         test-sequencer-modes-switch-negative test-sequencer-multirate test-sequencer-multirate-modes \
-        test-sequencer-multirate-negative-no_reset test-sequencer-multirate-negative-e6_unchecked
+        test-sequencer-multirate-negative-no_reset test-sequencer-multirate-negative-e6_unchecked \
+        test-sequencer-multirate-negative-base_high
 
 test-parts-lint: $(addprefix rtl/,$(addsuffix .v,$(PARTS))) $(RTL_INC)
 	@mkdir -p $(PARTS_DIR)
@@ -149,3 +156,4 @@ test-sequencer-multirate-negative-$(1): $(SEQ_MR_DEPS) tb/sequencer/mutants/$(1)
 endef
 $(eval $(call seq_mr_negative,no_reset,albatross_minor_cycles.v,--multirate-modes,+modes))
 $(eval $(call seq_mr_negative,e6_unchecked,albatross_entry_check.v,--multirate,))
+$(eval $(call seq_mr_negative,base_high,albatross_minor_cycles.v,--multirate,))
