@@ -169,6 +169,7 @@ void FragmentChecker::begin_run(Chan &c, uint64_t cyc, int entry, bool import)
     c.run_ctrl.assign(c.dst.size(), false);
     c.run_dropped.assign(c.dst.size(), false);
     c.run_pub.assign(c.dst.size(), false);
+    c.run_att.assign(c.dst.size(), false);
     c.run_stored.assign(c.dst.size(), std::vector<bool>(c.w + 1, false));
     ++runs;
     if (c.kind != KIND_COPY) return;
@@ -221,7 +222,7 @@ void FragmentChecker::end_run(Chan &c)
         after[d] = !c.run_dropped[d];
         if (after[d]) any_after = true, p = std::min(p, fm);
     }
-    const bool ended = some_whole && any_whole;    // the value's last word stored to all: published
+    const bool ended = some_whole && any_whole;    // the value's last word stored to all (the publication follows)
     if (!any_after) p = c.run_p0;
     const uint32_t carried = p > c.run_p0 ? p - c.run_p0 : 0;
     // The compiler's plan: at least E7.frag words per run, within its fault
@@ -245,34 +246,53 @@ void FragmentChecker::end_run(Chan &c)
     if (c.run_import) c.value_runs = 0;
     ++c.value_runs;
     if (!c.run_import) ++later_fragments;
-    if (ended) {
-        bool pub = true;
-        for (size_t d = 0; d < nd; ++d) pub = pub && (!after[d] || c.run_pub[d]);
-        if (pub && any_after && c.value_runs >= 2) ++fragmented_publications;
-        c.on = ON_NO;
-        return;
+    // After the run (rtl/albatross_transfer.v "Values over several runs"):
+    // live, the destinations still in the value and not published (Actual
+    // store acked); safe, none of them had a Slot or Actual store put on the
+    // bus in this run (a begun one may have landed); counted, a word other
+    // than the value's last (W - 1) whose stores ended in this run: words
+    // [run_p0, pc), pc = min(p, W - 1).  The value goes on iff live is not
+    // empty, safe, and the run went on with it or its entry has E7.frag != 0
+    // and a word was counted; it goes on from pc (the progress stays where
+    // none was counted), so a value cut off in its publication goes on from
+    // word W - 1.  Else it ends (the next run Imports afresh).
+    std::vector<bool> live(nd, false);
+    bool any_live = false, safe = true, any_pub = false;
+    for (size_t d = 0; d < nd; ++d) {
+        any_pub = any_pub || (v[d] && c.run_pub[d]);
+        live[d] = after[d] && !c.run_pub[d];
+        if (!live[d]) continue;
+        any_live = true;
+        safe = safe && !c.run_att[d];
     }
+    const uint32_t pc = std::min(p, c.w > 0 ? c.w - 1 : 0);
+    const bool counted = any_after && pc > c.run_p0;
+    if (!any_live && any_pub && c.value_runs >= 2) ++fragmented_publications;
     if (c.run_import) {
-        // A first run: the value goes on if its entry has E7.frag != 0 and
-        // word 0's stores ended: certain when it began a later word, or
-        // stored word 0 to every destination whose control word it accessed
-        // that was not dropped; else maybe (a destination whose earlier store
-        // landed leaves at its control load, silently).
+        // A first run: the value goes on if its entry has E7.frag != 0 and a
+        // word was counted: certain when it began a later word (or stored
+        // word 0 to every destination whose control word it accessed that was
+        // not dropped); else maybe (a destination whose earlier store landed
+        // leaves at its control load, silently, and word 0's stores may have
+        // ended without it).
         bool certain = c.ld_max >= 1;
         bool all = true;
         for (size_t d = 0; d < nd; ++d) all = all && (!c.run_ctrl[d] || c.run_stored[d][0] || c.run_dropped[d]);
         certain = certain || all;
-        if (c.run_frag == 0 || !any_after) c.on = ON_NO;
-        else c.on = blind ? ON_UNKNOWN : certain ? ON_YES : ON_MAYBE;
-        c.in = after;
-        c.prog = p;
+        if (c.run_frag == 0 || !any_live || c.w < 2) { c.on = ON_NO; return; }
+        // (blind: a destination the checker thinks live may have been dropped)
+        if (blind) { c.on = ON_UNKNOWN; return; }
+        if (!counted || !safe) { c.on = ON_NO; return; }
+        c.on = certain ? ON_YES : ON_MAYBE;
+        c.in = live;
+        c.prog = pc;
         return;
     }
-    if (c.on == ON_UNKNOWN || blind) { c.on = ON_UNKNOWN; return; }
-    if (!any_after) return;     // every destination dropped: the controller keeps the state as it was
+    if (c.on == ON_UNKNOWN || (blind && any_live)) { c.on = ON_UNKNOWN; return; }
+    if (!any_live || !safe) { c.on = ON_NO; return; }   // the value ends: the next run Imports afresh
     c.on = ON_YES;
-    c.in = after;
-    c.prog = p;
+    c.in = live;
+    if (counted) c.prog = pc;
 }
 
 const FragmentChecker::Entry *FragmentChecker::locate(const Chan &c, uint64_t start, uint64_t end, uint64_t &cnt,
@@ -307,7 +327,7 @@ void FragmentChecker::switch_run(Chan &c, uint64_t cnt, uint64_t cs, const Entry
     c.run_blind = faulted(c.run_ws, c.run_we, true);
 }
 
-void FragmentChecker::on_fault(uint64_t cycle, bool addressed, int board, uint32_t addr)
+void FragmentChecker::on_fault(uint64_t cycle, bool addressed, int board, uint32_t addr, bool we)
 {
     if (!active_ || !started_) return;
     // (a run's window is at most a minor cycle: older faults are not needed)
@@ -328,6 +348,8 @@ void FragmentChecker::on_fault(uint64_t cycle, bool addressed, int board, uint32
     const Entry *x = nullptr;
     const Entry *wx = locate(c, cycle, cycle, cnt, cs, x);
     if (cnt != c.run_cycle || (wx ? wx->index : -1) != c.run_entry) return;   // (a destination access follows a source one)
+    // A Slot or Actual store put on the bus (a timeout is seen only here).
+    if (we && addr == c.dst[dest].base) c.run_att[dest] = true;
     // K failed attempts of one destination access in a row drop it (for the
     // rest of the value when it goes on).
     if (++c.fail_run >= drop_run_) {
@@ -385,6 +407,7 @@ void FragmentChecker::on_bus(const SystemSim::BusEvent &e)
     const uint32_t size = 4 * (c.w + (dest < 0 ? 0 : 1));
     if (e.addr == base) {   // a destination's control word
         c.run_ctrl[dest] = true;
+        if (e.we) c.run_att[dest] = true;   // a Slot or Actual store put on the bus (answered or not)
         if (!e.we || !e.ok) return;
         unsigned buffer = 0;
         if (!c.four && (e.sel & (1u << ALB_OFF_ACTUAL))) buffer = (e.wdata >> (8 * ALB_OFF_ACTUAL)) & 0xFFu;

@@ -20,7 +20,10 @@
 //                     the Actual store; four-slot: the Slot store that
 //                     completes it) only when every word of the value and
 //                     taken_at have been stored into that buffer, all of one
-//                     value (the words' tags): never while the value goes on;
+//                     value (the words' tags): nothing is published before
+//                     the value's last word (a run cut off in the
+//                     publication may have published some destinations; the
+//                     value goes on for the others only, from word W - 1);
 //   source_lock       from a value's first run (the one with the Import, its
 //                     ReadLocked store) to its last, no run touches the
 //                     source's control word (no ReadLocked store, no new
@@ -30,13 +33,14 @@
 //   fragment_word     a run loads consecutive words of the source buffer
 //                     (a failed load again, else the next): from word 0 in a
 //                     run with an Import, from p in a run that goes on with
-//                     a value, p the first word not yet stored to every
-//                     destination still in the value; it stores only the word
-//                     it loaded last, to its own offset (its tag's index),
-//                     and, going on with a value, only to the destinations
-//                     still in it; taken_at only after the value's last
-//                     word; a run without an Import only while a value goes
-//                     on; and a run of an entry with E7.frag = F != 0 that no
+//                     a value (p below); it stores only the word it loaded
+//                     last, to its own offset (its tag's index), and, going
+//                     on with a value, only to the destinations still in it
+//                     (not dropped, not published); taken_at only after the
+//                     value's last word (in any run that loaded it: one that
+//                     goes on from W - 1 too); a run without an Import only
+//                     while a value goes on; and a run of an entry with
+//                     E7.frag = F != 0 that no
 //                     fault hit stores at least F words to every destination
 //                     still in the value, unless the value ends first (the
 //                     compiler plans each run for at least F words under its
@@ -45,23 +49,30 @@
 //                     scenario).
 // The value in progress, as the controller keeps it (rtl/albatross_transfer.v
 // "Values over several runs"), is derived from what the checker saw: a run
-// stores words until the value's last or until its deadline; the words whose
-// stores ended are those stored (acked) to every destination still in the
-// value; a destination is out of the value once one of its accesses failed
-// K = H2.drop_run times in a row (tb_system gives the checker every faulted
-// request, on_fault, timeouts included); the progress p after a run that
-// goes on is the first word, from the run's first, not stored in that run to
-// every destination still in the value; a run that goes on and keeps no
-// destination leaves the state as it was (the controller does not write it).
-// A value goes on after a run that stored a word to all and did not reach the
-// value's last word, if the run went on with it or its entry has E7.frag !=
-// 0.  Where a first run stored word 0 and nothing after it, without storing
-// it to every destination it had loaded the control word of, the checker
-// cannot tell whether word 0's stores ended (a destination whose earlier
-// store landed leaves silently): it accepts an Import, or a run going on from
-// the p that those stores give.  A faulted access whose address the checker
-// is not told (a dead board) leaves the progress unknown until the next
-// Import (no judgement of where runs start, or of Imports, until then).
+// stores words until the value's last or until its deadline; a destination
+// is out of the value once one of its accesses failed K = H2.drop_run times
+// in a row (tb_system gives the checker every faulted request, on_fault,
+// timeouts included) or once it is published (its Actual store acked).
+// After a run: live, the destinations still in the value and not published;
+// safe, none of them had a Slot or Actual store put on the bus in the run
+// (answered or not: a begun one may have landed, which only a fresh
+// Import's control load can tell); a word is counted when it is not the
+// value's last (W - 1) and the run stored it to every destination still in
+// the value (or dropped them).  The value goes on iff live is not empty,
+// safe, and the run went on with it or its entry has E7.frag != 0 and a
+// word was counted; its progress p is then 1 + the last word counted in the
+// run (unchanged if none was), so a value cut off in its publication (after
+// its last word, before a Slot or Actual store for a destination not
+// published) goes on from word W - 1: the next run loads it, stores it,
+// taken_at, and publishes.  Else the value ends and the next run Imports
+// afresh.  Where a first run stored word 0 and nothing after it, without
+// storing it to every destination it had loaded the control word of, the
+// checker cannot tell whether word 0's stores ended (a destination whose
+// earlier store landed leaves silently): it accepts an Import, or a run
+// going on from the p that those stores give.  A faulted access whose
+// address the checker is not told (a dead board) leaves the progress
+// unknown until the next Import (no judgement of where runs start, or of
+// Imports, until then).
 // Not judged: images with modes (each mode has its own cluster), the SYNC
 // source's polls (outside any slot).
 #pragma once
@@ -84,9 +95,10 @@ public:
     // Every access the controller saw answered (ok or not).
     void on_bus(const SystemSim::BusEvent &e);
     // A request of the controller that the injector faulted (any kind, a
-    // timeout too), begun at clock cycle; addressed false: to a dead board,
-    // address not known.  Call after on_bus for the same clock.
-    void on_fault(uint64_t cycle, bool addressed, int board, uint32_t addr);
+    // timeout too: on_bus never sees one), begun at clock cycle, a store if
+    // we; addressed false: to a dead board, address not known.  Call after
+    // on_bus for the same clock.
+    void on_fault(uint64_t cycle, bool addressed, int board, uint32_t addr, bool we);
     // Figures for the report: runs seen, runs that went on with a value,
     // values published after two or more runs, minor cycles counted, runs
     // a fault hit.
@@ -150,6 +162,7 @@ private:
         std::vector<bool> run_ctrl;      // destinations whose control word it accessed
         std::vector<bool> run_dropped;   // destinations dropped (K failures in a row)
         std::vector<bool> run_pub;       // destinations whose publishing store was acked
+        std::vector<bool> run_att;       // destinations with a Slot or Actual store put on the bus
         std::vector<std::vector<bool>> run_stored;  // acked word stores, by destination and word
         std::vector<std::vector<DestBuf>> bufs;     // by destination, buffer 1..4
     };

@@ -318,7 +318,7 @@ int main(int argc, char **argv)
             if (frag_on) frag.on_bus(sim.bus_event);
         }
         if (frag_on && sim.fault_injected + sim.forced_faults + sim.dead_accesses != fq_faults)
-            frag.on_fault(sim.cycle(), fq_told, fq_board, fq_addr);
+            frag.on_fault(sim.cycle(), fq_told, fq_board, fq_addr, fq_we);
         for (int b = 0; b < SystemSim::kBoards; ++b)
             if (done & (1u << b)) wait[b] = static_cast<uint64_t>((rng() % 3) * period[b]);
         if (sim.time() < last_time) time_monotonic = false;

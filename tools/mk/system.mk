@@ -468,6 +468,16 @@ test-system-negative-$(call neg_field,$(1),1): $(SYS_DIR)/mutant-$(call neg_fiel
 endef
 $(foreach n,$(SYS_MR_NEGATIVE),$(eval $(call sys_mr_negative,$(n))))
 
+# The rule's safety (frag_unsafe.sed: a value goes on after a run that put a
+# Slot or Actual store on the bus for a destination still in it): seen only
+# when a fault hits such a store and the deadline cuts its retry off, so on
+# the image planned for 5 % faults, at that rate (2 to 12 runs caught on
+# seeds 1-5); fragment_word must catch it.
+TESTS += system-negative-frag-unsafe
+test-system-negative-frag-unsafe: $(SYS_DIR)/mutant-frag_unsafe/tb_system $(SYS_MR)/tb_plan.txt
+	@tools/run_test.sh system-negative-frag-unsafe $< --plan $(SYS_MR) --seed $(SEED) --cycles 1600000 \
+	    --fault-rate 0.05 --label system-negative-frag-unsafe --expect-caught-by fragment_word
+
 # Negatives of the multi-rate runs' own requirements: the bounds at the target
 # cut to 90 % on the run at 5 % (Position's worst latency is 93 % of its
 # bound: "at the target" must fail), and a plan without fragments (the robot's)
