@@ -31,13 +31,13 @@
 //             a fresh Import and is delivered whole.
 // Negatives (tools/mk/controller.mk): controller-negative-frag_publish_first,
 // -frag_reimport, -frag_wrong_word.
-// Scenario fragedge (run only by name, --scenario=fragedge; make
-// test-controller-fragedge, not in make test): a run that stores the
-// value's last word and its taken_at but is cut off before the Actual store
-// ends the value, and the next run Imports it again, Old, from word 0: with
-// this slot the runs then repeat (words 0 1 | 2 3 4 and taken_at) and the
-// value is never published while the producer is idle.  It fails on the
-// controller of 6858719: a limit of that rule, shown, not hidden.
+// Scenario fragedge: a run that stores the value's last word and its
+// taken_at but is cut off before the Actual store: the value goes on from
+// word W - 1 (its load, stores and the publication again in the next run)
+// and is published once, whole.  A controller that ends the value there
+// instead (the next run Imports it again, Old, from word 0) repeats the
+// same runs with this slot (words 0 1 | 2 3 4 and taken_at) and never
+// publishes while the producer is idle: controller-negative-frag_pub_cut.
 #include "ctrl_bench.h"
 
 namespace {
@@ -318,14 +318,15 @@ std::string run_summary(Frag &f, unsigned c0, unsigned c1) {
 
 // Scenario fragedge: a value whose run stores its last word and begins its
 // publication (taken_at) but is cut off before the Actual store.  The value
-// ends (the publication began) and the next run Imports afresh: an Old value
-// is sent again from word 0.  With a fixed slot the runs repeat the same
-// words, so a value Imported Old is never published while the producer is
-// idle.  Two ways in: a first run cut before its first word (the value
-// Imported again, Old: runs of words 0 1 | 2 3 4 and taken_at), and a run
-// cut by the source's death after one word (part retry with CUT = 1).  The
-// checks expect the value published within 2 * RUNS cycles; they fail on
-// the controller of 6858719 (not part of the default run: --scenario=fragedge).
+// goes on from word W - 1, and the next run publishes it.  (Were it to end
+// there, the next run would Import afresh and send an Old value again from
+// word 0; with a fixed slot the runs would repeat the same words and a value
+// Imported Old would never be published while the producer is idle.)  Two
+// ways in: a first run cut before its first word (the value Imported again,
+// Old: runs of words 0 1 | 2 3 4 and taken_at), and a run cut by the
+// source's death after one word (part retry with CUT = 1).  The checks
+// expect the value published within 2 * RUNS cycles (negative:
+// controller-negative-frag_pub_cut).
 void edge_check(Frag &f, const char *what, unsigned c0, unsigned c1) {
     const size_t e = f.to_tail(c1);
     std::vector<uint32_t> got;

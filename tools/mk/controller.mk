@@ -73,7 +73,7 @@ $(CTRL_DIR)/mutant-$(1)/obj/Vtb_system: $(CTRL_SRC) $(CTRL_DIR)/mutant-$(1)/src/
 	    > $(CTRL_DIR)/mutant-$(1)/build.log 2>&1 || { cat $(CTRL_DIR)/mutant-$(1)/build.log; exit 1; }
 endef
 $(foreach m,stale_need cold_zero_corrupt no_request forget_state forget_switch deadline_late slot_first_load \
-    frag_publish_first frag_reimport frag_wrong_word,$(eval $(call ctrl_mutant_model,$(m))))
+    frag_publish_first frag_reimport frag_wrong_word frag_pub_cut,$(eval $(call ctrl_mutant_model,$(m))))
 CTRL_MUT_DIR := $(CTRL_DIR)/mutant-stale_need
 
 TESTS += controller-abandon controller-negative-stale_need
@@ -207,17 +207,19 @@ $(eval $(call ctrl_race_negative,slot_first_load,race4,66,race4: the controller 
 #   frag_publish_first  a publish after the first word of a first run
 #   frag_reimport       the source's lock released between runs (a fresh Import)
 #   frag_wrong_word     a run that goes on resumes one word early
-# Scenario fragedge (a run cut off between the value's taken_at and Actual
-# stores: the value must still be published) is run only by name: make
-# test-controller-fragedge, not in TESTS: it fails on the controller of
-# 6858719 (the value is never published while the producer is idle).
-TESTS += controller-frag
+# Scenario fragedge: runs cut off in the value's publication (after its last
+# word, before its Actual store): the value must still be published, once and
+# whole.  Its negative, frag_pub_cut, ends the value at such a cut-off (the
+# next run Imports afresh): with a slot too short for the value and its
+# publication together the runs then repeat without end.
+TESTS += controller-frag controller-fragedge
 .PHONY: test-controller-frag
 test-controller-frag: $(CTRL_BIN)
 	@tools/run_test.sh controller-frag $(CTRL_BIN) --dir=$(CTRL_DIR)/frag --scenario=frag
 $(eval $(call ctrl_race_negative,frag_publish_first,frag,66,frag whole: run 0 publishes nothing,the controller that publishes after the first word of a first run))
 $(eval $(call ctrl_race_negative,frag_reimport,frag,66,frag whole: run 1 makes no access to the source.s control word,the controller that Imports afresh at every run))
 $(eval $(call ctrl_race_negative,frag_wrong_word,frag,66,frag whole: run 1 goes on at the first word not yet stored,the controller that resumes a value one word early))
+$(eval $(call ctrl_race_negative,frag_pub_cut,fragedge,66,frag edge .*expected the value published once,the controller that ends a value cut off in its publication))
 .PHONY: test-controller-fragedge
 test-controller-fragedge: $(CTRL_BIN)
 	@tools/run_test.sh controller-fragedge $(CTRL_BIN) --dir=$(CTRL_DIR)/fragedge --scenario=fragedge
