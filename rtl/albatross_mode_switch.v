@@ -24,14 +24,15 @@
 //     after, and the running mode goes on.
 //   * The load starts in a clock with idle_i (the sequencer waits for the cycle
 //     end, and waits, the boundary held, until the load is over: idle_i then
-//     stays high) and takes a ROM read a clock (read_o, read_adr_o; its word
-//     in rom_i the clock after): the requested mode's D0 (its cycle and
-//     entries; read in the clock the load starts), D1 (its drop run and next
-//     mask), D2 (its cluster), then E1 of its first entry (e1_o high while
-//     rom_i holds it: the sequencer's next start) and its E6 (e6_rd_o: the
-//     sequencer reads E6 of its entry register, which first_ld_o has set to
-//     the new first entry two clocks before; e6_o high while rom_i holds it:
-//     the due fields of the first entry).  Then it waits, loaded, for the
+//     stays high) and takes a ROM read a clock (its word in rom_i the clock
+//     after): the requested mode's D0 (its cycle and entries; read in the
+//     clock the load starts), D1 (its drop run and next mask), D2 (its
+//     cluster), read at read_adr_o while read_o, then E1 of its first entry
+//     (e1_rd_o: the sequencer reads E1 of its entry register, which
+//     first_ld_o has set to the new first entry in the clock before; e1_o
+//     high while rom_i holds it: the sequencer's next start) and its E6
+//     (e6_rd_o: the sequencer reads E6 of its entry register; e6_o high
+//     while rom_i holds it: the due fields of the first entry).  Then it waits, loaded, for the
 //     boundary: the sequencer starts no cycle while hold_o (pending, not
 //     loaded), and at the boundary (switch_i) the new mode's values replace
 //     the running ones (next_first_o gives the first entry of the cycle that
@@ -60,6 +61,7 @@ module albatross_mode_switch #(
     output wire              read_o,         // a read of the mode table this clock
     output wire [ROM_AW-1:0] read_adr_o,
     output wire              first_ld_o,     // the sequencer's entry register takes next_first_o (the new first entry)
+    output wire              e1_rd_o,        // the sequencer reads E1 of its entry register this clock
     output wire              e6_rd_o,        // the sequencer reads E6 of its entry register this clock
     output wire              e1_o,           // rom_i holds E1 of the new mode's first entry
     output wire              e6_o,           // rom_i holds E6 of the new mode's first entry
@@ -115,7 +117,6 @@ module albatross_mode_switch #(
     /* verilator lint_off UNUSEDSIGNAL */
     wire [7:0]         desc   = table_q + {4'd0, idx_q};
     wire [ROM_AW+10:0] d_adr  = {{ROM_AW{1'b0}}, desc, step_q == L_D1 ? 3'b101 : step_q == L_D2 ? 3'b110 : 3'b100};
-    wire [ROM_AW+10:0] e1_adr = {{ROM_AW{1'b0}}, n_first_q, 3'b101};
     /* verilator lint_on UNUSEDSIGNAL */
 
     always @(posedge clk_i) begin
@@ -174,9 +175,10 @@ module albatross_mode_switch #(
         end
     end
 
-    assign read_o       = start || (MODES && (step_q == L_D1 || step_q == L_D2 || step_q == L_E1));
-    assign read_adr_o   = step_q == L_E1 ? e1_adr[ROM_AW-1:0] : d_adr[ROM_AW-1:0];
+    assign read_o       = start || (MODES && (step_q == L_D1 || step_q == L_D2));
+    assign read_adr_o   = d_adr[ROM_AW-1:0];
     assign first_ld_o   = ld_d1;                   // n_first_q holds the new first entry from this clock on
+    assign e1_rd_o      = MODES && step_q == L_E1;
     assign e6_rd_o      = MODES && step_q == L_E6;
     assign e1_o         = MODES && step_q == L_E6;
     assign e6_o         = MODES && e6_q;

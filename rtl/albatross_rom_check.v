@@ -27,7 +27,10 @@
 //     before).
 //   * Start-up (learn_i): the CRC runs over the whole image, and its value
 //     after each part is stored as that part's prefix signature (bad mark
-//     clear).  No read is issued in the clock of the check of last_word_i's
+//     clear), written in the clock after the part's last check from the CRC
+//     register (which holds it then), at the part register the mismatch
+//     marks are written at: the memory has one write address.  No read is
+//     issued in the clock of the check of last_word_i's
 //     last chunk; last_o is high in the clock after it, and crc_ok_o then
 //     says whether the CRC (the register, through last_word_i) is 0: a test
 //     of a register, not of the last step's result.  The pass takes
@@ -111,7 +114,8 @@ module albatross_rom_check #(
     // read can meet a write (a background mismatch's mark of that part);
     // clash_q then gives the old mark, which the part's background read
     // left in sig_q[32] in the compare's clock, kept in mark_old_q (what a
-    // read-first RAM would return).
+    // read-first RAM would return).  (A start-up write can meet a background
+    // read of its part, whose data the start-up pass does not use.)
     (* no_rw_check, ram_style = "block" *)
     reg [32:0]         sig [0:NE_MAX]; // {part r found bad, prefix CRC after part r}
     reg [32:0]         sig_q;
@@ -157,13 +161,12 @@ module albatross_rom_check #(
     reg                mism_q;        // part mism_part_q mismatched in the last clock ...
     reg [RG_BITS-1:0]  mism_part_q;
     reg                mark_old_q;    // ... its mark then (sig_q[32] of that clock)
-    wire               learn_wr = p_end && learn_i;
-    wire [RG_BITS-1:0] wr_part  = mism_q ? mism_part_q : part;
+    reg                learn_wr_q;    // part mism_part_q ended in the start-up pass in the last clock: crc_q is its prefix
 
     always @(posedge clk_i) begin
         // A mismatch writes the mark alone (bit write enables, no data multiplexer).
-        if (learn_wr)           sig[wr_part][31:0] <= crc_n;
-        if (learn_wr || mism_q) sig[wr_part][32]   <= mism_q;
+        if (learn_wr_q)           sig[mism_part_q][31:0] <= crc_q;
+        if (learn_wr_q || mism_q) sig[mism_part_q][32]   <= mism_q;
         sig_q       <= sig[rd_part];
         mism_part_q <= part;
         mark_old_q  <= sig_q[32];
@@ -178,8 +181,10 @@ module albatross_rom_check #(
             crc_q     <= CRC_SEED;
             last_q    <= 1'b0;
             mism_q    <= 1'b0;
+            learn_wr_q <= 1'b0;
         end else begin
             mism_q    <= mism;
+            learn_wr_q <= p_end && learn_i;
             bg_data_q <= bg_issue;
             bg_dadr_q <= bg_adr_q;
             dat_last_q <= at_last;                  // one compare for the wrap and p_last

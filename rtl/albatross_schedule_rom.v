@@ -10,9 +10,12 @@
 //     (fetch_i, step_i 1..6: E2, E3, E4, E5, then E1 of the next entry, of
 //     entry first_i, the mode's first, after the last, last_i; in clock 6
 //     E6 of entry ent_i, which the sequencer has moved on to that next
-//     entry), the mode table's reads (mode_rd_i at mode_adr_i) and E6 of
-//     entry ent_i for the mode load and for the header (e6_i; ent_i is 0 in
-//     the header), the last two only while no other main read runs (HAS_E6 0: no E6 read), and
+//     entry), the mode table's reads (mode_rd_i at mode_adr_i), E1 of entry
+//     ent_i for the mode load (e1_i: the sequencer's entry register holds
+//     the new mode's first entry then, so the mode table's reads carry no
+//     entry address) and E6 of entry ent_i for the mode load and for the
+//     header (e6_i; ent_i is 0 in the header), the last three only while no
+//     other main read runs (HAS_E6 0: no E6 read), and
 //     E7 of the entry whose transfer runs (e7_i, in its transfer's first
 //     clock: {e7_ent_i, 011}, e7_ent_i that entry + 1).  In every other clock the word is the background
 //     check's (bg_adr_i, rtl/albatross_rom_check.v).
@@ -40,6 +43,7 @@ module albatross_schedule_rom #(
     input  wire [7:0]        first_i,     // the mode's first entry (after the last)
     input  wire              mode_rd_i,   // a read of the mode table (rtl/albatross_mode_switch.v)
     input  wire [$clog2(ROM_WORDS)-1:0] mode_adr_i,
+    input  wire              e1_i,        // a read of E1 of entry ent_i (the mode load's)
     input  wire              e6_i,        // a read of E6 of entry ent_i (the mode load's, the header's)
     input  wire              e7_i,        // a read of E7 of the running entry (its transfer's first clock)
     input  wire [7:0]        e7_ent_i,    // that entry + 1
@@ -74,7 +78,7 @@ module albatross_schedule_rom #(
     localparam        E6        = HAS_E6 != 0;
     wire              e6_rd     = E6 && ((fetch_i && step_i == 3'd6) || e6_i);   // E6 of entry ent_i
     wire              fetch_rom = fetch_i && step_i <= 3'd5;
-    wire              main_rom  = header_i || start_i || fetch_rom || mode_rd_i || e6_rd || e7_i;
+    wire              main_rom  = header_i || start_i || fetch_rom || mode_rd_i || e1_i || e6_rd || e7_i;
     wire              adr_inc   = (fetch_i && step_i >= 3'd3) || (E6 && e6_i);  // E4, E5, next E1, E6
     /* verilator lint_off UNUSEDSIGNAL */
     wire [7:0]        ent_sel   = adr_inc ? ent_inc_i : ent_i;
@@ -86,6 +90,7 @@ module albatross_schedule_rom #(
     always @* begin
         adr_lo = 3'b100;                                             // E0 (start_i)
         if (e6_rd) adr_lo = 3'b010;                                  // E6 of ent_i: {ent_i + 1, 010}
+        else if (e1_i) adr_lo = 3'b101;                              // E1 of ent_i
         else if (fetch_i)
             case (step_i)
                 3'd1:    adr_lo = 3'b110;                            // E2

@@ -217,7 +217,7 @@ module albatross_sequencer #(
                              .HAS_E6(HAS_MULTIRATE != 0 || HAS_ENTRY_CHECK != 0)) u_rom (
         .clk_i(clk_i), .time_i(time_q), .header_i(state_q == ST_HEADER && !hdr_last), .start_i(start_now),
         .fetch_i(state_q == ST_FETCH), .step_i(step_q), .ent_i(ent_q), .ent_inc_i(ent_inc), .last_i(last_ent),
-        .first_i(m_first), .mode_rd_i(mode_rd), .mode_adr_i(mode_adr), .e6_i(mode_e6_rd || hdr_e6),
+        .first_i(m_first), .mode_rd_i(mode_rd), .mode_adr_i(mode_adr), .e1_i(mode_e1_rd), .e6_i(mode_e6_rd || hdr_e6),
         .e7_i(e7_rd && state_q == ST_TRANSFER), .e7_ent_i(e7_ent),
         .bg_adr_i(bg_adr),
         .main_o(main_rom), .dat_o(rom_q));
@@ -233,7 +233,7 @@ module albatross_sequencer #(
     // (rtl/albatross_mode_switch.v); a request is loaded while the sequencer
     // waits for the cycle end, and the boundary waits for a load that has
     // begun (mode_hold).
-    wire               mode_rd, mode_e1, mode_hold, mode_commit, mode_first_ld, mode_e6_rd, mode_e6;
+    wire               mode_rd, mode_e1, mode_hold, mode_commit, mode_first_ld, mode_e1_rd, mode_e6_rd, mode_e6;
     wire               new_cycle;     // the cycle boundary (control, below)
     wire [ROM_AW-1:0]  mode_adr;
     wire [7:0]         m_first, m_end, m_next_first, m_drop;
@@ -243,7 +243,7 @@ module albatross_sequencer #(
         .clk_i(clk_i), .rst_i(rst_i), .hdr1_i(state_q == ST_HEADER && step_q == 3'd2),
         .hdr2_i(state_q == ST_HEADER && step_q == 3'd3), .ne_i(ne_q), .rom_i(rom_q),
         .req_i(mode_req_i), .req_mode_i(mode_req_mode_i), .idle_i(state_q == ST_CYCLE_END), .switch_i(new_cycle),
-        .read_o(mode_rd), .read_adr_o(mode_adr), .first_ld_o(mode_first_ld), .e6_rd_o(mode_e6_rd),
+        .read_o(mode_rd), .read_adr_o(mode_adr), .first_ld_o(mode_first_ld), .e1_rd_o(mode_e1_rd), .e6_rd_o(mode_e6_rd),
         .e1_o(mode_e1), .e6_o(mode_e6), .hold_o(mode_hold),
         .reject_o(mode_reject_o), .commit_o(mode_commit), .mode_o(mode_o), .first_o(m_first), .end_o(m_end),
         .next_first_o(m_next_first),

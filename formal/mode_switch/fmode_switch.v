@@ -17,10 +17,11 @@
 //                     (its next mask: H1.next, then the loaded D1.next);
 //   no_hold_idle      without a pending request nothing holds the boundary;
 //   reads_when_idle   the mode table (and, by the sequencer, the first
-//                     entry's E6) is read only in idle clocks;
+//                     entry's E1 and E6) is read only in idle clocks;
+//   e1_after_first    the sequencer's E1 read comes in the clock after it
+//                     took the new first entry (first_ld_o);
 //   e6_after_first    the sequencer's E6 read comes two clocks after it took
-//                     the new first entry (first_ld_o), whose E1 read is
-//                     between them;
+//                     the new first entry, its E1 read between them;
 // and covers a switch to mode 1 and back to mode 0 (cover task).
 `default_nettype none
 
@@ -62,7 +63,7 @@ module fmode_switch (
 
     wire        read, hold, reject;
     wire [9:0]  read_adr;
-    wire        e1, e6, e6_rd, first_ld;
+    wire        e1, e1_rd, e6, e6_rd, first_ld;
     wire [3:0]  cluster;
     wire [3:0]  mode;
     wire [7:0]  first, last_end, next_first, drop;
@@ -70,7 +71,7 @@ module fmode_switch (
     albatross_mode_switch #(.ROM_AW(10), .TIME_BITS(TB)) dut (
         .clk_i(clk_i), .rst_i(init_q), .hdr1_i(hdr1), .hdr2_i(hdr2), .ne_i(ne), .rom_i(rom),
         .req_i(req), .req_mode_i(req_mode), .idle_i(idle), .switch_i(sw),
-        .read_o(read), .read_adr_o(read_adr), .first_ld_o(first_ld), .e6_rd_o(e6_rd), .e1_o(e1), .e6_o(e6),
+        .read_o(read), .read_adr_o(read_adr), .first_ld_o(first_ld), .e1_rd_o(e1_rd), .e6_rd_o(e6_rd), .e1_o(e1), .e6_o(e6),
         .hold_o(hold), .reject_o(reject), .commit_o(), .mode_o(mode),
         .first_o(first), .end_o(last_end), .next_first_o(next_first), .cycle_o(cycle), .drop_o(drop),
         .cluster_o(cluster));
@@ -85,10 +86,11 @@ module fmode_switch (
     (* keep *) wire [3:0] f_idx, f_modes_q, f_mode_q;
     (* keep *) wire [15:0] f_next_q;
 
-    reg first_ld_q = 1'b0, first_ld_q2 = 1'b0, e6_rd_q = 1'b0;
+    reg first_ld_q = 1'b0, first_ld_q2 = 1'b0, e1_rd_q = 1'b0, e6_rd_q = 1'b0;
     always @(posedge clk_i) begin
         first_ld_q  <= first_ld;
         first_ld_q2 <= first_ld_q;
+        e1_rd_q     <= e1_rd;
         e6_rd_q     <= e6_rd;
     end
     reg past_valid = 1'b0;
@@ -115,8 +117,9 @@ module fmode_switch (
         // invariants for the induction
         step_pend:     assert(f_step <= 3'd5 && (f_step == 3'd0 || f_pend));
         no_hold_idle:  assert(f_pend || !hold);
-        reads_when_idle: assert(!(read || e6_rd) || idle);
-        e6_after_first:  assert(!e6_rd || (f_step == 3'd4 && first_ld_q2 && e1));
+        reads_when_idle: assert(!(read || e1_rd || e6_rd) || idle);
+        e1_after_first:  assert(!e1_rd || (f_step == 3'd3 && first_ld_q && !read));
+        e6_after_first:  assert(!e6_rd || (f_step == 3'd4 && first_ld_q2 && e1_rd_q && e1));
         e6_data:         assert(!e6 || (f_step == 3'd5 && e6_rd_q));
         if (run_q) begin
             pend_known: assert(!f_pend || (f_idx < f_modes && f_idx != mode && f_next_q[f_idx]));

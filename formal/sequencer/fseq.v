@@ -288,6 +288,9 @@ module fseq (
     (* keep *) wire [4*F_AW-1:0]   f_dbase;
     (* keep *) wire [33*(F_NE+1)-1:0] f_sig;         // the prefix signatures, part r at [33r +: 33]
     (* keep *) wire [32:0]         f_sig_q;
+    localparam                     RGB = $clog2((F_ROM_WORDS - 4) / 8 + 1);   // the ROM check's part bits
+    (* keep *) wire                f_lwr;         // the ROM check writes a start-up prefix now ...
+    (* keep *) wire [RGB-1:0]      f_mpart;       // ... of this part (from the CRC register)
     (* keep *) wire                f_mism;        // the ROM check's registered mismatch
     (* keep *) wire [31:0]         f_rom_q;       // the ROM's read register
     (* keep *) wire                f_lastq, f_ent0q;   // the entry that runs is the last / entry 0
@@ -354,12 +357,18 @@ module fseq (
                           f_ent_end == F_NE && f_mfirst == 8'd0 && f_mmodes == 4'd0;
     wire [F_TB:0] pe_want = f_state == ST_CYCLE_END ? pe2 : xfer ? (e1 ? pe2 : pe1) : e1 ? pe1 : {(F_TB+1){1'b0}};
     // a part's signature is stored once the start-up pass has checked its last word
+    // (written in the clock after that check: pending then)
     wire [F_NE:0] sig_ok;
     genvar r;
     generate for (r = 0; r <= F_NE; r = r + 1) begin : g_sig
         assign sig_ok[r] = !(run || (f_state == ST_CHECK && {{(32-AW){1'b0}}, f_bg_dadr[XW-1:F_CB]} > 8 * r + 3)) ||
-                           f_sig[33*r +: 33] == {1'b0, F_PFX[32*r +: 32]};
+                           f_sig[33*r +: 33] == {1'b0, F_PFX[32*r +: 32]} ||
+                           (f_lwr && {{(32-RGB){1'b0}}, f_mpart} == r);
     end endgenerate
+    // the pending start-up write: the part whose last chunk was checked in the last clock, its
+    // prefix in the CRC register (the last part's: in the clock after the pass, the read index back at 0)
+    wire [31:0]   lwr_word = 32'd8 * {{(32-RGB){1'b0}}, f_mpart} + 32'd4;
+    wire [XW-1:0] lwr_x    = f_last ? {XW{1'b0}} : {lwr_word[AW-1:0], {F_CB{1'b0}}};
     always @* begin
         if (!init_q) begin
             inv_reset: assert(!rst_q || (f_state == ST_HEADER && f_step == 3'd0 && !f_bg_data && f_bg_adr == 0 &&
@@ -401,6 +410,9 @@ module fseq (
                 inv_error: assert(!F_VALID && error_o && !cycle_o && !started_q && !f_last && (!f_bg_data || f_bg_dadr == 0));
             end
             inv_sig: assert(&sig_ok);
+            inv_lwr: assert(!f_lwr || (f_state == ST_CHECK && f_bg_dadr == lwr_x &&
+                                       f_crc == F_PFX[32*f_mpart +: 32] &&
+                                       (!f_last || {{(32-RGB){1'b0}}, f_mpart} == F_NE)));
             // the unchanged ROM never mismatches its prefixes (so no bad mark is pending)
             inv_mism: assert(!f_mism);
             // the signature read register: the background part, or at FETCH clock 1 the entry's
