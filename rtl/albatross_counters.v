@@ -63,7 +63,7 @@ module albatross_counters #(
     (* no_rw_check *)
     reg [31:0]   ram [0:2*N_CHAN-1];
     reg [31:0]   rd_q;
-    reg [CB-1:0] rd_next_q;     // the RAM word read last, + 1: its STATUS index (mod 2^CB)
+    reg [CB-1:0] rd_next_q;     // the RAM word read last, + 1: its STATUS index (mod 2^CB), when rd_done_q
     reg          rd_done_q;     // rd_q holds the STATUS word of index rd_next_q
     reg          ready_q;
     reg [CB-1:0] clear_q;
@@ -119,9 +119,10 @@ module albatross_counters #(
     wire          add_ci = phase_q == 2'd2 && retry_i;
     wire [31:0]   wr_dat = !ready_q ? 32'd0 : {sat_add(rd_q[31:16], {13'd0, add_hi}, 1'b0), sat_add(rd_q[15:0], add_lo, add_ci)};
 
-    // rd_adr + 1, without an adder after the decrement: w0 + 1 = w1 (w0 is
-    // even), and idx_m1 + 1 is the index itself.
-    wire [CB-1:0] rd_next = (phase_q == 2'd1) ? w1 : (phase_q == 2'd2) ? w1 + 1'b1 : status_index_i[CB-1:0];
+    // The STATUS index of the word read (rd_adr + 1) matters only for a read
+    // made with no commit (rd_done_q): that read is of idx_m1, so its index
+    // is status_index_i itself (no adder after the decrement, no multiplexer).
+    wire [CB-1:0] rd_next = status_index_i[CB-1:0];
 
     always @(posedge clk_i) begin
         if (wr) ram[wr_adr] <= wr_dat;

@@ -76,25 +76,35 @@ module albatross_transfer_access #(
     wire [AW-1:0] base_d = d_i[1] ? (d_i[0] ? dst_base_i[3*AW +: AW] : dst_base_i[2*AW +: AW])
                                   : (d_i[0] ? dst_base_i[AW +: AW] : dst_base_i[0 +: AW]);
     // Word k of buffer b: base + 1 + (b - 1) * S + k, S = W (source) or W + 1.
+    // With b - 1 = 2 h + l and S = W + dst: (b - 1) * S = l W + h 2W + l dst
+    // + 2 h dst, so the address is four wide terms (base, k, l W, h 2W; the
+    // data accesses' offset: the others are 0 for a control access) and the
+    // one-bit terms 1 (cin), l dst, h dst, h dst, which go in as the three
+    // adders' carries in and bit 0 of 2W (free): three adders, no W + dst.
     wire [1:0]    b      = src ? rl_i : buf_i[1:0];   // 1..4 (4 as 0)
     wire [1:0]    bm1    = b - 2'd1;
     /* verilator lint_off UNUSEDSIGNAL */
     wire [AW+11:0] w_wide = {{AW{1'b0}}, words_i};
     wire [AW+11:0] k_wide = {{AW{1'b0}}, k_i};
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [AW-1:0] stride = w_wide[AW-1:0] + {{(AW-1){1'b0}}, dst_i};
-    wire [AW-1:0] m      = ({AW{bm1[0]}} & stride) + ({AW{bm1[1]}} & {stride[AW-2:0], 1'b0});
+    wire          g_l    = datacc && bm1[0];
+    wire          g_h    = datacc && bm1[1];
+    wire          e_h    = g_h && dst_i;          // h dst
     wire [AW-1:0] base   = src ? src_base_i : base_d;
+    wire [AW-1:0] lw     = {AW{g_l}} & w_wide[AW-1:0];                          // l W
+    wire [AW-1:0] hw     = {{(AW-1){g_h}} & w_wide[AW-2:0], g_l && dst_i};      // h 2W + l dst
     // base + k + 1 (the carry in: word k of the source, or taken_at) beside
-    // (b - 1) * S, then their sum: two carry chains deep, not three.
+    // l W + h 2W + l dst + h dst, then their sum + h dst: two carry chains deep.
     wire          cin    = src_word_i || dst_tkn_i;
     /* verilator lint_off UNUSEDSIGNAL */
     wire [AW:0]   base_k = {base, cin} + {{AW{datacc}} & k_wide[AW-1:0], cin};   // bit 0 (unused): makes the carry in
+    wire [AW:0]   m      = {lw, e_h} + {hw, e_h};
+    wire [AW:0]   sum    = {base_k[AW:1], e_h} + {m[AW:1], e_h};
     /* verilator lint_on UNUSEDSIGNAL */
     wire [1:0]    dbm1   = buf_i[1:0] - 2'd1;         // four-slot: {p, s} of d's buffer
 
     assign we_o    = src_rl_i || dst_word_i || dst_tkn_i || dst_slot_i || dst_fin_i;
-    assign adr_o   = base_k[AW:1] + ({AW{datacc}} & m);
+    assign adr_o   = sum[AW:1];
     assign board_o = src ? src_board_i : dst_board_i[4*d_i +: 4];
     assign sel_o   = src_act_i ? (four_i ? 4'hF : SEL_ACT) :
                      src_rl_i ? SEL_RL :
