@@ -122,7 +122,7 @@ module albatross_transfer #(
     endgenerate
 
     // ------------------------------------------------------------ the state machine
-    wire        cont, lastf, mid, start, take, cont_q, wend, safe, need_any;
+    wire        cont, lastf, mid, take, cont_q, wend, safe, need_any;
     wire        dst, src_act, src_rl, src_word, dst_word, dst_tkn, dst_slot, dst_fin;
     wire [1:0]  d;
     wire [2:0]  ald, buf_d;
@@ -134,7 +134,7 @@ module albatross_transfer #(
         .st_rl_i(st_rl_i), .st_need_i(st_need_i), .st_tried_i(st_tried_i),
         .status_i(status_i), .status_valid_i(status_valid_i),
         .cont_i(cont), .lastf_i(lastf), .mid_i(mid),
-        .start_o(start), .take_o(take), .cont_q_o(cont_q), .wend_o(wend), .safe_o(safe), .need_any_o(need_any),
+        .take_o(take), .cont_q_o(cont_q), .wend_o(wend), .safe_o(safe), .need_any_o(need_any),
         .dst_o(dst), .src_act_o(src_act), .src_rl_o(src_rl), .src_word_o(src_word), .dst_word_o(dst_word),
         .dst_tkn_o(dst_tkn), .dst_slot_o(dst_slot), .dst_fin_o(dst_fin), .d_o(d), .ald_o(ald), .buf_d_o(buf_d),
         .word_o(word), .done_o(done_o), .imp_run_o(imp_run_o), .exp_run_o(exp_run_o), .new_o(new_o), .rl_o(rl_o),
@@ -146,7 +146,7 @@ module albatross_transfer #(
     albatross_transfer_frag #(.HAS_FRAGMENTS(HAS_FRAGMENTS)) u_frag (
         .clk_i(clk_i), .rst_i(rst_i), .go_i(go_i), .copy_i(copy_i), .request_i(request_i), .words_i(words_i),
         .frag_on_i(frag_on_i), .st_on_i(st_on_i), .st_prog_i(st_prog_i), .need_any_i((st_need_i & active_i) != 4'd0),
-        .start_i(start), .take_i(take), .wend_i(wend), .cont_q_i(cont_q), .safe_i(safe), .need_any_q_i(need_any),
+        .take_i(take), .wend_i(wend), .cont_q_i(cont_q), .safe_i(safe), .need_any_q_i(need_any),
         .cont_o(cont), .k_o(k), .lastf_o(lastf), .mid_o(mid), .on_wr_o(on_wr_o), .prog_o(prog_o), .prog_wr_o(prog_wr_o));
     assign on_o    = mid;
     assign index_o = k;

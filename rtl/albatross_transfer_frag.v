@@ -3,9 +3,10 @@
 // takes next, and whether and where the value goes on after the slot
 // (values carried over several runs, HAS_FRAGMENTS).
 // Rules:
-//   * k_o, the index of the next word to take: 0 from go_i and when an
-//     Export starts (start_i), the progress st_prog_i from go_i of a run
-//     that goes on with a value (cont_o), + 1 per word taken (take_i);
+//   * k_o, the index of the next word to take: 0 from go_i (an Import
+//     takes no word, so a first run's Export starts at word 0), the
+//     progress st_prog_i from go_i of a run that goes on with a value
+//     (cont_o), + 1 per word taken (take_i);
 //     lastf_o: k_o = W (read where a word's stores end: the value's last
 //     word is stored).  Reset: 0.
 //   * A COPY whose entry has frag_on_i (E7.frag != 0) may carry its value
@@ -54,7 +55,6 @@ module albatross_transfer_frag #(
     input  wire        st_on_i,        // the channel's state: a value goes on (valid at go_i)
     input  wire [11:0] st_prog_i,      // ... its progress: the first word not stored to all
     input  wire        need_any_i,     // at go_i: a destination of the entry is still in the value
-    input  wire        start_i,        // an Export starts: k := 0
     input  wire        take_i,         // a word is taken: k + 1
     input  wire        wend_i,         // the stores of word k - 1 have ended
     input  wire        cont_q_i,       // the slot goes on with a value (cont_o registered at go_i)
@@ -79,7 +79,7 @@ module albatross_transfer_frag #(
     wire        lastf = k_q == words_i;
     wire        mid   = FR && safe_i && need_any_q_i && (cont_q_i || (copy_i && !request_i && frag_on_i && wdone_q));
 
-    always @(posedge clk_i) if (rst_i) k_q <= 12'd0; else if (go_i && cont) k_q <= st_prog_i; else if (start_i || go_i) k_q <= 12'd0; else if (take_i) k_q <= k_q + 12'd1;
+    always @(posedge clk_i) if (rst_i) k_q <= 12'd0; else if (go_i && cont) k_q <= st_prog_i; else if (go_i) k_q <= 12'd0; else if (take_i) k_q <= k_q + 12'd1;
     // (reset: 0, the progress the state RAM's clearing writes)
     always @(posedge clk_i) if (rst_i) kdone_q <= 12'd0; else if (wend_i && !lastf) kdone_q <= k_q;
     always @(posedge clk_i) if (rst_i || go_i) wdone_q <= 1'b0; else if (wend_i && !lastf) wdone_q <= 1'b1;

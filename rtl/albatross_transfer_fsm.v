@@ -90,7 +90,6 @@ module albatross_transfer_fsm (
     // albatross_transfer_frag: the slot goes on with a value (at go_i), the
     // value's last word is taken, the value goes on (after the slot)
     input  wire        cont_i, lastf_i, mid_i,
-    output wire        start_o,        // an Export starts (the word index := 0)
     output wire        take_o,         // a word is taken (the word index + 1)
     output wire        cont_q_o,       // the slot goes on with a value (cont_i at go_i)
     output wire        wend_o,         // the stores of a word have ended
@@ -374,7 +373,7 @@ module albatross_transfer_fsm (
     // (no destination after it: the next word or the publication follows).
     wire       wend     = nrm && adv && state_q == S_DST_WORD && !has_next;
     wire [3:0] live     = need_q & ~pub_q;    // still in the value, not published
-    assign {start_o, take_o, cont_q_o, wend_o} = {e_start, take_en, cont_q, wend};
+    assign {take_o, cont_q_o, wend_o} = {take_en, cont_q, wend};
     assign safe_o      = (att_q & live) == 4'd0;
     assign need_any_o  = live != 4'd0;
 
