@@ -49,7 +49,7 @@ module albatross_entry_check #(
     input  wire [TIME_BITS-1:0] start_i,      // E1
     input  wire                 start_bad_i,  // E1 did not fit in TIME_BITS
     input  wire [TIME_BITS-1:0] cycle_i,      // H1
-    input  wire [TIME_BITS:0]   prev_end_i,   // the end of the previous slot run in this cycle
+    input  wire [TIME_BITS-1:0] prev_end_i,   // the end of the previous slot run in this cycle (<= cycle_i)
     input  wire [TIME_BITS:0]   end_i,        // start + length (E2's, from clock 3 on)
     input  wire [3:0]           cluster_i,    // the running mode's cluster
     input  wire                 due_i,        // the entry is due in this cycle
@@ -103,9 +103,15 @@ module albatross_entry_check #(
                           (e0_kind == ALB_KIND_TIME && e0_w != 12'd1) ||
                           (rom_i[EFLAG_MODE] && (e0_kind != ALB_KIND_STATUS || e0_w != 12'd2)) ||
                           (e0_kind == ALB_KIND_STATUS && e0_w != W_STATUS && !rom_i[EFLAG_MODE]);
-    wire        e6_bad  = rep_i > cluster_i || (MAX_REP < 15 && !below({28'd0, rep_i}, MAX_REP + 1));
+    // a < b as the borrow of a - b: a carry chain alone (Yosys maps an
+    // equal-width relational operator to a carry chain and an equality tree)
+    /* verilator lint_off UNUSEDSIGNAL */  // (only the borrow of each is read)
+    wire [4:0]  rc_df   = {1'b0, cluster_i} - {1'b0, rep_i};          // rep > cluster: rc_df[4]
+    wire [TB:0] pe_df   = {1'b0, start_i} - {1'b0, prev_end_i};       // start < prev_end: pe_df[TB]
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire        e6_bad  = rc_df[4] || (MAX_REP < 15 && !below({28'd0, rep_i}, MAX_REP + 1));
     wire        e2_bad  = start_bad_i || rom_i[31:TB] != 0 || below({{(32-TB){1'b0}}, rom_i[TB-1:0]}, MIN_LEN) ||
-                          ({1'b0, start_i} < prev_end_i && due_i) || e6_bad;
+                          (pe_df[TB] && due_i) || e6_bad;
     wire        end_bad = end_i > {1'b0, cycle_i};
     // base + span < 2^ADDR_WIDTH: the bits of each above ADDR_WIDTH are 0 and
     // the sum of the low ADDR_WIDTH bits has no carry out (a carry chain, no sum).

@@ -43,6 +43,11 @@ module albatross_header_check #(
     reg        smode_q;
     reg        bad_q;
     wire       h2_modes = rom_i[ALB_ROM_H2_MODES_LSB +: ALB_ROM_H2_MODES_W] != 0;
+    // start_end > NE as the borrow of NE - start_end: a carry chain alone (Yosys
+    // maps an equal-width relational operator to a carry chain and an equality tree)
+    /* verilator lint_off UNUSEDSIGNAL */  // (only the borrow is read)
+    wire [8:0] se_df    = {1'b0, ne_q} - {1'b0, rom_i[ALB_ROM_H2_START_END_LSB +: 8]};
+    /* verilator lint_on UNUSEDSIGNAL */
 
     always @(posedge clk_i) begin
         if (rst_i) bad_q <= 1'b0;
@@ -61,7 +66,7 @@ module albatross_header_check #(
                 end
                 3'd3: begin                                             // H2
                     if (h2_modes && (rom_i[ALB_ROM_H2_START_END_LSB +: 8] == 8'd0 ||
-                                     rom_i[ALB_ROM_H2_START_END_LSB +: 8] > ne_q))
+                                     se_df[8]))
                         bad_q <= 1'b1;
                 end
                 default: ;

@@ -185,7 +185,8 @@ module albatross_sequencer #(
     wire [31:0]        time_q;
     wire [TB-1:0]      start_q;
     wire               start_bad_q, start_now, cycle_end;
-    wire [TB:0]        end_q, prev_end_q;
+    wire [TB:0]        end_q;
+    wire [TB-1:0]      prev_end_q;    // end_q of the last slot that ran (a valid end: below 2^TB)
 
     // ------------------------------------------------------------ ROM and its read port
     wire               main_rom;      // a main read: the background check waits
@@ -298,7 +299,7 @@ module albatross_sequencer #(
     // ------------------------------------------------------------ control
     // The global time, rel, S, D and the deadline check (rtl/albatross_slot_timing.v).
     wire fetch6     = state_q == ST_FETCH && (step_q == 3'd0 || step_q >= 3'd6);   // FETCH clock 6 (0, 7: never)
-    albatross_slot_timing #(.TIME_BITS(TB), .MARGIN(MARGIN)) u_time (
+    albatross_slot_timing #(.TIME_BITS(TB), .MARGIN(MARGIN), .D_BOUNDED(HAS_ENTRY_CHECK != 0)) u_time (
         .clk_i(clk_i), .rst_i(rst_i), .rom_i(rom_q), .e1_i(hdr_last || fetch6 || (state_q == ST_CYCLE_END && mode_e1)),
         .e2_i(state_q == ST_FETCH && step_q == 3'd2), .ran_i(fetch6 && !bad_q && due), .wait_i(state_q == ST_WAIT),
         .run_i(state_q == ST_TRANSFER || go_now), .new_cycle_i(new_cycle), .cycle_i(cycle_q),

@@ -264,7 +264,8 @@ module fseq (
     localparam [XW-1:0]   STEP_X   = (F_CHUNKS > 1) ? 1 : 2;   // (one chunk: the chunk bit stays 0)
     (* keep *) wire [2:0]          f_state, f_step;
     (* keep *) wire [F_TB-1:0]     f_cycle, f_start;
-    (* keep *) wire [F_TB:0]       f_next_rel, f_end, f_prev_end;   // f_next_rel: rel + 1
+    (* keep *) wire [F_TB:0]       f_next_rel, f_end;   // f_next_rel: rel + 1
+    (* keep *) wire [F_TB-1:0]     f_prev_end;          // a valid slot's end: TB bits (its bit TB would be 0)
     (* keep *) wire [7:0]          f_ne, f_ent;
     (* keep *) wire [XW-1:0]       f_bg_adr, f_bg_dadr;
     (* keep *) wire                f_smode, f_sync_ok, f_start_bad, f_bad, f_sflag, f_poll, f_bg_data, f_last;
@@ -436,7 +437,7 @@ module fseq (
                 inv_run: assert(hdr_ok && !error_o && f_next_rel == {1'b0, crel[F_TB-1:0]} + 1'b1 && crel32 < F_H1 &&
                                 f_ent <= 8'd1 &&
                                 f_start == st_want[F_TB-1:0] && !f_start_bad &&
-                                f_prev_end == pe_want && (busy_q == xfer) && (!xfer || cur_q == e1) &&
+                                {1'b0, f_prev_end} == pe_want && (busy_q == xfer) && (!xfer || cur_q == e1) &&
                                 ((last_done_q && !cycle_o) == (f_state == ST_CYCLE_END)));
                 // the due test's inputs: the count (count_wrap), the cluster, the due fields
                 count_wrap: assert(f_nq == (wrapped ? n_nxt[F_CLB-1:0] : n_cur[F_CLB-1:0]));

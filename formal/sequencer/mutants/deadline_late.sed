@@ -5,4 +5,4 @@
 # the last access may end after D.
 # Must fail deadline (formal/sequencer/sequencer.sby neg_deadline_late).
 # (edits rtl/albatross_slot_timing.v, where the deadline check lives)
-s/in_time_q <= {1'b0, next_rel_q\[TB-1:0\]} < end_q - MARGIN_T;/in_time_q <= {1'b0, next_rel_q[TB-1:0]} <= end_q - MARGIN_T;/
+s/wire \[TB:0\]   df = {1'b0, next_rel_q\[TB-1:0\]} - {1'b0, dm};/wire [TB:0]   df = {1'b0, next_rel_q[TB-1:0]} - {1'b0, dm} - 1'b1;/

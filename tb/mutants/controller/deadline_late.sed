@@ -5,4 +5,4 @@
 # deadline D.  The controller bench's scenario deadline must fail
 # (test-controller-negative-deadline_late): its slots of 16 lengths put a
 # retry of a dead source on every phase of the rule.
-s/in_time_q <= {1'b0, next_rel_q\[TB-1:0\]} < end_q - MARGIN_T;/in_time_q <= {1'b0, next_rel_q[TB-1:0]} <= end_q - MARGIN_T;/
+s/wire \[TB:0\]   df = {1'b0, next_rel_q\[TB-1:0\]} - {1'b0, dm};/wire [TB:0]   df = {1'b0, next_rel_q[TB-1:0]} - {1'b0, dm} - 1'b1;/

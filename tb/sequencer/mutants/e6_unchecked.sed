@@ -3,4 +3,4 @@
 # check base < 2^rep): such an entry runs in the minor cycles its low base
 # bits give and rom_errors misses it.  tb_sequencer_multirate must fail (make
 # test-sequencer-multirate-negative-e6_unchecked).
-s/({1'b0, start_i} < prev_end_i \&\& due_i) || e6_bad;/({1'b0, start_i} < prev_end_i \&\& due_i);/
+s/(pe_df\[TB\] \&\& due_i) || e6_bad;/(pe_df[TB] \&\& due_i);/
