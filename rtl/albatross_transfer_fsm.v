@@ -384,11 +384,10 @@ module albatross_transfer_fsm (
     assign exp_run_o   = exp_q;
     assign new_o       = nrm && choose && new_q;
     assign rl_o        = rl_q;
-    // A value that goes on (cut before its publication began): the
-    // destinations still in it (the dropped ones out).  Once its
-    // publication has begun, the value ends as a whole one does (a destination not published stays in
-    // need, and the next run Imports afresh, its control load seeing a
-    // landed store).
+    // A value that goes on (mid): the destinations still in it, not
+    // published (the dropped ones out).  A value that ends: those served
+    // and not published stay in need, and the next run Imports afresh,
+    // its control loads seeing a landed or complete store.
     assign aband_o     = serve_q & ~pub_q & ~(need_q & {4{mid}});
     assign need_o      = (mid ? need_q : serve_q) & ~pub_q;
     assign transfers_o = exp_q ? popcount4(pub_q) : 3'd0;

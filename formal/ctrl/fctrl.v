@@ -41,7 +41,9 @@
 //               word store of a run that goes on is of a word at or after
 //               the progress (the run resumes at the right word, never
 //               before it; a word skipped leaves a buffer incomplete, which
-//               dst_publish_complete refuses);
+//               dst_publish_complete refuses), and a destination's taken_at
+//               store comes only after its store of the value's last word
+//               was answered in the same run;
 //   frag_held   a slot that goes on with a value makes no access to the
 //               source's control word (its ReadLocked stays held from the
 //               first run to the last);
@@ -189,25 +191,31 @@ module fctrl #(
     // ------------------------------------------------------------ runs (W = 2)
     reg          cont_q;
     reg [WW-1:0] p_q;                      // the run's first word: 0, or the progress at go
-    always @(posedge clk_i) begin
-        if (rst_i) begin
-            cont_q <= 1'b0;
-            p_q    <= {WW{1'b0}};
-        end else if (s_go) begin
-            cont_q <= s_cont;
-            p_q    <= s_cont ? f_prog[WW-1:0] : {WW{1'b0}};
-        end
-    end
+    reg [1:0]    last_q;                   // destination d's store of the last word (1) answered in this run
     // word offsets of the access in its buffer: source stride 2, destination stride 3
     wire [AW-1:0] s_off = m_adr[AW-1:0] - e_src_base - 1'b1;
     wire [AW-1:0] d_off = m_adr[AW-1:0] - (d0_hit ? e_dst_base0 : e_dst_base1) - 1'b1;
     wire [AW-1:0] d_m   = d_off % 3;       // 0, 1: value words; 2: taken_at
+    wire          d_wst = (d0_hit && !d0_ctrl || d1_hit && !d1_ctrl) && m_we;   // a destination word store
+    always @(posedge clk_i) begin
+        if (rst_i) begin
+            cont_q <= 1'b0;
+            p_q    <= {WW{1'b0}};
+            last_q <= 2'b00;
+        end else if (s_go) begin
+            cont_q <= s_cont;
+            p_q    <= s_cont ? f_prog[WW-1:0] : {WW{1'b0}};
+            last_q <= 2'b00;
+        end else if (req && ack_i && d_wst && d_m == 1) begin
+            last_q <= last_q | (d0_hit ? 2'b01 : 2'b10);
+        end
+    end
     always @* begin
         if (!init_q && req) begin
             if (s_hit && !m_we && m_adr[AW-1:0] != e_src_base)
                 frag_words_src: assert(s_off[0] >= p_q[0]);
-            if ((d0_hit && !d0_ctrl || d1_hit && !d1_ctrl) && m_we)
-                frag_words_dst: assert(d_m == 2 || d_m[0] >= p_q[0]);
+            if (d_wst)
+                frag_words_dst: assert(d_m == 2 ? (d0_hit ? last_q[0] : last_q[1]) : d_m[0] >= p_q[0]);
             if (cont_q)
                 frag_held: assert(!(s_hit && m_adr[AW-1:0] == e_src_base));
         end
